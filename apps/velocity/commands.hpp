@@ -1,0 +1,18 @@
+// The command-line program's subcommands.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace velocity::cli {
+
+// Parses "WxH" into width and height (1..16384 each); throws CLI::ValidationError.
+void parse_size(const std::string& text, int& width, int& height);
+
+// Each registers its subcommand on `app` and returns a function that runs it (exit code).
+std::function<int()> add_render_command(CLI::App& app);
+std::function<int()> add_bench_command(CLI::App& app);
+std::function<int()> add_info_command(CLI::App& app);
+
+}  // namespace velocity::cli

@@ -1,0 +1,86 @@
+// The renderer: draws a Scene, or meshes one by one, into its framebuffer.
+//
+//   velocity::Renderer r(1280, 720);
+//   r.render(scene);                     // clear, draw every visible object, resolve
+//   velocity::write_png("out.png", r.color_image());
+//
+// A frame goes load -> scene -> transform (vertex lighting) -> cull and clip -> set-up
+// -> bin to 64x64 tiles -> rasterize and shade each tile -> framebuffer. See
+// docs/pipeline.md.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "velocity/image.hpp"
+#include "velocity/material.hpp"
+#include "velocity/math.hpp"
+#include "velocity/mesh.hpp"
+#include "velocity/scene.hpp"
+
+namespace velocity {
+
+enum class DepthMode {
+  ZBuffer,  // per-pixel depth test (LESS) and write
+  Painter,  // no depth buffer: primitives sorted by mean depth, drawn far to near (seeds 001, 004)
+};
+
+struct RenderOptions {
+  DepthMode depth_mode = DepthMode::ZBuffer;
+  bool cull_back_faces = true;       // two-sided materials are never culled
+  std::optional<Shading> shading;    // when set, overrides every material's shading
+};
+
+// What the last frame did, for --verbose output and tests.
+struct FrameStats {
+  size_t objects = 0;                 // objects submitted
+  size_t objects_culled = 0;          // rejected whole by their bounding sphere
+  size_t triangles = 0;               // triangles submitted
+  size_t triangles_rejected = 0;      // trivially outside one view plane (region codes)
+  size_t triangles_nonfinite = 0;     // dropped for a NaN or infinite coordinate
+  size_t triangles_clipped = 0;       // cut by the near, far or guard-band planes
+  size_t triangles_culled = 0;        // back faces, and triangles covering no pixel centre
+  size_t triangles_rasterized = 0;    // set up and binned (after clipping)
+  size_t lines = 0, points = 0;       // set up and binned
+};
+
+class Renderer {
+ public:
+  // Throws velocity::Error unless 1 <= width, height <= 16384.
+  Renderer(int width, int height);
+  ~Renderer();
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+
+  // Changes the framebuffer size (same limits as the constructor).
+  void resize(int width, int height);
+  int width() const;
+  int height() const;
+
+  RenderOptions options;
+
+  // Draws the scene: begin_frame with its camera, lights and background, every visible
+  // object with its world matrix, end_frame.
+  const FrameStats& render(const Scene& scene);
+
+  // The same, one mesh at a time (for an immediate-mode front end or a game loop).
+  // With no lights, a white light from (0.3, 0.5, 1) in eye space with ambient 0.2 and
+  // diffuse 0.8 is used.
+  void begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color);
+  // `material`, when given, replaces the mesh's own materials and face colours.
+  void draw(const Mesh& mesh, const Mat4& world, const Material* material = nullptr);
+  const FrameStats& end_frame();
+
+  const FrameStats& stats() const;
+  Image color_image() const;
+  // See Framebuffer::depth_image: nearest white, farthest drawn dark grey, empty black.
+  Image depth_image() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace velocity

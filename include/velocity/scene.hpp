@@ -1,0 +1,134 @@
+// The scene: objects in a parent/child hierarchy, a camera and lights.
+//
+// Seed 000's engine calls map onto this API one to one (see docs/api.md):
+//   LoadCar(file)             -> load_model(file) + Scene::add_object
+//   ScaleCar(x, y, z)         -> object.transform.scale = {x, y, z}
+//   MoveCar(rx, ry, rz, ...)  -> object.transform.rotation / .translation
+//   Reset_Car                 -> object.transform = {}
+//   Set_Camera_Position(...)  -> scene.camera.position / pitch / yaw / roll / fov
+//   DrawCar                   -> Renderer::render(scene)
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "velocity/material.hpp"
+#include "velocity/math.hpp"
+#include "velocity/mesh.hpp"
+
+namespace velocity {
+
+// Scale, then rotate (roll about Z, pitch about X, yaw about Y, in that order), then
+// translate: M = T * Ry * Rx * Rz * S. Angles in radians. The mesh itself is untouched.
+struct Transform {
+  Vec3 scale{1, 1, 1};
+  Vec3 rotation;  // x = pitch, y = yaw, z = roll
+  Vec3 translation;
+
+  Mat4 matrix() const;
+};
+
+using ObjectId = uint32_t;
+inline constexpr ObjectId kNoParent = UINT32_MAX;
+
+struct Object {
+  std::string name;
+  std::shared_ptr<const Mesh> mesh;  // may be null: a pure transform node
+  Transform transform;               // relative to the parent
+  ObjectId parent = kNoParent;
+  bool visible = true;
+  // When set, replaces the mesh's own materials and face colours.
+  std::optional<Material> material;
+  // Applied before `transform` (a file's own node matrix, say): world = parent *
+  // transform.matrix() * base.
+  Mat4 base;
+};
+
+enum class Projection { Perspective, Orthographic };
+
+// A camera at `position` turned by yaw (about Y), then pitch (about X), then roll
+// (about Z), looking down its own -Z axis: seed 000's swivel, pitch and roll.
+struct Camera {
+  Vec3 position{0, 0, 3};
+  float pitch = 0, yaw = 0, roll = 0;  // radians
+  Projection projection = Projection::Perspective;
+  float fov_y = radians(45.0f);  // vertical field of view (perspective)
+  float ortho_height = 2.0f;     // height of the view volume (orthographic)
+  float near = 0.1f, far = 100.0f;
+
+  // Field of view of a lens of `focal_mm` on film `film_height_mm` high (seed 000's
+  // focal length; 3D Studio's cameras use 35 mm film, 24 mm high).
+  static float fov_from_focal_length(float focal_mm, float film_height_mm = 24.0f);
+
+  // Turns the camera (yaw and pitch, roll kept) to look at `target`.
+  void look_at(Vec3 target);
+  Mat4 view() const;
+  Mat4 projection_matrix(float aspect) const;
+};
+
+enum class LightType { Ambient, Directional, Point };
+
+struct Light {
+  LightType type = LightType::Directional;
+  Vec3 color{1, 1, 1};  // intensity per channel
+  // Directional: the direction *towards* the light, in world space.
+  Vec3 direction{0, 0, 1};
+  // Point: position in world space, attenuation 1 / (c + l*d + q*d^2).
+  Vec3 position;
+  float constant = 1, linear = 0, quadratic = 0;
+
+  static Light ambient(Vec3 color) {
+    Light l;
+    l.type = LightType::Ambient;
+    l.color = color;
+    return l;
+  }
+  static Light directional(Vec3 towards, Vec3 color) {
+    Light l;
+    l.color = color;
+    l.direction = normalize(towards);
+    return l;
+  }
+  static Light point(Vec3 position, Vec3 color, float linear = 0, float quadratic = 0) {
+    Light l;
+    l.type = LightType::Point;
+    l.color = color;
+    l.position = position;
+    l.linear = linear;
+    l.quadratic = quadratic;
+    return l;
+  }
+};
+
+class Scene {
+ public:
+  // Adds an object. A parent must already exist, so objects are always stored parents
+  // first and world matrices are computed in one pass. Throws velocity::Error for an
+  // unknown parent.
+  ObjectId add_object(std::string name, std::shared_ptr<const Mesh> mesh, ObjectId parent = kNoParent);
+  Object& object(ObjectId id) { return objects_.at(id); }
+  const Object& object(ObjectId id) const { return objects_.at(id); }
+  const std::vector<Object>& objects() const { return objects_; }
+  // The first object called `name`, if any.
+  std::optional<ObjectId> find(std::string_view name) const;
+
+  // Object-to-world matrix of every object (parent chain applied), indexed by ObjectId.
+  std::vector<Mat4> world_matrices() const;
+  // Bounding sphere of every visible mesh in world space (radius 0 when empty).
+  Sphere bounds() const;
+  // Places the camera on +Z of the scene's bounding sphere, looking at its centre, so the
+  // whole scene fits the vertical field of view; near and far are set around it.
+  void frame_camera(float aspect);
+
+  Camera camera;
+  std::vector<Light> lights;
+  Vec3 background{0.1f, 0.1f, 0.15f};
+
+ private:
+  std::vector<Object> objects_;
+};
+
+}  // namespace velocity

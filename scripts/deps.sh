@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Velocity builds and tests with, when any is missing.
+# Every dependency is a Debian package (no vendored copies, nothing downloaded else):
+#   cmake, ninja-build, g++          the build
+#   libstb-dev                       PNG/JPEG/... read and write (stb_image, stb_image_write)
+#   libtinyobjloader-dev             OBJ files
+#   libcli11-dev                     the command line
+#   libgtest-dev                     unit and golden tests
+#   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
+#   pkg-config                       finds OSMesa
+set -euo pipefail
+packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libcli11-dev libgtest-dev libosmesa6-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "velocity: installing missing Debian packages: ${missing[*]}" >&2
+  sudo=""
+  [[ $(id -u) -eq 0 ]] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi

@@ -1,0 +1,75 @@
+#include "geometry/clip.hpp"
+
+#include <algorithm>
+
+namespace velocity::geometry {
+
+namespace {
+
+// Signed distance of a clip-space point to a plane, >= 0 inside.
+float distance(const Vec4& p, uint32_t plane, GuardBand g) {
+  switch (plane) {
+    case kOutNear: return p.z + p.w;
+    case kOutFar: return p.w - p.z;
+    case kOutGuardLeft: return p.x + g.x * p.w;
+    case kOutGuardRight: return g.x * p.w - p.x;
+    case kOutGuardBottom: return p.y + g.y * p.w;
+    case kOutGuardTop: return g.y * p.w - p.y;
+  }
+  return 0;
+}
+
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t, int nvar) {
+  ClipVertex r;
+  r.pos = a.pos + (b.pos - a.pos) * t;
+  for (int i = 0; i < nvar; ++i) r.var[i] = a.var[i] + (b.var[i] - a.var[i]) * t;
+  return r;
+}
+
+}  // namespace
+
+int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int nvar) {
+  ClipVertex scratch[kMaxClippedVertices];
+  for (uint32_t plane = 1; plane <= kOutGuardTop && n > 0; plane <<= 1) {
+    if (!(planes & plane & kMustClipPlanes)) continue;
+    int m = 0;
+    // Convex input gains at most one vertex per plane; the bound only guards against
+    // degenerate input (it can never write past `scratch`).
+    auto push = [&](const ClipVertex& v) {
+      if (m < kMaxClippedVertices) scratch[m++] = v;
+    };
+    for (int i = 0; i < n; ++i) {
+      const ClipVertex& a = poly[i];
+      const ClipVertex& b = poly[(i + 1) % n];
+      float da = distance(a.pos, plane, guard), db = distance(b.pos, plane, guard);
+      if (da >= 0) push(a);
+      // The edge crosses the plane: add the crossing point. Always interpolating from
+      // the inside vertex makes the new vertex bit-identical for both triangles that
+      // share this edge, so clipped meshes stay watertight.
+      if ((da >= 0) != (db >= 0)) {
+        push(da >= 0 ? lerp(a, b, da / (da - db), nvar) : lerp(b, a, db / (db - da), nvar));
+      }
+    }
+    n = m;
+    for (int i = 0; i < n; ++i) poly[i] = scratch[i];
+  }
+  return n;
+}
+
+bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard) {
+  float t0 = 0, t1 = 1;
+  for (uint32_t plane = 1; plane <= kOutGuardTop; plane <<= 1) {
+    if (!(planes & plane & kMustClipPlanes)) continue;
+    float da = distance(a, plane, guard), db = distance(b, plane, guard);
+    if (da < 0 && db < 0) return false;
+    if (da < 0) t0 = std::max(t0, da / (da - db));
+    if (db < 0) t1 = std::min(t1, da / (da - db));
+    if (t0 > t1) return false;
+  }
+  Vec4 a0 = a, d = b - a;
+  a = a0 + d * t0;
+  b = a0 + d * t1;
+  return true;
+}
+
+}  // namespace velocity::geometry

@@ -1,0 +1,71 @@
+// The lighting model, shared by per-vertex (flat, Gouraud) and per-pixel (Phong) shading:
+//
+//   colour = base * (ambient + sum_i diffuse_i * max(N.L_i, 0)) + Ks * sum_i light_i * max(R_i.V, 0)^n
+//
+// with N the unit normal, L_i the unit direction to light i, R_i = 2(N.L_i)N - L_i its
+// mirror direction and V the unit direction to the eye, all in eye space (the eye at the
+// origin). This is OpenGL's fixed-function model without emission and, for the specular
+// term, the Phong model of seed 000 ("Ks (R.V)^n"). Point lights are attenuated by
+// 1 / (c + l d + q d^2).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "velocity/math.hpp"
+
+namespace velocity::geometry {
+
+struct EyeLights {
+  struct Directional {
+    Vec3 to_light;  // unit, eye space
+    Vec3 color;
+  };
+  struct Point {
+    Vec3 position;  // eye space
+    Vec3 color;
+    float constant, linear, quadratic;
+  };
+  Vec3 ambient;
+  std::vector<Directional> directional;
+  std::vector<Point> point;
+};
+
+// The light arriving at a surface point, split so that the surface's base colour can be
+// applied later (per face or per vertex): colour = base * diffuse + specular.
+struct LightTerms {
+  Vec3 diffuse;   // ambient + sum of diffuse
+  Vec3 specular;  // sum of specular, already scaled by Ks
+};
+
+namespace detail {
+inline void add_light(LightTerms& t, Vec3 n, Vec3 to_light, Vec3 color, Vec3 to_eye, float ks, float shininess) {
+  float nl = dot(n, to_light);
+  t.diffuse += color * std::max(nl, 0.0f);
+  if (ks > 0) {
+    Vec3 r = n * (2 * nl) - to_light;
+    float rv = std::max(dot(r, to_eye), 0.0f);
+    // As the reference (GLSL) computes it: the highlight is not gated on N.L.
+    if (rv > 0) t.specular += color * (ks * std::pow(rv, shininess));
+  }
+}
+}  // namespace detail
+
+// `n` unit normal and `p` position, eye space. ks = 0 skips the specular term.
+inline LightTerms light(const EyeLights& lights, Vec3 n, Vec3 p, float ks, float shininess) {
+  LightTerms t{lights.ambient, {}};
+  Vec3 to_eye = ks > 0 ? normalize(-p) : Vec3{};
+  for (const auto& d : lights.directional) detail::add_light(t, n, d.to_light, d.color, to_eye, ks, shininess);
+  for (const auto& pl : lights.point) {
+    Vec3 v = pl.position - p;
+    float dist = length(v);
+    float att = 1.0f / std::max(pl.constant + pl.linear * dist + pl.quadratic * dist * dist, 1e-6f);
+    detail::add_light(t, n, dist > 0 ? v / dist : n, pl.color * att, to_eye, ks, shininess);
+  }
+  return t;
+}
+
+inline Vec3 apply(const LightTerms& t, Vec3 base) { return base * t.diffuse + t.specular; }
+
+}  // namespace velocity::geometry

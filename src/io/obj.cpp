@@ -1,0 +1,120 @@
+// Wavefront OBJ through tinyobjloader (Debian's libtinyobjloader-dev): a small, well-kept
+// reader that handles OBJ's corner cases (negative indices, polygons, MTL files).
+// Velocity turns its output into one mesh per OBJ group (shape), with the MTL diffuse
+// colours as materials; normals from the file when every corner has one, else computed
+// per smoothing group.
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include "velocity/error.hpp"
+#include "velocity/load.hpp"
+
+namespace velocity {
+
+namespace {
+
+Material material_from(const tinyobj::material_t& m) {
+  Material mat;
+  mat.name = m.name;
+  mat.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+  float ks = std::max({m.specular[0], m.specular[1], m.specular[2]});
+  if (ks > 0) {
+    mat.specular = ks;
+    mat.shininess = m.shininess > 0 ? m.shininess : 32.0f;
+    mat.shading = Shading::Phong;
+  }
+  return mat;
+}
+
+}  // namespace
+
+Model load_obj(const std::string& path, const LoadOptions& options) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = true;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path, config)) {
+    std::string why = reader.Error();
+    while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+    throw Error(path + ": cannot read OBJ: " + (why.empty() ? "unknown error" : why));
+  }
+  const tinyobj::attrib_t& at = reader.GetAttrib();
+  size_t bytes = at.vertices.size() * 4 + at.normals.size() * 4 + at.texcoords.size() * 4;
+  if (bytes > options.max_memory) throw Error(path + ": OBJ needs more memory than the limit allows");
+
+  std::vector<Material> materials;
+  for (const auto& m : reader.GetMaterials()) materials.push_back(material_from(m));
+
+  Model model;
+  model.path = path;
+  const bool has_colors = !at.colors.empty() && at.colors.size() == at.vertices.size();
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    const auto& idx = shape.mesh.indices;
+    if (idx.empty()) continue;
+    auto mesh = std::make_shared<Mesh>();
+    mesh->name = shape.name;
+    // One Velocity vertex per distinct (position, normal, uv) triple.
+    std::map<std::tuple<int, int, int>, uint32_t> remap;
+    bool all_normals = true, any_uv = false;
+    for (const auto& i : idx) all_normals &= i.normal_index >= 0, any_uv |= i.texcoord_index >= 0;
+    auto fetch = [&](const std::vector<float>& a, int i, int n, int k) -> float {
+      size_t at_i = size_t(i) * n + k;
+      if (i < 0 || at_i >= a.size()) throw Error(path + ": index out of range in group '" + shape.name + "'");
+      return a[at_i];
+    };
+    for (size_t f = 0; f + 2 < idx.size(); f += 3) {
+      Triangle t;
+      for (int k = 0; k < 3; ++k) {
+        const auto& i = idx[f + k];
+        auto key = std::make_tuple(i.vertex_index, all_normals ? i.normal_index : -1, any_uv ? i.texcoord_index : -1);
+        auto [it, inserted] = remap.try_emplace(key, uint32_t(mesh->positions.size()));
+        if (inserted) {
+          mesh->positions.push_back({fetch(at.vertices, i.vertex_index, 3, 0), fetch(at.vertices, i.vertex_index, 3, 1),
+                                     fetch(at.vertices, i.vertex_index, 3, 2)});
+          if (all_normals)
+            mesh->normals.push_back(normalize({fetch(at.normals, i.normal_index, 3, 0),
+                                               fetch(at.normals, i.normal_index, 3, 1),
+                                               fetch(at.normals, i.normal_index, 3, 2)}));
+          if (any_uv)
+            mesh->uvs.push_back(i.texcoord_index >= 0 ? Vec2{fetch(at.texcoords, i.texcoord_index, 2, 0),
+                                                             fetch(at.texcoords, i.texcoord_index, 2, 1)}
+                                                      : Vec2{});
+          if (has_colors)
+            mesh->colors.push_back({fetch(at.colors, i.vertex_index, 3, 0), fetch(at.colors, i.vertex_index, 3, 1),
+                                    fetch(at.colors, i.vertex_index, 3, 2)});
+        }
+        t.v[k] = it->second;
+      }
+      mesh->triangles.push_back(t);
+    }
+    // Materials: the shape's per-face ids, -1 meaning none.
+    const auto& ids = shape.mesh.material_ids;
+    bool any_material = std::any_of(ids.begin(), ids.end(), [](int m) { return m >= 0; });
+    if (any_material && !materials.empty()) {
+      mesh->materials = materials;
+      mesh->materials.push_back(Material{});  // for faces without one
+      uint32_t none = uint32_t(materials.size());
+      for (size_t f = 0; f < mesh->triangles.size(); ++f) {
+        int m = f < ids.size() ? ids[f] : -1;
+        mesh->face_materials.push_back(m >= 0 && size_t(m) < materials.size() ? uint32_t(m) : none);
+      }
+    }
+    // Smoothing groups (`s N`, per face) when the file has no normals.
+    if (!all_normals) {
+      const auto& sg = shape.mesh.smoothing_group_ids;
+      bool any_group = std::any_of(sg.begin(), sg.end(), [](unsigned g) { return g != 0; });
+      if (any_group && sg.size() == mesh->triangles.size())
+        for (unsigned g : sg) mesh->smoothing_groups.push_back(g == 0 ? 0u : (1u << ((g - 1) % 32)));
+      compute_normals(*mesh);
+    }
+    mesh->validate();
+    model.nodes.push_back({shape.name, std::move(mesh), Mat4::identity(), -1});
+  }
+  if (model.nodes.empty()) throw Error(path + ": OBJ file has no faces");
+  return model;
+}
+
+}  // namespace velocity

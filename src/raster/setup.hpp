@@ -1,0 +1,39 @@
+// Triangle, line and point set-up: from screen-space vertices to the edge functions,
+// bounding boxes and interpolation planes that the tile rasterizer consumes.
+#pragma once
+
+#include <cmath>
+
+#include "raster/raster_types.hpp"
+
+namespace velocity::raster {
+
+// A vertex after the perspective divide and viewport transform.
+struct ScreenVertex {
+  float x, y;   // pixels, y down
+  float z;      // window depth in [0, 1]
+  float inv_w;  // 1 / w_clip
+};
+
+enum class Facing { Front, Back, Degenerate };
+
+// Counter-clockwise in OpenGL's y-up window space is front; in our y-down screen space
+// that is a negative signed area. Uses the snapped coordinates, so it agrees exactly
+// with what the rasterizer covers.
+Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
+
+// Sets up a triangle. `var[i]` points at vertex i's `num_varyings` varyings (not yet
+// divided by w). Returns false when the triangle covers no pixel centre inside the
+// width x height framebuffer (degenerate, or outside the scissor). Either winding is
+// accepted; culling is the caller's decision, made with facing().
+bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const float* var0,
+                    const float* var1, const float* var2, int num_varyings, int width, int height,
+                    TriangleSetup& out);
+
+// Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
+inline int64_t snap(float v) { return int64_t(std::lrint(v * float(kSubpixelOne))); }
+
+bool setup_line(const ScreenVertex& a, const ScreenVertex& b, uint32_t color, int width, int height, LineSetup& out);
+bool setup_point(const ScreenVertex& p, uint32_t color, int width, int height, PointSetup& out);
+
+}  // namespace velocity::raster

@@ -1,0 +1,28 @@
+#include "velocity/material.hpp"
+
+namespace velocity {
+
+namespace {
+struct ShadingName {
+  Shading shading;
+  std::string_view name;
+};
+constexpr ShadingName kShadingNames[] = {
+    {Shading::Flat, "flat"},         {Shading::Gouraud, "gouraud"},  {Shading::Phong, "phong"},
+    {Shading::VertexColor, "color"}, {Shading::Wireframe, "wire"},   {Shading::Points, "points"},
+};
+}  // namespace
+
+std::string_view to_string(Shading shading) {
+  for (const auto& s : kShadingNames)
+    if (s.shading == shading) return s.name;
+  return "unknown";
+}
+
+std::optional<Shading> parse_shading(std::string_view name) {
+  for (const auto& s : kShadingNames)
+    if (s.name == name) return s.shading;
+  return std::nullopt;
+}
+
+}  // namespace velocity
