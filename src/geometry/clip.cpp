@@ -7,22 +7,26 @@ namespace velocity::geometry {
 namespace {
 
 // Signed distance of a clip-space point to a plane, >= 0 inside.
-float distance(const Vec4& p, uint32_t plane, GuardBand g) {
+double distance(const Vec4& p, uint32_t plane, GuardBand g) {
+  const double x = p.x, y = p.y, z = p.z, w = p.w;
   switch (plane) {
-    case kOutNear: return p.z + p.w;
-    case kOutFar: return p.w - p.z;
-    case kOutGuardLeft: return p.x + g.x * p.w;
-    case kOutGuardRight: return g.x * p.w - p.x;
-    case kOutGuardBottom: return p.y + g.y * p.w;
-    case kOutGuardTop: return g.y * p.w - p.y;
+    case kOutNear: return z + w;
+    case kOutFar: return w - z;
+    case kOutGuardLeft: return x + g.x * w;
+    case kOutGuardRight: return g.x * w - x;
+    case kOutGuardBottom: return y + g.y * w;
+    case kOutGuardTop: return g.y * w - y;
   }
   return 0;
 }
 
-ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t, int nvar) {
+// The position is interpolated in double: with a vertex 1e7 units away, float
+// arithmetic would land the new vertex visibly off the plane it was clipped to.
+ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t, int nvar) {
   ClipVertex r;
-  r.pos = a.pos + (b.pos - a.pos) * t;
-  for (int i = 0; i < nvar; ++i) r.var[i] = a.var[i] + (b.var[i] - a.var[i]) * t;
+  auto mix = [t](float p, float q) { return float(double(p) + (double(q) - double(p)) * t); };
+  r.pos = {mix(a.pos.x, b.pos.x), mix(a.pos.y, b.pos.y), mix(a.pos.z, b.pos.z), mix(a.pos.w, b.pos.w)};
+  for (int i = 0; i < nvar; ++i) r.var[i] = a.var[i] + (b.var[i] - a.var[i]) * float(t);
   return r;
 }
 
@@ -41,7 +45,7 @@ int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int 
     for (int i = 0; i < n; ++i) {
       const ClipVertex& a = poly[i];
       const ClipVertex& b = poly[(i + 1) % n];
-      float da = distance(a.pos, plane, guard), db = distance(b.pos, plane, guard);
+      double da = distance(a.pos, plane, guard), db = distance(b.pos, plane, guard);
       if (da >= 0) push(a);
       // The edge crosses the plane: add the crossing point. Always interpolating from
       // the inside vertex makes the new vertex bit-identical for both triangles that
@@ -60,10 +64,10 @@ bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard) {
   float t0 = 0, t1 = 1;
   for (uint32_t plane = 1; plane <= kOutGuardTop; plane <<= 1) {
     if (!(planes & plane & kMustClipPlanes)) continue;
-    float da = distance(a, plane, guard), db = distance(b, plane, guard);
+    double da = distance(a, plane, guard), db = distance(b, plane, guard);
     if (da < 0 && db < 0) return false;
-    if (da < 0) t0 = std::max(t0, da / (da - db));
-    if (db < 0) t1 = std::min(t1, da / (da - db));
+    if (da < 0) t0 = std::max(t0, float(da / (da - db)));
+    if (db < 0) t1 = std::min(t1, float(da / (da - db)));
     if (t0 > t1) return false;
   }
   Vec4 a0 = a, d = b - a;
