@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "framebuffer/framebuffer.hpp"
+#include "framebuffer/resolve.hpp"
 #include "geometry/draw_mesh.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
@@ -70,7 +71,9 @@ Sphere world_sphere(const Mesh& mesh, const Mat4& world) {
 }  // namespace
 
 struct Renderer::Impl {
-  Framebuffer framebuffer;
+  int width = 0, height = 0;  // the output size
+  int ssaa = 1;               // samples per output pixel, per side
+  Framebuffer framebuffer;    // the samples: width * ssaa x height * ssaa
   raster::Bins bins;
   raster::FramePrimitives primitives;
   geometry::VertexScratch scratch;
@@ -80,26 +83,42 @@ struct Renderer::Impl {
   FrameStats stats;
   bool in_frame = false;
 
-  void resize(int w, int h) {
-    framebuffer.resize(w, h);
-    bins.resize(w, h);
+  // Sizes the sample buffers for an output size and super-sampling factor. Throws
+  // velocity::Error (and changes nothing) when either is out of range.
+  void resize(int w, int h, int k) {
+    if (k < 1 || k > 4) throw Error("super-sampling factor " + std::to_string(k) + " is out of range (1..4)");
+    if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
+      throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
+                  std::to_string(raster::kMaxFramebufferSide) + " a side)");
+    if (int64_t(w) * k > raster::kMaxFramebufferSide || int64_t(h) * k > raster::kMaxFramebufferSide)
+      throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(k) + "x" +
+                  std::to_string(k) + " super-sampling needs a sample buffer over " +
+                  std::to_string(raster::kMaxFramebufferSide) + " a side");
+    if (w == width && h == height && k == ssaa && framebuffer.width == w * k) return;
+    framebuffer.resize(w * k, h * k);
+    bins.resize(w * k, h * k);
+    width = w, height = h, ssaa = k;
   }
 };
 
-Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) { impl_->resize(width, height); }
+Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) { impl_->resize(width, height, 1); }
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-void Renderer::resize(int width, int height) { impl_->resize(width, height); }
-int Renderer::width() const { return impl_->framebuffer.width; }
-int Renderer::height() const { return impl_->framebuffer.height; }
+void Renderer::resize(int width, int height) { impl_->resize(width, height, impl_->ssaa); }
+int Renderer::width() const { return impl_->width; }
+int Renderer::height() const { return impl_->height; }
 const FrameStats& Renderer::stats() const { return impl_->stats; }
-Image Renderer::color_image() const { return impl_->framebuffer.color_image(); }
-Image Renderer::depth_image() const { return impl_->framebuffer.depth_image(); }
+Image Renderer::color_image() const { return resolve_color(impl_->framebuffer, impl_->ssaa); }
+Image Renderer::depth_image() const { return resolve_depth(impl_->framebuffer, impl_->ssaa); }
+size_t Renderer::framebuffer_bytes() const {
+  return impl_->framebuffer.color.size() * sizeof(uint32_t) + impl_->framebuffer.depth.size() * sizeof(float);
+}
 
 void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color) {
   Impl& r = *impl_;
+  r.resize(r.width, r.height, options.ssaa);  // follows a change of options.ssaa
   int w = r.framebuffer.width, h = r.framebuffer.height;
   r.params.view = camera.view();
   r.params.projection = camera.projection_matrix(float(w) / float(h));

@@ -11,6 +11,7 @@
 #include "velocity/error.hpp"
 #include "velocity/bench_scene.hpp"
 #include "velocity/renderer.hpp"
+#include "velocity/texture.hpp"
 
 namespace velocity::cli {
 
@@ -24,6 +25,10 @@ struct BenchArgs {
   int copies = 1;
   int threads = 1;
   std::string out;
+  std::string tex;
+  std::string filter;
+  bool affine = false;
+  int ssaa = 1;
 };
 
 int run_bench(const BenchArgs& a) {
@@ -32,20 +37,27 @@ int run_bench(const BenchArgs& a) {
   if (a.frames < 1) throw Error("--frames must be at least 1");
   if (a.copies < 1) throw Error("--copies must be at least 1");
   if (a.threads < 1) throw Error("--threads must be at least 1");
-  auto shading = parse_shading(a.shade);
-  if (!shading || *shading == Shading::VertexColor || *shading == Shading::Points)
-    throw Error("--shade: expected flat|gouraud|phong|wire, got '" + a.shade + "'");
+  std::shared_ptr<const Texture> texture = a.tex.empty() ? nullptr : load_texture(a.tex);
+  auto look = bench::make_look(a.shade, texture);
+  if (!look) throw Error("--shade: expected flat|gouraud|phong|wire|tex|env, got '" + a.shade + "'");
+  if (a.ssaa < 1 || a.ssaa > 4) throw Error("--ssaa must be 1..4");
+  if (!a.filter.empty()) {
+    auto f = parse_filter(a.filter);
+    if (!f) throw Error("--filter: expected nearest|bilinear|trilinear, got '" + a.filter + "'");
+    look->material.filter = *f;
+  }
+  look->options.affine = a.affine;
+  look->options.ssaa = a.ssaa;
 
   Mesh mesh = bench::make_mesh(a.mesh);
-  Material material = bench::make_material(*shading);
   Renderer renderer(w, h);
-  renderer.options = bench::make_options(*shading);
+  renderer.options = look->options;
 
   std::vector<double> ms;
   ms.reserve(size_t(a.frames));
   for (int frame = 0; frame < a.frames; ++frame) {
     auto t0 = std::chrono::steady_clock::now();
-    bench::draw_frame(renderer, mesh, material, frame, a.frames, a.copies);
+    bench::draw_frame(renderer, mesh, look->material, frame, a.frames, a.copies);
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     if (frame == 0 && !a.out.empty()) write_image(a.out, renderer.color_image());
   }
@@ -69,7 +81,11 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--mesh", args->mesh, "sphere:SEGS or FILE.obj")->capture_default_str();
   cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
   cmd->add_option("--frames", args->frames, "Frames to render (the median is quoted)")->capture_default_str();
-  cmd->add_option("--shade", args->shade, "flat|gouraud|phong|wire")->capture_default_str();
+  cmd->add_option("--shade", args->shade, "flat|gouraud|phong|wire|tex|env")->capture_default_str();
+  cmd->add_option("--tex", args->tex, "Texture for tex and env (default: the 256x256 checkerboard)");
+  cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear (default trilinear)");
+  cmd->add_flag("--affine", args->affine, "Affine (screen-linear) interpolation, as the seed could afford");
+  cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor per side, 1..4")->capture_default_str();
   cmd->add_option("--copies", args->copies, "Draw the mesh N times per frame, in a square grid")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Rendering threads (the renderer runs on one thread for now)")
       ->capture_default_str();

@@ -3,11 +3,15 @@
 // frame as the OpenGL reference.
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "velocity/material.hpp"
 #include "velocity/mesh.hpp"
 #include "velocity/renderer.hpp"
+#include "velocity/texture.hpp"
 
 namespace velocity::bench {
 
@@ -17,12 +21,19 @@ namespace velocity::bench {
 // Throws velocity::Error for a bad spec or file.
 Mesh make_mesh(const std::string& spec);
 
-// The convention's material for a shading mode: colour (0.8, 0.7, 0.6); Phong adds
-// white specular 0.5 with exponent 32; wireframe is (0.9, 0.9, 0.9).
-Material make_material(Shading shading);
+// How the convention draws one of its shading modes: the material and renderer options.
+struct Look {
+  Material material;
+  RenderOptions options;
+};
 
-// Renderer options for a shading mode: back faces culled except in wireframe.
-RenderOptions make_options(Shading shading);
+// The convention's look for "flat", "gouraud", "phong", "wire", "tex" or "env" (nullopt
+// for anything else): material colour (0.8, 0.7, 0.6); "phong" adds white specular 0.5
+// with exponent 32; "wire" is (0.9, 0.9, 0.9), unculled; "tex" is Gouraud lighting of a
+// white material modulating `texture` (trilinear); "env" is "phong" with the base colour
+// from `texture` used as a sphere environment map. A null `texture` means the
+// convention's 256x256 checkerboard.
+std::optional<Look> make_look(std::string_view shade, std::shared_ptr<const Texture> texture = nullptr);
 
 // Draws frame `frame` of `frames`: camera at (0, 0, 3) looking down -Z, 45 degrees,
 // near 0.1, far 100; the light from (0.3, 0.5, 1) in eye space; the mesh turned

@@ -1,11 +1,13 @@
 // Surface appearance: colour, shading mode, specular highlight, sidedness.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "velocity/math.hpp"
+#include "velocity/texture.hpp"
 
 namespace velocity {
 
@@ -17,6 +19,12 @@ enum class Shading {
   VertexColor,  // the mesh's per-vertex colours interpolated, unlit (seed 002)
   Wireframe,    // triangle edges as lines, unlit, with depth
   Points,       // vertices as points, unlit, with depth
+};
+
+// How a base texture combines with the lighting.
+enum class TextureMode {
+  Modulate,  // texture colour times the lit colour (OpenGL's GL_MODULATE)
+  Replace,   // the texture colour as it is, unlit
 };
 
 std::string_view to_string(Shading shading);
@@ -32,6 +40,17 @@ struct Material {
   float shininess = 32.0f;
   // Two-sided: back faces are drawn (not culled) and lit with the normal flipped.
   bool two_sided = false;
+
+  // Base-colour texture, addressed by the mesh's uvs; multiplies `color`.
+  std::shared_ptr<const Texture> texture;
+  TextureMode texture_mode = TextureMode::Modulate;
+  // Sphere environment map, addressed by the eye-space normal: u = 0.5 + 0.5 Nx,
+  // v = 0.5 + 0.5 Ny (seed 000). Per vertex in flat and Gouraud shading, per pixel in
+  // Phong. The base colour becomes mix(base, environment, env_mix).
+  std::shared_ptr<const Texture> env_map;
+  float env_mix = 1.0f;
+  Filter filter = Filter::Trilinear;
+  Wrap wrap = Wrap::Repeat;
 };
 
 }  // namespace velocity

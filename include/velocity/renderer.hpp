@@ -31,6 +31,17 @@ struct RenderOptions {
   DepthMode depth_mode = DepthMode::ZBuffer;
   bool cull_back_faces = true;       // two-sided materials are never culled
   std::optional<Shading> shading;    // when set, overrides every material's shading
+  // When set, replace every material's base texture / environment map / filter.
+  std::shared_ptr<const Texture> texture;
+  std::shared_ptr<const Texture> env_map;
+  std::optional<Filter> filter;
+  // Interpolate linearly in screen space instead of perspective-correct (the seed's
+  // affine texture mapping, to see the difference; depth stays correct).
+  bool affine = false;
+  // Super-sampling: render at ssaa x ssaa times the output size (colour and depth at
+  // every sample), then average each ssaa x ssaa block (box filter). 1..4; 3 is seed
+  // 000's high-resolution mode (800x600 out, 2400x1800 inside).
+  int ssaa = 1;
 };
 
 // What the last frame did, for --verbose output and tests.
@@ -54,7 +65,8 @@ class Renderer {
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
 
-  // Changes the framebuffer size (same limits as the constructor).
+  // Changes the output size (same limits as the constructor; with super-sampling the
+  // sample buffer, size x ssaa, must also fit 16384 a side).
   void resize(int width, int height);
   int width() const;
   int height() const;
@@ -74,9 +86,13 @@ class Renderer {
   const FrameStats& end_frame();
 
   const FrameStats& stats() const;
+  // The output image: with super-sampling, each pixel is the mean of its samples.
   Image color_image() const;
   // See Framebuffer::depth_image: nearest white, farthest drawn dark grey, empty black.
+  // With super-sampling, each pixel shows its nearest sample.
   Image depth_image() const;
+  // Bytes held by the sample buffers (colour and depth) at the current size and ssaa.
+  size_t framebuffer_bytes() const;
 
  private:
   struct Impl;

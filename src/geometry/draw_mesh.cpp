@@ -30,20 +30,32 @@ bool front_facing_homogeneous(const Vec4& a, const Vec4& b, const Vec4& c) {
   return det > 0;
 }
 
-Kernel kernel_for(Shading s) {
-  switch (s) {
-    case Shading::Flat: return Kernel::Flat;
-    case Shading::Phong: return Kernel::Phong;
-    default: return Kernel::Smooth;
-  }
-}
+// How one face is drawn: the kernel, its varyings, and where its uvs come from.
+struct FacePlan {
+  Kernel kernel = Kernel::Flat;
+  Filter filter = Filter::Nearest;
+  int num_varyings = 0;
+  bool uv_from_env = false;  // flat/Gouraud environment mapping: per-vertex normal -> uv
+  bool white = false;        // "replace": the texture as it is, unlit
+};
 
-int varyings_for(Shading s) {
-  switch (s) {
+FacePlan plan_face(Shading shading, const Texture* tex, const Texture* env, bool replace, Filter filter) {
+  FacePlan p;
+  p.filter = filter;
+  if (tex && replace) return p.kernel = Kernel::FlatTex, p.num_varyings = 2, p.white = true, p;
+  switch (shading) {
+    case Shading::Flat:
+      if (tex || env) p.kernel = Kernel::FlatTex, p.num_varyings = 2, p.uv_from_env = !tex;
+      return p;
     case Shading::Gouraud:
-    case Shading::VertexColor: return 3;
-    case Shading::Phong: return raster::kPhongVaryings;
-    default: return 0;
+    case Shading::VertexColor:
+      if (tex || env) return p.kernel = Kernel::SmoothTex, p.num_varyings = 5, p.uv_from_env = !tex, p;
+      return p.kernel = Kernel::Smooth, p.num_varyings = 3, p;
+    case Shading::Phong:
+      p.kernel = tex && env ? Kernel::PhongTexEnv : tex ? Kernel::PhongTex : env ? Kernel::PhongEnv : Kernel::Phong;
+      p.num_varyings = (tex || env) ? raster::kPhongTexVaryings : raster::kPhongVaryings;
+      return p;
+    default: return p;
   }
 }
 
@@ -130,44 +142,71 @@ class MeshDraw {
     return mat.color;
   }
 
-  uint32_t draw_index(uint32_t slot, const Material& mat) {
+  uint32_t draw_index(uint32_t slot, const Material& mat, const Texture* tex, const Texture* env) {
     if (slot != current_slot_) {
       current_slot_ = slot;
       current_draw_ = uint32_t(out_.draws.size());
-      out_.draws.push_back({mat.specular, mat.shininess});
+      out_.draws.push_back({mat.specular, mat.shininess, tex, env, mat.env_mix, mat.wrap == Wrap::Repeat});
     }
     return current_draw_;
   }
 
-  // Varyings of one corner for the given shading; `flip` lights the back of the face.
-  void corner_varyings(Shading shading, uint32_t v, uint32_t f, uint32_t slot, const Material& mat, bool flip,
-                       float* out) {
-    Vec3 base = base_color(v, f, mat);
-    switch (shading) {
-      case Shading::Gouraud: {
-        Vec3 c;
-        if (flip) {
-          ensure_eye(v);
-          c = apply(light(p_.lights, -eye_normal(v, f), s_.eye_pos[v], mat.specular, mat.shininess), base);
-        } else {
-          c = apply(vertex_light(v, f, slot, mat), base);
+  const Texture* texture_of(const Material& mat) const {
+    return p_.options.texture ? p_.options.texture.get() : mat.texture.get();
+  }
+  const Texture* env_of(const Material& mat) const {
+    return p_.options.env_map ? p_.options.env_map.get() : mat.env_map.get();
+  }
+
+  // Varyings of one corner (layout in raster::Kernel); `flip` lights the back of the face.
+  void corner_varyings(const FacePlan& plan, Shading shading, uint32_t v, uint32_t f, uint32_t slot,
+                       const Material& mat, bool flip, float* out) {
+    // Vertex-colour shading shows the mesh's own colours whatever the material.
+    Vec3 base = shading == Shading::VertexColor && !mesh_.colors.empty() ? mesh_.colors[v] : base_color(v, f, mat);
+    int uv_at = -1;
+    switch (plan.kernel) {
+      case Kernel::Smooth:
+      case Kernel::SmoothTex: {
+        Vec3 c = base;
+        if (shading != Shading::VertexColor) {
+          if (flip) {
+            ensure_eye(v);
+            c = apply(light(p_.lights, -eye_normal(v, f), s_.eye_pos[v], mat.specular, mat.shininess), base);
+          } else {
+            c = apply(vertex_light(v, f, slot, mat), base);
+          }
+          c = clamp01(c);  // as OpenGL clamps vertex colours before interpolating
         }
-        c = clamp01(c);  // as OpenGL clamps vertex colours before interpolating
         out[0] = c.x, out[1] = c.y, out[2] = c.z;
+        uv_at = plan.kernel == Kernel::SmoothTex ? 3 : -1;
         break;
       }
-      case Shading::VertexColor: out[0] = base.x, out[1] = base.y, out[2] = base.z; break;
-      case Shading::Phong: {
+      case Kernel::FlatTex: uv_at = 0; break;
+      case Kernel::Phong:
+      case Kernel::PhongTex:
+      case Kernel::PhongEnv:
+      case Kernel::PhongTexEnv: {
         Vec3 n = eye_normal(v, f);
         if (flip) n = -n;
         const Vec3& e = s_.eye_pos[v];
         out[0] = base.x, out[1] = base.y, out[2] = base.z;
         out[3] = n.x, out[4] = n.y, out[5] = n.z;
         out[6] = e.x, out[7] = e.y, out[8] = e.z;
+        uv_at = plan.kernel == Kernel::Phong ? -1 : 9;
         break;
       }
       default: break;
     }
+    if (uv_at < 0) return;
+    Vec2 uv;
+    if (plan.uv_from_env) {
+      Vec3 n = eye_normal(v, f);
+      if (flip) n = -n;
+      uv = {0.5f + 0.5f * n.x, 0.5f + 0.5f * n.y};  // seed 000's sphere map, per vertex
+    } else if (!mesh_.uvs.empty()) {
+      uv = mesh_.uvs[v];
+    }
+    out[uv_at] = uv.x, out[uv_at + 1] = uv.y;
   }
 
   uint32_t flat_color(uint32_t f, const Material& mat, bool flip) {
@@ -212,17 +251,24 @@ class MeshDraw {
     if (shading == Shading::Points) return draw_points(tri, color);
 
     const bool flip = !front && mat.two_sided;
-    const int nvar = varyings_for(shading);
+    const Texture* tex = texture_of(mat);
+    const Texture* env = env_of(mat);
+    const FacePlan plan = plan_face(shading, tex, env, mat.texture_mode == TextureMode::Replace,
+                                    p_.options.filter.value_or(mat.filter));
+    const int nvar = plan.num_varyings;
     raster::TriangleSetup setup;
-    setup.kernel = uint8_t(kernel_for(shading));
-    setup.draw = draw_index(slot, mat);
-    setup.flat_color = shading == Shading::Flat ? flat_color(f, mat, flip) : 0;
+    setup.kernel = raster::kernel_id(plan.kernel, plan.filter);
+    setup.draw = draw_index(slot, mat, tex, env);
+    if (plan.white)
+      setup.flat_color = 0xffffffffu;
+    else if (plan.kernel == Kernel::Flat || plan.kernel == Kernel::FlatTex)
+      setup.flat_color = flat_color(f, mat, flip);
 
     ClipVertex poly[kMaxClippedVertices];
     const uint32_t corners[3] = {i0, i1, i2};
     for (int k = 0; k < 3; ++k) {
       poly[k].pos = s_.clip[corners[k]];
-      if (nvar) corner_varyings(shading, corners[k], f, slot, mat, flip, poly[k].var);
+      if (nvar) corner_varyings(plan, shading, corners[k], f, slot, mat, flip, poly[k].var);
     }
     if (!must_clip) {
       emit_triangle(setup, s_.screen[i0], s_.screen[i1], s_.screen[i2], poly[0].var, poly[1].var, poly[2].var, nvar);
@@ -241,7 +287,7 @@ class MeshDraw {
                      const ScreenVertex& c, const float* va, const float* vb, const float* vc, int nvar) {
     if (out_.triangles.size() >= raster::kMaxPrimitivesPerFrame) return void(stats_.triangles_culled++);
     raster::TriangleSetup& t = out_.triangles.emplace_back(proto);
-    if (!raster::setup_triangle(a, b, c, va, vb, vc, nvar, p_.width, p_.height, t)) {
+    if (!raster::setup_triangle(a, b, c, va, vb, vc, nvar, p_.width, p_.height, p_.options.affine, t)) {
       out_.triangles.pop_back();
       return void(stats_.triangles_culled++);
     }

@@ -1,10 +1,12 @@
 #include "raster/rasterize.hpp"
 
 #include <cmath>
+#include <iterator>
 
 #include "framebuffer/framebuffer.hpp"
 #include "geometry/lighting.hpp"
 #include "raster/coverage.hpp"
+#include "raster/sampler.hpp"
 
 namespace velocity::raster {
 
@@ -18,17 +20,12 @@ struct TileTarget {
 };
 
 // --- shaders: what a kernel computes per pixel, given the interpolated values.
-
-struct FlatShader {
-  uint32_t color;
-  FlatShader(const TriangleSetup& t, const DrawState&, const FramePrimitives&) : color(t.flat_color) {}
-  void begin(float, float) {}
-  uint32_t shade() const { return color; }
-  void step() {}
-};
+// Each has begin(fx, fy) at a span's first pixel (offsets from the set-up's anchor),
+// shade(x) per pixel and step() to the next pixel on the right.
 
 // Perspective-correct interpolation of N varyings: each plane holds varying / w, and
-// 1 / w is interpolated alongside, so varying = plane(x, y) / inv_w(x, y).
+// 1 / w is interpolated alongside, so varying = plane(x, y) / inv_w(x, y). In affine
+// mode the set-up made 1 / w constant, so the same code interpolates linearly.
 template <int N>
 struct Varyings {
   const TriangleSetup& t;
@@ -45,31 +42,132 @@ struct Varyings {
     for (int i = 0; i < N; ++i) v[i] += dv[i];
   }
   float w() const { return 1.0f / inv_w; }
+  // Varying i at this pixel, and its screen-space derivatives: d(V/Q) = (dV - (V/Q) dQ) / Q.
+  float value(int i, float w_) const { return v[i] * w_; }
+  float ddx(int i, float value_, float w_) const { return (dv[i] - value_ * dinv_w) * w_; }
+  float ddy(int i, float value_, float w_) const { return (t.var[i].dy - value_ * t.inv_w.dy) * w_; }
+};
+
+// The level of detail of a texture addressed by varyings iu, iv: computed once per 2x2
+// pixel quad (at the quad's first pixel in the span), from the analytic screen-space
+// derivatives of the perspective-correct uv.
+template <Filter F, int N>
+struct UvLookup {
+  const Texture& tex;
+  bool repeat;
+  float lod = 0;
+  template <class In>
+  Rgba operator()(const In& in, int iu, int iv, int x, bool first, float w) {
+    float u = in.value(iu, w), v = in.value(iv, w);
+    if constexpr (F == Filter::Trilinear) {
+      if (first || !(x & 1))
+        lod = level_of_detail(tex, in.ddx(iu, u, w), in.ddx(iv, v, w), in.ddy(iu, u, w), in.ddy(iv, v, w));
+    }
+    return sample<F>(tex, u, v, lod, repeat);
+  }
+};
+
+struct FlatShader {
+  uint32_t color;
+  FlatShader(const TriangleSetup& t, const DrawState&, const FramePrimitives&) : color(t.flat_color) {}
+  void begin(float, float) {}
+  uint32_t shade(int) { return color; }
+  void step() {}
 };
 
 struct SmoothShader {
   Varyings<3> in;
   SmoothShader(const TriangleSetup& t, const DrawState&, const FramePrimitives&) : in(t) {}
   void begin(float fx, float fy) { in.begin(fx, fy); }
-  uint32_t shade() const {
+  uint32_t shade(int) {
     float w = in.w();
     return pack_rgba(in.v[0] * w, in.v[1] * w, in.v[2] * w);
   }
   void step() { in.step(); }
 };
 
+// The constant colour (lit per face, or white for "replace") times the texture.
+template <Filter F>
+struct FlatTexShader {
+  Varyings<2> in;
+  Rgba color;
+  UvLookup<F, 2> lookup;
+  bool first = true;
+  FlatTexShader(const TriangleSetup& t, const DrawState& d, const FramePrimitives&)
+      : in(t), color(unpack(t.flat_color)), lookup{*d.texture, d.repeat} {}
+  void begin(float fx, float fy) { in.begin(fx, fy), first = true; }
+  uint32_t shade(int x) {
+    Rgba c = lookup(in, 0, 1, x, first, in.w());
+    first = false;
+    return pack_rgba(color.r * c.r, color.g * c.g, color.b * c.b);
+  }
+  void step() { in.step(); }
+};
+
+// Gouraud's lit colour times the texture (OpenGL's GL_MODULATE).
+template <Filter F>
+struct SmoothTexShader {
+  Varyings<5> in;
+  UvLookup<F, 5> lookup;
+  bool first = true;
+  SmoothTexShader(const TriangleSetup& t, const DrawState& d, const FramePrimitives&)
+      : in(t), lookup{*d.texture, d.repeat} {}
+  void begin(float fx, float fy) { in.begin(fx, fy), first = true; }
+  uint32_t shade(int x) {
+    float w = in.w();
+    Rgba c = lookup(in, 3, 4, x, first, w);
+    first = false;
+    return pack_rgba(in.v[0] * w * c.r, in.v[1] * w * c.g, in.v[2] * w * c.b);
+  }
+  void step() { in.step(); }
+};
+
+// Per-pixel lighting; optionally a base texture (uv) and a sphere environment map
+// (addressed by the normal: u = 0.5 + 0.5 Nx, v = 0.5 + 0.5 Ny).
+template <Filter F, bool kTex, bool kEnv>
 struct PhongShader {
-  Varyings<kPhongVaryings> in;
+  static constexpr int N = (kTex || kEnv) ? kPhongTexVaryings : kPhongVaryings;
+  Varyings<N> in;
   const DrawState& draw;
   const geometry::EyeLights& lights;
+  float tex_lod = 0, env_lod = 0;
+  bool first = true;
   PhongShader(const TriangleSetup& t, const DrawState& d, const FramePrimitives& f)
       : in(t), draw(d), lights(*f.lights) {}
-  void begin(float fx, float fy) { in.begin(fx, fy); }
-  uint32_t shade() const {
+  void begin(float fx, float fy) { in.begin(fx, fy), first = true; }
+
+  static Vec2 env_uv(Vec3 n_plane) {
+    Vec3 n = normalize(n_plane);
+    return {0.5f + 0.5f * n.x, 0.5f + 0.5f * n.y};
+  }
+
+  uint32_t shade(int x) {
     float w = in.w();
     Vec3 base{in.v[0] * w, in.v[1] * w, in.v[2] * w};
-    Vec3 n = normalize(Vec3{in.v[3], in.v[4], in.v[5]});  // w cancels in the normalisation
+    Vec3 n_plane{in.v[3], in.v[4], in.v[5]};  // the normal / w: w cancels in normalising
+    Vec3 n = normalize(n_plane);
     Vec3 p{in.v[6] * w, in.v[7] * w, in.v[8] * w};
+    const bool new_quad = first || !(x & 1);
+    if constexpr (kTex) {
+      float u = in.value(9, w), v = in.value(10, w);
+      if (F == Filter::Trilinear && new_quad)
+        tex_lod = level_of_detail(*draw.texture, in.ddx(9, u, w), in.ddx(10, v, w), in.ddy(9, u, w), in.ddy(10, v, w));
+      Rgba c = sample<F>(*draw.texture, u, v, tex_lod, draw.repeat);
+      base = base * Vec3{c.r, c.g, c.b};
+    }
+    if constexpr (kEnv) {
+      Vec2 e = env_uv(n_plane);
+      if (F == Filter::Trilinear && new_quad) {
+        // Finite differences to the right and below, as a GPU's pixel quad would.
+        const auto& t = in.t;
+        Vec2 ex = env_uv({in.v[3] + in.dv[3], in.v[4] + in.dv[4], in.v[5] + in.dv[5]});
+        Vec2 ey = env_uv({in.v[3] + t.var[3].dy, in.v[4] + t.var[4].dy, in.v[5] + t.var[5].dy});
+        env_lod = level_of_detail(*draw.env_map, ex.x - e.x, ex.y - e.y, ey.x - e.x, ey.y - e.y);
+      }
+      Rgba c = sample<F>(*draw.env_map, e.x, e.y, env_lod, false);
+      base = base + (Vec3{c.r, c.g, c.b} - base) * draw.env_mix;
+    }
+    first = false;
     Vec3 c = geometry::apply(geometry::light(lights, n, p, draw.specular, draw.shininess), base);
     return pack_rgba(c.x, c.y, c.z);
   }
@@ -90,7 +188,7 @@ void draw_triangle(const TriangleSetup& t, const FramePrimitives& f, const TileT
     for (int x = x_first; x <= x_last; ++x) {
       if (!kDepthTest || z < depth[x]) {
         if constexpr (kDepthTest) depth[x] = z;
-        color[x] = shader.shade();
+        color[x] = shader.shade(x);
       }
       z += t.depth.dx;
       shader.step();
@@ -100,12 +198,32 @@ void draw_triangle(const TriangleSetup& t, const FramePrimitives& f, const TileT
 
 using TriangleFn = void (*)(const TriangleSetup&, const FramePrimitives&, const TileTarget&);
 
-template <bool kDepthTest>
+// One entry per (kernel, filter), indexed by kernel_id().
+template <bool D, class S>
+constexpr TriangleFn fn = &draw_triangle<D, S>;
+template <bool D, template <Filter> class S>
+constexpr TriangleFn kFiltered[3] = {fn<D, S<Filter::Nearest>>, fn<D, S<Filter::Bilinear>>, fn<D, S<Filter::Trilinear>>};
+template <Filter F>
+using PhongPlain = PhongShader<F, false, false>;
+template <Filter F>
+using PhongTex = PhongShader<F, true, false>;
+template <Filter F>
+using PhongEnv = PhongShader<F, false, true>;
+template <Filter F>
+using PhongTexEnv = PhongShader<F, true, true>;
+
+template <bool D>
 constexpr TriangleFn kTriangleKernels[] = {
-    &draw_triangle<kDepthTest, FlatShader>,
-    &draw_triangle<kDepthTest, SmoothShader>,
-    &draw_triangle<kDepthTest, PhongShader>,
+    fn<D, FlatShader>,       fn<D, FlatShader>,       fn<D, FlatShader>,        // Flat
+    fn<D, SmoothShader>,     fn<D, SmoothShader>,     fn<D, SmoothShader>,      // Smooth
+    kFiltered<D, PhongPlain>[0],  kFiltered<D, PhongPlain>[1],  kFiltered<D, PhongPlain>[2],
+    kFiltered<D, FlatTexShader>[0], kFiltered<D, FlatTexShader>[1], kFiltered<D, FlatTexShader>[2],
+    kFiltered<D, SmoothTexShader>[0], kFiltered<D, SmoothTexShader>[1], kFiltered<D, SmoothTexShader>[2],
+    kFiltered<D, PhongTex>[0],    kFiltered<D, PhongTex>[1],    kFiltered<D, PhongTex>[2],
+    kFiltered<D, PhongEnv>[0],    kFiltered<D, PhongEnv>[1],    kFiltered<D, PhongEnv>[2],
+    kFiltered<D, PhongTexEnv>[0], kFiltered<D, PhongTexEnv>[1], kFiltered<D, PhongTexEnv>[2],
 };
+static_assert(std::size(kTriangleKernels<true>) == size_t(Kernel::Count) * 3);
 
 template <bool kDepthTest>
 inline void plot(const TileTarget& target, int x, int y, float z, uint32_t color) {

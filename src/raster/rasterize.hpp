@@ -7,6 +7,7 @@
 
 #include "raster/bins.hpp"
 #include "raster/raster_types.hpp"
+#include "velocity/texture.hpp"
 
 namespace velocity {
 struct Framebuffer;
@@ -19,17 +20,31 @@ namespace velocity::raster {
 
 // Shading kernels. Which one a triangle uses is decided once, at set-up, from its
 // draw's shading mode: the inner loops never branch on it.
-enum class Kernel : uint8_t {
-  Flat,    // constant colour (flat shading, and unlit constant colours)
-  Smooth,  // three varyings: a colour, interpolated perspective-correct (Gouraud, vertex colour)
-  Phong,   // nine varyings: base colour, eye-space normal, eye-space position
-};
+//
+// Varyings (interpolated perspective-correct) per kernel:
+//   Flat         none: the set-up's constant colour
+//   Smooth       0-2 colour (Gouraud's lit colour, or vertex colours)
+//   Phong        0-2 base colour, 3-5 eye-space normal, 6-8 eye-space position
+//   FlatTex      0-1 uv; the constant colour times the texture
+//   SmoothTex    0-2 colour, 3-4 uv; colour times the texture
+//   Phong*       as Phong, plus 9-10 uv for the base texture; the environment map is
+//                addressed per pixel by the normal
+enum class Kernel : uint8_t { Flat, Smooth, Phong, FlatTex, SmoothTex, PhongTex, PhongEnv, PhongTexEnv, Count };
 inline constexpr int kPhongVaryings = 9;
+inline constexpr int kPhongTexVaryings = 11;
+
+// Kernel and filter as one index into the kernel tables (the filter only matters for the
+// textured kernels).
+inline constexpr uint8_t kernel_id(Kernel k, Filter f) { return uint8_t(uint8_t(k) * 3 + uint8_t(f)); }
 
 // Per-draw parameters the per-pixel kernels need.
 struct DrawState {
   float specular = 0;
   float shininess = 32;
+  const Texture* texture = nullptr;
+  const Texture* env_map = nullptr;
+  float env_mix = 1;
+  bool repeat = true;
 };
 
 struct FramePrimitives {

@@ -28,7 +28,8 @@ Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& 
 }
 
 bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const float* var0,
-                    const float* var1, const float* var2, int nvar, int width, int height, TriangleSetup& t) {
+                    const float* var1, const float* var2, int nvar, int width, int height, bool affine,
+                    TriangleSetup& t) {
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   const float* var[3] = {var0, var1, var2};
   int64_t X[3], Y[3];
@@ -76,6 +77,7 @@ bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const Screen
   for (int i = 0; i < 3; ++i) vals[i] = v[i]->z;
   t.depth = make_plane(x, y, vals, inv_area, ax, ay);
   double iw[3] = {v[0]->inv_w, v[1]->inv_w, v[2]->inv_w};
+  if (affine) iw[0] = iw[1] = iw[2] = 1.0;
   t.inv_w = make_plane(x, y, iw, inv_area, ax, ay);
   for (int k = 0; k < nvar; ++k) {
     for (int i = 0; i < 3; ++i) vals[i] = double(var[i][k]) * iw[i];

@@ -25,9 +25,10 @@ Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& 
 // Sets up a triangle. `var[i]` points at vertex i's `num_varyings` varyings (not yet
 // divided by w). Returns false when the triangle covers no pixel centre inside the
 // width x height framebuffer (degenerate, or outside the scissor). Either winding is
-// accepted; culling is the caller's decision, made with facing().
+// accepted; culling is the caller's decision, made with facing(). `affine` makes 1/w
+// constant, so that the kernels interpolate varyings linearly in screen space.
 bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const float* var0,
-                    const float* var1, const float* var2, int num_varyings, int width, int height,
+                    const float* var1, const float* var2, int num_varyings, int width, int height, bool affine,
                     TriangleSetup& out);
 
 // Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.

@@ -48,19 +48,30 @@ Mesh make_mesh(const std::string& spec) {
   return mesh;
 }
 
-Material make_material(Shading shading) {
-  Material m;
+std::optional<Look> make_look(std::string_view shade, std::shared_ptr<const Texture> texture) {
+  Look look;
+  Material& m = look.material;
   m.color = {0.8f, 0.7f, 0.6f};
-  m.shading = shading;
-  if (shading == Shading::Phong) m.specular = 0.5f, m.shininess = 32.0f;
-  if (shading == Shading::Wireframe) m.color = {0.9f, 0.9f, 0.9f};
-  return m;
-}
-
-RenderOptions make_options(Shading shading) {
-  RenderOptions o;
-  o.cull_back_faces = shading != Shading::Wireframe;
-  return o;
+  auto textured = [&] { return texture ? texture : std::make_shared<const Texture>(make_checkerboard()); };
+  if (shade == "flat") {
+    m.shading = Shading::Flat;
+  } else if (shade == "gouraud") {
+    m.shading = Shading::Gouraud;
+  } else if (shade == "phong") {
+    m.shading = Shading::Phong, m.specular = 0.5f, m.shininess = 32.0f;
+  } else if (shade == "wire") {
+    m.shading = Shading::Wireframe, m.color = {0.9f, 0.9f, 0.9f};
+    look.options.cull_back_faces = false;
+  } else if (shade == "tex") {
+    m.shading = Shading::Gouraud, m.color = {1, 1, 1};
+    m.texture = textured(), m.filter = Filter::Trilinear;
+  } else if (shade == "env") {
+    m.shading = Shading::Phong, m.specular = 0.5f, m.shininess = 32.0f;
+    m.env_map = textured(), m.env_mix = 1.0f, m.filter = Filter::Trilinear;
+  } else {
+    return std::nullopt;
+  }
+  return look;
 }
 
 void draw_frame(Renderer& renderer, const Mesh& mesh, const Material& material, int frame, int frames, int copies) {

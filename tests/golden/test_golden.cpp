@@ -37,14 +37,14 @@ class Golden : public ::testing::TestWithParam<GoldenCase> {};
 
 TEST_P(Golden, MatchesLlvmpipe) {
   const GoldenCase& c = GetParam();
-  auto shading = velocity::parse_shading(c.shade);
-  ASSERT_TRUE(shading.has_value());
+  auto look = velocity::bench::make_look(c.shade);
+  ASSERT_TRUE(look.has_value());
 
   // Velocity, through the library's implementation of the scene convention.
   velocity::Mesh mesh = velocity::bench::make_mesh(c.mesh);
   velocity::Renderer renderer(c.width, c.height);
-  renderer.options = velocity::bench::make_options(*shading);
-  velocity::bench::draw_frame(renderer, mesh, velocity::bench::make_material(*shading), c.frame, c.frames);
+  renderer.options = look->options;
+  velocity::bench::draw_frame(renderer, mesh, look->material, c.frame, c.frames);
   vref::Image ours = to_vref(renderer.color_image());
 
   // llvmpipe, from the reference's own independent mesh and GL state.
@@ -79,6 +79,8 @@ std::vector<GoldenCase> cases() {
       v.push_back({mesh, w, h, "flat", 40.0});
       v.push_back({mesh, w, h, "gouraud", 40.0});
       v.push_back({mesh, w, h, "phong", 35.0});
+      v.push_back({mesh, w, h, "tex", 35.0});
+      v.push_back({mesh, w, h, "env", 35.0});
     }
   // A turned frame, so the test does not only see the mesh from its front.
   v.push_back({obj, 640, 360, "gouraud", 40.0, 5, 12});

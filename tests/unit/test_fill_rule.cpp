@@ -17,7 +17,7 @@ constexpr int W = 203, H = 137;  // not tile multiples, on purpose
 // renderer does) and adds 1 to every pixel it covers.
 void rasterize_count(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, std::vector<int>& count) {
   TriangleSetup t;
-  if (!setup_triangle(a, b, c, nullptr, nullptr, nullptr, 0, W, H, t)) return;
+  if (!setup_triangle(a, b, c, nullptr, nullptr, nullptr, 0, W, H, false, t)) return;
   for (int ty = 0; ty < H; ty += kTileSize)
     for (int tx = 0; tx < W; tx += kTileSize) {
       PixelRect tile{tx, ty, std::min(tx + kTileSize, W), std::min(ty + kTileSize, H)};
@@ -91,7 +91,7 @@ TEST(FillRule, SpansMatchPerPixelEdgeFunctions) {
   for (int n = 0; n < 2000; ++n) {
     TriangleSetup t;
     if (!setup_triangle(sv(pos(rng), pos(rng)), sv(pos(rng), pos(rng)), sv(pos(rng), pos(rng)), nullptr, nullptr,
-                        nullptr, 0, W, H, t))
+                        nullptr, 0, W, H, false, t))
       continue;
     std::vector<uint8_t> hit(size_t(W) * H, 0);
     for_each_span(t, PixelRect{0, 0, W, H}, [&](int y, int x0, int x1) {

@@ -86,7 +86,7 @@ TEST(Render, DepthBufferHoldsWindowDepth) {
 // Painter's mode sorts by depth, so the near square wins even when drawn first, without
 // a depth buffer (it stays clear).
 TEST(Render, PainterDrawsFarToNear) {
-  Mesh near_sq = square(1, -3), far_sq = square(2, -6);
+  Mesh near_sq = square(1, -3), far_sq = square(3, -6);  // the far one fills the view
   Material red = unlit({1, 0, 0}), blue = unlit({0, 0, 1});
   Renderer r(64, 64);
   r.options.depth_mode = DepthMode::Painter;
@@ -96,7 +96,7 @@ TEST(Render, PainterDrawsFarToNear) {
   r.end_frame();
   Image img = r.color_image();
   EXPECT_EQ(rgb(img, 32, 32).x, 1.0f);
-  EXPECT_EQ(rgb(img, 10, 32).z, 1.0f);  // the far square shows around the near one
+  EXPECT_EQ(rgb(img, 2, 32).z, 1.0f);  // the far square shows around the near one
   Image depth = r.depth_image();
   EXPECT_EQ(depth.pixel(32, 32)[0], 0);  // no depth written
   // Without the sort (z-buffer off would draw in order), the far square would cover it:

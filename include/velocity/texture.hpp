@@ -1,0 +1,60 @@
+// Textures: an RGBA8 image with its mip chain, and how it is sampled.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "velocity/image.hpp"
+
+namespace velocity {
+
+enum class Filter {
+  Nearest,    // the texel under the sample point
+  Bilinear,   // the four nearest texels, weighted (seed 000's "bi-linear interpolation")
+  Trilinear,  // bilinear in the two nearest mip levels, blended by the level of detail
+};
+std::optional<Filter> parse_filter(std::string_view name);  // "nearest", "bilinear", "trilinear"
+
+enum class Wrap {
+  Repeat,  // u and v wrap around: 1.25 samples like 0.25
+  Clamp,   // u and v are clamped to the edge texels
+};
+
+class Texture {
+ public:
+  struct Level {
+    int width, height;
+    std::vector<uint32_t> texels;  // RGBA8, byte 0 red; row 0 is v = 0 (the image's top row)
+  };
+
+  // Builds the texture and its whole mip chain down to 1x1, each level the 2x2 box
+  // average of the one above (odd sizes round down, as OpenGL's). Throws
+  // velocity::Error for an empty image.
+  explicit Texture(const Image& image);
+
+  int width() const { return levels_[0].width; }
+  int height() const { return levels_[0].height; }
+  const std::vector<Level>& levels() const { return levels_; }
+  size_t memory_bytes() const;
+
+ private:
+  std::vector<Level> levels_;
+};
+
+// Reads an image file as a texture: PCX by the extension, everything else through
+// stb_image (PNG, JPEG, TGA, BMP, GIF). Throws velocity::Error naming the file.
+std::shared_ptr<const Texture> load_texture(const std::string& path);
+
+// The benchmark convention's default texture: 256x256, 32-texel squares, colours
+// (230, 200, 80) and (40, 60, 160), starting with the latter at texel (0, 0).
+Image make_checkerboard(int size = 256, int square = 32);
+
+// A sphere environment map (as seen in a mirror ball) of a studio: a bright sky
+// gradient above the horizon, a darker floor below, and two soft lights.
+Image make_environment_map(int size = 256);
+
+}  // namespace velocity
