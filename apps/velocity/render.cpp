@@ -7,6 +7,7 @@
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/renderer.hpp"
+#include "velocity/texture.hpp"
 
 namespace velocity::cli {
 
@@ -29,9 +30,42 @@ struct RenderArgs {
   std::string camera;
   std::string out = "velocity.png";
   std::string depth_out;
+  std::string texture, env, filter;
   float fov = 0;
-  bool ortho = false, painter = false, no_cull = false, verbose = false, swap_yz = true;
+  int ssaa = 0;  // 0: 3 for the demo scene, 1 for anything else
+  bool ortho = false, painter = false, no_cull = false, verbose = false, swap_yz = true, affine = false;
 };
+
+// --shade: a shading mode, optionally "+tex" and/or "+env" ("phong+env"); "tex" alone is
+// Gouraud with a texture, "env" alone Phong with an environment map.
+struct ShadeSpec {
+  std::optional<Shading> shading;
+  bool tex = false, env = false;
+};
+
+ShadeSpec parse_shade(const std::string& text) {
+  ShadeSpec spec;
+  std::stringstream ss(text);
+  std::string part;
+  bool first = true;
+  while (std::getline(ss, part, '+')) {
+    if (part == "tex") {
+      spec.tex = true;
+      if (first) spec.shading = Shading::Gouraud;
+    } else if (part == "env") {
+      spec.env = true;
+      if (first) spec.shading = Shading::Phong;
+    } else if (auto s = parse_shading(part); s && first) {
+      spec.shading = s;
+    } else {
+      throw Error("--shade: unknown mode '" + text +
+                  "' (flat, gouraud, phong, color, wire, points, tex, env, or a mode with +tex / +env)");
+    }
+    first = false;
+  }
+  if (first) throw Error("--shade: empty mode");
+  return spec;
+}
 
 // "x,y,z" (looking at the scene's centre) or "x,y,z,yaw,pitch,roll" (degrees). Near and
 // far are refitted around the scene from the new position.
@@ -94,17 +128,32 @@ int run_render(const RenderArgs& a) {
   if (!a.camera.empty()) apply_camera(a.camera, scene);
 
   Renderer renderer(w, h);
+  RenderOptions& o = renderer.options;
   if (!a.shade.empty()) {
-    auto s = parse_shading(a.shade);
-    if (!s) throw Error("--shade: unknown mode '" + a.shade + "' (flat, gouraud, phong, color, wire, points)");
-    renderer.options.shading = s;
+    ShadeSpec spec = parse_shade(a.shade);
+    o.shading = spec.shading;
+    // A mode asking for a texture uses --texture, else the checkerboard; for an
+    // environment map --env, else the generated studio.
+    if (spec.tex && a.texture.empty()) o.texture = std::make_shared<const Texture>(make_checkerboard());
+    if (spec.env && a.env.empty()) o.env_map = std::make_shared<const Texture>(make_environment_map());
   }
-  renderer.options.depth_mode = a.painter ? DepthMode::Painter : DepthMode::ZBuffer;
-  renderer.options.cull_back_faces = !a.no_cull;
+  if (!a.texture.empty()) o.texture = load_texture(a.texture);
+  if (!a.env.empty()) o.env_map = load_texture(a.env);
+  if (!a.filter.empty()) {
+    o.filter = parse_filter(a.filter);
+    if (!o.filter) throw Error("--filter: expected nearest|bilinear|trilinear, got '" + a.filter + "'");
+  }
+  o.affine = a.affine;
+  o.ssaa = a.ssaa ? a.ssaa : (a.model.empty() ? 3 : 1);
+  if (o.ssaa < 1 || o.ssaa > 4) throw Error("--ssaa must be 1..4, got " + std::to_string(o.ssaa));
+  o.depth_mode = a.painter ? DepthMode::Painter : DepthMode::ZBuffer;
+  o.cull_back_faces = !a.no_cull;
   const FrameStats& st = renderer.render(scene);
   write_image(a.out, renderer.color_image());
   if (!a.depth_out.empty()) write_image(a.depth_out, renderer.depth_image());
   if (a.verbose) {
+    std::printf("size=%dx%d ssaa=%d samples=%dx%d framebuffer_bytes=%zu\n", w, h, o.ssaa, w * o.ssaa, h * o.ssaa,
+                renderer.framebuffer_bytes());
     std::printf("objects=%zu culled=%zu triangles=%zu rejected=%zu clipped=%zu backface_or_empty=%zu nonfinite=%zu "
                 "rasterized=%zu lines=%zu points=%zu\n",
                 st.objects, st.objects_culled, st.triangles, st.triangles_rejected, st.triangles_clipped,
@@ -123,7 +172,13 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("model", args->model,
                   "Model file (.asc, .plg, .obj, ...) or cube|sphere|torus; none: the demo scene");
   cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
-  cmd->add_option("--shade", args->shade, "Override shading: flat|gouraud|phong|color|wire|points");
+  cmd->add_option("--shade", args->shade,
+                  "Override shading: flat|gouraud|phong|color|wire|points|tex|env, or MODE+tex, MODE+env, MODE+tex+env");
+  cmd->add_option("--texture", args->texture, "Base texture for every material (PNG, JPEG, TGA, BMP, GIF, PCX)");
+  cmd->add_option("--env", args->env, "Sphere environment map for every material");
+  cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear");
+  cmd->add_flag("--affine", args->affine, "Affine (screen-linear) texture mapping, as the seed could afford");
+  cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor per side, 1..4 (default: 3 for the demo scene, else 1)");
   cmd->add_option("--camera", args->camera, "Camera position x,y,z (looking at the model) or x,y,z,yaw,pitch,roll (degrees)");
   cmd->add_option("--fov", args->fov, "Vertical field of view in degrees");
   cmd->add_flag("--ortho", args->ortho, "Orthographic projection");

@@ -67,6 +67,10 @@ struct UvLookup {
   }
 };
 
+// Flat and Gouraud kernels sample one texture at per-vertex uvs: the base texture, or
+// else the environment map (uvs from the per-vertex normal; clamped, never wrapped).
+inline const Texture& per_vertex_texture(const DrawState& d) { return d.texture ? *d.texture : *d.env_map; }
+
 struct FlatShader {
   uint32_t color;
   FlatShader(const TriangleSetup& t, const DrawState&, const FramePrimitives&) : color(t.flat_color) {}
@@ -94,7 +98,7 @@ struct FlatTexShader {
   UvLookup<F, 2> lookup;
   bool first = true;
   FlatTexShader(const TriangleSetup& t, const DrawState& d, const FramePrimitives&)
-      : in(t), color(unpack(t.flat_color)), lookup{*d.texture, d.repeat} {}
+      : in(t), color(unpack(t.flat_color)), lookup{per_vertex_texture(d), d.texture && d.repeat} {}
   void begin(float fx, float fy) { in.begin(fx, fy), first = true; }
   uint32_t shade(int x) {
     Rgba c = lookup(in, 0, 1, x, first, in.w());
@@ -111,7 +115,7 @@ struct SmoothTexShader {
   UvLookup<F, 5> lookup;
   bool first = true;
   SmoothTexShader(const TriangleSetup& t, const DrawState& d, const FramePrimitives&)
-      : in(t), lookup{*d.texture, d.repeat} {}
+      : in(t), lookup{per_vertex_texture(d), d.texture && d.repeat} {}
   void begin(float fx, float fy) { in.begin(fx, fy), first = true; }
   uint32_t shade(int x) {
     float w = in.w();

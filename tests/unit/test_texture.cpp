@@ -1,0 +1,183 @@
+// Texture sampling, mip-mapping, perspective-correct vs affine mapping, super-sampling.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "raster/sampler.hpp"
+#include "velocity/renderer.hpp"
+#include "velocity/texture.hpp"
+
+using namespace velocity;
+using namespace velocity::raster;
+
+namespace {
+
+// A w x h image whose texel (x, y) has red = r(x, y), green = g(x, y).
+template <class R, class G>
+Image make_image(int w, int h, R r, G g) {
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      uint8_t* p = img.pixel(x, y);
+      p[0] = uint8_t(r(x, y)), p[1] = uint8_t(g(x, y)), p[2] = 0, p[3] = 255;
+    }
+  return img;
+}
+
+}  // namespace
+
+TEST(Texture, BilinearWeightsTheFourNearestTexels) {
+  // 2x2: red 0, 100 in the top row, 200, 40 in the bottom row.
+  const int red[2][2] = {{0, 100}, {200, 40}};
+  Texture t(make_image(2, 2, [&](int x, int y) { return red[y][x]; }, [](int, int) { return 0; }));
+  const auto& l0 = t.levels()[0];
+  // At a texel centre: that texel alone.
+  EXPECT_NEAR(bilinear(l0, 0.25f, 0.25f, false).r * 255, 0, 1e-3);
+  EXPECT_NEAR(bilinear(l0, 0.75f, 0.75f, false).r * 255, 40, 1e-3);
+  // Midway between all four: the mean.
+  EXPECT_NEAR(bilinear(l0, 0.5f, 0.5f, false).r * 255, (0 + 100 + 200 + 40) / 4.0, 1e-3);
+  // A quarter of the way from the top-left centre to the top-right one: 3/4 and 1/4.
+  EXPECT_NEAR(bilinear(l0, 0.375f, 0.25f, false).r * 255, 0.75 * 0 + 0.25 * 100, 1e-3);
+  // And down: (1 - b) top + b bottom, b = 0.5.
+  EXPECT_NEAR(bilinear(l0, 0.25f, 0.5f, false).r * 255, 0.5 * 0 + 0.5 * 200, 1e-3);
+}
+
+TEST(Texture, RepeatWrapsAndClampHoldsTheEdge) {
+  Texture t(make_image(4, 1, [](int x, int) { return x * 60; }, [](int, int) { return 0; }));
+  const auto& l0 = t.levels()[0];
+  EXPECT_FLOAT_EQ(nearest(l0, 1.125f, 0.5f, true).r, nearest(l0, 0.125f, 0.5f, true).r);
+  EXPECT_FLOAT_EQ(nearest(l0, -0.875f, 0.5f, true).r, nearest(l0, 0.125f, 0.5f, true).r);
+  EXPECT_NEAR(nearest(l0, 1.6f, 0.5f, false).r * 255, 180, 1e-3);  // clamped to the last texel
+  EXPECT_NEAR(nearest(l0, -3.0f, 0.5f, false).r * 255, 0, 1e-3);
+  // Bilinear across the seam: repeat mixes the last and first texels, clamp does not.
+  EXPECT_NEAR(bilinear(l0, 0.0f, 0.5f, true).r * 255, (180 + 0) / 2.0, 1e-3);
+  EXPECT_NEAR(bilinear(l0, 0.0f, 0.5f, false).r * 255, 0, 1e-3);
+  // Huge coordinates neither overflow nor leave the texture.
+  EXPECT_GE(bilinear(l0, 1e30f, -1e30f, true).r, 0.0f);
+  EXPECT_GE(bilinear(l0, 1e30f, -1e30f, false).r, 0.0f);
+}
+
+TEST(Texture, MipChainIsBoxFilteredDownToOneTexel) {
+  Texture t(make_image(4, 4, [](int x, int) { return x < 2 ? 0 : 200; }, [](int, int y) { return y * 80; }));
+  ASSERT_EQ(t.levels().size(), 3u);  // 4x4, 2x2, 1x1
+  Rgba l1 = unpack(t.levels()[1].texels[0]);
+  EXPECT_NEAR(l1.r * 255, 0, 0.5);
+  EXPECT_NEAR(l1.g * 255, (0 + 80) / 2.0, 0.5);
+  Rgba l2 = unpack(t.levels()[2].texels[0]);
+  EXPECT_NEAR(l2.r * 255, 100, 0.5);
+  EXPECT_NEAR(l2.g * 255, 120, 0.5);
+  Texture odd(make_image(5, 3, [](int, int) { return 10; }, [](int, int) { return 20; }));
+  EXPECT_EQ(odd.levels()[1].width, 2);
+  EXPECT_EQ(odd.levels()[1].height, 1);
+  EXPECT_EQ(odd.levels().back().width, 1);
+}
+
+TEST(Texture, LevelOfDetailFollowsTheFootprint) {
+  Texture t(make_checkerboard(256, 32));
+  const float texel = 1.0f / 256;
+  EXPECT_NEAR(level_of_detail(t, texel, 0, 0, texel), 0.0f, 1e-4);        // one texel per pixel
+  EXPECT_NEAR(level_of_detail(t, 2 * texel, 0, 0, 2 * texel), 1.0f, 1e-4);
+  EXPECT_NEAR(level_of_detail(t, 0, 0, 0, 8 * texel), 3.0f, 1e-4);        // the larger axis wins
+  EXPECT_LT(level_of_detail(t, texel / 4, 0, 0, texel / 4), 0.0f);        // magnified
+  // Trilinear at lod 1.5 is the even blend of bilinear at levels 1 and 2.
+  Rgba a = bilinear(t.levels()[1], 0.3f, 0.6f, true), b = bilinear(t.levels()[2], 0.3f, 0.6f, true);
+  Rgba c = sample<Filter::Trilinear>(t, 0.3f, 0.6f, 1.5f, true);
+  EXPECT_NEAR(c.r, (a.r + b.r) / 2, 1e-5);
+  EXPECT_NEAR(c.b, (a.b + b.b) / 2, 1e-5);
+}
+
+namespace {
+
+// A floor plane y = -1 from z = -1 to z = -101, 4 units wide, seen from the origin at a
+// grazing angle, textured with u = red (0..255 across, nearest). Returns the texel column
+// (red value) drawn at pixel (x, y).
+Image render_floor(bool affine) {
+  Mesh floor;
+  floor.positions = {{-2, -1, -1}, {2, -1, -1}, {2, -1, -101}, {-2, -1, -101}};
+  // u runs along the depth: 0 at the near edge, 1 at the far edge.
+  floor.uvs = {{0, 0.5f}, {0, 0.5f}, {1, 0.5f}, {1, 0.5f}};
+  floor.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+  Material m;
+  m.shading = Shading::Flat;
+  m.texture = std::make_shared<const Texture>(make_image(256, 1, [](int x, int) { return x; }, [](int, int) { return 0; }));
+  m.texture_mode = TextureMode::Replace;
+  m.filter = Filter::Nearest;
+  Renderer r(200, 200);
+  r.options.affine = affine;
+  Camera cam;
+  cam.position = {0, 0, 0};
+  cam.fov_y = radians(90);
+  cam.near = 0.5f, cam.far = 200;
+  r.begin_frame(cam, {}, {0, 0, 0});
+  r.draw(floor, Mat4::identity(), &m);
+  r.end_frame();
+  return r.color_image();
+}
+
+}  // namespace
+
+TEST(Texture, PerspectiveCorrectAtGrazingAngleAffineIsNot) {
+  Image correct = render_floor(false), affine = render_floor(true);
+  // Pixel row y: the ray through its centre meets the floor y = -1 at depth d, where
+  // ndc_y = -(1 - (y + 0.5) / 100) and d = 1 / -ndc_y (90 degree field of view).
+  int worst_correct = 0, worst_affine = 0;
+  for (int y = 120; y < 199; y += 6) {
+    double ndc_y = -(((y + 0.5) / 100.0) - 1.0);
+    double depth = 1.0 / -ndc_y;
+    if (depth < 1 || depth > 101) continue;
+    int expected = int(std::floor((depth - 1) / 100.0 * 256));
+    int got = correct.pixel(100, y)[0], got_affine = affine.pixel(100, y)[0];
+    worst_correct = std::max(worst_correct, std::abs(got - expected));
+    worst_affine = std::max(worst_affine, std::abs(got_affine - expected));
+  }
+  EXPECT_LE(worst_correct, 1) << "perspective-correct mapping is off by more than a texel";
+  EXPECT_GT(worst_affine, 40) << "affine mapping should visibly swim at a grazing angle";
+}
+
+TEST(Texture, SuperSamplingGivesCoverageLevels) {
+  // An orthographic view 30 units wide on 30 pixels (10 at 3x3 samples per pixel): a
+  // white square whose left edge sits a third of the way into pixel 10 and whose top
+  // edge two thirds of the way into pixel 5. Sample centres are at 1/6, 1/2, 5/6.
+  Mesh sq;
+  const float l = 10 + 1.0f / 3, r = 20, t = 5 + 2.0f / 3, b = 25;
+  // Pixel (px, py) covers x in [px, px + 1]; world x = px - 15, world y = 15 - py.
+  sq.positions = {{l - 15, 15 - b, -1}, {r - 15, 15 - b, -1}, {r - 15, 15 - t, -1}, {l - 15, 15 - t, -1}};
+  sq.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+  Material white;
+  white.color = {1, 1, 1};
+  white.shading = Shading::VertexColor;
+  Camera cam;
+  cam.position = {0, 0, 0};
+  cam.projection = Projection::Orthographic;
+  cam.ortho_height = 30;
+  cam.near = 0.5f, cam.far = 2;
+  Renderer renderer(30, 30);
+  renderer.options.ssaa = 3;
+  renderer.begin_frame(cam, {}, {0, 0, 0});
+  renderer.draw(sq, Mat4::identity(), &white);
+  renderer.end_frame();
+  Image img = renderer.color_image();
+  ASSERT_EQ(img.width, 30);
+  EXPECT_EQ(img.pixel(9, 15)[0], 0);            // left of the edge
+  EXPECT_EQ(img.pixel(10, 15)[0], 170);         // 2 of 3 sample columns: 6/9
+  EXPECT_EQ(img.pixel(11, 15)[0], 255);
+  EXPECT_EQ(img.pixel(15, 5)[0], 85);           // 1 of 3 sample rows: 3/9
+  EXPECT_EQ(img.pixel(10, 5)[0], 57);           // the corner: 2 x 1 of 9 samples, 2/9 of 255
+  EXPECT_EQ(img.pixel(15, 15)[0], 255);
+}
+
+TEST(Texture, SeedHighResolutionModeIs2400x1800Inside) {
+  Renderer r(800, 600);
+  r.options.ssaa = 3;
+  Scene empty;
+  r.render(empty);
+  EXPECT_EQ(r.framebuffer_bytes(), size_t(2400) * 1800 * (4 + 4));
+  EXPECT_EQ(r.color_image().width, 800);
+  EXPECT_EQ(r.color_image().height, 600);
+  r.options.ssaa = 5;
+  EXPECT_THROW(r.render(empty), std::exception);
+  Renderer big(8192, 8);
+  big.options.ssaa = 3;  // 24576 samples wide: too large
+  EXPECT_THROW(big.render(empty), std::exception);
+}
