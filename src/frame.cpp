@@ -1,6 +1,7 @@
 // The frame, top to bottom: scene -> per-object culling -> geometry stage (transform,
 // light, clip, set up) -> bin -> rasterize tiles -> framebuffer.
 #include <algorithm>
+#include <unordered_set>
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/resolve.hpp"
@@ -8,6 +9,7 @@
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
 #include "velocity/error.hpp"
+#include "velocity/log.hpp"
 #include "velocity/renderer.hpp"
 
 namespace velocity {
@@ -82,6 +84,7 @@ struct Renderer::Impl {
   uint32_t clear_color = 0;
   FrameStats stats;
   bool in_frame = false;
+  std::unordered_set<const Mesh*> warned_meshes;  // meshes already warned about
 
   // Sizes the sample buffers for an output size and super-sampling factor. Throws
   // velocity::Error (and changes nothing) when either is out of range.
@@ -142,7 +145,12 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   // Whole-object rejection: a bounding sphere entirely outside one plane of the view
   // volume costs one test instead of a pass over every vertex.
   if (Frustum(r.view_projection).outside(world_sphere(mesh, world))) return void(r.stats.objects_culled++);
+  size_t nonfinite_before = r.stats.triangles_nonfinite;
   geometry::draw_mesh(r.params, mesh, world, material, r.scratch, r.primitives, r.stats);
+  // One warning per mesh with non-finite vertices (not one per frame, nor per triangle).
+  if (r.stats.triangles_nonfinite > nonfinite_before && r.warned_meshes.insert(&mesh).second)
+    warn("mesh '" + mesh.name + "': " + std::to_string(r.stats.triangles_nonfinite - nonfinite_before) +
+         " triangles with NaN or infinite coordinates were dropped");
 }
 
 const FrameStats& Renderer::end_frame() {
