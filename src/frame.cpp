@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unordered_set>
 
+#include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/resolve.hpp"
 #include "geometry/draw_mesh.hpp"
@@ -85,6 +86,14 @@ struct Renderer::Impl {
   FrameStats stats;
   bool in_frame = false;
   std::unordered_set<const Mesh*> warned_meshes;  // meshes already warned about
+  std::unique_ptr<ThreadPool> pool;
+
+  ThreadPool& pool_for(int threads) {
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = std::min(threads, 256);
+    if (!pool || pool->size() != threads) pool = std::make_unique<ThreadPool>(threads);
+    return *pool;
+  }
 
   // Sizes the sample buffers for an output size and super-sampling factor. Throws
   // velocity::Error (and changes nothing) when either is out of range.
@@ -197,9 +206,11 @@ const FrameStats& Renderer::end_frame() {
     }
   }
 
+  // Rasterize: tiles are independent (each reads the shared, now immutable, frame data
+  // and writes only its own pixels), so they go to the thread pool as they come.
   raster::TileSettings settings{!painter, r.clear_color};
-  for (int tile = 0; tile < r.bins.tile_count(); ++tile)
-    raster::rasterize_tile(prims, r.bins, tile, settings, r.framebuffer);
+  ThreadPool& pool = r.pool_for(r.params.options.threads);
+  pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(prims, r.bins, tile, settings, r.framebuffer); });
   return r.stats;
 }
 

@@ -23,7 +23,7 @@ struct BenchArgs {
   int frames = 60;
   std::string shade = "gouraud";
   int copies = 1;
-  int threads = 1;
+  int threads = 0;
   std::string out;
   std::string tex;
   std::string filter;
@@ -36,7 +36,7 @@ int run_bench(const BenchArgs& a) {
   parse_size(a.size, w, h);
   if (a.frames < 1) throw Error("--frames must be at least 1");
   if (a.copies < 1) throw Error("--copies must be at least 1");
-  if (a.threads < 1) throw Error("--threads must be at least 1");
+  if (a.threads < 0) throw Error("--threads must be 0 (every core) or more");
   std::shared_ptr<const Texture> texture = a.tex.empty() ? nullptr : load_texture(a.tex);
   auto look = bench::make_look(a.shade, texture);
   if (!look) throw Error("--shade: expected flat|gouraud|phong|wire|tex|env, got '" + a.shade + "'");
@@ -48,6 +48,7 @@ int run_bench(const BenchArgs& a) {
   }
   look->options.affine = a.affine;
   look->options.ssaa = a.ssaa;
+  look->options.threads = a.threads;
 
   Mesh mesh = bench::make_mesh(a.mesh);
   Renderer renderer(w, h);
@@ -87,8 +88,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_flag("--affine", args->affine, "Affine (screen-linear) interpolation, as the seed could afford");
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor per side, 1..4")->capture_default_str();
   cmd->add_option("--copies", args->copies, "Draw the mesh N times per frame, in a square grid")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Rendering threads (the renderer runs on one thread for now)")
-      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();
   cmd->add_option("--out", args->out, "Write the first frame to this image");
   return [args] { return run_bench(*args); };
 }

@@ -42,6 +42,9 @@ struct RenderOptions {
   // every sample), then average each ssaa x ssaa block (box filter). 1..4; 3 is seed
   // 000's high-resolution mode (800x600 out, 2400x1800 inside).
   int ssaa = 1;
+  // Threads that rasterize tiles: 0 uses every core (std::thread::hardware_concurrency).
+  // The image is the same for any count: each tile is drawn by one thread, in order.
+  int threads = 0;
 };
 
 // What the last frame did, for --verbose output and tests.
