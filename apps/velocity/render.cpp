@@ -33,6 +33,7 @@ struct RenderArgs {
   std::string texture, env, filter;
   float fov = 0;
   int ssaa = 0;  // 0: 3 for the demo scene, 1 for anything else
+  int threads = 0;
   bool ortho = false, painter = false, no_cull = false, verbose = false, swap_yz = true, affine = false;
 };
 
@@ -95,6 +96,16 @@ void apply_camera(const std::string& text, Scene& scene) {
   camera.far = d + r * 1.01f;
 }
 
+bool scene_has_texture(const Scene& scene) {
+  for (const Object& o : scene.objects()) {
+    if (o.material && o.material->texture) return true;
+    if (o.mesh)
+      for (const Material& m : o.mesh->materials)
+        if (m.texture) return true;
+  }
+  return false;
+}
+
 Scene build_scene(const RenderArgs& a, float aspect) {
   if (a.model.empty()) return make_demo_scene();
   Scene scene;
@@ -132,9 +143,10 @@ int run_render(const RenderArgs& a) {
   if (!a.shade.empty()) {
     ShadeSpec spec = parse_shade(a.shade);
     o.shading = spec.shading;
-    // A mode asking for a texture uses --texture, else the checkerboard; for an
-    // environment map --env, else the generated studio.
-    if (spec.tex && a.texture.empty()) o.texture = std::make_shared<const Texture>(make_checkerboard());
+    // A mode asking for a texture uses --texture, else the model's own textures, else
+    // the checkerboard; for an environment map --env, else the generated studio.
+    if (spec.tex && a.texture.empty() && !scene_has_texture(scene))
+      o.texture = std::make_shared<const Texture>(make_checkerboard());
     if (spec.env && a.env.empty()) o.env_map = std::make_shared<const Texture>(make_environment_map());
   }
   if (!a.texture.empty()) o.texture = load_texture(a.texture);
@@ -146,6 +158,8 @@ int run_render(const RenderArgs& a) {
   o.affine = a.affine;
   o.ssaa = a.ssaa ? a.ssaa : (a.model.empty() ? 3 : 1);
   if (o.ssaa < 1 || o.ssaa > 4) throw Error("--ssaa must be 1..4, got " + std::to_string(o.ssaa));
+  if (a.threads < 0) throw Error("--threads must be 0 (every core) or more");
+  o.threads = a.threads;
   o.depth_mode = a.painter ? DepthMode::Painter : DepthMode::ZBuffer;
   o.cull_back_faces = !a.no_cull;
   const FrameStats& st = renderer.render(scene);
@@ -187,6 +201,7 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_flag("!--no-swap-yz", args->swap_yz, "Keep 3D Studio's Z-up coordinates (ASC files)");
   cmd->add_option("--out", args->out, "Output image (.png or .ppm)")->capture_default_str();
   cmd->add_option("--depth", args->depth_out, "Also write the depth buffer as a greyscale image");
+  cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();
   cmd->add_flag("--verbose", args->verbose, "Print what the frame did");
   // With no subcommand at all, `velocity` runs this with its defaults.
   return [args] { return run_render(*args); };
