@@ -181,3 +181,31 @@ TEST(Texture, SeedHighResolutionModeIs2400x1800Inside) {
   big.options.ssaa = 3;  // 24576 samples wide: too large
   EXPECT_THROW(big.render(empty), std::exception);
 }
+
+// Materials are per face: one mesh, two materials, one textured.
+TEST(Texture, PerFaceMaterialsCarryTheirOwnTexture) {
+  Mesh m;
+  m.positions = {{-2, -1, -3}, {0, -1, -3}, {0, 1, -3}, {-2, 1, -3}, {2, -1, -3}, {2, 1, -3}};
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {0, 1}};
+  m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 5}}, {{1, 5, 2}}};
+  Material plain;
+  plain.shading = Shading::VertexColor;
+  plain.color = {0, 1, 0};
+  Material textured = plain;
+  textured.color = {1, 1, 1};
+  textured.texture = std::make_shared<const Texture>(make_image(1, 1, [](int, int) { return 255; }, [](int, int) { return 0; }));
+  textured.texture_mode = TextureMode::Replace;
+  m.materials = {textured, plain};
+  m.face_materials = {0, 0, 1, 1};  // left half textured (red), right half plain (green)
+  Scene scene;
+  scene.add_object("two materials", std::make_shared<Mesh>(m));
+  scene.camera.position = {0, 0, 0};
+  scene.background = {0, 0, 0};
+  Renderer r(64, 32);
+  r.render(scene);
+  Image img = r.color_image();
+  EXPECT_EQ(img.pixel(20, 16)[0], 255);
+  EXPECT_EQ(img.pixel(20, 16)[1], 0);
+  EXPECT_EQ(img.pixel(44, 16)[0], 0);
+  EXPECT_EQ(img.pixel(44, 16)[1], 255);
+}
