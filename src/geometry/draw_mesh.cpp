@@ -77,6 +77,7 @@ class MeshDraw {
   }
 
   void run() {
+    normals_ = mesh_.normals.empty() ? &averaged_normals() : &mesh_.normals;
     transform_vertices();
     size_t nt = mesh_.triangles.size();
     for (size_t f = 0; f < nt; ++f) draw_face(uint32_t(f));
@@ -101,6 +102,21 @@ class MeshDraw {
     }
   }
 
+  // A mesh without normals is lit with normals averaged over the faces sharing each
+  // vertex (area-weighted), computed into scratch memory for this draw. Loaders compute
+  // normals once (compute_normals, with smoothing groups); this is for meshes built by
+  // hand.
+  const std::vector<Vec3>& averaged_normals() {
+    std::vector<Vec3>& n = s_.averaged_normals;
+    n.assign(mesh_.positions.size(), Vec3{});
+    for (const Triangle& t : mesh_.triangles) {
+      Vec3 a = mesh_.positions[t.v[0]], b = mesh_.positions[t.v[1]], c = mesh_.positions[t.v[2]];
+      Vec3 fn = cross(b - a, c - a);
+      for (uint32_t v : t.v) n[v] += fn;
+    }
+    return n;  // normalised when transformed to eye space
+  }
+
   // The material of face f and the draw-state slot that goes with it.
   const Material& material_of(uint32_t f, uint32_t& slot) const {
     if (override_) return slot = 0, *override_;
@@ -116,21 +132,19 @@ class MeshDraw {
     if (s_.eye_stamp[v] == generation_) return;
     s_.eye_stamp[v] = generation_;
     s_.eye_pos[v] = model_view_.transform_point(mesh_.positions[v]);
-    s_.eye_normal[v] = mesh_.normals.empty() ? Vec3{} : normalize(normal_.transform_vector(mesh_.normals[v]));
+    s_.eye_normal[v] = normalize(normal_.transform_vector((*normals_)[v]));
   }
 
-  Vec3 eye_normal(uint32_t v, uint32_t f) {
+  Vec3 eye_normal(uint32_t v) {
     ensure_eye(v);
-    if (!mesh_.normals.empty()) return s_.eye_normal[v];
-    // No normals: light with the face's own (call compute_normals() for smooth shading).
-    return normalize(normal_.transform_vector(face_normal(mesh_, mesh_.triangles[f])));
+    return s_.eye_normal[v];
   }
 
-  const LightTerms& vertex_light(uint32_t v, uint32_t f, uint32_t slot, const Material& mat) {
+  const LightTerms& vertex_light(uint32_t v, uint32_t slot, const Material& mat) {
     uint64_t key = (generation_ << 20) | slot;
-    if (s_.light_stamp[v] != key || mesh_.normals.empty()) {
+    if (s_.light_stamp[v] != key) {
       s_.light_stamp[v] = key;
-      s_.light[v] = light(p_.lights, eye_normal(v, f), s_.eye_pos[v], mat.specular, mat.shininess);
+      s_.light[v] = light(p_.lights, eye_normal(v), s_.eye_pos[v], mat.specular, mat.shininess);
     }
     return s_.light[v];
   }
@@ -171,9 +185,9 @@ class MeshDraw {
         if (shading != Shading::VertexColor) {
           if (flip) {
             ensure_eye(v);
-            c = apply(light(p_.lights, -eye_normal(v, f), s_.eye_pos[v], mat.specular, mat.shininess), base);
+            c = apply(light(p_.lights, -eye_normal(v), s_.eye_pos[v], mat.specular, mat.shininess), base);
           } else {
-            c = apply(vertex_light(v, f, slot, mat), base);
+            c = apply(vertex_light(v, slot, mat), base);
           }
           c = clamp01(c);  // as OpenGL clamps vertex colours before interpolating
         }
@@ -186,7 +200,7 @@ class MeshDraw {
       case Kernel::PhongTex:
       case Kernel::PhongEnv:
       case Kernel::PhongTexEnv: {
-        Vec3 n = eye_normal(v, f);
+        Vec3 n = eye_normal(v);
         if (flip) n = -n;
         const Vec3& e = s_.eye_pos[v];
         out[0] = base.x, out[1] = base.y, out[2] = base.z;
@@ -200,7 +214,7 @@ class MeshDraw {
     if (uv_at < 0) return;
     Vec2 uv;
     if (plan.uv_from_env) {
-      Vec3 n = eye_normal(v, f);
+      Vec3 n = eye_normal(v);
       if (flip) n = -n;
       uv = {0.5f + 0.5f * n.x, 0.5f + 0.5f * n.y};  // seed 000's sphere map, per vertex
     } else if (!mesh_.uvs.empty()) {
@@ -344,6 +358,7 @@ class MeshDraw {
   FrameStats& stats_;
   Mat4 model_view_, mvp_, normal_;
   uint64_t generation_ = 0;
+  const std::vector<Vec3>* normals_ = nullptr;
   uint32_t current_slot_ = UINT32_MAX, current_draw_ = 0;
   Material default_material_;
   std::vector<bool> point_drawn_;

@@ -30,6 +30,7 @@ struct VertexScratch {
   std::vector<raster::ScreenVertex> screen;
   std::vector<Vec3> eye_pos, eye_normal;
   std::vector<LightTerms> light;
+  std::vector<Vec3> averaged_normals;  // for meshes that bring none
   std::vector<uint64_t> eye_stamp, light_stamp;  // which draw (and material) filled them
   uint64_t generation = 0;
 };

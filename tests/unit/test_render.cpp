@@ -242,3 +242,25 @@ TEST(Render, DrawOutsideAFrameIsAnError) {
   EXPECT_THROW(r.draw(sq, Mat4::identity()), std::exception);
   EXPECT_THROW(r.end_frame(), std::exception);
 }
+
+// A mesh built without normals is lit with normals averaged over the faces sharing each
+// vertex: Gouraud shading of a hand-made sphere is smooth, not faceted.
+TEST(Render, MeshWithoutNormalsGetsAveragedNormals) {
+  Mesh with = make_sphere(24);
+  Mesh without = with;
+  without.normals.clear();
+  Material m;
+  m.shading = Shading::Gouraud;
+  auto draw = [&](const Mesh& mesh) {
+    Renderer r(96, 96);
+    Camera cam;
+    r.begin_frame(cam, {}, {0, 0, 0});
+    r.draw(mesh, Mat4::identity(), &m);
+    r.end_frame();
+    return r.color_image();
+  };
+  Image a = draw(with), b = draw(without);
+  int worst = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) worst = std::max(worst, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
+  EXPECT_LE(worst, 6);  // averaged face normals differ from the analytic ones only slightly
+}
