@@ -17,8 +17,14 @@
 namespace velocity {
 
 struct LoadOptions {
-  // 3D Studio stores Z up; Velocity is Y up. Swapping Y and Z (and so flipping the
-  // winding back to counter-clockwise) is seed 000's "Errors found" fix. ASC only.
+  // 3D Studio stores Z up; Velocity is Y up (both right-handed). With swap_yz, ASC
+  // coordinates (lights and cameras included) are turned -90 degrees about X:
+  // (x, y, z) -> (x, z, -y). That is a rotation, not a mirror, so models stand upright,
+  // keep their handedness (no mirror image), and their counter-clockwise front faces
+  // stay front-facing; 3D Studio's front view (looking along +Y) becomes Velocity's
+  // default view (looking along -Z). A plain swap (x, z, y) would also stand them up,
+  // but mirrored, with every winding flipped: seed 000's "Errors found" fix, not used.
+  // Off: coordinates as written. ASC only (PLG files are Y up already; see load_plg).
   bool swap_yz = true;
   // Most the loader may allocate for one file, in bytes (vertices, faces, images).
   size_t max_memory = size_t(2) << 30;
@@ -55,8 +61,22 @@ struct Model {
 Model load_model(const std::string& path, const LoadOptions& options = {});
 
 // The readers themselves; `name` is used in error messages.
+//
+// ASC: one node per Tri-mesh (vertices are in world space: Model nodes' `local` is the
+// identity), normals from compute_normals() with the file's smoothing groups, one
+// Material per distinct per-face "Material:" name ("rNNNgNNNbNNNaN" names set the
+// colour; texture file names are kept in Material::name). The ambient colour becomes
+// an Ambient light; each "Direct light" (3D Studio's omni light) a Point light without
+// attenuation; each camera a NamedCamera (fov from the focal length, looking at its
+// target, roll = bank angle, near/far fitted around the model: 3D Studio's Near/Far
+// are fog ranges).
 Model load_asc(const std::string& path, const LoadOptions& options = {});
 Model parse_asc(std::string_view text, const std::string& name, const LoadOptions& options = {});
+// PLG (Black Art of 3D Game Programming) and PLX (Tricks of the 3D Game Programming
+// Gurus): one node; polygons fanned into triangles; one Material per distinct polygon
+// descriptor (named after it, "0x109f"). The books' worlds are left-handed with Y up:
+// z is negated, and the winding made counter-clockwise-front per dialect, so faces
+// point outwards. See src/io/plg.cpp and src/io/plg.hpp for the descriptor bits.
 Model load_plg(const std::string& path, const LoadOptions& options = {});
 Model parse_plg(std::string_view text, const std::string& name, const LoadOptions& options = {});
 Model load_obj(const std::string& path, const LoadOptions& options = {});

@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 #include <tuple>
 
+#include "io/read_file.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 
@@ -29,29 +31,63 @@ Material material_from(const tinyobj::material_t& m) {
   return mat;
 }
 
+// The material libraries an OBJ names ("mtllib x.mtl", relative to the OBJ's folder) are
+// untrusted paths too: each is read whole through read_file, so a name such as
+// /dev/zero, a FIFO or a directory is refused instead of read without end, and all of
+// them together stay within the memory limit. One that cannot be read is a warning in
+// tinyobjloader's sense (the faces keep no material), as before.
+class BoundedMaterialReader : public tinyobj::MaterialReader {
+ public:
+  BoundedMaterialReader(std::string dir, size_t budget) : dir_(std::move(dir)), budget_(budget) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* map, std::string* warn, std::string* err) override {
+    std::string text;
+    try {
+      text = detail::read_file(dir_ + name, budget_);
+    } catch (const Error& e) {
+      if (warn) *warn += std::string(e.what()) + "\n";
+      return false;
+    }
+    budget_ -= text.size();
+    std::istringstream in(std::move(text));
+    tinyobj::LoadMtl(map, materials, &in, warn, err);
+    return true;
+  }
+
+ private:
+  std::string dir_;
+  size_t budget_;
+};
+
 }  // namespace
 
 Model load_obj(const std::string& path, const LoadOptions& options) {
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = true;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
-    std::string why = reader.Error();
+  // Read through read_file (a missing file, a directory, a device or a file over the
+  // memory limit gets a clear error), then parse from memory.
+  std::string text = detail::read_file(path, options.max_memory);
+  size_t slash = path.find_last_of('/');
+  BoundedMaterialReader mtl_reader(slash == std::string::npos ? "" : path.substr(0, slash + 1),
+                                   options.max_memory - text.size());
+  std::istringstream in(std::move(text));
+  tinyobj::attrib_t at;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> obj_materials;
+  std::string warnings, why;
+  if (!tinyobj::LoadObj(&at, &shapes, &obj_materials, &warnings, &why, &in, &mtl_reader, /*triangulate=*/true,
+                        /*default_vcols_fallback=*/true)) {
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
     throw Error(path + ": cannot read OBJ: " + (why.empty() ? "unknown error" : why));
   }
-  const tinyobj::attrib_t& at = reader.GetAttrib();
   size_t bytes = at.vertices.size() * 4 + at.normals.size() * 4 + at.texcoords.size() * 4;
   if (bytes > options.max_memory) throw Error(path + ": OBJ needs more memory than the limit allows");
 
   std::vector<Material> materials;
-  for (const auto& m : reader.GetMaterials()) materials.push_back(material_from(m));
+  for (const auto& m : obj_materials) materials.push_back(material_from(m));
 
   Model model;
   model.path = path;
   const bool has_colors = !at.colors.empty() && at.colors.size() == at.vertices.size();
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+  for (const tinyobj::shape_t& shape : shapes) {
     const auto& idx = shape.mesh.indices;
     if (idx.empty()) continue;
     auto mesh = std::make_shared<Mesh>();

@@ -79,7 +79,7 @@ inline constexpr uint32_t kMaxPrimitivesPerFrame = 0x3fffffffu;
 // Packs a colour in [0, 1] to RGBA8 as OpenGL does: clamp, scale by 255, round.
 inline uint32_t pack_rgba(float r, float g, float b) {
   auto q = [](float v) {
-    v = v < 0 ? 0 : (v > 1 ? 1 : v);
+    v = v > 0 ? (v < 1 ? v : 1) : 0;  // NaN (a degenerate normal, say) becomes 0, not UB
     return uint32_t(v * 255.0f + 0.5f);
   };
   return q(r) | (q(g) << 8) | (q(b) << 16) | 0xff000000u;

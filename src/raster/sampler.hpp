@@ -39,17 +39,21 @@ inline Rgba texel(const Texture::Level& l, int x, int y, bool repeat) {
   return unpack(l.texels[size_t(address(y, l.height, repeat)) * l.width + address(x, l.width, repeat)]);
 }
 
+// Keeps a coordinate in [-1, 2] before it becomes a texel index; NaN (from an infinite
+// uv, say) becomes -1, where std::clamp would pass it on to an undefined conversion.
+inline float clamp_uv(float u) { return u > -1.0f ? (u < 2.0f ? u : 2.0f) : -1.0f; }
+
 inline Rgba nearest(const Texture::Level& l, float u, float v, bool repeat) {
   // Wrap in float first, so huge uvs cannot overflow the integer conversion.
   if (repeat) u -= std::floor(u), v -= std::floor(v);
-  u = std::clamp(u, -1.0f, 2.0f), v = std::clamp(v, -1.0f, 2.0f);
+  u = clamp_uv(u), v = clamp_uv(v);
   return texel(l, int(std::floor(u * float(l.width))), int(std::floor(v * float(l.height))), repeat);
 }
 
 // The four nearest texels weighted by the sample point's position between their centres.
 inline Rgba bilinear(const Texture::Level& l, float u, float v, bool repeat) {
   if (repeat) u -= std::floor(u), v -= std::floor(v);
-  u = std::clamp(u, -1.0f, 2.0f), v = std::clamp(v, -1.0f, 2.0f);
+  u = clamp_uv(u), v = clamp_uv(v);
   float x = u * float(l.width) - 0.5f, y = v * float(l.height) - 0.5f;
   float fx = std::floor(x), fy = std::floor(y);
   float a = x - fx, b = y - fy;

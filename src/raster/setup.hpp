@@ -34,6 +34,15 @@ bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const Screen
 // Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
 inline int64_t snap(float v) { return int64_t(std::lrint(v * float(kSubpixelOne))); }
 
+// The geometry stage keeps vertices within the guard band (|x|, |y| < 2^15 pixels), but a
+// degenerate projection (a camera with near <= 0, say) can still hand over NaN or huge
+// coordinates. Set-up refuses anything outside +-2^20 pixels: snapped values then stay
+// below 2^28, so edge functions (products below 2^58) cannot overflow int64.
+inline constexpr float kMaxScreenCoord = 1048576.0f;
+inline bool snappable(const ScreenVertex& v) {
+  return std::fabs(v.x) <= kMaxScreenCoord && std::fabs(v.y) <= kMaxScreenCoord;  // false for NaN
+}
+
 bool setup_line(const ScreenVertex& a, const ScreenVertex& b, uint32_t color, int width, int height, LineSetup& out);
 bool setup_point(const ScreenVertex& p, uint32_t color, int width, int height, PointSetup& out);
 

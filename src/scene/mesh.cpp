@@ -115,29 +115,42 @@ void compute_normals(Mesh& mesh) {
 
   std::vector<Vec3> normals(nv);
   std::vector<bool> assigned(nv, false);
+  std::vector<uint32_t> next_copy(nv, UINT32_MAX);  // chain of copies made of a vertex
   auto copy_vertex = [&](uint32_t v) {
     mesh.positions.push_back(mesh.positions[v]);
     if (!mesh.uvs.empty()) mesh.uvs.push_back(mesh.uvs[v]);
     if (!mesh.colors.empty()) mesh.colors.push_back(mesh.colors[v]);
     normals.push_back({});
     assigned.push_back(true);
+    next_copy.push_back(UINT32_MAX);
     return uint32_t(mesh.positions.size() - 1);
   };
   for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
     uint32_t groups = mesh.smoothing_groups[f];
     for (uint32_t& v : mesh.triangles[f].v) {
+      // Summed in faces_at order whatever f is, so faces with the same groups get
+      // bit-identical normals and share vertices.
       Vec3 sum = face_n[f];
-      if (groups != 0)
+      if (groups != 0) {
+        sum = {};
         for (uint32_t g : faces_at[weld[v]])
-          if (g != f && (mesh.smoothing_groups[g] & groups)) sum += face_n[g];
-      Vec3 n = normalize(sum);
-      if (!assigned[v]) {
-        normals[v] = n, assigned[v] = true;
-      } else if (!(normals[v] == n)) {
-        uint32_t copy = copy_vertex(v);
-        normals[copy] = n;
-        v = copy;
+          if (g == f || (mesh.smoothing_groups[g] & groups)) sum += face_n[g];
       }
+      Vec3 n = normalize(sum);
+      uint32_t w = v;
+      for (;;) {
+        if (!assigned[w]) { normals[w] = n, assigned[w] = true; break; }
+        if (normals[w] == n) break;
+        if (next_copy[w] == UINT32_MAX) {
+          uint32_t c = copy_vertex(v);
+          next_copy[w] = c;
+          normals[c] = n;
+          w = c;
+          break;
+        }
+        w = next_copy[w];
+      }
+      v = w;
     }
   }
   mesh.normals = std::move(normals);
