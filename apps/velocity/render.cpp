@@ -1,4 +1,5 @@
 // `velocity render`: a model file, a generated model or the demo scene, to an image.
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -60,7 +61,7 @@ ShadeSpec parse_shade(const std::string& text) {
       spec.shading = s;
     } else {
       throw Error("--shade: unknown mode '" + text +
-                  "' (flat, gouraud, phong, color, wire, points, tex, env, or a mode with +tex / +env)");
+                  "' (flat, gouraud, phong, unlit, wire, points, tex, env, or a mode with +tex / +env)");
     }
     first = false;
   }
@@ -125,8 +126,18 @@ Scene build_scene(const RenderArgs& a, float aspect) {
     LoadOptions options;
     options.swap_yz = a.swap_yz;
     add_to_scene(scene, load_model(a.model, options));
+    // A file with no light of its own but an ambient line (3D Studio writes one) would
+    // render dark: add the renderer's usual key light from over the viewer's shoulder.
+    bool has_key = std::any_of(scene.lights.begin(), scene.lights.end(),
+                               [](const Light& l) { return l.type != LightType::Ambient; });
+    if (!has_key) {
+      bool has_ambient = !scene.lights.empty();
+      if (!has_ambient) scene.lights.push_back(Light::ambient({0.2f, 0.2f, 0.2f}));
+      scene.lights.push_back(Light::directional({0.3f, 0.5f, 1.0f}, {0.8f, 0.8f, 0.8f}));
+    }
   }
-  scene.frame_camera(aspect);
+  // A three-quarter view from the front right and a little above shows a model's shape.
+  scene.frame_camera(aspect, generated ? Vec3{0, 0, 1} : Vec3{0.6f, 0.45f, 1.0f});
   return scene;
 }
 
@@ -187,7 +198,7 @@ std::function<int()> add_render_command(CLI::App& app) {
                   "Model file (.asc, .plg, .obj, ...) or cube|sphere|torus; none: the demo scene");
   cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
   cmd->add_option("--shade", args->shade,
-                  "Override shading: flat|gouraud|phong|color|wire|points|tex|env, or MODE+tex, MODE+env, MODE+tex+env");
+                  "Override shading: flat|gouraud|phong|unlit|wire|points|tex|env, or MODE+tex, MODE+env, MODE+tex+env");
   cmd->add_option("--texture", args->texture, "Base texture for every material (PNG, JPEG, TGA, BMP, GIF, PCX)");
   cmd->add_option("--env", args->env, "Sphere environment map for every material");
   cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear");

@@ -16,7 +16,8 @@ enum class Shading {
   Flat,         // one colour per triangle: Lambert by the face normal plus ambient
   Gouraud,      // lighting per vertex, colour interpolated
   Phong,        // normal interpolated, lighting and specular per pixel
-  VertexColor,  // the mesh's per-vertex colours interpolated, unlit (seed 002)
+  Unlit,        // no lighting: the mesh's per-vertex colours interpolated (seed 002's
+                // gradient), else the face or material colour (PLG's constant shading)
   Wireframe,    // triangle edges as lines, unlit, with depth
   Points,       // vertices as points, unlit, with depth
 };

@@ -119,9 +119,10 @@ class Scene {
   std::vector<Mat4> world_matrices() const;
   // Bounding sphere of every visible mesh in world space (radius 0 when empty).
   Sphere bounds() const;
-  // Places the camera on +Z of the scene's bounding sphere, looking at its centre, so the
-  // whole scene fits the vertical field of view; near and far are set around it.
-  void frame_camera(float aspect);
+  // Places the camera in direction `from` (default +Z) of the scene's bounding-sphere
+  // centre, looking at it, so that the whole scene fits the field of view; near and far
+  // are set around it.
+  void frame_camera(float aspect, Vec3 from = {0, 0, 1});
 
   Camera camera;
   std::vector<Light> lights;

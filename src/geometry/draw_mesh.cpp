@@ -48,7 +48,7 @@ FacePlan plan_face(Shading shading, const Texture* tex, const Texture* env, bool
       if (tex || env) p.kernel = Kernel::FlatTex, p.num_varyings = 2, p.uv_from_env = !tex;
       return p;
     case Shading::Gouraud:
-    case Shading::VertexColor:
+    case Shading::Unlit:
       if (tex || env) return p.kernel = Kernel::SmoothTex, p.num_varyings = 5, p.uv_from_env = !tex, p;
       return p.kernel = Kernel::Smooth, p.num_varyings = 3, p;
     case Shading::Phong:
@@ -176,13 +176,13 @@ class MeshDraw {
   void corner_varyings(const FacePlan& plan, Shading shading, uint32_t v, uint32_t f, uint32_t slot,
                        const Material& mat, bool flip, float* out) {
     // Vertex-colour shading shows the mesh's own colours whatever the material.
-    Vec3 base = shading == Shading::VertexColor && !mesh_.colors.empty() ? mesh_.colors[v] : base_color(v, f, mat);
+    Vec3 base = shading == Shading::Unlit && !mesh_.colors.empty() ? mesh_.colors[v] : base_color(v, f, mat);
     int uv_at = -1;
     switch (plan.kernel) {
       case Kernel::Smooth:
       case Kernel::SmoothTex: {
         Vec3 c = base;
-        if (shading != Shading::VertexColor) {
+        if (shading != Shading::Unlit) {
           if (flip) {
             ensure_eye(v);
             c = apply(light(p_.lights, -eye_normal(v), s_.eye_pos[v], mat.specular, mat.shininess), base);

@@ -102,7 +102,8 @@ Material plg_material(uint16_t d, PlgDialect dialect) {
   m.name = name;
   if (dialect == PlgDialect::BlackArt) {
     m.color = vga_palette(uint8_t(d & 0xff));
-    m.shading = Shading::Flat;  // 1 flat; constant, metallic and glass also one colour a face
+    // 1 flat (lit); constant, metallic and glass are one unlit colour a face.
+    m.shading = ((d >> 12) & 0xf) == 1 ? Shading::Flat : Shading::Unlit;
     m.two_sided = ((d >> 8) & 0xf) != 0;
     return m;
   }
@@ -114,7 +115,7 @@ Material plg_material(uint16_t d, PlgDialect dialect) {
     m.color = vga_palette(uint8_t(d & 0xff));
   }
   switch ((d >> 13) & 3) {
-    case 0: m.shading = Shading::Flat; break;  // pure / constant: see plg.hpp
+    case 0: m.shading = Shading::Unlit; break;  // pure / constant
     case 1: m.shading = Shading::Flat; break;
     case 2: m.shading = Shading::Gouraud; break;
     case 3: m.shading = Shading::Phong; break;

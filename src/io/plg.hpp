@@ -25,8 +25,8 @@ enum class PlgDialect {
 };
 
 // The material a descriptor describes; its name is the descriptor in hex ("0x109f").
-// Constant ("pure") shading has no unlit counterpart in Material, so it is drawn Flat:
-// one colour per face, as in the books, but lit. Indexed colours use vga_palette().
+// Constant ("pure") shading is drawn Shading::Unlit: one colour per face, as in the books.
+// Indexed colours use vga_palette().
 Material plg_material(uint16_t descriptor, PlgDialect dialect);
 
 // Colour `index` of the IBM VGA's default 256-colour palette, in [0, 1].

@@ -67,7 +67,7 @@ Scene make_demo_scene(float time) {
   scene.object(ct).transform.rotation = {radians(70), 0, radians(20)};
 
   // Back row: vertex colours (seed 002's gradient) and wireframe.
-  ObjectId c = add(scene, "gradient cube", gradient_cube(), material({1, 1, 1}, Shading::VertexColor), {-1.2f, 0, -2.6f});
+  ObjectId c = add(scene, "gradient cube", gradient_cube(), material({1, 1, 1}, Shading::Unlit), {-1.2f, 0, -2.6f});
   scene.object(c).transform.rotation = {radians(25), radians(35), 0};
   scene.object(c).material.reset();  // use the cube's own vertex colours
   add(scene, "wire sphere", sphere, material({0.9f, 0.9f, 0.9f}, Shading::Wireframe), {1.2f, 0, -2.6f});

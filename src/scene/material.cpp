@@ -9,7 +9,7 @@ struct ShadingName {
 };
 constexpr ShadingName kShadingNames[] = {
     {Shading::Flat, "flat"},         {Shading::Gouraud, "gouraud"},  {Shading::Phong, "phong"},
-    {Shading::VertexColor, "color"}, {Shading::Wireframe, "wire"},   {Shading::Points, "points"},
+    {Shading::Unlit, "unlit"}, {Shading::Wireframe, "wire"},   {Shading::Points, "points"},
 };
 }  // namespace
 
@@ -20,6 +20,7 @@ std::string_view to_string(Shading shading) {
 }
 
 std::optional<Shading> parse_shading(std::string_view name) {
+  if (name == "color") return Shading::Unlit;  // the older name, still accepted
   for (const auto& s : kShadingNames)
     if (s.name == name) return s.shading;
   return std::nullopt;

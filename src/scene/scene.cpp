@@ -90,15 +90,17 @@ Sphere Scene::bounds() const {
   return s;
 }
 
-void Scene::frame_camera(float aspect) {
+void Scene::frame_camera(float aspect, Vec3 from) {
   Sphere s = bounds();
   float r = s.radius > 0 ? s.radius : 1.0f;
   // Distance at which the sphere fits both the vertical and the horizontal field of view.
   float half = camera.fov_y / 2;
   float half_h = std::atan(std::tan(half) * std::min(aspect, 1.0f));
   float d = r / std::sin(std::min(half, half_h));
-  camera.position = s.center + Vec3{0, 0, d};
+  Vec3 dir = length(from) > 0 ? normalize(from) : Vec3{0, 0, 1};
+  camera.position = s.center + dir * d;
   camera.pitch = camera.yaw = camera.roll = 0;
+  camera.look_at(s.center);
   camera.near = std::max(d - r * 1.01f, d * 1e-3f);
   camera.far = d + r * 1.01f;
   camera.ortho_height = 2 * r;

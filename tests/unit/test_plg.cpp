@@ -160,9 +160,9 @@ TEST(Plg, BlackArtDescriptorBits) {
   EXPECT_EQ(m.shading, Shading::Flat);
   EXPECT_FALSE(m.two_sided);
   EXPECT_EQ(m.color, vga_palette(0x9f));
-  // Constant shading (0) is drawn Flat too; bits 8-11 make a polygon two-sided.
+  // Constant shading (0) is drawn unlit; bits 8-11 make a polygon two-sided.
   Material c = plg_material(0x0112, PlgDialect::BlackArt);
-  EXPECT_EQ(c.shading, Shading::Flat);
+  EXPECT_EQ(c.shading, Shading::Unlit);
   EXPECT_TRUE(c.two_sided);
   EXPECT_EQ(c.color, vga_palette(0x12));
   EXPECT_TRUE(plg_material(0x0f00, PlgDialect::BlackArt).two_sided);
@@ -174,7 +174,7 @@ TEST(Plg, PlxDescriptorBits) {
   // RGB flag, 4.4.4 colour: each nibble n is n / 15.
   Material rgb = plg_material(0x8f80, PlgDialect::Plx);
   EXPECT_EQ(rgb.color, (Vec3{15 / 15.0f, 8 / 15.0f, 0}));
-  EXPECT_EQ(rgb.shading, Shading::Flat);  // shade bits 00: pure (constant), drawn Flat
+  EXPECT_EQ(rgb.shading, Shading::Unlit);  // shade bits 00: pure (constant), unlit
   EXPECT_FALSE(rgb.two_sided);
   // Shade mode, bits 13-14.
   EXPECT_EQ(plg_material(0xa0f0, PlgDialect::Plx).shading, Shading::Flat);     // 01 flat

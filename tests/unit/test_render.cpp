@@ -35,7 +35,7 @@ Mesh square(float half, float z) {
 Material unlit(Vec3 c) {
   Material m;
   m.color = c;
-  m.shading = Shading::VertexColor;  // no vertex colours: the material colour, unlit
+  m.shading = Shading::Unlit;  // no vertex colours: the material colour, unlit
   return m;
 }
 
@@ -213,7 +213,7 @@ TEST(Render, GouraudInterpolatesThreeColours) {
   tri.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   tri.triangles = {{{0, 1, 2}}};
   Material m;
-  m.shading = Shading::VertexColor;
+  m.shading = Shading::Unlit;
   Scene scene;
   ObjectId id = scene.add_object("tri", std::make_shared<Mesh>(tri));
   scene.object(id).material = m;

@@ -146,7 +146,7 @@ TEST(Texture, SuperSamplingGivesCoverageLevels) {
   sq.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
   Material white;
   white.color = {1, 1, 1};
-  white.shading = Shading::VertexColor;
+  white.shading = Shading::Unlit;
   Camera cam;
   cam.position = {0, 0, 0};
   cam.projection = Projection::Orthographic;
@@ -189,7 +189,7 @@ TEST(Texture, PerFaceMaterialsCarryTheirOwnTexture) {
   m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {0, 1}};
   m.triangles = {{{0, 1, 2}}, {{0, 2, 3}}, {{1, 4, 5}}, {{1, 5, 2}}};
   Material plain;
-  plain.shading = Shading::VertexColor;
+  plain.shading = Shading::Unlit;
   plain.color = {0, 1, 0};
   Material textured = plain;
   textured.color = {1, 1, 1};
