@@ -144,7 +144,7 @@ class MeshDraw {
     uint64_t key = (generation_ << 20) | slot;
     if (s_.light_stamp[v] != key) {
       s_.light_stamp[v] = key;
-      s_.light[v] = light(p_.lights, eye_normal(v), s_.eye_pos[v], mat.specular, mat.shininess);
+      s_.light[v] = light(p_.lights, eye_normal(v), s_.eye_pos[v], Specular(mat.specular, mat.shininess));
     }
     return s_.light[v];
   }
@@ -160,7 +160,7 @@ class MeshDraw {
     if (slot != current_slot_) {
       current_slot_ = slot;
       current_draw_ = uint32_t(out_.draws.size());
-      out_.draws.push_back({mat.specular, mat.shininess, tex, env, mat.env_mix, mat.wrap == Wrap::Repeat});
+      out_.draws.push_back({Specular(mat.specular, mat.shininess), tex, env, mat.env_mix, mat.wrap == Wrap::Repeat});
     }
     return current_draw_;
   }
@@ -185,7 +185,7 @@ class MeshDraw {
         if (shading != Shading::Unlit) {
           if (flip) {
             ensure_eye(v);
-            c = apply(light(p_.lights, -eye_normal(v), s_.eye_pos[v], mat.specular, mat.shininess), base);
+            c = apply(light(p_.lights, -eye_normal(v), s_.eye_pos[v], Specular(mat.specular, mat.shininess)), base);
           } else {
             c = apply(vertex_light(v, slot, mat), base);
           }
@@ -231,7 +231,7 @@ class MeshDraw {
     Vec3 n = normalize(normal_.transform_vector(face_normal(mesh_, t)));
     if (flip) n = -n;
     Vec3 centroid = (mesh_.positions[t.v[0]] + mesh_.positions[t.v[1]] + mesh_.positions[t.v[2]]) / 3.0f;
-    Vec3 c = apply(light(p_.lights, n, model_view_.transform_point(centroid), mat.specular, mat.shininess), base);
+    Vec3 c = apply(light(p_.lights, n, model_view_.transform_point(centroid), Specular(mat.specular, mat.shininess)), base);
     return raster::pack_rgba(c.x, c.y, c.z);
   }
 

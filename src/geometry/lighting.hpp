@@ -39,29 +39,39 @@ struct LightTerms {
   Vec3 specular;  // sum of specular, already scaled by Ks
 };
 
+// The specular term of a material: Ks * max(R.V, 0)^exponent. Below `cutoff`,
+// (R.V)^exponent < 2^-12 adds under a sixteenth of an 8-bit step even at Ks = 1, so
+// pow() (the costliest call per pixel) is skipped there.
+struct Specular {
+  float ks = 0, exponent = 32, cutoff = 1;
+  Specular() = default;
+  Specular(float ks_, float exponent_)
+      : ks(ks_), exponent(exponent_), cutoff(ks_ > 0 && exponent_ > 0 ? std::exp2(-12.0f / exponent_) : 0.0f) {}
+};
+
 namespace detail {
-inline void add_light(LightTerms& t, Vec3 n, Vec3 to_light, Vec3 color, Vec3 to_eye, float ks, float shininess) {
+inline void add_light(LightTerms& t, Vec3 n, Vec3 to_light, Vec3 color, Vec3 to_eye, const Specular& s) {
   float nl = dot(n, to_light);
   t.diffuse += color * std::max(nl, 0.0f);
-  if (ks > 0) {
+  if (s.ks > 0) {
     Vec3 r = n * (2 * nl) - to_light;
-    float rv = std::max(dot(r, to_eye), 0.0f);
+    float rv = dot(r, to_eye);
     // As the reference (GLSL) computes it: the highlight is not gated on N.L.
-    if (rv > 0) t.specular += color * (ks * std::pow(rv, shininess));
+    if (rv > s.cutoff) t.specular += color * (s.ks * std::pow(rv, s.exponent));
   }
 }
 }  // namespace detail
 
-// `n` unit normal and `p` position, eye space. ks = 0 skips the specular term.
-inline LightTerms light(const EyeLights& lights, Vec3 n, Vec3 p, float ks, float shininess) {
+// `n` unit normal and `p` position, eye space.
+inline LightTerms light(const EyeLights& lights, Vec3 n, Vec3 p, const Specular& s) {
   LightTerms t{lights.ambient, {}};
-  Vec3 to_eye = ks > 0 ? normalize(-p) : Vec3{};
-  for (const auto& d : lights.directional) detail::add_light(t, n, d.to_light, d.color, to_eye, ks, shininess);
+  Vec3 to_eye = s.ks > 0 ? normalize(-p) : Vec3{};
+  for (const auto& d : lights.directional) detail::add_light(t, n, d.to_light, d.color, to_eye, s);
   for (const auto& pl : lights.point) {
     Vec3 v = pl.position - p;
     float dist = length(v);
     float att = 1.0f / std::max(pl.constant + pl.linear * dist + pl.quadratic * dist * dist, 1e-6f);
-    detail::add_light(t, n, dist > 0 ? v / dist : n, pl.color * att, to_eye, ks, shininess);
+    detail::add_light(t, n, dist > 0 ? v / dist : n, pl.color * att, to_eye, s);
   }
   return t;
 }

@@ -172,7 +172,7 @@ struct PhongShader {
       base = base + (Vec3{c.r, c.g, c.b} - base) * draw.env_mix;
     }
     first = false;
-    Vec3 c = geometry::apply(geometry::light(lights, n, p, draw.specular, draw.shininess), base);
+    Vec3 c = geometry::apply(geometry::light(lights, n, p, draw.specular), base);
     return pack_rgba(c.x, c.y, c.z);
   }
   void step() { in.step(); }

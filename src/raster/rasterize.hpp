@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "raster/bins.hpp"
+#include "geometry/lighting.hpp"
 #include "raster/raster_types.hpp"
 #include "velocity/texture.hpp"
 
@@ -39,8 +40,7 @@ inline constexpr uint8_t kernel_id(Kernel k, Filter f) { return uint8_t(uint8_t(
 
 // Per-draw parameters the per-pixel kernels need.
 struct DrawState {
-  float specular = 0;
-  float shininess = 32;
+  geometry::Specular specular;
   const Texture* texture = nullptr;
   const Texture* env_map = nullptr;
   float env_mix = 1;
