@@ -17,7 +17,7 @@ ScreenVertex to_screen(const Vec4& c, int width, int height) {
   float inv_w = 1.0f / c.w;
   float x = (c.x * inv_w + 1.0f) * (float(width) * 0.5f);
   float y = float(height) - (c.y * inv_w + 1.0f) * (float(height) * 0.5f);
-  return {x, y, (c.z * inv_w) * 0.5f + 0.5f, inv_w};
+  return ScreenVertex::make(x, y, (c.z * inv_w) * 0.5f + 0.5f, inv_w);
 }
 
 // Orientation of a triangle in homogeneous clip space: the sign of det[x y w] is the

@@ -22,8 +22,8 @@ Plane make_plane(const double x[3], const double y[3], const double v[3], double
 }  // namespace
 
 Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-  if (!snappable(a) || !snappable(b) || !snappable(c)) return Facing::Degenerate;
-  int64_t x0 = snap(a.x), y0 = snap(a.y), x1 = snap(b.x), y1 = snap(b.y), x2 = snap(c.x), y2 = snap(c.y);
+  if (!a.snapped || !b.snapped || !c.snapped) return Facing::Degenerate;
+  int64_t x0 = a.fx, y0 = a.fy, x1 = b.fx, y1 = b.fy, x2 = c.fx, y2 = c.fy;
   int64_t area2 = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
   return area2 < 0 ? Facing::Front : area2 > 0 ? Facing::Back : Facing::Degenerate;
 }
@@ -31,11 +31,11 @@ Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& 
 bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const float* var0,
                     const float* var1, const float* var2, int nvar, int width, int height, bool affine,
                     TriangleSetup& t) {
-  if (!snappable(v0) || !snappable(v1) || !snappable(v2)) return false;
+  if (!v0.snapped || !v1.snapped || !v2.snapped) return false;
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   const float* var[3] = {var0, var1, var2};
   int64_t X[3], Y[3];
-  for (int i = 0; i < 3; ++i) X[i] = snap(v[i]->x), Y[i] = snap(v[i]->y);
+  for (int i = 0; i < 3; ++i) X[i] = v[i]->fx, Y[i] = v[i]->fy;
   int64_t area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
   if (area2 == 0) return false;
   // The edge functions below want a positive area (interior on the positive side of
@@ -90,7 +90,7 @@ bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const Screen
 }
 
 bool setup_line(const ScreenVertex& a, const ScreenVertex& b, uint32_t color, int width, int height, LineSetup& l) {
-  if (!snappable(a) || !snappable(b)) return false;
+  if (!a.snapped || !b.snapped) return false;
   l = {a.x, a.y, a.z, b.x, b.y, b.z, 0, 0, 0, 0, color, (a.z + b.z) / 2};
   l.min_x = std::max(0, int(std::floor(std::min(a.x, b.x))) - 1);
   l.min_y = std::max(0, int(std::floor(std::min(a.y, b.y))) - 1);
@@ -100,6 +100,7 @@ bool setup_line(const ScreenVertex& a, const ScreenVertex& b, uint32_t color, in
 }
 
 bool setup_point(const ScreenVertex& p, uint32_t color, int width, int height, PointSetup& out) {
+  if (!p.snapped) return false;
   float fx = std::floor(p.x), fy = std::floor(p.y);
   if (!(fx >= 0 && fy >= 0 && fx < float(width) && fy < float(height))) return false;
   out = {int(fx), int(fy), p.z, color, p.z};

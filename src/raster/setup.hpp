@@ -8,11 +8,29 @@
 
 namespace velocity::raster {
 
-// A vertex after the perspective divide and viewport transform.
+// Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
+inline int64_t snap(float v) { return int64_t(std::lrint(v * float(kSubpixelOne))); }
+
+// The geometry stage keeps vertices within the guard band (|x|, |y| < 2^15 pixels), but a
+// degenerate projection (a camera with near <= 0, say) can still hand over NaN or huge
+// coordinates. Set-up refuses anything outside +-2^20 pixels: snapped values then stay
+// below 2^28 (they fit int32), so edge functions (products below 2^58) cannot overflow
+// int64.
+inline constexpr float kMaxScreenCoord = 1048576.0f;
+
+// A vertex after the perspective divide and viewport transform, snapped once (per
+// vertex, not per triangle that uses it).
 struct ScreenVertex {
-  float x, y;   // pixels, y down
-  float z;      // window depth in [0, 1]
-  float inv_w;  // 1 / w_clip
+  float x, y;      // pixels, y down
+  float z;         // window depth in [0, 1]
+  float inv_w;     // 1 / w_clip
+  int32_t fx, fy;  // x, y in 24.8 fixed point; meaningful only when `snapped`
+  bool snapped;    // false when |x| or |y| exceeds kMaxScreenCoord, or is NaN
+
+  static ScreenVertex make(float x, float y, float z, float inv_w) {
+    bool ok = std::fabs(x) <= kMaxScreenCoord && std::fabs(y) <= kMaxScreenCoord;  // false for NaN
+    return {x, y, z, inv_w, ok ? int32_t(snap(x)) : 0, ok ? int32_t(snap(y)) : 0, ok};
+  }
 };
 
 enum class Facing { Front, Back, Degenerate };
@@ -30,18 +48,6 @@ Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& 
 bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const float* var0,
                     const float* var1, const float* var2, int num_varyings, int width, int height, bool affine,
                     TriangleSetup& out);
-
-// Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
-inline int64_t snap(float v) { return int64_t(std::lrint(v * float(kSubpixelOne))); }
-
-// The geometry stage keeps vertices within the guard band (|x|, |y| < 2^15 pixels), but a
-// degenerate projection (a camera with near <= 0, say) can still hand over NaN or huge
-// coordinates. Set-up refuses anything outside +-2^20 pixels: snapped values then stay
-// below 2^28, so edge functions (products below 2^58) cannot overflow int64.
-inline constexpr float kMaxScreenCoord = 1048576.0f;
-inline bool snappable(const ScreenVertex& v) {
-  return std::fabs(v.x) <= kMaxScreenCoord && std::fabs(v.y) <= kMaxScreenCoord;  // false for NaN
-}
 
 bool setup_line(const ScreenVertex& a, const ScreenVertex& b, uint32_t color, int width, int height, LineSetup& out);
 bool setup_point(const ScreenVertex& p, uint32_t color, int width, int height, PointSetup& out);

@@ -27,7 +27,7 @@ void rasterize_count(const ScreenVertex& a, const ScreenVertex& b, const ScreenV
     }
 }
 
-ScreenVertex sv(float x, float y) { return {x, y, 0.5f, 1.0f}; }
+ScreenVertex sv(float x, float y) { return ScreenVertex::make(x, y, 0.5f, 1.0f); }
 
 }  // namespace
 
