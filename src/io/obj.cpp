@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <map>
+#include <unordered_map>
 #include <sstream>
-#include <tuple>
 
 #include "io/read_file.hpp"
 #include "velocity/error.hpp"
@@ -59,6 +59,18 @@ class BoundedMaterialReader : public tinyobj::MaterialReader {
   size_t budget_;
 };
 
+// One Velocity vertex per distinct (position, normal, uv) index triple of the file.
+struct CornerKey {
+  int v, n, t;
+  bool operator==(const CornerKey&) const = default;
+};
+struct CornerHash {
+  size_t operator()(const CornerKey& k) const {
+    return size_t(uint32_t(k.v)) * 0x9E3779B97F4A7C15ull ^ size_t(uint32_t(k.n)) * 0xC2B2AE3D27D4EB4Full ^
+           size_t(uint32_t(k.t));
+  }
+};
+
 }  // namespace
 
 Model load_obj(const std::string& path, const LoadOptions& options) {
@@ -93,7 +105,8 @@ Model load_obj(const std::string& path, const LoadOptions& options) {
     auto mesh = std::make_shared<Mesh>();
     mesh->name = shape.name;
     // One Velocity vertex per distinct (position, normal, uv) triple.
-    std::map<std::tuple<int, int, int>, uint32_t> remap;
+    std::unordered_map<CornerKey, uint32_t, CornerHash> remap;
+    remap.reserve(std::min(idx.size(), at.vertices.size() / 3 * 2 + 16));
     bool all_normals = true, any_uv = false;
     for (const auto& i : idx) all_normals &= i.normal_index >= 0, any_uv |= i.texcoord_index >= 0;
     auto fetch = [&](const std::vector<float>& a, int i, int n, int k) -> float {
@@ -105,7 +118,7 @@ Model load_obj(const std::string& path, const LoadOptions& options) {
       Triangle t;
       for (int k = 0; k < 3; ++k) {
         const auto& i = idx[f + k];
-        auto key = std::make_tuple(i.vertex_index, all_normals ? i.normal_index : -1, any_uv ? i.texcoord_index : -1);
+        CornerKey key{i.vertex_index, all_normals ? i.normal_index : -1, any_uv ? i.texcoord_index : -1};
         auto [it, inserted] = remap.try_emplace(key, uint32_t(mesh->positions.size()));
         if (inserted) {
           mesh->positions.push_back({fetch(at.vertices, i.vertex_index, 3, 0), fetch(at.vertices, i.vertex_index, 3, 1),
