@@ -4,12 +4,15 @@
 #   cmake, ninja-build, g++          the build
 #   libstb-dev                       PNG/JPEG/... read and write (stb_image, stb_image_write)
 #   libtinyobjloader-dev             OBJ files
+#   libassimp-dev                    glTF 2.0, 3DS, PLY and STL files (Assimp)
+#   nlohmann-json3-dev               JSON, to check a glTF file before Assimp reads it
+#   assimp-testmodels                real glTF/3DS/PLY/STL files the format tests read in place
 #   libcli11-dev                     the command line
 #   libgtest-dev                     unit and golden tests
 #   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
 #   pkg-config                       finds OSMesa
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libcli11-dev libgtest-dev libosmesa6-dev)
+packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libosmesa6-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -57,7 +57,8 @@ struct Model {
 };
 
 // Loads a model, choosing the reader by the file's extension (case-insensitive):
-// .asc (3D Studio ASCII), .plg/.plx (REND386 / Black Art / T3D), .obj.
+// .asc (3D Studio ASCII), .plg/.plx (REND386 / Black Art / T3D), .obj; .gltf, .glb,
+// .3ds, .ply and .stl through load_with_assimp.
 Model load_model(const std::string& path, const LoadOptions& options = {});
 
 // The readers themselves; `name` is used in error messages.
@@ -80,6 +81,38 @@ Model parse_asc(std::string_view text, const std::string& name, const LoadOption
 Model load_plg(const std::string& path, const LoadOptions& options = {});
 Model parse_plg(std::string_view text, const std::string& name, const LoadOptions& options = {});
 Model load_obj(const std::string& path, const LoadOptions& options = {});
+
+// glTF 2.0 (.gltf, .glb), 3D Studio (.3ds), PLY (.ply) and STL (.stl), ASCII and binary,
+// through Assimp (src/io/assimp_adapter.cpp), chosen by the extension; other
+// extensions are refused (Assimp reads more formats, but only these are tested here,
+// damaged files included).
+// One ModelNode per node of the file, the root included, parents first, `local` its
+// matrix; a node's meshes (a glTF mesh's primitives) merged into one Mesh with one
+// Material per primitive material (base-colour factor or diffuse colour, specular,
+// two-sidedness, flat / Phong / unlit shading) and per-face material indices. Normals
+// from the file when it has usable ones, else compute_normals(); uvs from channel 0;
+// per-vertex colours (glTF COLOR_0, PLY red/green/blue) as the file has them. Vertices
+// keep the file's indexing (STL: three per triangle; 3D Studio: three per face).
+// Triangles only: points and lines are dropped with a warning. glTF cameras
+// (perspective and orthographic) become NamedCameras placed by their node; 3D Studio
+// cameras are not converted (Assimp 5.2 loses their target). Lights, textures, skins,
+// animations and morph targets are not converted (meshes come in their bind pose).
+// Throws velocity::Error naming the file for a missing or malformed file (what
+// Velocity's own checks before Assimp found, with the line or byte offset: PLY whole,
+// ASCII STL whole, 3D Studio chunks, glTF JSON and node trees; else Assimp's message),
+// a file without triangles, a non-finite vertex, and when the files read (a glTF's
+// buffers included) or the meshes built would exceed options.max_memory; nothing is
+// returned then.
+Model load_with_assimp(const std::string& path, const LoadOptions& options = {});
+
+// The texture file that the model file at `model_path` names `name`, or "" when there
+// is none. Relative names are looked up in the model's folder: first as written, then
+// with backslashes as slashes, then percent-decoded (glTF URIs), each exactly and then
+// ignoring ASCII case component by component ("IMAGE1.JPG" finds image1.jpg); last,
+// the bare file name beside the model (for paths from the writer's machine, such as
+// "C:\maps\wood.jpg"). Embedded images ("*0", "data:" URIs) give "". Reads the file
+// system only; never throws for a missing file.
+std::string resolve_texture_path(const std::string& model_path, const std::string& name);
 
 // Adds every node of `model` to `scene` as objects (names and hierarchy kept) under
 // `parent`, and its lights. Returns the ids of the root nodes' objects.

@@ -12,8 +12,10 @@ Model load_model(const std::string& path, const LoadOptions& options) {
   if (ext == "asc") return load_asc(path, options);
   if (ext == "plg" || ext == "plx") return load_plg(path, options);
   if (ext == "obj") return load_obj(path, options);
+  if (ext == "gltf" || ext == "glb" || ext == "3ds" || ext == "ply" || ext == "stl")
+    return load_with_assimp(path, options);
   if (ext == "pcx") throw Error(path + ": a PCX file is an image, not a model (read it with read_pcx)");
-  throw Error(path + ": unknown model extension '" + ext + "' (expected .asc, .plg, .plx or .obj)");
+  throw Error(path + ": unknown model extension '" + ext + "' (expected .asc, .plg, .plx, .obj, .gltf, .glb, .3ds, .ply or .stl)");
 }
 
 size_t Model::vertex_count() const {

@@ -58,9 +58,9 @@ TEST_F(ModelFiles, RefusesImagesAndUnknownExtensions) {
   std::string pcx = write("t.pcx", "x");
   EXPECT_EQ(error_of(pcx), pcx + ": a PCX file is an image, not a model (read it with read_pcx)");
   std::string txt = write("t.txt", "x");
-  EXPECT_EQ(error_of(txt), txt + ": unknown model extension 'txt' (expected .asc, .plg, .plx or .obj)");
+  EXPECT_EQ(error_of(txt), txt + ": unknown model extension 'txt' (expected .asc, .plg, .plx, .obj, .gltf, .glb, .3ds, .ply or .stl)");
   std::string none = write("noext", "x");
-  EXPECT_EQ(error_of(none), none + ": unknown model extension '' (expected .asc, .plg, .plx or .obj)");
+  EXPECT_EQ(error_of(none), none + ": unknown model extension '' (expected .asc, .plg, .plx, .obj, .gltf, .glb, .3ds, .ply or .stl)");
 }
 
 TEST_F(ModelFiles, MissingFileDirectoryAndSizeLimit) {
