@@ -28,6 +28,9 @@ struct LoadOptions {
   bool swap_yz = true;
   // Most the loader may allocate for one file, in bytes (vertices, faces, images).
   size_t max_memory = size_t(2) << 30;
+  // load_model: load the texture files materials name (Material::texture_file), found
+  // next to the model; a missing one is a warning, not an error.
+  bool load_textures = true;
 };
 
 // One named part of a model: a mesh (or none, for a pure transform node), its matrix

@@ -44,6 +44,10 @@ struct Material {
 
   // Base-colour texture, addressed by the mesh's uvs; multiplies `color`.
   std::shared_ptr<const Texture> texture;
+  // The texture file a model file names for this material, as written there. load_model
+  // resolves it next to the model (resolve_texture_path) and loads it into `texture`; a
+  // file that is missing or unreadable leaves `texture` empty, with a warning.
+  std::string texture_file;
   TextureMode texture_mode = TextureMode::Modulate;
   // Sphere environment map, addressed by the eye-space normal: u = 0.5 + 0.5 Nx,
   // v = 0.5 + 0.5 Ny (seed 000). Per vertex in flat and Gouraud shading, per pixel in

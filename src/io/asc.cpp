@@ -40,6 +40,14 @@ using namespace detail;
 
 constexpr uint32_t kNoMaterial = UINT32_MAX;
 
+// "floor2.png", "Tiles.JPG": an image file name, by its extension.
+bool names_image_file(std::string_view name) {
+  static constexpr std::string_view kImageExtensions[] = {".png", ".jpg", ".jpeg", ".bmp", ".tga", ".gif", ".pcx"};
+  for (std::string_view ext : kImageExtensions)
+    if (name.size() > ext.size() && starts_with_ci(name.substr(name.size() - ext.size()), ext)) return true;
+  return false;
+}
+
 // The shortest vertex and face lines a file can hold ("Vertex 0: X:0 Y:0 Z:0" is 21
 // bytes, "Face 0: A:0 B:0 C:0" 19): what is left of the text bounds how many more
 // records can follow, whatever a header claims, so reservations stay bounded.
@@ -478,7 +486,9 @@ Mesh build_mesh(AscObject& o, bool swap_yz) {
       Material mat;
       parse_color_code(name, mat.color);
       // Any other name (a 3D Studio library material, a texture file such as
-      // "floor2.png") is kept in the name; the colour stays the default grey.
+      // "floor2.png") is kept in the name; the colour stays the default grey. A name
+      // that is an image file is the material's texture (pinball exports write them).
+      if (names_image_file(name)) mat.texture_file = name;
       mat.name = std::move(name);
       m.materials.push_back(std::move(mat));
     }

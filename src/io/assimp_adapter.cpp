@@ -285,10 +285,13 @@ Material convert_material(const aiMaterial& in) {
   else if (model == aiShadingMode_Phong || model == aiShadingMode_Blinn || m.specular > 0) m.shading = Shading::Phong;
   int two_sided = 0;
   if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) m.two_sided = two_sided != 0;
-  // TODO(textures): the base-colour texture, left to the texture work under way: its
-  // name is (aiTextureType_BASE_COLOR or aiTextureType_DIFFUSE, 0), the file is
-  // resolve_texture_path(model path, name), to go into Material::texture through
-  // load_texture(); a "*N" name is an image embedded in aiScene::mTextures.
+  // The base-colour texture's file name; load_model resolves and loads it. A "*N" name
+  // is an image embedded in aiScene::mTextures, not read yet (resolve_texture_path
+  // gives "" for it, so it is reported as not found).
+  aiString texture;
+  if (in.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS ||
+      in.GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS)
+    m.texture_file = texture.C_Str();
   return m;
 }
 

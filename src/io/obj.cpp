@@ -22,6 +22,7 @@ Material material_from(const tinyobj::material_t& m) {
   Material mat;
   mat.name = m.name;
   mat.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+  mat.texture_file = m.diffuse_texname;  // map_Kd
   float ks = std::max({m.specular[0], m.specular[1], m.specular[2]});
   if (ks > 0) {
     mat.specular = ks;
