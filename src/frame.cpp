@@ -1,6 +1,7 @@
 // The frame, top to bottom: scene -> per-object culling -> geometry stage (transform,
 // light, clip, set up) -> bin -> rasterize tiles -> framebuffer.
 #include <algorithm>
+#include <new>
 #include <unordered_set>
 
 #include "core/thread_pool.hpp"
@@ -107,8 +108,17 @@ struct Renderer::Impl {
                   std::to_string(k) + " super-sampling needs a sample buffer over " +
                   std::to_string(raster::kMaxFramebufferSide) + " a side");
     if (w == width && h == height && k == ssaa && framebuffer.width == w * k) return;
-    framebuffer.resize(w * k, h * k);
-    bins.resize(w * k, h * k);
+    // Allocate first, then swap in: when memory runs out (Framebuffer::resize throws
+    // velocity::Error; Bins::resize changes nothing if it throws) the renderer keeps its
+    // old buffers and size, consistent with each other.
+    Framebuffer next;
+    next.resize(w * k, h * k);
+    try {
+      bins.resize(w * k, h * k);
+    } catch (const std::bad_alloc&) {
+      throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + ": out of memory for the tile bins");
+    }
+    framebuffer = std::move(next);
     width = w, height = h, ssaa = k;
   }
 };
@@ -157,6 +167,9 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   size_t nonfinite_before = r.stats.triangles_nonfinite;
   geometry::draw_mesh(r.params, mesh, world, material, r.scratch, r.primitives, r.stats);
   // One warning per mesh with non-finite vertices (not one per frame, nor per triangle).
+  // The set only grows with distinct bad meshes; a long-running program that makes new
+  // ones forever forgets them now and then (and may warn again) rather than grow.
+  if (r.stats.triangles_nonfinite > nonfinite_before && r.warned_meshes.size() >= 4096) r.warned_meshes.clear();
   if (r.stats.triangles_nonfinite > nonfinite_before && r.warned_meshes.insert(&mesh).second)
     warn("mesh '" + mesh.name + "': " + std::to_string(r.stats.triangles_nonfinite - nonfinite_before) +
          " triangles with NaN or infinite coordinates were dropped");

@@ -17,9 +17,10 @@ const char* light_kind(LightType t) {
   return "?";
 }
 
-int run_info(const std::string& path, bool swap_yz) {
+int run_info(const std::string& path, bool swap_yz, size_t max_memory) {
   LoadOptions options;
   options.swap_yz = swap_yz;
+  options.max_memory = max_memory;
   Model model = load_model(path, options);
   std::printf("file: %s\nobjects: %zu\nvertices: %zu\ntriangles: %zu\n", path.c_str(), model.nodes.size(),
               model.vertex_count(), model.triangle_count());
@@ -59,10 +60,15 @@ int run_info(const std::string& path, bool swap_yz) {
 std::function<int()> add_info_command(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto swap = std::make_shared<bool>(true);
+  auto max_memory = std::make_shared<size_t>(LoadOptions{}.max_memory);
   CLI::App* cmd = app.add_subcommand("info", "Print the objects, counts, materials, lights, cameras and bounds of a model file");
   cmd->add_option("file", *path, "Model file")->required();
   cmd->add_flag("!--no-swap-yz", *swap, "Keep 3D Studio's Z-up coordinates (ASC files)");
-  return [path, swap] { return run_info(*path, *swap); };
+  cmd->add_option("--max-memory", *max_memory, "Most the loader may allocate, e.g. 512M (K, M, G: x1024)")
+      ->transform(CLI::AsSizeValue(false))
+      ->check(CLI::Range(size_t(1), SIZE_MAX))
+      ->capture_default_str();
+  return [path, swap, max_memory] { return run_info(*path, *swap, *max_memory); };
 }
 
 }  // namespace velocity::cli

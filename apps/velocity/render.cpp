@@ -36,6 +36,7 @@ struct RenderArgs {
   int ssaa = 0;  // 0: 3 for the demo scene, 1 for anything else
   int threads = 0;
   bool ortho = false, painter = false, no_cull = false, verbose = false, swap_yz = true, affine = false;
+  size_t max_memory = LoadOptions{}.max_memory;
 };
 
 // --shade: a shading mode, optionally "+tex" and/or "+env" ("phong+env"); "tex" alone is
@@ -125,6 +126,7 @@ Scene build_scene(const RenderArgs& a, float aspect) {
   } else {
     LoadOptions options;
     options.swap_yz = a.swap_yz;
+    options.max_memory = a.max_memory;
     add_to_scene(scene, load_model(a.model, options));
     // A file with no light of its own but an ambient line (3D Studio writes one) would
     // render dark: add the renderer's usual key light from over the viewer's shoulder.
@@ -210,6 +212,10 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_flag("--painter", args->painter, "Painter's algorithm (depth sort) instead of the depth buffer");
   cmd->add_flag("--no-cull", args->no_cull, "Draw back faces too");
   cmd->add_flag("!--no-swap-yz", args->swap_yz, "Keep 3D Studio's Z-up coordinates (ASC files)");
+  cmd->add_option("--max-memory", args->max_memory, "Most the model loader may allocate, e.g. 512M (K, M, G: x1024)")
+      ->transform(CLI::AsSizeValue(false))
+      ->check(CLI::Range(size_t(1), SIZE_MAX))
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Output image (.png or .ppm)")->capture_default_str();
   cmd->add_option("--depth", args->depth_out, "Also write the depth buffer as a greyscale image");
   cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <new>
 
 #include "raster/raster_types.hpp"
 #include "velocity/error.hpp"
@@ -12,9 +13,19 @@ void Framebuffer::resize(int w, int h) {
   if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
     throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
                 std::to_string(raster::kMaxFramebufferSide) + " a side)");
+  // New buffers first, so that running out of memory (a velocity::Error, not
+  // std::bad_alloc) leaves this framebuffer as it was.
+  const size_t n = size_t(w) * size_t(h);
+  try {
+    std::vector<uint32_t> c(n, 0);
+    std::vector<float> d(n, 1.0f);
+    color.swap(c);
+    depth.swap(d);
+  } catch (const std::bad_alloc&) {
+    throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + ": cannot allocate " +
+                std::to_string(n * (sizeof(uint32_t) + sizeof(float))) + " bytes");
+  }
   width = w, height = h;
-  color.assign(size_t(w) * size_t(h), 0);
-  depth.assign(size_t(w) * size_t(h), 1.0f);
 }
 
 Image Framebuffer::color_image() const {

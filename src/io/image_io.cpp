@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <new>
 
+#include "io/read_file.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
 
@@ -16,7 +18,12 @@ namespace velocity {
 Image::Image(int w, int h, uint32_t rgba) : width(w), height(h) {
   if (w <= 0 || h <= 0 || w > 65536 || h > 65536)
     throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1..65536 a side)");
-  pixels.resize(size_t(w) * size_t(h) * 4);
+  try {
+    pixels.resize(size_t(w) * size_t(h) * 4);
+  } catch (const std::bad_alloc&) {
+    throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + ": cannot allocate " +
+                std::to_string(size_t(w) * size_t(h) * 4) + " bytes");
+  }
   uint8_t c[4];
   std::memcpy(c, &rgba, 4);
   for (size_t i = 0; i < pixels.size(); i += 4) std::memcpy(&pixels[i], c, 4);
@@ -35,6 +42,63 @@ std::string extension_of(const std::string& path) {
 void check_image(const std::string& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * image.height * 4)
     throw Error(path + ": cannot write an empty or inconsistent image");
+}
+
+// stb_image 2.27 (Debian 12's libstb) trusts the 16 code-length counts of a JPEG DHT
+// table: counts adding up to more than 256 make stbi__build_huffman write past its
+// table (found by tests/fuzz/fuzz_image.cpp; upstream 2.28 refuses them). Walk the
+// marker segments as stb does and refuse such a file before stb sees it. Bytes past the
+// end read as 0, as stb reads them.
+// Most pixels read_image accepts: 8192x8192 (256 MiB as RGBA8), a bound on what a small
+// file can make the decoder allocate.
+constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
+
+bool jpeg_huffman_counts_ok(const uint8_t* d, size_t n) {
+  auto at = [&](size_t i) -> size_t { return i < n ? d[i] : 0; };
+  size_t i = 0;
+  if (at(i) != 0xFF) return true;
+  while (i < n && d[i] == 0xFF) ++i;
+  if (at(i) != 0xD8) return true;  // not a JPEG (no SOI)
+  while (++i < n) {
+    if (d[i] != 0xFF) continue;  // entropy-coded data or padding: stb scans for the next marker too
+    while (i + 1 < n && d[i + 1] == 0xFF) ++i;
+    size_t m = at(i + 1);
+    if (m == 0x00 || m == 0x01 || (m >= 0xD0 && m <= 0xD9)) continue;  // no length field
+    long len = long(at(i + 2) << 8 | at(i + 3));
+    if (m == 0xC4)
+      for (long left = len - 2, p = long(i) + 4; left > 0;) {
+        size_t count = 0;
+        for (int k = 1; k <= 16; ++k) count += at(size_t(p) + size_t(k));
+        if (count > 256) return false;
+        p += 17 + long(count), left -= 17 + long(count);
+      }
+    i += 1 + size_t(len);
+  }
+  return true;
+}
+
+// stb_image 2.27 reads a binary PGM/PPM with a maximum value above 255 as 16 bits per
+// channel, but converts it to RGBA as if it were 8 bits, then reads that buffer as 16
+// bits: a heap over-read of the image's size (found by tests/fuzz/fuzz_image.cpp;
+// fixed upstream in 2.28). Parse the header as stb does and refuse such files.
+bool pnm_is_16_bit(const uint8_t* d, size_t n) {
+  if (n < 2 || d[0] != 'P' || (d[1] != '5' && d[1] != '6')) return false;
+  size_t i = 2;
+  auto space = [](uint8_t c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; };
+  auto skip = [&] {  // white space and '#' comments, as stbi__pnm_skip_whitespace
+    for (;;) {
+      while (i < n && space(d[i])) ++i;
+      if (i >= n || d[i] != '#') return;
+      while (i < n && d[i] != '\n' && d[i] != '\r') ++i;
+    }
+  };
+  uint64_t value = 0;
+  for (int field = 0; field < 3; ++field) {  // width, height, maximum value
+    skip();
+    value = 0;
+    while (i < n && d[i] >= '0' && d[i] <= '9') value = std::min<uint64_t>(value * 10 + (d[i++] - '0'), 1u << 20);
+  }
+  return value > 255;
 }
 
 }  // namespace
@@ -67,9 +131,27 @@ void write_image(const std::string& path, const Image& image) {
 }
 
 Image read_image(const std::string& path) {
-  int w = 0, h = 0, n = 0;
-  std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(path.c_str(), &w, &h, &n, 4), &stbi_image_free);
+  // Through read_file: a missing file, a directory, a device or a FIFO gets a clear
+  // error, and the size is bounded (as read_pcx's).
+  std::string bytes = detail::read_file(path, size_t(256) << 20);
+  const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
+  if (!jpeg_huffman_counts_ok(p, bytes.size()))
+    throw Error(path + ": cannot read image (corrupt JPEG: a Huffman table has more than 256 codes)");
+  if (pnm_is_16_bit(p, bytes.size()))
+    throw Error(path + ": cannot read image (16-bit PGM/PPM files are not supported)");
+  // The header's size, before stb allocates for it: a 14-byte GIF can claim 65535x65535
+  // (stb would allocate and clear three buffers of that size). Images are refused above
+  // kMaxImagePixels.
+  int w = 0, h = 0, n = 0;  // bytes.size() < 2^31: the casts are exact
+  if (stbi_info_from_memory(p, int(bytes.size()), &w, &h, &n) &&
+      (w > 65536 || h > 65536 || int64_t(w) * h > kMaxImagePixels))
+    throw Error(path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + ", more than the limit of " +
+                std::to_string(kMaxImagePixels >> 20) + " megapixels");
+  std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load_from_memory(p, int(bytes.size()), &w, &h, &n, 4),
+                                                 &stbi_image_free);
   if (!data) throw Error(path + ": cannot read image (" + stbi_failure_reason() + ")");
+  if (w > 65536 || h > 65536)
+    throw Error(path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + ", more than 65536 a side");
   Image image(w, h);
   std::memcpy(image.pixels.data(), data.get(), image.pixels.size());
   return image;

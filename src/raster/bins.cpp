@@ -5,10 +5,10 @@
 namespace velocity::raster {
 
 void Bins::resize(int width, int height) {
+  const int tiles_x = (width + kTileSize - 1) / kTileSize, tiles_y = (height + kTileSize - 1) / kTileSize;
+  lists_.resize(size_t(tiles_x) * tiles_y);  // if this throws, nothing has changed
   width_ = width, height_ = height;
-  tiles_x_ = (width + kTileSize - 1) / kTileSize;
-  tiles_y_ = (height + kTileSize - 1) / kTileSize;
-  lists_.resize(size_t(tiles_x_) * tiles_y_);
+  tiles_x_ = tiles_x, tiles_y_ = tiles_y;
   clear();
 }
 

@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (tests/fuzz) with clang in build-fuzz and runs each for
+# SECONDS (default 30).
+#
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp
+#
+# Seeds: tests/fuzz/corpus/<target>, tests/fuzz/regressions/<target>, the project's own
+# test files for the format, and the real files under ../shared/data read in place when
+# present (never copied: see ../shared/data/SOURCES.md). What the fuzzer learns stays in
+# build-fuzz/corpus/<target> for the next run. Logs go to $FUZZ_LOG_DIR (default
+# build-fuzz/logs), crashing inputs to build-fuzz/artifacts/<target>/.
+#
+# A finding fails the script. To keep it as a regression test: copy the input to
+# tests/fuzz/regressions/<target>/ (ctest's fuzz_replay_<target> replays it in the
+# normal build), then fix the bug.
+#
+# Installs clang and libFuzzer's runtime (Debian: clang, libclang-rt-14-dev) when
+# missing; the normal build does not need them.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+seconds="${1:-30}"
+[[ $# -gt 0 ]] && shift
+all_targets=(asc plg pcx obj image raster assimp)
+targets=("$@")
+((${#targets[@]})) || targets=("${all_targets[@]}")
+for t in "${targets[@]}"; do
+  [[ " ${all_targets[*]} " == *" $t "* ]] || { echo "fuzz.sh: unknown target '$t' (expected: ${all_targets[*]})" >&2; exit 2; }
+done
+[[ "$seconds" =~ ^[0-9]+$ ]] || { echo "fuzz.sh: SECONDS must be a whole number, got '$seconds'" >&2; exit 2; }
+
+"$root/scripts/deps.sh"
+missing=()
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "fuzz.sh: installing ${missing[*]}" >&2
+  sudo=""
+  [[ $(id -u) -eq 0 ]] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+build="$root/build-fuzz"
+jobs="${FUZZ_BUILD_JOBS:-2}"
+CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON \
+  -DVELOCITY_WERROR=OFF >/dev/null
+cmake --build "$build" -j"$jobs" --target "${targets[@]/#/velocity_fuzz_}"
+
+shared="$(cd "$root/.." && pwd)/shared/data"
+logs="${FUZZ_LOG_DIR:-$build/logs}"
+mkdir -p "$logs"
+
+# assimp: the first byte of an input picks the format (fuzz_assimp.cpp); Debian's
+# assimp-testmodels files under 128 KiB become seeds with that byte in front.
+assimp_seeds() {
+  local dir="$build/seeds/assimp" f ext k
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  [[ -d /usr/share/assimp/models ]] || { echo "$dir"; return; }
+  while IFS= read -r f; do
+    ext="${f##*.}"
+    case "${ext,,}" in gltf) k=0 ;; glb) k=1 ;; 3ds) k=2 ;; ply) k=3 ;; stl) k=4 ;; *) continue ;; esac
+    { printf "\\$(printf '%03o' "$k")"; cat "$f"; } >"$dir/$(basename "$f").seed"
+  done < <(find /usr/share/assimp/models -type f -size -128k)
+  echo "$dir"
+}
+
+# Seeds that are files, not folders, go through a folder of links (libFuzzer treats a
+# file argument as "run this input", not as a seed).
+seed_dir() {  # target files...
+  local dir="$build/seeds/$1"
+  shift
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  local f
+  for f in "$@"; do [[ -f "$f" ]] && ln -sf "$f" "$dir/"; done
+  echo "$dir"
+}
+
+max_len() {
+  case "$1" in
+    raster) echo 4096 ;;
+    *) echo 131072 ;;
+  esac
+}
+
+status=0
+summary=()
+for t in "${targets[@]}"; do
+  work="$build/corpus/$t"
+  artifacts="$build/artifacts/$t"
+  mkdir -p "$work" "$artifacts"
+  dirs=("$work" "$root/tests/fuzz/corpus/$t")
+  [[ -d "$root/tests/fuzz/regressions/$t" ]] && dirs+=("$root/tests/fuzz/regressions/$t")
+  case "$t" in
+    asc) dirs+=("$(seed_dir asc "$root"/tests/data/models/*.[aA][sS][cC])")
+         [[ -d "$shared/models/asc" ]] && dirs+=("$shared/models/asc") ;;
+    plg) [[ -d "$shared/models/plg" ]] && dirs+=("$shared/models/plg" "$shared/models/plg/invalid") ;;
+    pcx) [[ -d "$shared/textures" ]] && dirs+=("$(seed_dir pcx "$shared"/textures/*.[pP][cC][xX])") ;;
+    assimp) dirs+=("$(assimp_seeds)") ;;
+  esac
+  dict=()
+  [[ -f "$root/tests/fuzz/$t.dict" ]] && dict=("-dict=$root/tests/fuzz/$t.dict")
+  log="$logs/$t.log"
+  echo "fuzz.sh: $t for ${seconds}s (log: $log)"
+  set +e
+  ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+    LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0" \
+    "$build/tests/fuzz/velocity_fuzz_$t" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 \
+    -malloc_limit_mb=2048 -max_len="$(max_len "$t")" -print_final_stats=1 -artifact_prefix="$artifacts/" \
+    "${dict[@]}" "${dirs[@]}" >"$log" 2>&1
+  rc=$?
+  set -e
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
+  cov=$(grep -oE '(INITED|DONE|REDUCE|NEW|pulse) +cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+' || true)
+  if ((rc != 0)); then
+    status=1
+    found=$(ls -t "$artifacts" 2>/dev/null | head -1)
+    summary+=("$t: FINDING (exit $rc) execs=${execs:-?} ${cov} input=$artifacts/$found")
+    grep -m3 -E 'ERROR: |runtime error|fuzz_check failed|deadly signal|out-of-memory|timeout' "$log" | sed 's/^/    /' >&2 || true
+  else
+    summary+=("$t: ok execs=${execs:-?} ${cov}")
+  fi
+done
+echo "fuzz.sh: results (${seconds}s per target)"
+printf '  %s\n' "${summary[@]}"
+if ((status)); then
+  echo "fuzz.sh: findings above. Keep each input as tests/fuzz/regressions/<target>/<name> and fix the bug." >&2
+fi
+exit $status

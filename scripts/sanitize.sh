@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Builds everything with sanitizers and runs the tests (CTest).
+#
+#   scripts/sanitize.sh asan [CTEST ARGS...]   AddressSanitizer + UndefinedBehaviorSanitizer
+#                                              + LeakSanitizer, all of ctest, in build-asan
+#   scripts/sanitize.sh tsan [CTEST ARGS...]   ThreadSanitizer, in build-tsan: the unit and
+#                                              golden tests, the fuzz corpora and the
+#                                              multi-threaded renders (tiles on the pool)
+#
+# Any report fails the test that caused it: UB is fatal (-fno-sanitize-recover=all), leaks
+# are checked at every process exit (detect_leaks=1), and a report in the output of a
+# test that expects a failure still fails it (FAIL_REGULAR_EXPRESSION, see CMakeLists.txt).
+# Mesa's llvmpipe (the golden tests' reference) is not instrumented; what it does is
+# suppressed precisely in tests/sanitizers/*.supp, never our code.
+# Optimised with debug lines (-O2 -g1) and assertions on (no NDEBUG).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+mode="${1:-}"
+[[ $# -gt 0 ]] && shift
+supp="$root/tests/sanitizers"
+case "$mode" in
+  asan)
+    build="$root/build-asan"
+    sanitize="address,undefined"
+    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_init_order=1:check_initialization_order=1:suppressions=$supp/asan.supp"
+    export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan.supp"
+    ctest_args=()
+    ;;
+  tsan)
+    build="$root/build-tsan"
+    sanitize="thread"
+    export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp"
+    # What runs on several threads, and what feeds it: the unit tests (the renderer on
+    # 1..8 threads among them), the golden tests, the fuzz corpora, the CLI and the soak
+    # on 4 threads. The install-and-build-downstream test has no threads of ours.
+    ctest_args=(-E '^downstream_find_package$')
+    ;;
+  *)
+    echo "usage: scripts/sanitize.sh asan|tsan [ctest arguments...]" >&2
+    exit 2
+    ;;
+esac
+
+"$root/scripts/deps.sh"
+werror=OFF
+[[ "${CI:-}" == "true" ]] && werror=ON  # as test.sh: warnings are errors in CI
+start=$SECONDS
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
+  -DVELOCITY_SANITIZE="$sanitize" -DVELOCITY_WERROR=$werror >/dev/null
+cmake --build "$build" -j"${SANITIZE_BUILD_JOBS:-2}"
+built=$SECONDS
+cd "$build"
+set +e
+ctest --output-on-failure -j"${SANITIZE_TEST_JOBS:-2}" --timeout 1200 "${ctest_args[@]}" "$@"
+rc=$?
+set -e
+echo "sanitize.sh $mode: build $((built - start)) s, tests $((SECONDS - built)) s, ctest exit $rc"
+exit $rc
