@@ -34,10 +34,15 @@ int run_info(const std::string& path, bool swap_yz, size_t max_memory) {
     const Mesh& m = *n.mesh;
     std::printf("  %-24s %8zu vertices %8zu triangles %3zu materials%s\n", n.name.c_str(), m.vertex_count(),
                 m.triangle_count(), m.materials.size(), m.uvs.empty() ? "" : ", uv");
-    for (const Material& mat : m.materials)
+    for (const Material& mat : m.materials) {
       std::printf("    material %-20s colour %.3f %.3f %.3f  %s%s\n", ('"' + mat.name + '"').c_str(), mat.color.x,
                   mat.color.y, mat.color.z, std::string(to_string(mat.shading)).c_str(),
                   mat.two_sided ? ", two-sided" : "");
+      if (!mat.texture_file.empty())
+        std::printf("      texture %s (%s)\n", mat.texture_file.c_str(),
+                    mat.texture ? (std::to_string(mat.texture->width()) + "x" + std::to_string(mat.texture->height())).c_str()
+                                : "not found");
+    }
     if (m.positions.empty()) continue;
     Bounds b = m.bounds();
     if (!any) all = b, any = true;
