@@ -10,9 +10,14 @@
 # build-fuzz/corpus/<target> for the next run. Logs go to $FUZZ_LOG_DIR (default
 # build-fuzz/logs), crashing inputs to build-fuzz/artifacts/<target>/.
 #
-# A finding fails the script. To keep it as a regression test: copy the input to
-# tests/fuzz/regressions/<target>/ (ctest's fuzz_replay_<target> replays it in the
-# normal build), then fix the bug.
+# A finding fails the script with exit status 3 (other failures: 1 or 2). To keep it as
+# a regression test: copy the input to tests/fuzz/regressions/<target>/ (ctest's
+# fuzz_replay_<target> replays it in the normal build), then fix the bug.
+#
+# FUZZ_KEEP_GOING=1 is for long runs: libFuzzer's fork mode (-fork=1) goes on after a
+# crash, timeout or out-of-memory, keeps every such input in the artifacts folder and
+# counts them; the run still fails (3) at the end if there was any. Each result line gives
+# the CPU time the target used (user + system, its child processes included).
 #
 # Installs clang and libFuzzer's runtime (Debian: clang, libclang-rt-14-dev) when
 # missing; the normal build does not need them.
@@ -102,25 +107,34 @@ for t in "${targets[@]}"; do
   esac
   dict=()
   [[ -f "$root/tests/fuzz/$t.dict" ]] && dict=("-dict=$root/tests/fuzz/$t.dict")
+  keep_going=()
+  [[ "${FUZZ_KEEP_GOING:-0}" == 1 ]] && keep_going=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   log="$logs/$t.log"
   echo "fuzz.sh: $t for ${seconds}s (log: $log)"
+  known=$(ls "$artifacts" | wc -l)
   set +e
-  ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+  TIMEFORMAT='%U %S'
+  { time ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
     LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0" \
     "$build/tests/fuzz/velocity_fuzz_$t" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2560 \
     -malloc_limit_mb=2048 -max_len="$(max_len "$t")" -print_final_stats=1 -artifact_prefix="$artifacts/" \
-    "${dict[@]}" "${dirs[@]}" >"$log" 2>&1
+    "${keep_going[@]}" "${dict[@]}" "${dirs[@]}" >"$log" 2>&1 ; } 2>"$logs/$t.cpu"
   rc=$?
   set -e
+  cpu=$(awk '{ printf "%d", $1 + $2 }' "$logs/$t.cpu")
+  findings=$(( $(ls "$artifacts" | wc -l) - known ))
+  ((findings == 0)) || rc=${rc/#0/1}
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
-  cov=$(grep -oE '(INITED|DONE|REDUCE|NEW|pulse) +cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+' || true)
+  # Fork mode prints no final stats; its status lines start "#EXECUTIONS: cov: ...".
+  [[ -n "$execs" ]] || execs=$(grep -oE '^#[0-9]+: cov:' "$log" | tail -1 | grep -oE '[0-9]+' || true)
+  cov=$(grep -oE '((INITED|DONE|REDUCE|NEW|pulse) +|^#[0-9]+: )cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+' || true)
   if ((rc != 0)); then
-    status=1
+    status=3
     found=$(ls -t "$artifacts" 2>/dev/null | head -1)
-    summary+=("$t: FINDING (exit $rc) execs=${execs:-?} ${cov} input=$artifacts/$found")
+    summary+=("$t: FINDING (exit $rc) execs=${execs:-?} ${cov} cpu=${cpu}s artifacts=$findings newest=$artifacts/$found")
     grep -m3 -E 'ERROR: |runtime error|fuzz_check failed|deadly signal|out-of-memory|timeout' "$log" | sed 's/^/    /' >&2 || true
   else
-    summary+=("$t: ok execs=${execs:-?} ${cov}")
+    summary+=("$t: ok execs=${execs:-?} ${cov} cpu=${cpu}s")
   fi
 done
 echo "fuzz.sh: results (${seconds}s per target)"

@@ -185,7 +185,7 @@ std::shared_ptr<const std::string> check_file(const std::string& path, size_t ma
   if (detail::looks_like_ply(bytes)) detail::check_ply(bytes, path);
   if (ext == "stl" && detail::is_ascii_stl(bytes)) detail::check_ascii_stl(bytes, path);
   if (ext == "3ds") detail::check_3ds(bytes, path);
-  if (ext == "gltf" || ext == "glb") return std::make_shared<const std::string>(detail::prepare_gltf(bytes, path));
+  if (ext == "gltf" || ext == "glb") return std::make_shared<const std::string>(detail::prepare_gltf(bytes, path, max_memory));
   return nullptr;
 }
 

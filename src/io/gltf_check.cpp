@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <cstring>
 #include <iterator>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "velocity/error.hpp"
@@ -197,6 +199,162 @@ void check_required_extensions(const json& root, const std::string& path) {
       throw Error(path + ": the file requires glTF extension " + name.dump() + ", which Velocity does not read");
 }
 
+// A non-negative integer member of `object` (`fallback` when absent and optional), at
+// most 2^53 (JSON's exact integers), so that the sums and products below cannot wrap.
+uint64_t size_member(const json& object, const char* key, std::optional<uint64_t> fallback, const std::string& where,
+                     const std::string& path) {
+  auto it = object.find(key);
+  if (it == object.end()) {
+    if (fallback) return *fallback;
+    throw Error(path + ": " + where + "has no \"" + key + "\"");
+  }
+  if (!it->is_number_integer() || it->get<int64_t>() < 0 || it->get<uint64_t>() > (uint64_t(1) << 53))
+    throw Error(path + ": " + where + "\"" + key + "\" is " + it->dump() + ", expected a whole number from 0 to 2^53");
+  return it->get<uint64_t>();
+}
+
+// Bytes base64 text of `chars` characters (its '=' padding included) decodes to.
+uint64_t base64_bytes(std::string_view text) {
+  uint64_t n = text.size() / 4 * 3;
+  if (!text.empty() && text.back() == '=') --n;
+  if (text.size() > 1 && text[text.size() - 2] == '=') --n;
+  return n;
+}
+
+// What the binary data must hold for the accessors to be read: every buffer's length
+// fits the bytes it has (a .glb's BIN chunk, a data URI; files named by URI are checked
+// by Assimp against their size, which LoadOptions::max_memory bounds), every buffer
+// view lies inside its buffer, every accessor's elements inside its view. An accessor
+// with no view, or a sparse one, is count × element size bytes that Assimp allocates
+// and fills before reading anything else: a 2 KB file claiming four billion VEC4s
+// asked for 68 GB. Those must fit `max_memory` / 4 (Assimp copies them twice more into
+// its own mesh arrays).
+void check_accessors(const json& root, std::string_view bin_chunk, bool glb, size_t max_memory,
+                     const std::string& path) {
+  std::vector<uint64_t> buffer_size;
+  if (const json* buffers = member(root, "buffers", json::value_t::array, "", path)) {
+    for (size_t i = 0; i < buffers->size(); ++i) {
+      const json& buffer = (*buffers)[i];
+      const std::string where = "buffer " + std::to_string(i) + ": ";
+      if (!buffer.is_object()) throw Error(path + ": " + where + "is " + buffer.type_name() + ", expected an object");
+      const uint64_t length = size_member(buffer, "byteLength", std::nullopt, where, path);
+      const json* uri = member(buffer, "uri", json::value_t::string, where, path);
+      if (!uri) {
+        if (!glb || i != 0) throw Error(path + ": " + where + "has no \"uri\" (only a .glb's first buffer may have none)");
+        if (length > bin_chunk.size())
+          throw Error(path + ": " + where + "byteLength " + std::to_string(length) + " is more than the " +
+                      std::to_string(bin_chunk.size()) + " bytes of the GLB's binary chunk");
+      } else if (const std::string& u = uri->get_ref<const std::string&>(); u.rfind("data:", 0) == 0) {
+        const size_t comma = u.find(',');
+        const uint64_t have = comma == std::string::npos ? 0 : base64_bytes(std::string_view(u).substr(comma + 1));
+        if (length > have)
+          throw Error(path + ": " + where + "byteLength " + std::to_string(length) + " is more than the " +
+                      std::to_string(have) + " bytes of its data URI");
+      }
+      buffer_size.push_back(length);
+    }
+  }
+  struct View {
+    uint64_t length, stride;
+  };
+  std::vector<View> views;
+  if (const json* list = member(root, "bufferViews", json::value_t::array, "", path)) {
+    for (size_t i = 0; i < list->size(); ++i) {
+      const json& view = (*list)[i];
+      const std::string where = "bufferView " + std::to_string(i) + ": ";
+      if (!view.is_object()) throw Error(path + ": " + where + "is " + view.type_name() + ", expected an object");
+      const uint64_t buffer = size_member(view, "buffer", std::nullopt, where, path);
+      if (buffer >= buffer_size.size())
+        throw Error(path + ": " + where + "buffer " + std::to_string(buffer) + " does not exist (the file has " +
+                    std::to_string(buffer_size.size()) + ")");
+      const uint64_t offset = size_member(view, "byteOffset", 0, where, path);
+      const uint64_t length = size_member(view, "byteLength", std::nullopt, where, path);
+      if (offset + length > buffer_size[buffer])
+        throw Error(path + ": " + where + "bytes " + std::to_string(offset) + " to " + std::to_string(offset + length) +
+                    " run past the end of buffer " + std::to_string(buffer) + " (" +
+                    std::to_string(buffer_size[buffer]) + " bytes)");
+      const uint64_t stride = size_member(view, "byteStride", 0, where, path);
+      if (stride != 0 && (stride < 4 || stride > 252 || stride % 4 != 0))
+        throw Error(path + ": " + where + "byteStride " + std::to_string(stride) +
+                    " is not a multiple of 4 from 4 to 252");
+      views.push_back({length, stride});
+    }
+  }
+  const json* accessors = member(root, "accessors", json::value_t::array, "", path);
+  if (!accessors) return;
+  // Checks that `count` elements of `element` bytes from `offset` fit view `index`.
+  auto check_fits = [&](const json& index, uint64_t offset, uint64_t count, uint64_t element, bool strided,
+                        const std::string& where) {
+    if (!index.is_number_integer() || index.get<int64_t>() < 0 || index.get<uint64_t>() >= views.size())
+      throw Error(path + ": " + where + "bufferView is " + index.dump() + ", expected one of the file's " +
+                  std::to_string(views.size()) + " buffer views");
+    const View& view = views[index.get<size_t>()];
+    const uint64_t stride = strided && view.stride ? view.stride : element;
+    const uint64_t end = count == 0 ? offset : offset + stride * (count - 1) + element;
+    if (end > view.length)
+      throw Error(path + ": " + where + std::to_string(count) + " elements of " + std::to_string(element) +
+                  " bytes from byte " + std::to_string(offset) + " run past the end of bufferView " + index.dump() +
+                  " (" + std::to_string(view.length) + " bytes)");
+  };
+  for (size_t i = 0; i < accessors->size(); ++i) {
+    const json& accessor = (*accessors)[i];
+    const std::string where = "accessor " + std::to_string(i) + ": ";
+    if (!accessor.is_object()) throw Error(path + ": " + where + "is " + accessor.type_name() + ", expected an object");
+    const uint64_t component = size_member(accessor, "componentType", std::nullopt, where, path);
+    uint64_t component_bytes = 0;
+    switch (component) {
+      case 5120: case 5121: component_bytes = 1; break;  // (UNSIGNED_)BYTE
+      case 5122: case 5123: component_bytes = 2; break;  // (UNSIGNED_)SHORT
+      case 5125: case 5126: component_bytes = 4; break;  // UNSIGNED_INT, FLOAT
+      default:
+        throw Error(path + ": " + where + "componentType " + std::to_string(component) +
+                    " is not one of glTF's (5120-5123, 5125, 5126)");
+    }
+    const json* type = member(accessor, "type", json::value_t::string, where, path);
+    static const std::pair<const char*, uint64_t> kTypes[] = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
+                                                              {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
+    uint64_t components = 0;
+    for (const auto& [name, n] : kTypes)
+      if (type && *type == name) components = n;
+    if (!components)
+      throw Error(path + ": " + where + "type is " + (type ? type->dump() : std::string("missing")) +
+                  ", expected SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4");
+    const uint64_t element = component_bytes * components;
+    const uint64_t count = size_member(accessor, "count", std::nullopt, where, path);
+    const uint64_t offset = size_member(accessor, "byteOffset", 0, where, path);
+    const json* sparse = member(accessor, "sparse", json::value_t::object, where, path);
+    if (auto view = accessor.find("bufferView"); view != accessor.end()) {
+      check_fits(*view, offset, count, element, true, where);
+    }
+    const bool allocated = sparse || accessor.find("bufferView") == accessor.end();
+    if (allocated && count > max_memory / 4 / element)
+      throw Error(path + ": " + where + std::to_string(count) + " elements of " + std::to_string(element) +
+                  " bytes " + (sparse ? "in a sparse accessor" : "with no bufferView") + ": Assimp would allocate " +
+                  std::to_string(count * element) + " bytes, more than a quarter of the limit of " +
+                  std::to_string(max_memory) + " bytes (LoadOptions::max_memory)");
+    if (!sparse) continue;
+    const std::string in = where + "sparse: ";
+    const uint64_t changed = size_member(*sparse, "count", std::nullopt, in, path);
+    if (changed > count)
+      throw Error(path + ": " + in + "count " + std::to_string(changed) + " is more than the accessor's " +
+                  std::to_string(count));
+    const json* indices = member(*sparse, "indices", json::value_t::object, in, path);
+    const json* values = member(*sparse, "values", json::value_t::object, in, path);
+    if (!indices || !values) throw Error(path + ": " + in + "needs both \"indices\" and \"values\"");
+    const uint64_t index_type = size_member(*indices, "componentType", std::nullopt, in + "indices: ", path);
+    const uint64_t index_bytes = index_type == 5121 ? 1 : index_type == 5123 ? 2 : index_type == 5125 ? 4 : 0;
+    if (!index_bytes)
+      throw Error(path + ": " + in + "indices: componentType " + std::to_string(index_type) +
+                  " is not UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (5121, 5123, 5125)");
+    for (const auto& [part, bytes] : {std::pair{indices, index_bytes}, std::pair{values, element}}) {
+      const std::string at = in + (part == indices ? "indices: " : "values: ");
+      auto view = part->find("bufferView");
+      if (view == part->end()) throw Error(path + ": " + at + "has no \"bufferView\"");
+      check_fits(*view, size_member(*part, "byteOffset", 0, at, path), changed, bytes, false, at);
+    }
+  }
+}
+
 // Velocity neither skins nor animates: those parts go (see gltf_check.hpp).
 void remove_animation(json& root) {
   root.erase("skins");
@@ -217,10 +375,18 @@ void put_u32(std::string& out, uint32_t v) {
   for (int k = 0; k < 4; ++k) out += char((v >> (8 * k)) & 0xff);
 }
 
+// A .glb's binary chunk (after the JSON chunk: length, type "BIN\0", data), or nothing.
+std::string_view bin_chunk(std::string_view bytes, std::string_view json_chunk) {
+  const size_t at = size_t(json_chunk.data() + json_chunk.size() - bytes.data());
+  if (bytes.size() - at < 8 || bytes.substr(at + 4, 4) != std::string_view("BIN\0", 4)) return {};
+  return bytes.substr(at + 8, std::min<size_t>(read_u32(bytes, at), bytes.size() - at - 8));
+}
+
 }  // namespace
 
-std::string prepare_gltf(std::string_view bytes, const std::string& path) {
+std::string prepare_gltf(std::string_view bytes, const std::string& path, size_t max_memory) {
   std::string_view text = json_text(bytes, path);
+  const bool is_glb = text.data() != bytes.data();
   check_depth(text, path);
   json root;
   try {
@@ -242,9 +408,11 @@ std::string prepare_gltf(std::string_view bytes, const std::string& path) {
   check_nodes(root, path);
   check_images(root, path);
 
+  check_accessors(root, is_glb ? bin_chunk(bytes, text) : std::string_view(), is_glb, max_memory, path);
+
   remove_animation(root);
   std::string out = root.dump();
-  if (text.data() == bytes.data()) return out;  // a .gltf
+  if (!is_glb) return out;
   // A .glb: header, the new JSON chunk padded with spaces to 4 bytes, the other chunks.
   out.resize((out.size() + 3) / 4 * 4, ' ');
   const std::string_view rest = bytes.substr(20 + text.size());

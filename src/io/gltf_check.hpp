@@ -17,6 +17,7 @@
 // bind pose, as Assimp gives them anyway).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -33,7 +34,11 @@ namespace velocity::detail {
 // extension, has no array mixing types, its "nodes" and "scenes" form trees (every
 // child index names a node, no node is the child of two nodes or its own ancestor,
 // every node a scene lists is a root, listed once), and every image's media type, when
-// it has one, has a '/'.
-std::string prepare_gltf(std::string_view bytes, const std::string& path);
+// it has one, has a '/'; and the binary data holds what the accessors claim: buffers
+// no longer than a .glb's binary chunk or their data URI, buffer views inside their
+// buffer, accessors (and sparse accessors' indices and values) inside their view, and
+// accessors Assimp must allocate itself (no bufferView, or sparse) within
+// `max_memory` / 4.
+std::string prepare_gltf(std::string_view bytes, const std::string& path, size_t max_memory);
 
 }  // namespace velocity::detail

@@ -812,6 +812,96 @@ TEST(FormatsErrors, GltfFilesAssimpWouldCrashOrBlowUpOn) {
   EXPECT_EQ(skinned.triangle_count(), 8u);  // 10 vertices, 24 indices
 }
 
+// The binary data must hold what the accessors claim. Found by fuzzing: a 2 KB glTF
+// whose sparse accessor claimed 2^32 - 1 VEC4s made Assimp allocate 68 GB.
+TEST(FormatsErrors, GltfAccessorsMustFitTheirBuffers) {
+  TempDir dir;
+  const std::string good = read_bytes(write_triangle_gltf(dir));
+  // The triangle's file with `from` replaced by `to`: its error, or "" when it loads.
+  auto edited = [&](const std::string& from, const std::string& to, size_t max_memory = LoadOptions{}.max_memory) {
+    std::string json = good;
+    EXPECT_NE(json.find(from), std::string::npos) << from;
+    if (json.find(from) != std::string::npos) json.replace(json.find(from), from.size(), to);
+    write_bytes(dir / "edited.gltf", json);
+    LoadOptions options;
+    options.max_memory = max_memory;
+    try {
+      load_with_assimp(dir / "edited.gltf", options);
+      return std::string();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+  };
+  const std::string positions = R"("componentType": 5126, "count": 3, "type": "VEC3")";
+  const std::string buffers = R"("buffers": [{"uri": "tri.bin", "byteLength": 92}])";
+  // A sparse accessor with no bufferView: zeros, then the listed elements replaced. This
+  // one moves vertex 2 from (0, 1, 0) to (0, 2, 0) and loads.
+  const std::string sparse = R"("sparse": {"count": 1,
+      "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 2, "byteOffset": 4}})";
+  const std::string two_buffers = R"("buffers": [{"uri": "tri.bin", "byteLength": 92},
+      {"uri": "data:application/octet-stream;base64,AgAAAAAAAAAAAABAAAAAAA==", "byteLength": 16}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 84}, {"buffer": 0, "byteOffset": 84, "byteLength": 6},
+                    {"buffer": 1, "byteLength": 16}])";
+  std::string json = good;
+  json.replace(json.find(buffers), json.find("\"accessors\"") - json.find(buffers), two_buffers + ",\n  ");
+  json.replace(json.find(R"("bufferView": 0, "byteOffset": 0, )" + positions),
+               (R"("bufferView": 0, "byteOffset": 0, )" + positions).size(),
+               R"("bufferView": 0, "byteOffset": 0, "componentType": 5126, "count": 3, "type": "VEC3", )" + sparse);
+  write_bytes(dir / "sparse.gltf", json);
+  Model m = load_with_assimp(dir / "sparse.gltf");
+  ASSERT_EQ(m.triangle_count(), 2u);  // two instances of the triangle
+  const Mesh& mesh = *find_node(m, "plain")->mesh;
+  expect_near(mesh.positions.at(2), {0, 2, 0}, 0, "the sparse value");
+
+  // The finding: four billion elements Assimp would allocate itself.
+  std::string e = edited(R"("bufferView": 0, "byteOffset": 0, )" + positions + ",",
+                         R"("componentType": 5126, "count": 4294967295, "type": "VEC4", )" + sparse + ",");
+  EXPECT_NE(e.find("edited.gltf: accessor 0: 4294967295 elements of 16 bytes in a sparse accessor: Assimp would allocate "
+                   "68719476720 bytes, more than a quarter of the limit of 2147483648 bytes (LoadOptions::max_memory)"),
+            std::string::npos)
+      << e;
+  e = edited(R"("bufferView": 0, "byteOffset": 0, )" + positions, R"("componentType": 5126, "count": 1000, "type": "VEC3")",
+             10000);
+  EXPECT_NE(e.find("accessor 0: 1000 elements of 12 bytes with no bufferView: Assimp would allocate 12000 bytes, more "
+                   "than a quarter of the limit of 10000 bytes"),
+            std::string::npos)
+      << e;
+  // Accessors, views and buffers one element or byte too long.
+  e = edited(R"("byteOffset": 36, "componentType": 5126, "count": 3, "type": "VEC4")",
+             R"("byteOffset": 36, "componentType": 5126, "count": 4, "type": "VEC4")");
+  EXPECT_NE(e.find("accessor 1: 4 elements of 16 bytes from byte 36 run past the end of bufferView 0 (84 bytes)"),
+            std::string::npos)
+      << e;
+  e = edited(R"("byteOffset": 84, "byteLength": 6)", R"("byteOffset": 84, "byteLength": 9)");
+  EXPECT_NE(e.find("bufferView 1: bytes 84 to 93 run past the end of buffer 0 (92 bytes)"), std::string::npos) << e;
+  e = edited(buffers, R"("buffers": [{"uri": "data:application/octet-stream;base64,AAAA", "byteLength": 92}])");
+  EXPECT_NE(e.find("buffer 0: byteLength 92 is more than the 3 bytes of its data URI"), std::string::npos) << e;
+  e = edited(buffers, R"("buffers": [{"byteLength": 92}])");
+  EXPECT_NE(e.find("buffer 0: has no \"uri\" (only a .glb's first buffer may have none)"), std::string::npos) << e;
+  // Strides, component types, element types and counts glTF does not have.
+  e = edited(R"("byteOffset": 0, "byteLength": 84})", R"("byteOffset": 0, "byteLength": 84, "byteStride": 6})");
+  EXPECT_NE(e.find("bufferView 0: byteStride 6 is not a multiple of 4 from 4 to 252"), std::string::npos) << e;
+  e = edited(positions, R"("componentType": 5124, "count": 3, "type": "VEC3")");
+  EXPECT_NE(e.find("accessor 0: componentType 5124 is not one of glTF's"), std::string::npos) << e;
+  e = edited(positions, R"("componentType": 5126, "count": 3, "type": "VEC5")");
+  EXPECT_NE(e.find("accessor 0: type is \"VEC5\", expected SCALAR, VEC2"), std::string::npos) << e;
+  e = edited(positions, R"("componentType": 5126, "count": -3, "type": "VEC3")");
+  EXPECT_NE(e.find("accessor 0: \"count\" is -3, expected a whole number from 0 to 2^53"), std::string::npos) << e;
+  e = edited(R"("bufferView": 1,)", R"("bufferView": 7,)");
+  EXPECT_NE(e.find("accessor 2: bufferView is 7, expected one of the file's 2 buffer views"), std::string::npos) << e;
+  // A .glb whose buffer claims more than its binary chunk.
+  std::string glb_json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 64}]})";
+  glb_json.resize((glb_json.size() + 3) / 4 * 4, ' ');
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  write_bytes(dir / "short.glb", "glTF" + u32(2) + u32(uint32_t(28 + glb_json.size() + 8)) +
+                                     u32(uint32_t(glb_json.size())) + "JSON" + glb_json + u32(8) +
+                                     std::string("BIN\0", 4) + std::string(8, '\0'));
+  e = error_of(dir / "short.glb");
+  EXPECT_NE(e.find("short.glb: buffer 0: byteLength 64 is more than the 8 bytes of the GLB's binary chunk"),
+            std::string::npos)
+      << e;
+}
+
 TEST(FormatsErrors, AsciiStlAssimpWouldMisread) {
   TempDir dir;
   const std::string facet =
