@@ -21,6 +21,9 @@
 #
 # Installs clang and libFuzzer's runtime (Debian: clang, libclang-rt-14-dev) when
 # missing; the normal build does not need them.
+# The whole script is one { ... } block, so bash reads all of it before running any:
+# editing the file during a long run cannot break that run.
+{
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-30}"
@@ -143,3 +146,4 @@ if ((status)); then
   echo "fuzz.sh: findings above. Keep each input as tests/fuzz/regressions/<target>/<name> and fix the bug." >&2
 fi
 exit $status
+}
