@@ -53,24 +53,34 @@ build="$root/build-fuzz"
 jobs="${FUZZ_BUILD_JOBS:-2}"
 CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON \
   -DVELOCITY_WERROR=OFF >/dev/null
-cmake --build "$build" -j"$jobs" --target "${targets[@]/#/velocity_fuzz_}"
+build_targets=("${targets[@]/#/velocity_fuzz_}")
+[[ " ${targets[*]} " == *" assimp "* ]] && build_targets+=(velocity_fuzz_glb_seed)
+cmake --build "$build" -j"$jobs" --target "${build_targets[@]}"
 
 shared="$(cd "$root/.." && pwd)/shared/data"
 logs="${FUZZ_LOG_DIR:-$build/logs}"
 mkdir -p "$logs"
 
 # assimp: the first byte of an input picks the format (fuzz_assimp.cpp); Debian's
-# assimp-testmodels files under 128 KiB become seeds with that byte in front.
+# assimp-testmodels files become seeds with that byte in front. A .gltf whose buffers are
+# .bin files beside it also becomes a GLB with them inside (velocity_fuzz_glb_seed), as the
+# target's input is one file. Seeds stay within the target's max_len.
 assimp_seeds() {
-  local dir="$build/seeds/assimp" f ext k
+  local dir="$build/seeds/assimp" f ext k name
+  local limit=$(( $(max_len assimp) - 1 ))
   rm -rf "$dir"
   mkdir -p "$dir"
   [[ -d /usr/share/assimp/models ]] || { echo "$dir"; return; }
   while IFS= read -r f; do
     ext="${f##*.}"
+    name="$(basename "$(dirname "$f")")_$(basename "$f")"
     case "${ext,,}" in gltf) k=0 ;; glb) k=1 ;; 3ds) k=2 ;; ply) k=3 ;; stl) k=4 ;; *) continue ;; esac
-    { printf "\\$(printf '%03o' "$k")"; cat "$f"; } >"$dir/$(basename "$f").seed"
-  done < <(find /usr/share/assimp/models -type f -size -128k)
+    if [[ $k == 0 ]] && "$build/tests/fuzz/velocity_fuzz_glb_seed" "$f" "$dir/$name.glb.seed" 2>/dev/null; then
+      (( $(stat -c %s "$dir/$name.glb.seed") <= limit )) || rm -f "$dir/$name.glb.seed"
+    fi
+    (( $(stat -c %s "$f") <= limit )) || continue
+    { printf "\\$(printf '%03o' "$k")"; cat "$f"; } >"$dir/$name.seed"
+  done < <(find /usr/share/assimp/models -type f)
   echo "$dir"
 }
 
@@ -89,6 +99,7 @@ seed_dir() {  # target files...
 max_len() {
   case "$1" in
     raster) echo 4096 ;;
+    assimp) echo 262144 ;;  # assimp-testmodels' Draco engine is a 245 KB GLB
     *) echo 131072 ;;
   esac
 }

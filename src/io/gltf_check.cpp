@@ -229,8 +229,9 @@ uint64_t base64_bytes(std::string_view text) {
 // and fills before reading anything else: a 2 KB file claiming four billion VEC4s
 // asked for 68 GB. Those must fit `max_memory` / 4 (Assimp copies them twice more into
 // its own mesh arrays).
-void check_accessors(const json& root, std::string_view bin_chunk, bool glb, size_t max_memory,
-                     const std::string& path) {
+// Returns each accessor's count.
+std::vector<uint64_t> check_accessors(const json& root, std::string_view bin_chunk, bool glb, size_t max_memory,
+                                      const std::string& path) {
   std::vector<uint64_t> buffer_size;
   if (const json* buffers = member(root, "buffers", json::value_t::array, "", path)) {
     for (size_t i = 0; i < buffers->size(); ++i) {
@@ -280,8 +281,9 @@ void check_accessors(const json& root, std::string_view bin_chunk, bool glb, siz
       views.push_back({length, stride});
     }
   }
+  std::vector<uint64_t> counts;
   const json* accessors = member(root, "accessors", json::value_t::array, "", path);
-  if (!accessors) return;
+  if (!accessors) return counts;
   // Checks that `count` elements of `element` bytes from `offset` fit view `index`.
   auto check_fits = [&](const json& index, uint64_t offset, uint64_t count, uint64_t element, bool strided,
                         const std::string& where) {
@@ -321,6 +323,8 @@ void check_accessors(const json& root, std::string_view bin_chunk, bool glb, siz
                   ", expected SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4");
     const uint64_t element = component_bytes * components;
     const uint64_t count = size_member(accessor, "count", std::nullopt, where, path);
+    if (count == 0) throw Error(path + ": " + where + "\"count\" is 0, expected at least 1");
+    counts.push_back(count);
     const uint64_t offset = size_member(accessor, "byteOffset", 0, where, path);
     const json* sparse = member(accessor, "sparse", json::value_t::object, where, path);
     if (auto view = accessor.find("bufferView"); view != accessor.end()) {
@@ -353,10 +357,58 @@ void check_accessors(const json& root, std::string_view bin_chunk, bool glb, siz
       check_fits(*view, size_member(*part, "byteOffset", 0, at, path), changed, bytes, false, at);
     }
   }
+  return counts;
 }
 
-// Velocity neither skins nor animates: those parts go (see gltf_check.hpp).
-void remove_animation(json& root) {
+// Every primitive has positions and enough vertices for its mode. Assimp 5.2.5 makes
+// count - 2 faces of a triangle strip or fan and count - 1 of a line strip, in unsigned
+// arithmetic: a strip of 1 vertex, or one with no POSITION (count 0), asks for 2^32 or
+// 2^64 faces. glTF lets a primitive go without positions (to be skipped); Velocity,
+// which would draw nothing of it, refuses the file instead.
+void check_primitives(const json& root, const std::vector<uint64_t>& accessor_count, const std::string& path) {
+  const json* meshes = member(root, "meshes", json::value_t::array, "", path);
+  if (!meshes) return;
+  static const char* const kModes[] = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
+                                       "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
+  static const uint64_t kMinimum[] = {1, 2, 2, 2, 3, 3, 3};
+  auto count_of = [&](const json& index, const std::string& what) {
+    if (!index.is_number_integer() || index.get<int64_t>() < 0 || index.get<uint64_t>() >= accessor_count.size())
+      throw Error(path + ": " + what + " is " + index.dump() + ", expected one of the file's " +
+                  std::to_string(accessor_count.size()) + " accessors");
+    return accessor_count[index.get<size_t>()];
+  };
+  for (size_t m = 0; m < meshes->size(); ++m) {
+    const json& mesh = (*meshes)[m];
+    const std::string in = "mesh " + std::to_string(m) + ": ";
+    if (!mesh.is_object()) throw Error(path + ": " + in + "is " + mesh.type_name() + ", expected an object");
+    const json* primitives = member(mesh, "primitives", json::value_t::array, in, path);
+    if (!primitives) continue;
+    for (size_t p = 0; p < primitives->size(); ++p) {
+      const json& primitive = (*primitives)[p];
+      const std::string where = "mesh " + std::to_string(m) + ", primitive " + std::to_string(p) + ": ";
+      if (!primitive.is_object())
+        throw Error(path + ": " + where + "is " + primitive.type_name() + ", expected an object");
+      const uint64_t mode = size_member(primitive, "mode", 4, where, path);
+      if (mode > 6) throw Error(path + ": " + where + "mode " + std::to_string(mode) + " is not a glTF mode (0-6)");
+      const json* attributes = member(primitive, "attributes", json::value_t::object, where, path);
+      if (!attributes || !attributes->contains("POSITION"))
+        throw Error(path + ": " + where + "has no POSITION attribute (nothing to draw)");
+      for (const auto& [name, index] : attributes->items()) count_of(index, where + "attribute " + name);
+      uint64_t vertices = count_of((*attributes)["POSITION"], where + "attribute POSITION");
+      if (auto indices = primitive.find("indices"); indices != primitive.end())
+        vertices = count_of(*indices, where + "indices");
+      if (vertices < kMinimum[mode])
+        throw Error(path + ": " + where + "a " + kModes[mode] + " needs at least " + std::to_string(kMinimum[mode]) +
+                    " vertices, it has " + std::to_string(vertices));
+    }
+  }
+}
+
+// Velocity neither skins nor animates: those parts go (see gltf_check.hpp). Nor does it
+// draw lines from model files, and Assimp 5.2.5 crashes (a null pointer) on a LINE_LOOP
+// primitive (mode 2) whose first index is out of range, while it drops such indices in
+// a LINE_STRIP (mode 3): line loops are given to it as line strips.
+void remove_what_velocity_does_not_draw(json& root) {
   root.erase("skins");
   root.erase("animations");
   if (json* nodes = root.contains("nodes") ? &root["nodes"] : nullptr)
@@ -366,8 +418,11 @@ void remove_animation(json& root) {
       if (!mesh.is_object()) continue;
       mesh.erase("weights");
       if (mesh.contains("primitives") && mesh["primitives"].is_array())
-        for (json& primitive : mesh["primitives"])
-          if (primitive.is_object()) primitive.erase("targets");
+        for (json& primitive : mesh["primitives"]) {
+          if (!primitive.is_object()) continue;
+          primitive.erase("targets");
+          if (auto mode = primitive.find("mode"); mode != primitive.end() && *mode == 2) *mode = 3;
+        }
     }
 }
 
@@ -408,9 +463,10 @@ std::string prepare_gltf(std::string_view bytes, const std::string& path, size_t
   check_nodes(root, path);
   check_images(root, path);
 
-  check_accessors(root, is_glb ? bin_chunk(bytes, text) : std::string_view(), is_glb, max_memory, path);
+  const std::string_view bin = is_glb ? bin_chunk(bytes, text) : std::string_view();
+  check_primitives(root, check_accessors(root, bin, is_glb, max_memory, path), path);
 
-  remove_animation(root);
+  remove_what_velocity_does_not_draw(root);
   std::string out = root.dump();
   if (!is_glb) return out;
   // A .glb: header, the new JSON chunk padded with spaces to 4 bytes, the other chunks.

@@ -14,7 +14,11 @@
 // aborts). So images' media types are checked, every array must hold one type, and
 // Assimp reads a copy without skins, animations, morph targets, "extras" and the
 // extensions that do not change what Velocity draws (Velocity draws meshes in their
-// bind pose, as Assimp gives them anyway).
+// bind pose, as Assimp gives them anyway). Fuzzing found two more: an accessor
+// claiming four billion elements (Assimp allocated 68 GB before reading them), and a
+// line loop with an index out of range (a null pointer inside Assimp). So the binary
+// data must hold what the accessors claim, and line loops, which Velocity does not draw,
+// are read as line strips, on which Assimp drops bad indices.
 #pragma once
 
 #include <cstddef>
@@ -28,17 +32,17 @@ namespace velocity::detail {
 // "animations", nodes' "skin" and "weights", meshes' "weights", primitives' "targets",
 // any "extras", and extensions other than KHR_materials_unlit,
 // KHR_materials_pbrSpecularGlossiness, KHR_mesh_quantization and
-// KHR_draco_mesh_compression; as a .gltf or a .glb like the input (a .glb's binary
-// chunk kept as it is). Throws velocity::Error naming `path` unless the JSON is nested
-// at most 64 deep, parses, says "asset": {"version": "2.x"}, requires no other
-// extension, has no array mixing types, its "nodes" and "scenes" form trees (every
-// child index names a node, no node is the child of two nodes or its own ancestor,
-// every node a scene lists is a root, listed once), and every image's media type, when
-// it has one, has a '/'; and the binary data holds what the accessors claim: buffers
-// no longer than a .glb's binary chunk or their data URI, buffer views inside their
-// buffer, accessors (and sparse accessors' indices and values) inside their view, and
-// accessors Assimp must allocate itself (no bufferView, or sparse) within
-// `max_memory` / 4.
+// KHR_draco_mesh_compression, with line loops made line strips (mode 2 -> 3); as a
+// .gltf or a .glb like the input (a .glb's binary chunk kept as it is). Throws
+// velocity::Error naming `path` unless the JSON is nested at most 64 deep, parses, says
+// "asset": {"version": "2.x"}, requires no other extension, has no array mixing types,
+// its "nodes" and "scenes" form trees (every child index names a node, no node is the
+// child of two nodes or its own ancestor, every node a scene lists is a root, listed
+// once), and every image's media type, when it has one, has a '/'; and unless the
+// binary data holds what the accessors claim: buffers no longer than a .glb's binary
+// chunk or their data URI, buffer views inside their buffer, accessors (and sparse
+// accessors' indices and values) inside their view, and accessors Assimp must allocate
+// itself (no bufferView, or sparse) within `max_memory` / 4.
 std::string prepare_gltf(std::string_view bytes, const std::string& path, size_t max_memory);
 
 }  // namespace velocity::detail

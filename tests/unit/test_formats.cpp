@@ -889,6 +889,17 @@ TEST(FormatsErrors, GltfAccessorsMustFitTheirBuffers) {
   EXPECT_NE(e.find("accessor 0: \"count\" is -3, expected a whole number from 0 to 2^53"), std::string::npos) << e;
   e = edited(R"("bufferView": 1,)", R"("bufferView": 7,)");
   EXPECT_NE(e.find("accessor 2: bufferView is 7, expected one of the file's 2 buffer views"), std::string::npos) << e;
+  // Primitives: positions, a mode, and enough vertices for it. Found by fuzzing: a line
+  // strip with no POSITION made Assimp ask for 2^32 - 1 faces (count - 1, unsigned).
+  e = edited(R"("attributes": {"POSITION": 0, "COLOR_0": 1})", R"("attributes": {"COLOR_0": 1}, "mode": 3)");
+  EXPECT_NE(e.find("mesh 0, primitive 0: has no POSITION attribute"), std::string::npos) << e;
+  e = edited(R"("indices": 2, "material": 0)", R"("indices": 2, "material": 0, "mode": 9)");
+  EXPECT_NE(e.find("mesh 0, primitive 0: mode 9 is not a glTF mode (0-6)"), std::string::npos) << e;
+  e = edited(R"("count": 3, "type": "SCALAR")", R"("count": 2, "type": "SCALAR")");
+  EXPECT_NE(e.find("mesh 0, primitive 0: a TRIANGLES needs at least 3 vertices, it has 2"), std::string::npos) << e;
+  e = edited(R"("indices": 2, "material": 0)", R"("indices": 5, "material": 0)");
+  EXPECT_NE(e.find("mesh 0, primitive 0: indices is 5, expected one of the file's 3 accessors"), std::string::npos)
+      << e;
   // A .glb whose buffer claims more than its binary chunk.
   std::string glb_json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 64}]})";
   glb_json.resize((glb_json.size() + 3) / 4 * 4, ' ');
@@ -900,6 +911,32 @@ TEST(FormatsErrors, GltfAccessorsMustFitTheirBuffers) {
   EXPECT_NE(e.find("short.glb: buffer 0: byteLength 64 is more than the 8 bytes of the GLB's binary chunk"),
             std::string::npos)
       << e;
+}
+
+// Found by fuzzing: Assimp 5.2.5 dereferences a null pointer on a LINE_LOOP whose
+// indices are out of range. Velocity draws no lines; it reads loops as strips, on which
+// Assimp drops such indices, and the file is refused with a message, not a crash.
+TEST(FormatsErrors, GltfLineLoopWithIndicesOutOfRange) {
+  TempDir dir;
+  std::string json = read_bytes(write_triangle_gltf(dir));
+  auto replace = [&](const std::string& from, const std::string& to) {
+    ASSERT_NE(json.find(from), std::string::npos) << from;
+    json.replace(json.find(from), from.size(), to);
+  };
+  // Indices: the last two colour components, 1.0f, read as 32-bit integers: 1065353216.
+  replace(R"("bufferView": 1, "byteOffset": 0, "componentType": 5123, "count": 3)",
+          R"("bufferView": 0, "byteOffset": 76, "componentType": 5125, "count": 2)");
+  replace(R"("indices": 2, "material": 0)", R"("indices": 2, "material": 0, "mode": 2)");
+  write_bytes(dir / "loop.gltf", json);
+  std::string e = error_of(dir / "loop.gltf");
+  EXPECT_NE(e.find("loop.gltf: cannot read glTF file: Mesh"), std::string::npos) << e;
+  EXPECT_NE(e.find("has no faces"), std::string::npos) << e;
+  // In range, the loop is read (as a strip) and refused for having no triangles.
+  replace(R"("bufferView": 0, "byteOffset": 76, "componentType": 5125, "count": 2)",
+          R"("bufferView": 1, "byteOffset": 0, "componentType": 5123, "count": 3)");
+  write_bytes(dir / "loop.gltf", json);
+  e = error_of(dir / "loop.gltf");
+  EXPECT_NE(e.find("loop.gltf: the file has no triangles (only"), std::string::npos) << e;
 }
 
 TEST(FormatsErrors, AsciiStlAssimpWouldMisread) {
