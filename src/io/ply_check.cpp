@@ -89,11 +89,25 @@ Header parse_header(std::string_view bytes, const std::string& path) {
   if (!lines.next(line) || trim(line) != "ply") fail(path, 1, "not a PLY file: expected 'ply' on the first line");
   Header h;
   bool have_format = false;
+  // Assimp reads an element's properties up to the first line that is not a property
+  // or a comment, and skips any 'property' line after that one until the next element:
+  // a file whose property list is broken by another line means to Assimp what it does
+  // not mean here, and binary data would be read in another layout. The line that broke
+  // the list, or 0.
+  uint32_t list_broken_at = 0;
+  std::string_view list_broken_by;
   while (true) {
     if (!lines.next(line)) throw Error(path + ": PLY header has no 'end_header' line (file truncated?)");
     const uint32_t n = lines.number();
     std::vector<std::string_view> t = split(line);
     if (t.empty()) fail_expected(path, n, "a PLY header line", line);
+    const bool comment = t[0] == "comment" && !(t.size() > 1 && t[1] == "TextureFile");  // Assimp: an element
+    const bool known = comment || t[0] == "element" || t[0] == "property" || t[0] == "end_header";
+    if (!known && !h.elements.empty() && !list_broken_at) list_broken_at = n, list_broken_by = line;
+    if (t[0] == "element") list_broken_at = 0;
+    if (t[0] == "property" && list_broken_at)
+      fail(path, n, "'property' after line " + std::to_string(list_broken_at) + " ('" + std::string(trim(list_broken_by)) +
+                        "'), which ends the element's property list for Assimp (make that line a comment)");
     if (t[0] == "comment" || t[0] == "obj_info") continue;
     if (t[0] == "end_header") {
       if (t.size() != 1) fail_expected(path, n, "nothing after 'end_header'", line);

@@ -735,6 +735,17 @@ TEST(FormatsErrors, PlyHeadersAssimpWouldHangOrAllocateOn) {
               "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n9 0 1 2\n");
   e = error_of(dir / "list.ply");
   EXPECT_NE(e.find("has length 9 but only 3 values follow"), std::string::npos) << e;
+  // Found by fuzzing: a typo ends an element's property list for Assimp, which then
+  // skips the properties after it; the binary data is read in another layout, and a
+  // list length of -128 made Assimp ask for 34 GB.
+  write_bytes(dir / "typo.ply",
+              "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\npropertp float y\n"
+              "property float z\nend_header\n");
+  e = error_of(dir / "typo.ply");
+  EXPECT_NE(e.find("typo.ply:6: 'property' after line 5 ('propertp float y'), which ends the element's property "
+                   "list for Assimp"),
+            std::string::npos)
+      << e;
   // Assimp takes "PLY" in any case, and by content whatever the extension: so does
   // the check (this one has no end_header either).
   write_bytes(dir / "upper.ply", "plY\nformat binary_li");
