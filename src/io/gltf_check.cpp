@@ -80,6 +80,13 @@ const json* member(const json& object, const char* key, json::value_t type, cons
   return &*it;
 }
 
+// Element `i` of the array `list`, which must be an object; `where` begins the message.
+const json& object_at(const json& list, size_t i, const std::string& where, const std::string& path) {
+  const json& item = list[i];
+  if (!item.is_object()) throw Error(path + ": " + where + "is " + item.type_name() + ", expected an object");
+  return item;
+}
+
 void check_nodes(const json& root, const std::string& path) {
   std::vector<int64_t> parent;
   std::vector<std::vector<size_t>> children;
@@ -88,9 +95,8 @@ void check_nodes(const json& root, const std::string& path) {
     parent.assign(n, -1);
     children.resize(n);
     for (size_t i = 0; i < n; ++i) {
-      const json& node = (*nodes)[i];
       const std::string where = "node " + std::to_string(i) + ": ";
-      if (!node.is_object()) throw Error(path + ": " + where + "is " + node.type_name() + ", expected an object");
+      const json& node = object_at(*nodes, i, where, path);
       const json* list = member(node, "children", json::value_t::array, where, path);
       if (!list) continue;
       for (const json& c : *list) {
@@ -120,9 +126,8 @@ void check_nodes(const json& root, const std::string& path) {
   }
   if (const json* scenes = member(root, "scenes", json::value_t::array, "", path)) {
     for (size_t s = 0; s < scenes->size(); ++s) {
-      const json& scene = (*scenes)[s];
       const std::string where = "scene " + std::to_string(s) + ": ";
-      if (!scene.is_object()) throw Error(path + ": " + where + "is " + scene.type_name() + ", expected an object");
+      const json& scene = object_at(*scenes, s, where, path);
       const json* list = member(scene, "nodes", json::value_t::array, where, path);
       if (!list) continue;
       std::vector<bool> listed(parent.size(), false);
@@ -146,9 +151,8 @@ void check_images(const json& root, const std::string& path) {
   const json* images = member(root, "images", json::value_t::array, "", path);
   if (!images) return;
   for (size_t i = 0; i < images->size(); ++i) {
-    const json& image = (*images)[i];
     const std::string where = "image " + std::to_string(i) + ": ";
-    if (!image.is_object()) throw Error(path + ": " + where + "is " + image.type_name() + ", expected an object");
+    const json& image = object_at(*images, i, where, path);
     std::string type;
     if (const json* mime = member(image, "mimeType", json::value_t::string, where, path)) type = mime->get<std::string>();
     if (const json* uri = member(image, "uri", json::value_t::string, where, path)) {
@@ -228,16 +232,14 @@ uint64_t base64_bytes(std::string_view text) {
 // with no view, or a sparse one, is count × element size bytes that Assimp allocates
 // and fills before reading anything else: a 2 KB file claiming four billion VEC4s
 // asked for 68 GB. Those must fit `max_memory` / 4 (Assimp copies them twice more into
-// its own mesh arrays).
-// Returns each accessor's count.
+// its own mesh arrays). Returns each accessor's count.
 std::vector<uint64_t> check_accessors(const json& root, std::string_view bin_chunk, bool glb, size_t max_memory,
                                       const std::string& path) {
   std::vector<uint64_t> buffer_size;
   if (const json* buffers = member(root, "buffers", json::value_t::array, "", path)) {
     for (size_t i = 0; i < buffers->size(); ++i) {
-      const json& buffer = (*buffers)[i];
       const std::string where = "buffer " + std::to_string(i) + ": ";
-      if (!buffer.is_object()) throw Error(path + ": " + where + "is " + buffer.type_name() + ", expected an object");
+      const json& buffer = object_at(*buffers, i, where, path);
       const uint64_t length = size_member(buffer, "byteLength", std::nullopt, where, path);
       const json* uri = member(buffer, "uri", json::value_t::string, where, path);
       if (!uri) {
@@ -261,9 +263,8 @@ std::vector<uint64_t> check_accessors(const json& root, std::string_view bin_chu
   std::vector<View> views;
   if (const json* list = member(root, "bufferViews", json::value_t::array, "", path)) {
     for (size_t i = 0; i < list->size(); ++i) {
-      const json& view = (*list)[i];
       const std::string where = "bufferView " + std::to_string(i) + ": ";
-      if (!view.is_object()) throw Error(path + ": " + where + "is " + view.type_name() + ", expected an object");
+      const json& view = object_at(*list, i, where, path);
       const uint64_t buffer = size_member(view, "buffer", std::nullopt, where, path);
       if (buffer >= buffer_size.size())
         throw Error(path + ": " + where + "buffer " + std::to_string(buffer) + " does not exist (the file has " +
@@ -299,9 +300,8 @@ std::vector<uint64_t> check_accessors(const json& root, std::string_view bin_chu
                   " (" + std::to_string(view.length) + " bytes)");
   };
   for (size_t i = 0; i < accessors->size(); ++i) {
-    const json& accessor = (*accessors)[i];
     const std::string where = "accessor " + std::to_string(i) + ": ";
-    if (!accessor.is_object()) throw Error(path + ": " + where + "is " + accessor.type_name() + ", expected an object");
+    const json& accessor = object_at(*accessors, i, where, path);
     const uint64_t component = size_member(accessor, "componentType", std::nullopt, where, path);
     uint64_t component_bytes = 0;
     switch (component) {
@@ -378,16 +378,13 @@ void check_primitives(const json& root, const std::vector<uint64_t>& accessor_co
     return accessor_count[index.get<size_t>()];
   };
   for (size_t m = 0; m < meshes->size(); ++m) {
-    const json& mesh = (*meshes)[m];
     const std::string in = "mesh " + std::to_string(m) + ": ";
-    if (!mesh.is_object()) throw Error(path + ": " + in + "is " + mesh.type_name() + ", expected an object");
+    const json& mesh = object_at(*meshes, m, in, path);
     const json* primitives = member(mesh, "primitives", json::value_t::array, in, path);
     if (!primitives) continue;
     for (size_t p = 0; p < primitives->size(); ++p) {
-      const json& primitive = (*primitives)[p];
       const std::string where = "mesh " + std::to_string(m) + ", primitive " + std::to_string(p) + ": ";
-      if (!primitive.is_object())
-        throw Error(path + ": " + where + "is " + primitive.type_name() + ", expected an object");
+      const json& primitive = object_at(*primitives, p, where, path);
       const uint64_t mode = size_member(primitive, "mode", 4, where, path);
       if (mode > 6) throw Error(path + ": " + where + "mode " + std::to_string(mode) + " is not a glTF mode (0-6)");
       const json* attributes = member(primitive, "attributes", json::value_t::object, where, path);
