@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Velocity builds and tests with, when any is missing.
+#
+#   scripts/deps.sh [PACKAGE...]   the packages below, and these too (fuzz.sh: clang)
+#
 # Every dependency is a Debian package (no vendored copies, nothing downloaded else):
 #   cmake, ninja-build, g++          the build
 #   libstb-dev                       PNG/JPEG/... read and write (stb_image, stb_image_write)
@@ -12,7 +15,7 @@
 #   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
 #   pkg-config                       finds OSMesa
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libosmesa6-dev)
+packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libosmesa6-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
