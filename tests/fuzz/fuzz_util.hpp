@@ -21,6 +21,7 @@
 #include "velocity/image.hpp"
 #include "velocity/load.hpp"
 #include "velocity/scene.hpp"
+#include "velocity/texture.hpp"
 
 namespace velocity::fuzz {
 
@@ -86,6 +87,13 @@ inline void check_model(const Model& model) {
 inline void check_image(const Image& image) {
   fuzz_check(image.width >= 1 && image.height >= 1);
   fuzz_check(image.pixels.size() == size_t(image.width) * size_t(image.height) * 4);
+}
+
+// A decoded image is consistent and makes a texture (its whole mip chain) of its size.
+inline void check_decoded_image(const Image& image) {
+  check_image(image);
+  Texture texture(image);
+  fuzz_check(texture.width() == image.width && texture.height() == image.height);
 }
 
 // The loaders get a small memory limit so that the fuzzer's own limit (-rss_limit_mb)
