@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "image_test_util.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
 #include "velocity/log.hpp"
@@ -25,6 +26,9 @@
 
 namespace velocity {
 namespace {
+
+using test::at;
+using test::count_not;
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -39,20 +43,6 @@ class WarningCapture {
  private:
   WarningHandler old_;
 };
-
-uint32_t pixel(const Image& img, int x, int y) {
-  uint32_t c;
-  std::memcpy(&c, img.pixel(x, y), 4);
-  return c;
-}
-
-// Pixels that differ from the background colour `clear`.
-size_t drawn(const Image& img, uint32_t clear) {
-  size_t n = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) n += pixel(img, x, y) != clear;
-  return n;
-}
 
 constexpr uint32_t kBlack = 0xff000000u;  // the background below: (0, 0, 0)
 
@@ -106,7 +96,7 @@ TEST(Hostile, NanAndInfVerticesAreDroppedWithOneWarningPerMesh) {
       }
       Image img = r.color_image();
       const bool filled = s != Shading::Wireframe && s != Shading::Points;
-      EXPECT_GT(drawn(img, kBlack), filled ? 400u : 20u) << to_string(s);
+      EXPECT_GT(count_not(img, kBlack), filled ? 400u : 20u) << to_string(s);
     }
   }
   // One warning per mesh with bad vertices, per renderer: not one per frame, per
@@ -128,7 +118,7 @@ TEST(Hostile, AllVerticesNanDrawsNothingAndWarnsOnce) {
     const FrameStats& st = r.render(one_object(m));
     EXPECT_EQ(st.triangles_rasterized, 0u);
   }
-  EXPECT_EQ(drawn(r.color_image(), kBlack), 0u);
+  EXPECT_EQ(count_not(r.color_image(), kBlack), 0u);
   EXPECT_EQ(warnings.messages.size(), 1u);
 }
 
@@ -168,7 +158,7 @@ TEST(Hostile, CameraInsideAClosedObject) {
       Renderer r(80, 60);
       r.options.threads = threads;
       r.render(scene);
-      size_t n = drawn(r.color_image(), kBlack);
+      size_t n = count_not(r.color_image(), kBlack);
       if (two_sided)
         EXPECT_EQ(n, 80u * 60u) << "threads " << threads;
       else
@@ -199,7 +189,7 @@ TEST(Hostile, CameraExactlyOnAVertex) {
     Renderer r(64, 48);
     const FrameStats& st = r.render(scene);
     EXPECT_GT(st.triangles_clipped, 0u) << "vertex " << v;
-    EXPECT_GT(drawn(r.color_image(), kBlack), 64u * 48u / 2) << "vertex " << v;
+    EXPECT_GT(count_not(r.color_image(), kBlack), 64u * 48u / 2) << "vertex " << v;
   }
 }
 
@@ -240,8 +230,8 @@ TEST(Hostile, LookingStraightUpAndStraightDown) {
       r.options.threads = 4;
       r.render(scene);
       Image down = r.color_image();
-      EXPECT_EQ(pixel(down, 32, 24), kRed) << "look_at " << use_look_at << " yaw " << yaw;
-      EXPECT_EQ(drawn(down, kBlack), 64u * 48u);
+      EXPECT_EQ(at(down, 32, 24), kRed) << "look_at " << use_look_at << " yaw " << yaw;
+      EXPECT_EQ(count_not(down, kBlack), 64u * 48u);
       // Straight up: pitch +90 degrees, the whole view is ceiling.
       scene.camera.yaw = yaw, scene.camera.pitch = 0;
       if (use_look_at)
@@ -250,8 +240,8 @@ TEST(Hostile, LookingStraightUpAndStraightDown) {
         scene.camera.pitch = radians(90);
       r.render(scene);
       Image up = r.color_image();
-      EXPECT_EQ(pixel(up, 32, 24), kBlue) << "look_at " << use_look_at << " yaw " << yaw;
-      EXPECT_EQ(drawn(up, kBlack), 64u * 48u);
+      EXPECT_EQ(at(up, 32, 24), kBlue) << "look_at " << use_look_at << " yaw " << yaw;
+      EXPECT_EQ(count_not(up, kBlack), 64u * 48u);
     }
   }
 }
@@ -285,7 +275,7 @@ TEST(Hostile, OneByOnePixel) {
     Image img = r.color_image();
     ASSERT_EQ(img.width, 1);
     ASSERT_EQ(img.height, 1);
-    EXPECT_NE(pixel(img, 0, 0), kBlack);  // the cube covers the one pixel centre
+    EXPECT_NE(at(img, 0, 0), kBlack);  // the cube covers the one pixel centre
     EXPECT_EQ(r.depth_image().width, 1);
   }
 }
@@ -300,7 +290,7 @@ TEST(Hostile, ThinAndLargeFramebuffers) {
     Image img = r.color_image();
     EXPECT_EQ(img.width, w);
     EXPECT_EQ(img.height, h);
-    EXPECT_GT(drawn(img, kBlack), 0u) << w << "x" << h;
+    EXPECT_GT(count_not(img, kBlack), 0u) << w << "x" << h;
     EXPECT_EQ(r.framebuffer_bytes(), size_t(w) * h * 8);
   }
 }
@@ -317,9 +307,9 @@ TEST(Hostile, LargestFramebuffer16384Squared) {
   Image img = r.color_image();
   ASSERT_EQ(img.width, 16384);
   ASSERT_EQ(img.height, 16384);
-  EXPECT_NE(pixel(img, 8192, 8192), kBlack);  // the cube, in the middle
-  EXPECT_EQ(pixel(img, 0, 0), kBlack);
-  EXPECT_EQ(pixel(img, 16383, 16383), kBlack);
+  EXPECT_NE(at(img, 8192, 8192), kBlack);  // the cube, in the middle
+  EXPECT_EQ(at(img, 0, 0), kBlack);
+  EXPECT_EQ(at(img, 16383, 16383), kBlack);
 }
 
 TEST(Hostile, ZeroNegativeAndOversizedSizesAreErrors) {
@@ -414,7 +404,7 @@ TEST(Hostile, ARendererStillWorksAfterErrors) {
   EXPECT_THROW(render_small_scene(r), Error);
   r.options.ssaa = 2;
   render_small_scene(r);
-  EXPECT_GT(drawn(r.color_image(), kBlack), 100u);
+  EXPECT_GT(count_not(r.color_image(), kBlack), 100u);
 }
 
 }  // namespace

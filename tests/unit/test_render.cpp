@@ -2,22 +2,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 
+#include "image_test_util.hpp"
 #include "velocity/renderer.hpp"
 
 using namespace velocity;
+using test::at;
+using test::count_not;
 
 namespace {
 
 constexpr uint32_t kClear = 0xff000000u;  // pack of (0, 0, 0)
-
-uint32_t at(const Image& img, int x, int y) {
-  uint32_t c;
-  std::memcpy(&c, img.pixel(x, y), 4);
-  return c;
-}
 
 Vec3 rgb(const Image& img, int x, int y) {
   const uint8_t* p = img.pixel(x, y);
@@ -46,12 +42,6 @@ Camera camera_at_origin() {
   return c;
 }
 
-size_t count_not(const Image& img, uint32_t color) {
-  size_t n = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) n += at(img, x, y) != color;
-  return n;
-}
 
 }  // namespace
 
