@@ -169,10 +169,12 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   // One warning per mesh with non-finite vertices (not one per frame, nor per triangle).
   // The set only grows with distinct bad meshes; a long-running program that makes new
   // ones forever forgets them now and then (and may warn again) rather than grow.
-  if (r.stats.triangles_nonfinite > nonfinite_before && r.warned_meshes.size() >= 4096) r.warned_meshes.clear();
-  if (r.stats.triangles_nonfinite > nonfinite_before && r.warned_meshes.insert(&mesh).second)
-    warn("mesh '" + mesh.name + "': " + std::to_string(r.stats.triangles_nonfinite - nonfinite_before) +
-         " triangles with NaN or infinite coordinates were dropped");
+  if (r.stats.triangles_nonfinite > nonfinite_before) {
+    if (r.warned_meshes.size() >= 4096) r.warned_meshes.clear();
+    if (r.warned_meshes.insert(&mesh).second)
+      warn("mesh '" + mesh.name + "': " + std::to_string(r.stats.triangles_nonfinite - nonfinite_before) +
+           " triangles with NaN or infinite coordinates were dropped");
+  }
 }
 
 const FrameStats& Renderer::end_frame() {

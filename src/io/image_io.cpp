@@ -44,15 +44,15 @@ void check_image(const std::string& path, const Image& image) {
     throw Error(path + ": cannot write an empty or inconsistent image");
 }
 
+// Most pixels read_image accepts: 8192x8192 (256 MiB as RGBA8), a bound on what a small
+// file can make the decoder allocate.
+constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
+
 // stb_image 2.27 (Debian 12's libstb) trusts the 16 code-length counts of a JPEG DHT
 // table: counts adding up to more than 256 make stbi__build_huffman write past its
 // table (found by tests/fuzz/fuzz_image.cpp; upstream 2.28 refuses them). Walk the
 // marker segments as stb does and refuse such a file before stb sees it. Bytes past the
 // end read as 0, as stb reads them.
-// Most pixels read_image accepts: 8192x8192 (256 MiB as RGBA8), a bound on what a small
-// file can make the decoder allocate.
-constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
-
 bool jpeg_huffman_counts_ok(const uint8_t* d, size_t n) {
   auto at = [&](size_t i) -> size_t { return i < n ? d[i] : 0; };
   size_t i = 0;
