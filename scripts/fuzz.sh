@@ -124,7 +124,7 @@ for t in "${targets[@]}"; do
     "${keep_going[@]}" "${dict[@]}" "${dirs[@]}" >"$log" 2>&1 ; } 2>"$logs/$t.cpu"
   rc=$?
   set -e
-  cpu=$(awk '{ printf "%d", $1 + $2 }' "$logs/$t.cpu")
+  cpu=$(awk 'END { printf "%d", $1 + $2 }' "$logs/$t.cpu")  # the last line: bash may report a crash above it
   findings=$(( $(ls "$artifacts" | wc -l) - known ))
   ((findings == 0)) || rc=${rc/#0/1}
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
