@@ -1,24 +1,89 @@
 #!/usr/bin/env bash
-# Runs `velocity bench` and the shared glref (Mesa llvmpipe, 2 threads) on the same scenes in
-# one run and prints both lines plus the fps ratio (velocity / llvmpipe). Needs ../shared/tools.
-#   scripts/compare_glref.sh [size] [frames] [meshes...]
+# Velocity against Mesa's llvmpipe (../shared/tools/glref, through OSMesa) on the shared
+# scene convention, in one run on one machine: for each scene, PAIRS alternating runs of
+# glref and `velocity bench`, each the median frame time of FRAMES frames; the table
+# gives each renderer's median over the pairs and the median of the pairs' ratios
+# (llvmpipe time / Velocity time: above 1, Velocity is faster), with the target where
+# the speed issue sets one. Then Velocity's own scaling from 1 thread to THREADS.
+#
+#   scripts/compare_glref.sh [--threads N] [--pairs N] [--frames N] [--only REGEX]
+#
+# Both renderers use the same number of threads (LP_NUM_THREADS for llvmpipe, --threads
+# for Velocity; default 2, this machine's cores). Needs ../shared/tools (glref is built
+# into /tmp/velocity-glref) and a built build/velocity. Prints a Markdown table.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+threads=2 pairs=5 frames=20 only=.
+while (($#)); do
+  case "$1" in
+    --threads) threads="$2"; shift 2 ;;
+    --pairs) pairs="$2"; shift 2 ;;
+    --frames) frames="$2"; shift 2 ;;
+    --only) only="$2"; shift 2 ;;
+    *) echo "usage: scripts/compare_glref.sh [--threads N] [--pairs N] [--frames N] [--only REGEX]" >&2; exit 2 ;;
+  esac
+done
 tools="$root/../shared/tools"
 [[ -d "$tools" ]] || { echo "compare_glref: $tools not found" >&2; exit 2; }
-size="${1:-1920x1080}"; frames="${2:-30}"; shift $(( $# > 2 ? 2 : $# ))
-meshes=("$@"); ((${#meshes[@]})) || meshes=(sphere:64 sphere:512)
 bin=/tmp/velocity-glref
 mkdir -p "$bin"
 [[ -x "$bin/glref" ]] || g++ -O2 -o "$bin/glref" "$tools/glref/glref.cpp" -lOSMesa -ltinyobjloader -lstb
 [[ -x "$root/build/velocity" ]] || cmake --build "$root/build" --target velocity_cli >/dev/null
-fps() { sed -n 's/.* fps=\([0-9.]*\).*/\1/p'; }
-for mesh in "${meshes[@]}"; do
-  for shade in flat gouraud phong wire; do
-    ref=$(LP_NUM_THREADS=2 "$bin/glref" --mesh "$mesh" --size "$size" --frames "$frames" --shade "$shade")
-    ours=$("$root/build/velocity" bench --mesh "$mesh" --size "$size" --frames "$frames" --shade "$shade")
-    echo "$ref"; echo "$ours"
-    awk -v a="$(echo "$ours" | fps)" -v b="$(echo "$ref" | fps)" -v m="$mesh" -v s="$shade" \
-      'BEGIN { printf "ratio mesh=%s shade=%s velocity/llvmpipe=%.2f\n", m, s, a / b }'
+velocity="$root/build/velocity"
+
+# scene: "name|bench arguments|target ratio (or -)"
+scenes=(
+  "sphere:1024 gouraud (1 M triangles)|--mesh sphere:1024 --shade gouraud --size 1920x1080|3.0"
+  "sphere:1024 tex|--mesh sphere:1024 --shade tex --size 1920x1080|3.0"
+  "sphere:16 x 1000 copies gouraud|--mesh sphere:16 --copies 1000 --shade gouraud --size 1920x1080|3.0"
+  "sphere:64 phong|--mesh sphere:64 --shade phong --size 1920x1080|1.5"
+  "sphere:64 env|--mesh sphere:64 --shade env --size 1920x1080|1.5"
+  "sphere:64 tex|--mesh sphere:64 --shade tex --size 1920x1080|1.5"
+  "sphere:24 tex 320x200 (seed 000's scene)|--mesh sphere:24 --shade tex --size 320x200|2.0"
+  "sphere:64 flat|--mesh sphere:64 --shade flat --size 1920x1080|-"
+  "sphere:64 gouraud|--mesh sphere:64 --shade gouraud --size 1920x1080|-"
+  "sphere:64 wire|--mesh sphere:64 --shade wire --size 1920x1080|-"
+  "sphere:512 flat|--mesh sphere:512 --shade flat --size 1920x1080|-"
+  "sphere:512 gouraud|--mesh sphere:512 --shade gouraud --size 1920x1080|-"
+  "sphere:512 phong|--mesh sphere:512 --shade phong --size 1920x1080|-"
+  "sphere:512 wire|--mesh sphere:512 --shade wire --size 1920x1080|-"
+)
+
+median() { sort -g | awk '{a[NR] = $1} END { if (NR % 2) print a[(NR + 1) / 2]; else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+ms() { sed -n 's/.* median_ms=\([0-9.]*\).*/\1/p'; }
+
+echo "Velocity $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?') against llvmpipe, $(date -u +%Y-%m-%d), $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), both on $threads threads, $pairs alternating pairs of $frames frames, simd=$("$velocity" bench --mesh sphere:8 --size 64x64 --frames 1 --verbose | sed -n 's/^simd=\([^ ]*\).*/\1/p')"
+echo
+echo "| scene (1920x1080 unless said) | llvmpipe ms | Velocity ms | ratio | target |"
+echo "|---|---|---|---|---|"
+for s in "${scenes[@]}"; do
+  IFS='|' read -r name args target <<<"$s"
+  [[ "$name" =~ $only ]] || continue
+  ref=() ours=() ratios=()
+  for ((p = 0; p < pairs; ++p)); do
+    # shellcheck disable=SC2086
+    a=$(LP_NUM_THREADS=$threads "$bin/glref" $args --frames "$frames" | ms)
+    # shellcheck disable=SC2086
+    b=$("$velocity" bench $args --frames "$frames" --threads "$threads" | ms)
+    ref+=("$a") ours+=("$b") ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }')")
   done
+  r=$(printf '%s\n' "${ratios[@]}" | median)
+  verdict=""
+  [[ "$target" != "-" ]] && verdict=$(awk -v r="$r" -v t="$target" 'BEGIN { print (r >= t ? "≥ " t " met" : "≥ " t " missed") }')
+  printf '| %s | %.2f | %.2f | %.2f | %s |\n' "$name" "$(printf '%s\n' "${ref[@]}" | median)" \
+    "$(printf '%s\n' "${ours[@]}" | median)" "$r" "${verdict:--}"
 done
+
+# Velocity's scaling from 1 thread to `threads`, alternating as above.
+echo
+echo "| Velocity, sphere:512 gouraud 1920x1080 | 1 thread ms | $threads threads ms | speed-up | target |"
+echo "|---|---|---|---|---|"
+one=() many=() ratios=()
+for ((p = 0; p < pairs; ++p)); do
+  a=$("$velocity" bench --mesh sphere:512 --shade gouraud --frames "$frames" --threads 1 | ms)
+  b=$("$velocity" bench --mesh sphere:512 --shade gouraud --frames "$frames" --threads "$threads" | ms)
+  one+=("$a") many+=("$b") ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }')")
+done
+r=$(printf '%s\n' "${ratios[@]}" | median)
+printf '| | %.2f | %.2f | %.2fx | %s |\n' "$(printf '%s\n' "${one[@]}" | median)" "$(printf '%s\n' "${many[@]}" | median)" "$r" \
+  "$([[ $threads == 2 ]] && awk -v r="$r" 'BEGIN { print (r >= 1.9 ? "≥ 1.9x met" : "≥ 1.9x missed") }' || echo -)"

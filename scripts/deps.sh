@@ -12,10 +12,17 @@
 #   assimp-testmodels                real glTF/3DS/PLY/STL files the format tests read in place
 #   libcli11-dev                     the command line
 #   libgtest-dev                     unit and golden tests
+#   libhwy-dev                       Google Highway: the SIMD kernels, one source for every instruction set
+#   libbenchmark-dev                 Google Benchmark: the stages' micro-benchmarks (tests/bench/micro.cpp)
 #   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
 #   pkg-config                       finds OSMesa
+#   python3-dev, pybind11-dev        the Python module (python/): headers and the bindings
+#   python3-numpy                    its arrays (colour, depth, masks, meshes)
+#   python3-pytest                   the Python tests, run by ctest
+#   python3-distributed              the batch renderer on a Dask cluster (and its tests)
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libosmesa6-dev "$@")
+packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -12,7 +12,14 @@
 # test that expects a failure still fails it (FAIL_REGULAR_EXPRESSION, see CMakeLists.txt).
 # Mesa's llvmpipe (the golden tests' reference) is not instrumented; what it does is
 # suppressed precisely in tests/sanitizers/*.supp, never our code.
-# Optimised with debug lines (-O2 -g1) and assertions on (no NDEBUG).
+# The Python tests (ctest label "python") run too: the module is instrumented, the
+# interpreter is not, so python/tests/CMakeLists.txt starts each with the sanitizer's
+# runtime in LD_PRELOAD (and libstdc++, for ASan); under ASan with leak checking off in
+# those processes (CPython leaves its objects to the OS at exit by design; the C++ they
+# run is leak-checked by the C++ tests), and without fork-started pools under TSan (TSan
+# does not support a fork after threads have started; the spawn-started ones run).
+# Optimised with debug lines (-O2 -g1) and assertions on (no NDEBUG); libstdc++'s own
+# assertions too (_GLIBCXX_ASSERTIONS, as Fedora's and Arch's package builds have them).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mode="${1:-}"
@@ -47,7 +54,7 @@ werror=OFF
 [[ "${CI:-}" == "true" ]] && werror=ON  # as test.sh: warnings are errors in CI
 start=$SECONDS
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
-  -DVELOCITY_SANITIZE="$sanitize" -DVELOCITY_WERROR=$werror >/dev/null
+  -DVELOCITY_SANITIZE="$sanitize" -DVELOCITY_ASSERTIONS=ON -DVELOCITY_WERROR=$werror >/dev/null
 cmake --build "$build" -j"${SANITIZE_BUILD_JOBS:-2}"
 built=$SECONDS
 cd "$build"

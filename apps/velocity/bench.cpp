@@ -29,6 +29,7 @@ struct BenchArgs {
   std::string filter;
   bool affine = false;
   int ssaa = 1;
+  bool verbose = false;
 };
 
 int run_bench(const BenchArgs& a) {
@@ -70,6 +71,14 @@ int run_bench(const BenchArgs& a) {
   std::printf("renderer=velocity mesh=%s tris=%zu size=%dx%d shade=%s frames=%d median_ms=%.3f fps=%.1f tris_per_s=%.3e\n",
               a.mesh.c_str(), tris, w, h, a.shade.c_str(), a.frames, median, 1000.0 / median,
               double(tris) * a.frames / (total / 1000.0));
+  if (a.verbose) {
+    const FrameStats& st = renderer.stats();
+    std::printf("simd=%s threads=%d objects=%zu culled=%zu triangles=%zu rejected=%zu clipped=%zu "
+                "backface_or_empty=%zu nonfinite=%zu rasterized=%zu lines=%zu points=%zu\n",
+                simd_target(), a.threads, st.objects, st.objects_culled, st.triangles, st.triangles_rejected,
+                st.triangles_clipped, st.triangles_culled, st.triangles_nonfinite, st.triangles_rasterized, st.lines,
+                st.points);
+  }
   return 0;
 }
 
@@ -90,6 +99,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--copies", args->copies, "Draw the mesh N times per frame, in a square grid")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();
   cmd->add_option("--out", args->out, "Write the first frame to this image");
+  cmd->add_flag("--verbose", args->verbose, "Also print the instruction set and what the last frame did");
   return [args] { return run_bench(*args); };
 }
 

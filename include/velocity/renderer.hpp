@@ -18,6 +18,7 @@
 #include "velocity/material.hpp"
 #include "velocity/math.hpp"
 #include "velocity/mesh.hpp"
+#include "velocity/primitives.hpp"
 #include "velocity/scene.hpp"
 
 namespace velocity {
@@ -45,6 +46,19 @@ struct RenderOptions {
   // Threads that rasterize tiles: 0 uses every core (std::thread::hardware_concurrency).
   // The image is the same for any count: each tile is drawn by one thread, in order.
   int threads = 0;
+  // Keep an object-id buffer: every sample remembers the id of the draw that last
+  // wrote its colour (0 where nothing was drawn). Read it with object_ids().
+  bool object_ids = false;
+};
+
+// How begin_frame starts the frame: cleared (the default), or from what the previous
+// frame left (an OpenGL context keeps its framebuffer between flushes).
+struct FrameStart {
+  FrameStart() {}  // not an aggregate: begin_frame(camera, lights, {r, g, b}) stays the Vec3 one
+  bool clear_color = true;
+  Vec4 color{0.1f, 0.1f, 0.15f, 1.0f};
+  bool clear_depth = true;
+  float depth = 1.0f;
 };
 
 // What the last frame did, for --verbose output and tests.
@@ -59,6 +73,11 @@ struct FrameStats {
   size_t triangles_rasterized = 0;    // set up and binned (after clipping)
   size_t lines = 0, points = 0;       // set up and binned
 };
+
+// The instruction set the pixel and vertex kernels run with on this processor, as
+// Highway names it ("AVX3" for AVX-512, "AVX2", "SSE4", "EMU128" or "SCALAR" for the
+// plain C++ build): the best the processor has, chosen at run time.
+const char* simd_target();
 
 class Renderer {
  public:
@@ -84,8 +103,18 @@ class Renderer {
   // With no lights, a white light from (0.3, 0.5, 1) in eye space with ambient 0.2 and
   // diffuse 0.8 is used.
   void begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color);
+  void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start);
   // `material`, when given, replaces the mesh's own materials and face colours.
-  void draw(const Mesh& mesh, const Mat4& world, const Material* material = nullptr);
+  // `object_id` is what the object-id buffer records for its pixels (render() uses the
+  // object's index + 1). The mesh and material must stay alive and unchanged until
+  // end_frame() returns.
+  void draw(const Mesh& mesh, const Mat4& world, const Material* material = nullptr, uint32_t object_id = 0);
+  // Pre-transformed points, lines or triangles with fixed-function pixel state (see
+  // primitives.hpp; the OpenGL front end's path). Throws velocity::Error for a batch
+  // without positions or with an index count that does not fit its kind.
+  void draw(const PrimitiveBatch& batch, const PixelState& state);
+  // Clears the framebuffer, or the request's rectangle of it, in draw order.
+  void clear(const ClearRequest& request);
   const FrameStats& end_frame();
 
   const FrameStats& stats() const;
@@ -94,6 +123,22 @@ class Renderer {
   // See Framebuffer::depth_image: nearest white, farthest drawn dark grey, empty black.
   // With super-sampling, each pixel shows its nearest sample.
   Image depth_image() const;
+  // The output image into `rgba` (width * height * 4 bytes, `row_bytes` apart, top row
+  // first), without an intermediate Image. With channels = 3, RGB without alpha
+  // (width * 3 bytes a row); channels must be 3 or 4.
+  void read_color(uint8_t* rgba, size_t row_bytes, int channels = 4) const;
+  // Per output pixel (top row first), the distance from the camera plane along the
+  // view axis (-z in eye space; exact for orthographic cameras as well), 0 where
+  // nothing was drawn. With super-sampling, the nearest of the pixel's samples.
+  // Only for frames begun with a Camera (mesh draws).
+  std::vector<float> view_depth() const;
+  // Per output pixel, window depth in [0, 1] (1 where nothing was drawn): what
+  // glReadPixels(GL_DEPTH_COMPONENT) returns. With super-sampling, the nearest sample.
+  std::vector<float> window_depth() const;
+  // Per output pixel, the object id of what was drawn there (0 for nothing), when
+  // options.object_ids was set for the frame; otherwise empty. With super-sampling,
+  // the id of the nearest sample, never a mix.
+  std::vector<uint32_t> object_ids() const;
   // Bytes held by the sample buffers (colour and depth) at the current size and ssaa.
   size_t framebuffer_bytes() const;
 

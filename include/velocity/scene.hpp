@@ -49,6 +49,22 @@ struct Object {
 
 enum class Projection { Perspective, Orthographic };
 
+// The view volume's cross-section, left < right and bottom < top: for a perspective
+// camera on the plane one unit in front of it (a centred camera with vertical field of
+// view f has top = tan(f / 2)), for an orthographic one in world units. Off-centre
+// windows are allowed: a shifted lens, or a pinhole camera's principal point.
+struct ViewWindow {
+  float left = -1, right = 1, bottom = -1, top = 1;
+
+  // The window of a pinhole camera with focal lengths fx, fy and principal point cx, cy
+  // in pixels, for a width x height image. Image coordinates run right and down from
+  // the image's top-left corner, and pixel (i, j) covers [i, i + 1] x [j, j + 1], so its
+  // centre is at (i + 0.5, j + 0.5) (OpenGL's and pyrender's convention; OpenCV puts
+  // pixel centres on whole numbers: add 0.5 to its cx and cy). Throws velocity::Error
+  // unless fx, fy > 0, width, height >= 1 and all are finite.
+  static ViewWindow pinhole(float fx, float fy, float cx, float cy, int width, int height);
+};
+
 // A camera at `position` turned by yaw (about Y), then pitch (about X), then roll
 // (about Z), looking down its own -Z axis: seed 000's swivel, pitch and roll.
 struct Camera {
@@ -58,6 +74,9 @@ struct Camera {
   float fov_y = radians(45.0f);  // vertical field of view (perspective)
   float ortho_height = 2.0f;     // height of the view volume (orthographic)
   float near = 0.1f, far = 100.0f;
+  // When set, the view volume's cross-section (see ViewWindow), replacing fov_y or
+  // ortho_height and the image's aspect ratio.
+  std::optional<ViewWindow> window;
 
   // Field of view of a lens of `focal_mm` on film `film_height_mm` high (seed 000's
   // focal length; 3D Studio's cameras use 35 mm film, 24 mm high).
@@ -66,6 +85,8 @@ struct Camera {
   // Turns the camera (yaw and pitch, roll kept) to look at `target`.
   void look_at(Vec3 target);
   Mat4 view() const;
+  // As glFrustum / glOrtho: from `window` when set (aspect unused), else centred with
+  // fov_y (perspective) or ortho_height (orthographic) and the given width / height.
   Mat4 projection_matrix(float aspect) const;
 };
 
@@ -117,6 +138,8 @@ class Scene {
 
   // Object-to-world matrix of every object (parent chain applied), indexed by ObjectId.
   std::vector<Mat4> world_matrices() const;
+  // The same into `out` (resized; no allocation once it is large enough).
+  void world_matrices(std::vector<Mat4>& out) const;
   // Bounding sphere of every visible mesh in world space (radius 0 when empty).
   Sphere bounds() const;
   // Places the camera in direction `from` (default +Z) of the scene's bounding-sphere

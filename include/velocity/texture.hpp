@@ -20,8 +20,10 @@ enum class Filter {
 std::optional<Filter> parse_filter(std::string_view name);  // "nearest", "bilinear", "trilinear"
 
 enum class Wrap {
-  Repeat,  // u and v wrap around: 1.25 samples like 0.25
-  Clamp,   // u and v are clamped to the edge texels
+  Repeat,          // u and v wrap around: 1.25 samples like 0.25
+  Clamp,           // u and v are clamped to the edge texels (GL_CLAMP_TO_EDGE)
+  ClampToBorder,   // texels outside the image read a border colour (GL_CLAMP, GL_CLAMP_TO_BORDER)
+  MirroredRepeat,  // every other repeat is mirrored (GL_MIRRORED_REPEAT)
 };
 
 class Texture {

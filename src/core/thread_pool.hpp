@@ -3,7 +3,8 @@
 
 #include <atomic>
 #include <condition_variable>
-#include <functional>
+#include <exception>
+#include <type_traits>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -20,20 +21,39 @@ class ThreadPool {
 
   int size() const { return int(workers_.size()) + 1; }
 
-  // Calls job(i) for every i in [0, count), spread over the pool and the calling
-  // thread, and returns when all are done. Items are taken one at a time from a shared
-  // counter, so uneven items (busy and empty tiles) balance themselves. `job` must not
-  // throw.
-  void run(int count, const std::function<void(int)>& job);
+  // Calls job(i, worker) for every i in [0, count), spread over the pool and the
+  // calling thread, and returns when all are done. `worker` (0 .. size() - 1) is the
+  // thread's own index, the calling thread being 0: per-worker buffers need no locks.
+  // Items are taken one at a time from a shared counter, in increasing order, so a
+  // worker's items are increasing too and uneven items (busy and empty tiles) balance
+  // themselves. If items throw, the rest still run and the first exception is
+  // rethrown here once all are done. `job` is called through a reference to it (no
+  // copy, no allocation per run): job(i, worker) or job(i).
+  template <class F>
+  void run(int count, F&& job) {
+    if constexpr (std::is_invocable_v<F&, int, int>) {
+      run_items(count, Job{&job, [](void* f, int i, int w) { (*static_cast<std::remove_reference_t<F>*>(f))(i, w); }});
+    } else {
+      run_items(count, Job{&job, [](void* f, int i, int) { (*static_cast<std::remove_reference_t<F>*>(f))(i); }});
+    }
+  }
 
  private:
-  void work();
-  void drain();
+  // A callable by reference: what run() hands the workers.
+  struct Job {
+    void* callable;
+    void (*call)(void*, int, int);
+    void operator()(int i, int worker) const { call(callable, i, worker); }
+  };
+  void run_items(int count, Job job);
+  void work(int worker);
+  void drain(int worker);
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
-  const std::function<void(int)>* job_ = nullptr;
+  Job job_{nullptr, nullptr};
+  std::exception_ptr error_;  // the first exception an item threw in this run
   int count_ = 0;
   std::atomic<int> next_{0};
   int busy_ = 0;               // workers still inside the current generation

@@ -4,7 +4,6 @@
 #include <cstring>
 #include <new>
 
-#include "raster/raster_types.hpp"
 #include "velocity/error.hpp"
 
 namespace velocity {
@@ -13,39 +12,87 @@ void Framebuffer::resize(int w, int h) {
   if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
     throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
                 std::to_string(raster::kMaxFramebufferSide) + " a side)");
-  // New buffers first, so that running out of memory (a velocity::Error, not
-  // std::bad_alloc) leaves this framebuffer as it was.
-  const size_t n = size_t(w) * size_t(h);
-  try {
-    std::vector<uint32_t> c(n, 0);
-    std::vector<float> d(n, 1.0f);
-    color.swap(c);
-    depth.swap(d);
-  } catch (const std::bad_alloc&) {
-    throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + ": cannot allocate " +
-                std::to_string(n * (sizeof(uint32_t) + sizeof(float))) + " bytes");
+  const int tx = (w + raster::kTileSize - 1) / raster::kTileSize, ty = (h + raster::kTileSize - 1) / raster::kTileSize;
+  const size_t n = size_t(tx) * size_t(ty) * kTilePixels;
+  if (n <= color.capacity() && (ids.empty() || n <= ids.capacity())) {
+    // Within the buffers' capacity (a program that switches between sizes, or
+    // super-sampling factors): no new allocation, so the heap does not fragment.
+    color.resize(n), depth.resize(n);
+    if (!ids.empty()) ids.resize(n);
+  } else {
+    // New buffers first, so that running out of memory (a velocity::Error, not
+    // std::bad_alloc) leaves this framebuffer as it was.
+    try {
+      BlockVector<uint32_t> c(n, 0);
+      BlockVector<float> d(n, 1.0f);
+      BlockVector<uint32_t> i(ids.empty() ? 0 : n, 0);
+      color.swap(c);
+      depth.swap(d);
+      ids.swap(i);
+    } catch (const std::bad_alloc&) {
+      throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + ": cannot allocate " +
+                  std::to_string(n * (sizeof(uint32_t) + sizeof(float))) + " bytes");
+    }
   }
-  width = w, height = h;
+  width = w, height = h, tiles_x = tx, tiles_y = ty;
+  tile_clean.assign(size_t(tx) * ty, 0);
 }
+
+void Framebuffer::keep_ids(bool keep) {
+  if (keep != !ids.empty()) std::fill(tile_clean.begin(), tile_clean.end(), 0);
+  if (!keep) {
+    BlockVector<uint32_t>().swap(ids);
+  } else if (ids.size() != color.size()) {
+    try {
+      ids.assign(color.size(), 0);
+    } catch (const std::bad_alloc&) {
+      throw Error("framebuffer: cannot allocate the object-id buffer");
+    }
+  }
+}
+
+namespace {
+// Copies row y of a tiled buffer: 4 pixels at a time from each block the row crosses.
+template <class T>
+void read_row(const Framebuffer& fb, const T* data, int y, T* out) {
+  for (int x = 0; x < fb.width; x += 4) {
+    const T* src = data + fb.index(x, y);
+    const int n = std::min(4, fb.width - x);
+    std::memcpy(out + x, src, size_t(n) * sizeof(T));
+  }
+}
+}  // namespace
+
+void Framebuffer::read_color_row(int y, uint32_t* out) const { read_row(*this, color.data(), y, out); }
+void Framebuffer::read_depth_row(int y, float* out) const { read_row(*this, depth.data(), y, out); }
+void Framebuffer::read_id_row(int y, uint32_t* out) const { read_row(*this, ids.data(), y, out); }
 
 Image Framebuffer::color_image() const {
   Image image(width, height);
-  std::memcpy(image.pixels.data(), color.data(), color.size() * 4);
+  for (int y = 0; y < height; ++y) read_color_row(y, reinterpret_cast<uint32_t*>(image.pixel(0, y)));
   return image;
 }
 
 Image Framebuffer::depth_image() const {
+  std::vector<float> row(static_cast<size_t>(width));
   float lo = 1, hi = 0;
-  for (float d : depth)
-    if (d < 1) lo = std::min(lo, d), hi = std::max(hi, d);
+  for (int y = 0; y < height; ++y) {
+    read_depth_row(y, row.data());
+    for (float d : row)
+      if (d < 1) lo = std::min(lo, d), hi = std::max(hi, d);
+  }
   Image image(width, height, 0xff000000u);
   float range = hi > lo ? hi - lo : 1.0f;
-  for (size_t i = 0; i < depth.size(); ++i) {
-    if (!(depth[i] < 1)) continue;
-    float t = (depth[i] - lo) / range;  // 0 nearest, 1 farthest
-    auto g = uint8_t(255.0f - t * (255.0f - 32.0f) + 0.5f);
-    uint8_t* p = &image.pixels[i * 4];
-    p[0] = p[1] = p[2] = g;
+  for (int y = 0; y < height; ++y) {
+    read_depth_row(y, row.data());
+    for (int x = 0; x < width; ++x) {
+      float d = row[size_t(x)];
+      if (!(d < 1)) continue;
+      float t = (d - lo) / range;  // 0 nearest, 1 farthest
+      auto g = uint8_t(255.0f - t * (255.0f - 32.0f) + 0.5f);
+      uint8_t* p = image.pixel(x, y);
+      p[0] = p[1] = p[2] = g;
+    }
   }
   return image;
 }

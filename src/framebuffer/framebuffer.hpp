@@ -1,20 +1,91 @@
-// The colour and depth buffers the tiles are rasterised into.
+// The colour, depth and object-id buffers the tiles are rasterised into.
+//
+// Memory layout: the buffers are stored tile by tile, 64x64-pixel tiles in row-major
+// order, each tile as 16x16 blocks of 4x4 pixels in row-major order, each block's 16
+// pixels in row-major order:
+//
+//   index(x, y) = tile(x >> 6, y >> 6) * 4096 + block((x >> 2) & 15, (y >> 2) & 15) * 16
+//                 + (y & 3) * 4 + (x & 3)
+//
+// A 4x4 block is one 64-byte cache line of colour (RGBA8) and one of depth (float):
+// the SIMD kernels load and store whole blocks, and a tile (32 KiB of colour and depth)
+// stays in the core's cache while it is drawn. The buffers are padded to whole tiles;
+// pixels outside width x height are never drawn and never read back. Readers see
+// ordinary images through color_image() and the resolve functions.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
 #include <vector>
+#include <algorithm>
 
+#include "raster/raster_types.hpp"
 #include "velocity/image.hpp"
 
 namespace velocity {
 
-struct Framebuffer {
-  int width = 0, height = 0;
-  std::vector<uint32_t> color;  // RGBA8 (byte 0 red), top row first
-  std::vector<float> depth;     // window depth in [0, 1]; 1 is the far plane
+// A std::vector allocator aligned to the 64-byte blocks the kernels load and store.
+template <class T>
+struct BlockAllocator {
+  using value_type = T;
+  BlockAllocator() = default;
+  template <class U>
+  BlockAllocator(const BlockAllocator<U>&) {}
+  T* allocate(size_t n) {
+    if (n > SIZE_MAX / sizeof(T) - 64) throw std::bad_alloc();
+    void* p = std::aligned_alloc(64, (n * sizeof(T) + 63) / 64 * 64);
+    if (!p) throw std::bad_alloc();
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, size_t) { std::free(p); }
+  template <class U>
+  bool operator==(const BlockAllocator<U>&) const { return true; }
+};
+template <class T>
+using BlockVector = std::vector<T, BlockAllocator<T>>;
 
-  // Throws velocity::Error unless 1 <= width, height <= 16384.
+struct Framebuffer {
+  int width = 0, height = 0;      // pixels (samples, with super-sampling)
+  int tiles_x = 0, tiles_y = 0;   // 64x64 tiles covering them
+  BlockVector<uint32_t> color;    // RGBA8 (byte 0 red), tiled as above
+  BlockVector<float> depth;       // window depth in [0, 1]; 1 is the far plane
+  BlockVector<uint32_t> ids;      // object id per sample, when the renderer keeps them (else empty)
+  // Tiles that hold nothing but the clear values below (colour, depth and ids zero): a
+  // frame that clears them to the same values and draws nothing there skips them.
+  std::vector<uint8_t> tile_clean;
+  uint32_t clean_color = 0;
+  float clean_depth = 1.0f;
+
+  // Forgets which tiles are clean unless they were cleaned with these values.
+  void expect_clear(uint32_t color, float depth) {
+    if (color != clean_color || depth != clean_depth) std::fill(tile_clean.begin(), tile_clean.end(), 0);
+    clean_color = color, clean_depth = depth;
+  }
+
+  static constexpr int kTilePixels = raster::kTileSize * raster::kTileSize;  // 4096
+
+  // Where pixel (x, y) is stored (0 <= x < tiles_x * 64, 0 <= y < tiles_y * 64).
+  size_t index(int x, int y) const {
+    return (size_t(y >> 6) * size_t(tiles_x) + size_t(x >> 6)) * kTilePixels + size_t(((y >> 2) & 15) * 16 + ((x >> 2) & 15)) * 16 +
+           size_t((y & 3) * 4 + (x & 3));
+  }
+  // First pixel of tile t (tiles in row-major order).
+  size_t tile_offset(int tile) const { return size_t(tile) * kTilePixels; }
+
+  // Throws velocity::Error unless 1 <= width, height <= 16384; keeps the old buffers when
+  // memory runs out.
   void resize(int width, int height);
+  // Allocates (or frees, with false) the object-id buffer, zeroed.
+  void keep_ids(bool keep);
+
+  // Row y of the image, width pixels, into `out` (linear order). Used by every reader.
+  void read_color_row(int y, uint32_t* out) const;
+  void read_depth_row(int y, float* out) const;
+  void read_id_row(int y, uint32_t* out) const;
+
   Image color_image() const;
   // Depth as greyscale: the nearest depth drawn is white, the farthest drawn is dark
   // grey (32), untouched pixels (still at the clear depth, 1) black. Scaled over the

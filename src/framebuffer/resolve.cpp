@@ -1,38 +1,102 @@
 #include "framebuffer/resolve.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace velocity {
 
+namespace {
+
+// Reads the k sample rows behind output row y into `rows` (k rows of fb.width).
+template <class T, class Read>
+void read_sample_rows(const Framebuffer& fb, int k, int y, std::vector<T>& rows, Read read) {
+  rows.resize(size_t(fb.width) * k);
+  for (int sy = 0; sy < k; ++sy) (fb.*read)(y * k + sy, rows.data() + size_t(sy) * fb.width);
+}
+
+// Calls f(x, sample row, sample column) with each output pixel's nearest sample (the
+// smallest depth; the first in row order among equals) of output row y.
+template <class F>
+void for_each_nearest_sample(const Framebuffer& fb, int k, int y, std::vector<float>& depth_rows, F&& f) {
+  read_sample_rows(fb, k, y, depth_rows, &Framebuffer::read_depth_row);
+  for (int x = 0; x < fb.width / k; ++x) {
+    int best_r = 0, best_c = x * k;
+    for (int sy = 0; sy < k; ++sy)
+      for (int sx = 0; sx < k; ++sx)
+        if (depth_rows[size_t(sy) * fb.width + x * k + sx] < depth_rows[size_t(best_r) * fb.width + best_c])
+          best_r = sy, best_c = x * k + sx;
+    f(x, best_r, best_c);
+  }
+}
+
+}  // namespace
+
 Image resolve_color(const Framebuffer& fb, int k) {
-  if (k == 1) return fb.color_image();
+  Image out(fb.width / k, fb.height / k);
+  resolve_color_into(fb, k, out.pixels.data(), size_t(out.width) * 4);
+  return out;
+}
+
+void resolve_color_into(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_bytes, int channels) {
   const int w = fb.width / k, h = fb.height / k, n = k * k;
-  Image out(w, h);
-  for (int y = 0; y < h; ++y)
+  if (k == 1 && channels == 4) {
+    for (int y = 0; y < h; ++y) fb.read_color_row(y, reinterpret_cast<uint32_t*>(rgba + size_t(y) * row_bytes));
+    return;
+  }
+  if (k == 1) {  // RGB: straight from the tiles, four pixels (one block row) at a time
+    for (int y = 0; y < h; ++y) {
+      uint8_t* out = rgba + size_t(y) * row_bytes;
+      for (int x = 0; x < w; x += 4) {
+        const uint8_t* src = reinterpret_cast<const uint8_t*>(fb.color.data() + fb.index(x, y));
+        for (int i = 0; i < std::min(4, w - x); ++i) std::memcpy(out + size_t(x + i) * 3, src + i * 4, 3);
+      }
+    }
+    return;
+  }
+  std::vector<uint32_t> rows;
+  for (int y = 0; y < h; ++y) {
+    read_sample_rows(fb, k, y, rows, &Framebuffer::read_color_row);
     for (int x = 0; x < w; ++x) {
       uint32_t sum[4] = {0, 0, 0, 0};
       for (int sy = 0; sy < k; ++sy) {
-        const uint32_t* row = &fb.color[size_t(y * k + sy) * fb.width + size_t(x) * k];
+        const uint32_t* row = rows.data() + size_t(sy) * fb.width + size_t(x) * k;
         for (int sx = 0; sx < k; ++sx)
           for (int c = 0; c < 4; ++c) sum[c] += (row[sx] >> (8 * c)) & 0xff;
       }
-      uint8_t* p = out.pixel(x, y);
-      for (int c = 0; c < 4; ++c) p[c] = uint8_t((sum[c] + uint32_t(n / 2)) / uint32_t(n));
+      uint8_t* p = rgba + size_t(y) * row_bytes + size_t(x) * channels;
+      for (int c = 0; c < channels; ++c) p[c] = uint8_t((sum[c] + uint32_t(n / 2)) / uint32_t(n));
     }
-  return out;
+  }
 }
 
 Image resolve_depth(const Framebuffer& fb, int k) {
   if (k == 1) return fb.depth_image();
+  // The nearest sample of each pixel, shown as Framebuffer::depth_image shows depth.
   Framebuffer nearest;
-  nearest.width = fb.width / k, nearest.height = fb.height / k;
-  nearest.depth.assign(size_t(nearest.width) * nearest.height, 1.0f);
-  for (int y = 0; y < fb.height; ++y)
-    for (int x = 0; x < fb.width; ++x) {
-      float& d = nearest.depth[size_t(y / k) * nearest.width + x / k];
-      d = std::min(d, fb.depth[size_t(y) * fb.width + x]);
-    }
+  nearest.resize(fb.width / k, fb.height / k);
+  std::vector<float> d = resolve_window_depth(fb, k);
+  for (int y = 0; y < nearest.height; ++y)
+    for (int x = 0; x < nearest.width; ++x) nearest.depth[nearest.index(x, y)] = d[size_t(y) * nearest.width + x];
   return nearest.depth_image();
+}
+
+std::vector<float> resolve_window_depth(const Framebuffer& fb, int k) {
+  const int w = fb.width / k, h = fb.height / k;
+  std::vector<float> out(size_t(w) * h), rows;
+  for (int y = 0; y < h; ++y)
+    for_each_nearest_sample(fb, k, y, rows, [&](int x, int r, int c) { out[size_t(y) * w + x] = rows[size_t(r) * fb.width + c]; });
+  return out;
+}
+
+std::vector<uint32_t> resolve_object_ids(const Framebuffer& fb, int k) {
+  if (fb.ids.empty()) return {};
+  const int w = fb.width / k, h = fb.height / k;
+  std::vector<uint32_t> out(size_t(w) * h);
+  std::vector<float> rows;
+  for (int y = 0; y < h; ++y)
+    for_each_nearest_sample(fb, k, y, rows,
+                            [&](int x, int r, int c) { out[size_t(y) * w + x] = fb.ids[fb.index(c, y * k + r)]; });
+  return out;
 }
 
 }  // namespace velocity

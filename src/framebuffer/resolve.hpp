@@ -2,6 +2,10 @@
 // output-size images.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
 #include "framebuffer/framebuffer.hpp"
 #include "velocity/image.hpp"
 
@@ -12,5 +16,14 @@ Image resolve_color(const Framebuffer& samples, int k);
 // Each output pixel shows the nearest of its k x k depth samples, then as
 // Framebuffer::depth_image.
 Image resolve_depth(const Framebuffer& samples, int k);
+
+// resolve_color into caller memory: width/k x height/k rows of RGBA8 (channels 4) or
+// RGB8 (channels 3) pixels, `row_bytes` apart.
+void resolve_color_into(const Framebuffer& samples, int k, uint8_t* rgba, size_t row_bytes, int channels = 4);
+// Per output pixel, the window depth of its nearest sample (1 where nothing was drawn).
+std::vector<float> resolve_window_depth(const Framebuffer& samples, int k);
+// Per output pixel, the object id of its nearest sample (the first of equal depths, in
+// row order), never a mix of ids. Empty when the framebuffer keeps no ids.
+std::vector<uint32_t> resolve_object_ids(const Framebuffer& samples, int k);
 
 }  // namespace velocity

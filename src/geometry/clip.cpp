@@ -24,6 +24,7 @@ double distance(const Vec4& p, uint32_t plane, GuardBand g) {
 // arithmetic would land the new vertex visibly off the plane it was clipped to.
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t, int nvar) {
   ClipVertex r;
+  r.src = -1;
   auto mix = [t](float p, float q) { return float(double(p) + (double(q) - double(p)) * t); };
   r.pos = {mix(a.pos.x, b.pos.x), mix(a.pos.y, b.pos.y), mix(a.pos.z, b.pos.z), mix(a.pos.w, b.pos.w)};
   for (int i = 0; i < nvar; ++i) r.var[i] = a.var[i] + (b.var[i] - a.var[i]) * float(t);
@@ -60,7 +61,7 @@ int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int 
   return n;
 }
 
-bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard) {
+bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard, float* t0_out, float* t1_out) {
   float t0 = 0, t1 = 1;
   for (uint32_t plane = 1; plane <= kOutGuardTop; plane <<= 1) {
     if (!(planes & plane & kMustClipPlanes)) continue;
@@ -73,6 +74,8 @@ bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard) {
   Vec4 a0 = a, d = b - a;
   a = a0 + d * t0;
   b = a0 + d * t1;
+  if (t0_out) *t0_out = t0;
+  if (t1_out) *t1_out = t1;
   return true;
 }
 

@@ -18,6 +18,7 @@ namespace velocity::geometry {
 struct ClipVertex {
   Vec4 pos;                            // clip space
   float var[raster::kMaxVaryings];     // varyings, interpolated linearly in clip space
+  int src = -1;                        // the input vertex it is a copy of, or -1 for a new one
 };
 
 enum Outcode : uint32_t {
@@ -32,6 +33,7 @@ enum Outcode : uint32_t {
   kOutGuardBottom = 1u << 8,
   kOutGuardTop = 1u << 9,
   kOutNonFinite = 1u << 10,  // a NaN or an infinity: the primitive is dropped
+  kOutUnsnapped = 1u << 11,  // inside the guard band, yet too far out to snap (set-up drops it)
 };
 inline constexpr uint32_t kViewPlanes = kOutLeft | kOutRight | kOutBottom | kOutTop | kOutNear | kOutFar;
 // Planes that must be cut before rasterizing.
@@ -72,7 +74,8 @@ inline constexpr int kMaxClippedVertices = 3 + 6;
 int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int num_varyings);
 
 // Clips the segment a-b against the must-clip planes in `planes` (parametric, Liang-
-// Barsky style). Returns false when nothing is left.
-bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard);
+// Barsky style). Returns false when nothing is left; else the new ends, which lie at
+// t0 and t1 of the old segment (for interpolating varyings).
+bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard, float* t0 = nullptr, float* t1 = nullptr);
 
 }  // namespace velocity::geometry

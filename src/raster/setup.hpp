@@ -1,9 +1,10 @@
-// Triangle, line and point set-up: from screen-space vertices to the edge functions,
-// bounding boxes and interpolation planes that the tile rasterizer consumes.
+// Triangle, line and point set-up: from screen-space vertices to the records (edge
+// functions, bounding boxes, interpolation planes) that the tile rasterizer consumes.
 #pragma once
 
 #include <cmath>
 
+#include "raster/bins.hpp"
 #include "raster/raster_types.hpp"
 
 namespace velocity::raster {
@@ -11,11 +12,10 @@ namespace velocity::raster {
 // Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
 inline int64_t snap(float v) { return int64_t(std::lrint(v * float(kSubpixelOne))); }
 
-// The geometry stage keeps vertices within the guard band (|x|, |y| < 2^15 pixels), but a
-// degenerate projection (a camera with near <= 0, say) can still hand over NaN or huge
-// coordinates. Set-up refuses anything outside +-2^20 pixels: snapped values then stay
-// below 2^28 (they fit int32), so edge functions (products below 2^58) cannot overflow
-// int64.
+// The geometry stage keeps vertices within the guard band (16384 pixels around the
+// framebuffer, or around a viewport that lies within 16384 pixels of it), but a
+// degenerate projection can still hand over NaN or huge coordinates. Set-up refuses
+// anything outside +-2^20 pixels: snapped values then stay below 2^28 (they fit int32).
 inline constexpr float kMaxScreenCoord = 1048576.0f;
 
 // A vertex after the perspective divide and viewport transform, snapped once (per
@@ -40,16 +40,50 @@ enum class Facing { Front, Back, Degenerate };
 // with what the rasterizer covers.
 Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
 
-// Sets up a triangle. `var[i]` points at vertex i's `num_varyings` varyings (not yet
-// divided by w). Returns false when the triangle covers no pixel centre inside the
-// width x height framebuffer (degenerate, or outside the scissor). Either winding is
-// accepted; culling is the caller's decision, made with facing(). `affine` makes 1/w
-// constant, so that the kernels interpolate varyings linearly in screen space.
-bool setup_triangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, const float* var0,
-                    const float* var1, const float* var2, int num_varyings, int width, int height, bool affine,
-                    TriangleSetup& out);
+// What a draw's primitives are set up with.
+struct SetupParams {
+  // Pixels a primitive may touch (inclusive): the framebuffer, narrowed by the
+  // viewport (triangles only) and the scissor.
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;   // triangles
+  int px0 = 0, py0 = 0, px1 = 0, py1 = 0;  // points and lines
+  bool affine = false;      // make 1/w constant: varyings interpolate linearly on screen
+  bool offset = false;      // glPolygonOffset: depth += factor * max slope + units * 2^-24
+  float offset_factor = 0, offset_units = 0;
+};
 
-bool setup_line(const ScreenVertex& a, const ScreenVertex& b, uint32_t color, int width, int height, LineSetup& out);
-bool setup_point(const ScreenVertex& p, uint32_t color, int width, int height, PointSetup& out);
+// What every record of a primitive shares.
+struct RecordInfo {
+  uint8_t kernel = 0;
+  uint32_t draw = 0;
+  uint32_t flat_color = 0;
+};
+
+// Sets up a triangle at the end of `bins`' arena. `var[i]` points at vertex i's
+// `num_varyings` varyings (not yet divided by w). Returns the record, with its offset
+// in `offset`, or nullptr when the triangle covers no pixel centre inside the box
+// (degenerate, too small, or outside). Either winding is accepted; culling is the
+// caller's decision, made with facing().
+RecordHeader* setup_triangle(WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                             const float* var0, const float* var1, const float* var2, int num_varyings,
+                             const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+
+// Sets up a small triangle whose covered pixel centres are already known: `mask`, the
+// centres in the 4x4 box at its first centre (bit y * 4 + x), from the triangle
+// stage's exact first pass (geometry/triangle_cull.hpp). No edge functions.
+// (setup_triangle itself turns triangles whose centres lie within 8x8 into the same
+// kind of record, finding their pixels with the edge functions.)
+RecordHeader* setup_small_triangle(WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
+                                   const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
+                                   int num_varyings, uint32_t mask, const RecordInfo& info, const SetupParams& params,
+                                   uint32_t& offset);
+
+// A line `width` pixels wide from a to b, varyings interpolated along it.
+RecordHeader* setup_line(WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b, const float* var_a,
+                         const float* var_b, int num_varyings, int width, const RecordInfo& info,
+                         const SetupParams& params, uint32_t& offset);
+
+// A point: the size x size square of pixels centred on p, with p's varyings.
+RecordHeader* setup_point(WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings, int size,
+                          const RecordInfo& info, const SetupParams& params, uint32_t& offset);
 
 }  // namespace velocity::raster

@@ -2,6 +2,8 @@
 #include "velocity/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "velocity/error.hpp"
 
@@ -30,7 +32,23 @@ Mat4 Camera::view() const {
   return rotate_z(-roll) * rotate_x(-pitch) * rotate_y(-yaw) * translate(-position);
 }
 
+ViewWindow ViewWindow::pinhole(float fx, float fy, float cx, float cy, int width, int height) {
+  if (!(fx > 0 && fy > 0 && std::isfinite(fx) && std::isfinite(fy) && std::isfinite(cx) && std::isfinite(cy)) ||
+      width < 1 || height < 1)
+    throw Error("pinhole camera: expected finite fx, fy > 0 and cx, cy, and an image of at least 1x1, got fx=" +
+                std::to_string(fx) + " fy=" + std::to_string(fy) + " cx=" + std::to_string(cx) +
+                " cy=" + std::to_string(cy) + " image " + std::to_string(width) + "x" + std::to_string(height));
+  // Image x = fx * X / -Z + cx (camera looks down -Z); the image's left edge (x = 0) is
+  // at X / -Z = -cx / fx. Image y runs down while the camera's Y runs up.
+  return {-cx / fx, (float(width) - cx) / fx, -(float(height) - cy) / fy, cy / fy};
+}
+
 Mat4 Camera::projection_matrix(float aspect) const {
+  if (window) {
+    const ViewWindow& w = *window;
+    if (projection == Projection::Orthographic) return orthographic(w.left, w.right, w.bottom, w.top, near, far);
+    return frustum(w.left * near, w.right * near, w.bottom * near, w.top * near, near, far);
+  }
   if (projection == Projection::Orthographic) {
     float h = ortho_height / 2;
     return orthographic(-h * aspect, h * aspect, -h, h, near, far);
@@ -57,13 +75,18 @@ std::optional<ObjectId> Scene::find(std::string_view name) const {
 }
 
 std::vector<Mat4> Scene::world_matrices() const {
-  std::vector<Mat4> world(objects_.size());
+  std::vector<Mat4> world;
+  world_matrices(world);
+  return world;
+}
+
+void Scene::world_matrices(std::vector<Mat4>& world) const {
+  world.resize(objects_.size());
   for (size_t i = 0; i < objects_.size(); ++i) {
     const Object& o = objects_[i];
     Mat4 local = o.transform.matrix() * o.base;
     world[i] = o.parent == kNoParent ? local : world[o.parent] * local;  // parents come first
   }
-  return world;
 }
 
 Sphere Scene::bounds() const {

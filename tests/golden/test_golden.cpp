@@ -82,6 +82,9 @@ std::vector<GoldenCase> cases() {
       v.push_back({mesh, w, h, "tex", 35.0});
       v.push_back({mesh, w, h, "env", 35.0});
     }
+  // Dense meshes: most triangles a pixel or two (the triangle stage's exact small-
+  // triangle pass and the tiles' fragment batches), Gouraud and textured.
+  for (const char* shade : {"flat", "gouraud", "tex"}) v.push_back({"sphere:512", 1920, 1080, shade, shade[0] == 't' ? 35.0 : 40.0});
   // A turned frame, so the test does not only see the mesh from its front.
   v.push_back({obj, 640, 360, "gouraud", 40.0, 5, 12});
   v.push_back({obj, 640, 360, "phong", 35.0, 9, 12});

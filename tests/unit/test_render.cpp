@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "image_test_util.hpp"
+#include "velocity/demo.hpp"
+#include "velocity/error.hpp"
 #include "velocity/renderer.hpp"
 
 using namespace velocity;
@@ -253,4 +255,29 @@ TEST(Render, MeshWithoutNormalsGetsAveragedNormals) {
   int worst = 0;
   for (size_t i = 0; i < a.pixels.size(); ++i) worst = std::max(worst, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
   EXPECT_LE(worst, 6);  // averaged face normals differ from the analytic ones only slightly
+}
+
+// read_color gives the image color_image gives, as RGBA or RGB rows of any pitch, with
+// and without super-sampling; other channel counts are an error.
+TEST(Render, ReadColorMatchesTheImage) {
+  Scene scene = make_demo_scene(1.5f);
+  for (int ssaa : {1, 2}) {
+    Renderer r(101, 67);  // partial blocks and tiles
+    r.options.ssaa = ssaa;
+    r.render(scene);
+    const Image img = r.color_image();
+    for (int channels : {4, 3}) {
+      const size_t pitch = size_t(101) * channels + 5;
+      std::vector<uint8_t> out(pitch * 67, 0xab);
+      r.read_color(out.data(), pitch, channels);
+      for (int y = 0; y < 67; ++y)
+        for (int x = 0; x < 101; ++x)
+          for (int c = 0; c < channels; ++c)
+            ASSERT_EQ(out[size_t(y) * pitch + size_t(x) * channels + c], img.pixel(x, y)[c])
+                << x << "," << y << " channel " << c << " of " << channels << ", ssaa " << ssaa;
+      for (int y = 0; y < 67; ++y) EXPECT_EQ(out[size_t(y) * pitch + pitch - 1], 0xab);  // the pitch's padding
+    }
+    std::vector<uint8_t> any(101 * 67 * 4);
+    EXPECT_THROW(r.read_color(any.data(), 101 * 2, 2), Error);
+  }
 }

@@ -1,0 +1,167 @@
+// Pre-transformed primitives with fixed-function pixel state: the layer an
+// immediate-mode front end draws through (Velocity's OpenGL 1.x library in gl/ does).
+//
+// The front end does its own vertex work (transform, lighting, texture-coordinate
+// generation, culling, polygon modes, flat-shading colours) and hands the renderer
+// points, lines and triangles in clip space with per-vertex RGBA colour, texture
+// coordinates and fog coordinate. The renderer clips them (near, far, guard band),
+// maps them through the batch's viewport, sets them up, bins them and rasterizes them
+// on the same tiles, threads and SIMD kernels as meshes, applying the PixelState below
+// in OpenGL's order: texture environment, fog, scissor, alpha test, depth test, blend,
+// colour mask.
+//
+//   velocity::PrimitiveBatch b;
+//   b.kind = velocity::PrimitiveKind::Triangles;
+//   b.position = clip.data(); b.color = rgba.data(); b.vertex_count = n;
+//   renderer.draw(b, state);          // inside begin_frame / end_frame
+//
+// Everything the batch points to (arrays, textures) must stay alive and unchanged
+// until end_frame() returns: the work is done there, on every core.
+#pragma once
+
+#include <cstdint>
+
+#include "velocity/math.hpp"
+#include "velocity/texture.hpp"
+
+namespace velocity {
+
+// OpenGL's comparison functions (glDepthFunc, glAlphaFunc), same order as GL's enums.
+enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+// glBlendFunc's factors (GL 1.4 with the constant-colour ones of the imaging subset).
+enum class BlendFactor : uint8_t {
+  Zero,
+  One,
+  SrcColor,
+  OneMinusSrcColor,
+  DstColor,
+  OneMinusDstColor,
+  SrcAlpha,
+  OneMinusSrcAlpha,
+  DstAlpha,
+  OneMinusDstAlpha,
+  SrcAlphaSaturate,
+  ConstantColor,
+  OneMinusConstantColor,
+  ConstantAlpha,
+  OneMinusConstantAlpha,
+};
+
+// glBlendEquation: result = src * Fs (op) dst * Fd; Min and Max ignore the factors.
+enum class BlendOp : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+
+// glTexEnv's GL_TEXTURE_ENV_MODE.
+enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add };
+
+// What a texture's texels mean (glTexImage2D's base internal format). The Texture
+// stores RGBA8 in any case; the format decides which of its channels the environment
+// reads, as OpenGL's table of texture functions does: Luminance is stored (L, L, L, 1),
+// LuminanceAlpha (L, L, L, A), Alpha (0, 0, 0, A) — only its A is read —,
+// Intensity (I, I, I, I), Rgb (R, G, B, 1).
+enum class TexFormat : uint8_t { Rgba, Rgb, Luminance, LuminanceAlpha, Alpha, Intensity };
+
+enum class FogMode : uint8_t { Linear, Exp, Exp2 };
+
+// How a texture is read: OpenGL's magnification and minification filters and wrap
+// modes. `mip` None samples level 0 only (GL_NEAREST / GL_LINEAR minification).
+struct SamplerState {
+  enum class Texel : uint8_t { Nearest, Linear };
+  enum class Mip : uint8_t { None, Nearest, Linear };
+  Texel mag = Texel::Linear;
+  Texel min = Texel::Linear;
+  Mip mip = Mip::Linear;
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Vec4 border_color{0, 0, 0, 0};  // read outside the texture with Wrap::ClampToBorder
+};
+
+struct TextureStage {
+  const Texture* texture = nullptr;  // null: no texturing
+  TexFormat format = TexFormat::Rgba;
+  TexEnvMode env = TexEnvMode::Modulate;
+  Vec4 env_color{0, 0, 0, 0};  // GL_TEXTURE_ENV_COLOR, for TexEnvMode::Blend
+  SamplerState sampler;
+};
+
+// Per-fragment state of one draw. The defaults are OpenGL's initial state, except that
+// the depth test is on.
+struct PixelState {
+  TextureStage texture;
+
+  // Fog: colour = f * colour + (1 - f) * fog_color (alpha unchanged), f clamped to
+  // [0, 1] from the interpolated fog coordinate c: Linear (end - c) / (end - start),
+  // Exp exp(-density * c), Exp2 exp(-(density * c)^2).
+  bool fog = false;
+  FogMode fog_mode = FogMode::Exp;
+  float fog_start = 0, fog_end = 1, fog_density = 1;
+  Vec4 fog_color{0, 0, 0, 0};
+
+  // Scissor: only pixels in [x0, x1) x [y0, y1) are touched (framebuffer pixels, row 0
+  // at the top; the front end flips GL's bottom-up rectangle).
+  bool scissor = false;
+  int scissor_x0 = 0, scissor_y0 = 0, scissor_x1 = 0, scissor_y1 = 0;
+
+  bool alpha_test = false;
+  CompareFunc alpha_func = CompareFunc::Always;
+  float alpha_ref = 0;
+
+  bool depth_test = true;
+  CompareFunc depth_func = CompareFunc::Less;
+  bool depth_write = true;
+  // glPolygonOffset, for triangles (when offset_fill) and the lines and points of
+  // polygon modes (when offset_line / offset_point — the front end sets the one that
+  // applies): depth += factor * max(|dz/dx|, |dz/dy|) + units * 2^-24.
+  bool polygon_offset = false;
+  float offset_factor = 0, offset_units = 0;
+
+  bool blend = false;
+  BlendFactor blend_src_rgb = BlendFactor::One, blend_dst_rgb = BlendFactor::Zero;
+  BlendFactor blend_src_alpha = BlendFactor::One, blend_dst_alpha = BlendFactor::Zero;
+  BlendOp blend_op = BlendOp::Add;
+  Vec4 blend_color{0, 0, 0, 0};
+
+  uint8_t color_mask = 0xf;  // bit 0 red, 1 green, 2 blue, 3 alpha (glColorMask)
+};
+
+enum class PrimitiveKind : uint8_t { Points, Lines, Triangles };
+
+// glViewport and glDepthRange in framebuffer pixels, row 0 at the top. A zero width or
+// height means the whole framebuffer.
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;
+  float depth_near = 0, depth_far = 1;
+};
+
+struct PrimitiveBatch {
+  PrimitiveKind kind = PrimitiveKind::Triangles;
+  // Per vertex. `position` (clip space) is required; the rest may be null: colour
+  // defaults to opaque white, texture coordinates to (0, 0, 0, 1), fog to 0. Texture
+  // coordinates are projective: s/q and t/q are read, interpolated perspective-correct.
+  const Vec4* position = nullptr;
+  const Vec4* color = nullptr;     // RGBA, each in [0, 1]
+  const Vec4* texcoord = nullptr;  // (s, t, r, q)
+  const float* fog = nullptr;      // fog coordinate (GL: eye-space distance)
+  uint32_t vertex_count = 0;
+  // The vertices of each primitive (1 per point, 2 per line, 3 per triangle); null
+  // means 0, 1, 2, ... vertex_count - 1. Out-of-range indices drop their primitive.
+  const uint32_t* indices = nullptr;
+  uint32_t index_count = 0;
+  Viewport viewport;
+  // Points are size x size squares centred on the vertex, lines `width` pixels thick
+  // across their minor axis (OpenGL's aliased wide points and lines), both >= 1.
+  float point_size = 1, line_width = 1;
+  // Triangles are drawn whatever their winding: culling is the front end's decision.
+};
+
+// A clear inside a frame, in draw order (glClear with the scissor and colour mask).
+struct ClearRequest {
+  bool color = true, depth = true;
+  Vec4 color_value{0, 0, 0, 0};
+  float depth_value = 1;
+  uint8_t color_mask = 0xf;
+  bool depth_write = true;  // false: depth is left alone (glDepthMask(GL_FALSE))
+  bool scissor = false;
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // as PixelState's scissor
+};
+
+}  // namespace velocity

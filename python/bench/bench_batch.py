@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Batch throughput on a Dask LocalCluster: 1,000 views on 1 worker process, then on 2,
+each worker rendering on one core; rounds alternate, medians reported, and the scaling
+ratio = (views/s on 2) / (2 x views/s on 1): 1.0 is perfect.
+
+    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256]
+
+The job: 10 models (the project's test models and Debian's assimp-testmodels), 100
+orbit views each, colour + depth + mask at size x size, one Dask task per 25 views.
+Times the job only (the cluster is started and warmed up before).
+
+As a control, the machine's own scaling: the same single-threaded C++ render loop
+(velocity_python_bench --threads 1), one copy alone, then two copies at once. On a
+machine whose two cores are two hyperthreads of one physical core, or that others
+share, two processes never reach 2x, whatever the batch runner does.
+"""
+import re
+import subprocess
+import argparse
+import json
+import os
+import shutil
+import statistics
+import sys
+import tempfile
+import time
+
+import distributed
+
+from velocity.dask_runner import run_dask
+from velocity.jobs import Progress, load_job
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+MODELS = [os.path.join(ROOT, "tests", "data", "models", m) for m in
+          ("duck.asc", "fork.asc", "wuson_x4.obj", "CITY.ASC", "TESTI.ASC", "UUSALKU.ASC")] + [
+    "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf",
+    "/usr/share/assimp/models/PLY/cube.ply",
+    "/usr/share/assimp/models/STL/Spider_ascii.stl",
+    "/usr/share/assimp/models/3DS/test1.3ds",
+]
+
+
+def machine_scaling(build, rounds):
+    cmd = [os.path.join(build, "python", "velocity_python_bench"), "--renderer", "velocity", "--mesh", "sphere:128",
+           "--size", "256x256", "--frames", "400", "--threads", "1"]
+    ms = lambda out: float(re.search(r"median_ms=([0-9.]+)", out).group(1))  # noqa: E731
+    alone, pair = [], []
+    for _ in range(rounds):
+        alone.append(ms(subprocess.run(cmd, check=True, capture_output=True, text=True).stdout))
+        procs = [subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True) for _ in range(2)]
+        pair.append(statistics.mean(ms(p.communicate()[0]) for p in procs))
+    a, b = statistics.median(alone), statistics.median(pair)
+    print(f"control: one render loop alone {a:.3f} ms/frame, two at once {b:.3f} ms/frame each: "
+          f"the machine scales {a / b:.3f} of 2x", flush=True)
+    return a / b
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--rounds", type=int, default=3)
+    p.add_argument("--size", type=int, default=256)
+    p.add_argument("--views", type=int, default=100, help="views per model")
+    p.add_argument("--build", default=os.path.join(ROOT, "build"))
+    args = p.parse_args()
+    control = machine_scaling(args.build, args.rounds)
+    tmp = tempfile.mkdtemp(prefix="velocity-bench-batch-")
+    spec = {"models": MODELS, "size": [args.size, args.size], "views": {"type": "orbit", "count": args.views},
+            "outputs": ["color", "depth", "mask"], "chunk": 25}
+    total = len(MODELS) * args.views
+    clusters = {}
+    for n in (1, 2):
+        cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                                           silence_logs=50)
+        clusters[n] = (cluster, distributed.Client(cluster))
+    rates = {1: [], 2: []}
+    try:
+        for r in range(args.rounds + 1):  # round 0 warms up (imports, renderers, page cache)
+            for n in (1, 2):
+                out = os.path.join(tmp, f"out-{n}")
+                shutil.rmtree(out, ignore_errors=True)
+                job = load_job(spec, out)
+                t0 = time.perf_counter()
+                m = run_dask(job, client=clusters[n][1], progress=Progress(False))
+                dt = time.perf_counter() - t0
+                assert m["views_done"] == total and not m["models_failed"], json.dumps(m["models_failed"])
+                if r:
+                    rates[n].append(total / dt)
+                print(f"round {r}{' (warm-up)' if not r else ''}: {n} worker(s): {total} views in {dt:.2f} s "
+                      f"= {total / dt:.1f} views/s", flush=True)
+    finally:
+        for cluster, client in clusters.values():
+            client.close()
+            cluster.close()
+        shutil.rmtree(tmp, ignore_errors=True)
+    one, two = statistics.median(rates[1]), statistics.median(rates[2])
+    print(f"median: 1 worker {one:.1f} views/s, 2 workers {two:.1f} views/s, "
+          f"scaling {two / (2 * one):.3f} of 2x (cores: {os.cpu_count()}); the machine itself: {control:.3f} of 2x")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,734 @@
+// velocity._velocity: the Python bindings (pybind11). The public package, velocity/,
+// re-exports these and adds RenderFlags, pose helpers and the batch runners.
+//
+// Threads: every call that renders or loads releases the GIL for its C++ part. A render
+// first copies what it needs out of the scene (build_frame, meshes shared, not copied)
+// while it holds the GIL, so Python may change the scene meanwhile. One
+// OffscreenRenderer renders one frame at a time (a mutex); many renderers render at
+// once.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "convert.hpp"
+#include "scene_graph.hpp"
+#include "velocity/error.hpp"
+#include "velocity/load.hpp"
+#include "velocity/log.hpp"
+#include "velocity/texture.hpp"
+
+namespace py = pybind11;
+using namespace velocity;
+using namespace velocity::python;
+
+namespace {
+
+// ---------------------------------------------------------------- warnings
+// The core's warnings (a dropped NaN triangle, a missing texture) are collected per
+// thread during a call and raised as Python warnings once the GIL is back; anything
+// outside such a call goes to stderr as before.
+thread_local std::vector<std::string>* t_warnings = nullptr;
+
+struct CollectWarnings {
+  std::vector<std::string> messages;
+  CollectWarnings() { t_warnings = &messages; }
+  ~CollectWarnings() { t_warnings = nullptr; }
+  // Call with the GIL held.
+  void emit() {
+    for (const std::string& m : messages)
+      if (PyErr_WarnEx(PyExc_RuntimeWarning, m.c_str(), 2) < 0) throw py::error_already_set();
+    messages.clear();
+  }
+};
+
+// ---------------------------------------------------------------- arrays
+// numpy array -> ArrayView (native byte order; others are converted first).
+ArrayView view_of(const py::array& a, const char* name) {
+  if (a.ndim() != 2)
+    throw py::value_error(std::string(name) + ": expected a 2-D array, got " + std::to_string(a.ndim()) + " dimensions");
+  ArrayView v;
+  v.data = a.data();
+  v.kind = a.dtype().kind();
+  v.itemsize = int(a.itemsize());
+  v.rows = size_t(a.shape(0));
+  v.cols = size_t(a.shape(1));
+  v.row_stride = a.strides(0);
+  v.col_stride = a.strides(1);
+  return v;
+}
+
+py::array as_native(py::handle obj) {
+  py::module_ np = py::module_::import("numpy");
+  py::array a = np.attr("asarray")(obj);
+  if (!a.dtype().attr("isnative").cast<bool>()) a = a.attr("astype")(a.dtype().attr("newbyteorder")("="));
+  return a;
+}
+
+// A 4x4 pose from any array-like (None: the identity).
+std::array<double, 16> pose_of(py::handle obj, const char* what) {
+  std::array<double, 16> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  if (obj.is_none()) return m;
+  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a) throw py::type_error(std::string(what) + ": expected a 4x4 array");
+  if (a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4)
+    throw py::value_error(std::string(what) + ": expected shape (4, 4)");
+  for (int i = 0; i < 16; ++i) {
+    m[size_t(i)] = a.data()[i];
+    if (!std::isfinite(m[size_t(i)])) throw py::value_error(std::string(what) + ": entries must be finite");
+  }
+  return m;
+}
+
+py::array_t<double> pose_array(const double* m) {
+  py::array_t<double> a({4, 4});
+  std::copy(m, m + 16, a.mutable_data());
+  return a;
+}
+
+// A numpy array that owns `v` (moved in, not copied).
+template <typename T>
+py::array own(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
+  auto* heap = new std::vector<T>(std::move(v));
+  py::capsule free_it(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(shape, heap->data(), free_it);
+}
+
+// A read-only numpy view of memory that `owner` keeps alive.
+template <typename T>
+py::array view(const T* data, std::vector<py::ssize_t> shape, std::shared_ptr<const void> owner) {
+  auto* keep = new std::shared_ptr<const void>(std::move(owner));
+  py::capsule base(keep, [](void* p) { delete static_cast<std::shared_ptr<const void>*>(p); });
+  py::array a(py::dtype::of<T>(), shape, data, base);
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+// pyrender's colour vectors: floats in [0, 1], or integers 0..255 (uint8 arrays, or a
+// sequence of Python ints above 1).
+std::array<double, 4> color_of(py::handle obj, const char* what, std::array<double, 4> fallback) {
+  if (obj.is_none()) return fallback;
+  py::array raw = as_native(obj);
+  bool ints = raw.dtype().kind() == 'u' || raw.dtype().kind() == 'i';
+  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(raw);
+  if (!a || a.ndim() != 1 || (a.shape(0) != 3 && a.shape(0) != 4))
+    throw py::value_error(std::string(what) + ": expected 3 or 4 numbers");
+  std::array<double, 4> c = fallback;
+  bool over = false;
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) over |= a.data()[i] > 1;
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+    double v = a.data()[i];
+    if (!std::isfinite(v) || v < 0) throw py::value_error(std::string(what) + ": entries must be finite and >= 0");
+    c[size_t(i)] = ints && over ? v / 255.0 : v;
+  }
+  return c;
+}
+
+std::optional<Shading> shading_of(const std::string& name) {
+  if (name == "color" || name == "unlit") return Shading::Unlit;
+  std::optional<Shading> s = parse_shading(name);
+  if (!s) throw py::value_error("shading: expected flat, gouraud, phong, unlit, wire or points, got '" + name + "'");
+  return s;
+}
+
+// ---------------------------------------------------------------- meshes
+struct PyMaterial {
+  Material m;
+};
+
+struct PyMesh {
+  std::shared_ptr<const MeshData> data;
+};
+
+struct PyPrimitive {
+  std::shared_ptr<const MeshData> data;
+  size_t index = 0;
+  const Mesh& mesh() const { return *data->parts[index]; }
+};
+
+PyMesh py_mesh_from_arrays(py::object vertices, py::object faces, py::object normals, py::object uvs, py::object colors,
+                        std::optional<PyMaterial> material, std::string name) {
+  // Keep the converted arrays alive while their views are read.
+  py::array v = as_native(vertices), f = as_native(faces);
+  std::optional<py::array> n, u, c;
+  MeshArrays in;
+  in.vertices = view_of(v, "vertices");
+  in.faces = view_of(f, "faces");
+  if (!normals.is_none()) n = as_native(normals), in.normals = view_of(*n, "normals");
+  if (!uvs.is_none()) u = as_native(uvs), in.uvs = view_of(*u, "uvs");
+  if (!colors.is_none()) c = as_native(colors), in.colors = view_of(*c, "colors");
+  auto mesh = std::make_shared<Mesh>(velocity::python::mesh_from_arrays(in, name));
+  if (material) mesh->materials = {material->m};
+  return {make_mesh_data(std::move(name), {mesh}, {Mat4::identity()})};
+}
+
+PyMesh mesh_from_file(const std::string& path, bool swap_yz, double max_memory) {
+  Model model;
+  {
+    CollectWarnings warnings;
+    {
+      py::gil_scoped_release release;
+      LoadOptions options;
+      options.swap_yz = swap_yz;
+      if (max_memory > 0) options.max_memory = size_t(max_memory);
+      model = load_model(path, options);
+    }
+    warnings.emit();
+  }
+  // Every node's mesh with the node's world matrix (nodes come parents first).
+  std::vector<Mat4> world(model.nodes.size());
+  std::vector<std::shared_ptr<const Mesh>> parts;
+  std::vector<Mat4> poses;
+  for (size_t i = 0; i < model.nodes.size(); ++i) {
+    const ModelNode& n = model.nodes[i];
+    world[i] = n.parent < 0 ? n.local : world[size_t(n.parent)] * n.local;
+    if (n.mesh && !n.mesh->triangles.empty()) parts.push_back(n.mesh), poses.push_back(world[i]);
+  }
+  if (parts.empty()) throw Error(path + ": the file holds no triangles");
+  std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  return {make_mesh_data(name, std::move(parts), std::move(poses))};
+}
+
+PyMesh mesh_generated(Mesh mesh, std::string name) {
+  mesh.name = name;
+  return {make_mesh_data(std::move(name), {std::make_shared<const Mesh>(std::move(mesh))}, {Mat4::identity()})};
+}
+
+// ---------------------------------------------------------------- scene
+struct PyScene;
+
+struct PyNode {
+  std::shared_ptr<SceneData> scene;
+  uint32_t index = 0;
+  NodeData& data() const { return scene->nodes[index]; }
+};
+
+struct PyScene {
+  std::shared_ptr<SceneData> data = std::make_shared<SceneData>();
+
+  NodeData& node(const PyNode& n) const {
+    if (n.scene != data) throw py::value_error("the node belongs to another scene");
+    if (n.data().removed) throw py::value_error("the node '" + n.data().name + "' was removed from the scene");
+    return n.data();
+  }
+
+  PyNode add(py::object obj, std::optional<std::string> name, py::object pose, std::optional<PyNode> parent_node,
+             std::optional<std::string> parent_name) {
+    NodeData n;
+    if (py::isinstance<PyMesh>(obj)) n.mesh = obj.cast<PyMesh&>().data;
+    else if (py::isinstance<CameraBase>(obj)) n.camera = obj.cast<std::shared_ptr<CameraBase>>();
+    else if (py::isinstance<LightBase>(obj)) n.light = obj.cast<std::shared_ptr<LightBase>>();
+    else
+      throw py::type_error("scene.add: expected a Mesh, a camera or a light, got " +
+                           std::string(py::str(obj.get_type().attr("__name__"))));
+    n.name = name ? *name : n.mesh ? n.mesh->name : n.camera ? n.camera->name : n.light->name;
+    std::array<double, 16> p = pose_of(pose, "pose");
+    std::copy(p.begin(), p.end(), n.pose);
+    if (parent_node) {
+      node(*parent_node);
+      n.parent = parent_node->index;
+    } else if (parent_name) {
+      auto found = std::find_if(data->nodes.begin(), data->nodes.end(),
+                                [&](const NodeData& d) { return !d.removed && d.name == *parent_name; });
+      if (found == data->nodes.end()) throw py::value_error("no node named '" + *parent_name + "' in the scene");
+      n.parent = found - data->nodes.begin();
+    }
+    if (data->nodes.size() >= UINT32_MAX - 1) throw py::value_error("too many nodes");
+    bool camera = bool(n.camera);
+    data->nodes.push_back(std::move(n));
+    uint32_t index = uint32_t(data->nodes.size() - 1);
+    if (camera && (data->main_camera < 0 || data->nodes[size_t(data->main_camera)].removed)) data->main_camera = index;
+    return {data, index};
+  }
+
+  void remove(const PyNode& n) {
+    node(n);
+    // The node and everything below it (children come after their parents).
+    std::vector<bool> gone(data->nodes.size(), false);
+    gone[n.index] = true;
+    for (size_t i = n.index; i < data->nodes.size(); ++i) {
+      NodeData& d = data->nodes[i];
+      if (d.parent >= 0 && gone[size_t(d.parent)]) gone[i] = true;
+      if (gone[i]) d.removed = true;
+    }
+  }
+
+  std::vector<PyNode> nodes(int kind) const {  // 0 all, 1 mesh, 2 camera, 3 light
+    std::vector<PyNode> out;
+    for (size_t i = 0; i < data->nodes.size(); ++i) {
+      const NodeData& d = data->nodes[i];
+      if (d.removed) continue;
+      if (kind == 0 || (kind == 1 && d.mesh) || (kind == 2 && d.camera) || (kind == 3 && d.light))
+        out.push_back({data, uint32_t(i)});
+    }
+    return out;
+  }
+
+  // World-space axis-aligned bounds of the visible meshes (pyrender's scene.bounds).
+  std::array<std::array<double, 3>, 2> bounds() const {
+    auto world = data->world_poses();
+    bool any = false;
+    std::array<std::array<double, 3>, 2> b{};
+    for (size_t i = 0; i < data->nodes.size(); ++i) {
+      const NodeData& d = data->nodes[i];
+      if (d.removed || !d.mesh) continue;
+      Mat4 w = to_mat4(world[i].data(), "pose");
+      for (size_t p = 0; p < d.mesh->parts.size(); ++p) {
+        Mat4 m = w * d.mesh->poses[p];
+        for (Vec3 v : d.mesh->parts[p]->positions) {
+          Vec3 q = m.transform_point(v);
+          double c[3] = {q.x, q.y, q.z};
+          for (int k = 0; k < 3; ++k) {
+            if (!any) b[0][size_t(k)] = b[1][size_t(k)] = c[k];
+            b[0][size_t(k)] = std::min(b[0][size_t(k)], c[k]);
+            b[1][size_t(k)] = std::max(b[1][size_t(k)], c[k]);
+          }
+          any = true;
+        }
+      }
+    }
+    return b;
+  }
+};
+
+// ---------------------------------------------------------------- renderer
+struct PyRenderer {
+  Renderer renderer;
+  std::mutex mutex;
+  std::shared_ptr<BufferPool> pool = std::make_shared<BufferPool>();
+  PyRenderer(int w, int h, int ssaa, int threads) : renderer(w, h) {
+    if (ssaa < 1 || ssaa > 4) throw Error("ssaa must be 1..4, got " + std::to_string(ssaa));
+    if (threads < 0) throw Error("threads must be >= 0 (0: every core), got " + std::to_string(threads));
+    renderer.options.ssaa = ssaa;
+    renderer.options.threads = threads;
+  }
+};
+
+// pyrender's RenderFlags values that Velocity uses (velocity/__init__.py's RenderFlags).
+enum : int64_t {
+  kDepthOnly = 1,
+  kAllWireframe = 8,
+  kSkipCullFaces = 1024,
+  kRgba = 2048,
+  kFlat = 4096,
+  kSeg = 8192,
+  kNormals = 1 << 20,
+};
+
+py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
+  RenderRequest req;
+  req.color = !(flags & kDepthOnly);
+  req.alpha = flags & kRgba;
+  req.mask = flags & kSeg;
+  req.normals = flags & kNormals;
+  req.cull_back_faces = !(flags & kSkipCullFaces);
+  if (flags & kAllWireframe) req.shading = Shading::Wireframe;
+  else if (flags & kFlat) req.shading = Shading::Flat;
+  RenderOutput out;
+  int w, h;
+  std::unique_ptr<uint8_t[]> color;
+  size_t color_bytes = 0;
+  CollectWarnings warnings;
+  {
+    std::unique_lock lock(self.mutex, std::defer_lock);
+    {
+      py::gil_scoped_release release;
+      lock.lock();  // without the GIL: another thread may be rendering with this renderer
+    }
+    w = self.renderer.width(), h = self.renderer.height();
+    Frame frame = build_frame(*scene.data, w, h);  // with the GIL: the scene is Python's
+    py::gil_scoped_release release;
+    if (req.color) {
+      color_bytes = size_t(w) * size_t(h) * 4;
+      color = self.pool->take(color_bytes);
+      req.color_buffer = color.get();
+    }
+    out = render_frame(self.renderer, frame, req);
+  }
+  warnings.emit();
+  py::array depth = own(std::move(out.depth), {h, w});
+  if (!req.color) return depth;
+  py::list result;
+  // The array owns the buffer; when numpy frees it, it goes back to the renderer's pool.
+  struct Owner {
+    std::shared_ptr<BufferPool> pool;
+    std::unique_ptr<uint8_t[]> buffer;
+    size_t bytes;
+    ~Owner() { pool->give(std::move(buffer), bytes); }
+  };
+  uint8_t* pixels = color.get();
+  auto* owner = new Owner{self.pool, std::move(color), color_bytes};
+  py::capsule free_color(owner, [](void* p) { delete static_cast<Owner*>(p); });
+  result.append(py::array_t<uint8_t>({py::ssize_t(h), py::ssize_t(w), py::ssize_t(req.alpha ? 4 : 3)}, pixels, free_color));
+  result.append(depth);
+  if (req.mask) result.append(own(std::move(out.mask), {h, w}));
+  if (req.normals) result.append(own(std::move(out.normals), {h, w, 3}));
+  return py::tuple(result);
+}
+
+template <typename Cam>
+py::array_t<double> projection_of(const Cam& cam, int width, int height) {
+  cam.validate();
+  Camera c;
+  c.near = float(cam.znear);
+  c.far = cam.zfar ? float(*cam.zfar) : 1e6f;
+  cam.apply(c, width, height);
+  Mat4 p = c.projection_matrix(float(width) / float(height));
+  double m[16];
+  for (int i = 0; i < 16; ++i) m[i] = p.m[i / 4][i % 4];
+  return pose_array(m);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_velocity, m) {
+  m.doc() = "Velocity's Python bindings (use the `velocity` package, which re-exports these).";
+  static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
+  error.doc() = "An error from the Velocity engine; the message names the file, line or argument.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const Error& e) {
+      error(e.what());
+    }
+  });
+  set_warning_handler([](std::string_view message) {
+    if (t_warnings) t_warnings->emplace_back(message);
+    else std::fprintf(stderr, "velocity: warning: %.*s\n", int(message.size()), message.data());
+  });
+
+  py::class_<PyMaterial>(m, "Material", "How a mesh's surface is shaded (Velocity's fixed-function model).")
+      .def(py::init([](py::object color, const std::string& shading, double specular, double shininess,
+                       bool two_sided, std::optional<std::string> texture) {
+             PyMaterial pm;
+             auto c = color_of(color, "color", {0.8, 0.8, 0.8, 1});
+             pm.m.color = {float(c[0]), float(c[1]), float(c[2])};
+             pm.m.shading = *shading_of(shading);
+             if (!(specular >= 0 && std::isfinite(specular))) throw py::value_error("specular must be >= 0");
+             if (!(shininess >= 0 && std::isfinite(shininess))) throw py::value_error("shininess must be >= 0");
+             pm.m.specular = float(specular);
+             pm.m.shininess = float(shininess);
+             pm.m.two_sided = two_sided;
+             if (texture) {
+               py::gil_scoped_release release;
+               pm.m.texture = load_texture(*texture);
+               pm.m.texture_file = *texture;
+             }
+             return pm;
+           }),
+           py::arg("color") = py::none(), py::arg("shading") = "gouraud", py::arg("specular") = 0.0,
+           py::arg("shininess") = 32.0, py::arg("two_sided") = false, py::arg("texture") = py::none(),
+           "color: RGB in [0, 1] (or 0..255 integers); shading: 'flat', 'gouraud', 'phong', 'unlit', 'wire' "
+           "or 'points'; specular: Ks of the white highlight Ks*(R.V)^shininess; two_sided: draw and light back "
+           "faces; texture: an image file modulating the colour through the mesh's uvs.")
+      .def_property_readonly("color", [](const PyMaterial& p) { return std::array<float, 3>{p.m.color.x, p.m.color.y, p.m.color.z}; })
+      .def_property_readonly("shading", [](const PyMaterial& p) { return std::string(to_string(p.m.shading)); })
+      .def_property_readonly("specular", [](const PyMaterial& p) { return p.m.specular; })
+      .def_property_readonly("shininess", [](const PyMaterial& p) { return p.m.shininess; })
+      .def_property_readonly("two_sided", [](const PyMaterial& p) { return p.m.two_sided; })
+      .def_property_readonly("texture", [](const PyMaterial& p) -> std::optional<std::string> {
+        if (p.m.texture_file.empty()) return std::nullopt;
+        return p.m.texture_file;
+      });
+
+  py::class_<PyPrimitive>(m, "Primitive",
+                          "One part of a Mesh: its arrays are read-only views of the engine's own storage (no copy).")
+      .def_property_readonly("positions", [](const PyPrimitive& p) {
+        const Mesh& s = p.mesh();
+        return view(&s.positions.data()->x, {py::ssize_t(s.positions.size()), 3}, p.data->parts[p.index]);
+      }, "N x 3 float32 vertex positions (the part's own frame).")
+      .def_property_readonly("normals", [](const PyPrimitive& p) -> py::object {
+        const Mesh& s = p.mesh();
+        if (s.normals.empty()) return py::none();
+        return view(&s.normals.data()->x, {py::ssize_t(s.normals.size()), 3}, p.data->parts[p.index]);
+      }, "N x 3 float32 unit normals.")
+      .def_property_readonly("texcoord_0", [](const PyPrimitive& p) -> py::object {
+        const Mesh& s = p.mesh();
+        if (s.uvs.empty()) return py::none();
+        return view(&s.uvs.data()->x, {py::ssize_t(s.uvs.size()), 2}, p.data->parts[p.index]);
+      }, "N x 2 float32 texture coordinates, or None.")
+      .def_property_readonly("color_0", [](const PyPrimitive& p) -> py::object {
+        const Mesh& s = p.mesh();
+        if (s.colors.empty()) return py::none();
+        return view(&s.colors.data()->x, {py::ssize_t(s.colors.size()), 3}, p.data->parts[p.index]);
+      }, "N x 3 float32 vertex colours in [0, 1], or None.")
+      .def_property_readonly("indices", [](const PyPrimitive& p) {
+        const Mesh& s = p.mesh();
+        return view(&s.triangles.data()->v[0], {py::ssize_t(s.triangles.size()), 3}, p.data->parts[p.index]);
+      }, "M x 3 uint32 vertex indices, counter-clockwise seen from the front.")
+      .def_property_readonly("pose", [](const PyPrimitive& p) {
+        double d[16];
+        for (int i = 0; i < 16; ++i) d[i] = p.data->poses[p.index].m[i / 4][i % 4];
+        return pose_array(d);
+      }, "4x4 pose of the part in its mesh's frame.")
+      .def_property_readonly("material", [](const PyPrimitive& p) -> std::optional<PyMaterial> {
+        const Mesh& s = p.mesh();
+        if (s.materials.empty()) return std::nullopt;
+        return PyMaterial{s.materials[0]};
+      }, "The part's first material, or None (the default grey).");
+
+  py::class_<PyMesh>(m, "Mesh", "A renderable mesh: one or more primitives. Immutable; share it between scenes.")
+      .def_static("from_arrays", &py_mesh_from_arrays, py::arg("vertices"), py::arg("faces"),
+                  py::arg("normals") = py::none(), py::arg("uvs") = py::none(), py::arg("colors") = py::none(),
+                  py::arg("material") = py::none(), py::arg("name") = "mesh",
+                  "A mesh from numpy arrays: vertices N x 3 float, faces M x 3 integer (counter-clockwise front "
+                  "faces), optional normals N x 3, uvs N x 2, colors N x 3/4 (float in [0, 1] or uint8).\n\n"
+                  "float32 C-contiguous vertices, normals and uvs and (u)int32 faces are copied into the engine "
+                  "with one memcpy each; other layouts and types are converted on the way. Without normals, "
+                  "smooth ones are computed. Raises velocity.Error for a bad index or a non-finite value.")
+      .def_static("from_file", &mesh_from_file, py::arg("path"), py::arg("swap_yz") = true,
+                  py::arg("max_memory") = 0.0,
+                  "A mesh from a model file: ASC, PLG/PLX, OBJ (+MTL), glTF/GLB, 3DS, PLY or STL, every node "
+                  "a primitive placed by its node matrix, textures found next to the file. Releases the GIL while "
+                  "loading. swap_yz: stand 3D Studio ASC files (Z up) upright; max_memory: bytes the loader may "
+                  "use (0: the engine's 2 GiB). Raises velocity.Error naming the file, line and what was expected.")
+      .def_static("sphere", [](int segments) { return mesh_generated(make_sphere(segments), "sphere"); },
+                  py::arg("segments") = 64, "A UV sphere of radius 1: `segments` around, segments / 2 rings.")
+      .def_static("cube", [](float size) { return mesh_generated(make_cube(size), "cube"); }, py::arg("size") = 1.0f,
+                  "A cube `size` across, centred on the origin.")
+      .def_static("torus", [](float major, float minor) { return mesh_generated(make_torus(major, minor), "torus"); },
+                  py::arg("major") = 0.7f, py::arg("minor") = 0.3f, "A torus about the Y axis.")
+      .def_property_readonly("name", [](const PyMesh& p) { return p.data->name; })
+      .def_property_readonly("primitives", [](const PyMesh& p) {
+        std::vector<PyPrimitive> out;
+        for (size_t i = 0; i < p.data->parts.size(); ++i) out.push_back({p.data, i});
+        return out;
+      })
+      .def_property_readonly("bounds", [](const PyMesh& p) {
+        std::array<std::array<double, 3>, 2> b{};
+        bool any = false;
+        for (size_t i = 0; i < p.data->parts.size(); ++i)
+          for (Vec3 v : p.data->parts[i]->positions) {
+            Vec3 q = p.data->poses[i].transform_point(v);
+            double c[3] = {q.x, q.y, q.z};
+            for (size_t k = 0; k < 3; ++k) {
+              if (!any) b[0][k] = b[1][k] = c[k];
+              b[0][k] = std::min(b[0][k], c[k]), b[1][k] = std::max(b[1][k], c[k]);
+            }
+            any = true;
+          }
+        return b;
+      }, "2 x 3: the minimum and maximum corner of the axis-aligned box.")
+      .def_property_readonly("bounding_sphere", [](const PyMesh& p) {
+        return py::make_tuple(std::array<float, 3>{p.data->bounds.center.x, p.data->bounds.center.y, p.data->bounds.center.z},
+                              p.data->bounds.radius);
+      }, "(centre, radius) of a sphere holding every vertex.")
+      .def_property_readonly("triangle_count", [](const PyMesh& p) {
+        size_t n = 0;
+        for (const auto& part : p.data->parts) n += part->triangles.size();
+        return n;
+      })
+      .def("__repr__", [](const PyMesh& p) {
+        return "<velocity.Mesh '" + p.data->name + "' with " + std::to_string(p.data->parts.size()) + " primitive(s)>";
+      });
+
+  // Cameras.
+  py::class_<CameraBase, std::shared_ptr<CameraBase>> camera(m, "Camera", "Base class of the cameras.");
+  camera.def_readwrite("name", &CameraBase::name)
+      .def_readwrite("znear", &CameraBase::znear, "Distance to the near clipping plane.")
+      .def_readwrite("zfar", &CameraBase::zfar, "Distance to the far plane (None: fitted to the scene).");
+  py::class_<PerspectiveCamera, CameraBase, std::shared_ptr<PerspectiveCamera>>(m, "PerspectiveCamera",
+      "A pinhole camera with a vertical field of view (pyrender's PerspectiveCamera). It looks down the -Z "
+      "axis of its pose with +Y up.")
+      .def(py::init([](double yfov, double znear, std::optional<double> zfar, std::optional<double> aspect,
+                       std::optional<std::string> name) {
+             auto c = std::make_shared<PerspectiveCamera>();
+             c->yfov = yfov, c->znear = znear, c->zfar = zfar, c->aspect_ratio = aspect;
+             if (name) c->name = *name;
+             c->validate();
+             return c;
+           }),
+           py::arg("yfov"), py::arg("znear") = 0.05, py::arg("zfar") = py::none(), py::arg("aspectRatio") = py::none(),
+           py::arg("name") = py::none(),
+           "yfov: vertical field of view in radians; aspectRatio: width / height (None: the image's); zfar None: "
+           "just beyond the farthest mesh of the scene at each render.")
+      .def_readwrite("yfov", &PerspectiveCamera::yfov)
+      .def_readwrite("aspectRatio", &PerspectiveCamera::aspect_ratio)
+      .def("get_projection_matrix", &projection_of<PerspectiveCamera>, py::arg("width"), py::arg("height"),
+           "The 4x4 OpenGL projection matrix for a width x height image (zfar None: 1e6 here).");
+  py::class_<OrthographicCamera, CameraBase, std::shared_ptr<OrthographicCamera>>(m, "OrthographicCamera",
+      "A parallel projection (pyrender's OrthographicCamera): the view volume is 2*xmag wide and 2*ymag high.")
+      .def(py::init([](double xmag, double ymag, double znear, double zfar, std::optional<std::string> name) {
+             auto c = std::make_shared<OrthographicCamera>();
+             c->xmag = xmag, c->ymag = ymag, c->znear = znear, c->zfar = zfar;
+             if (name) c->name = *name;
+             c->validate();
+             return c;
+           }),
+           py::arg("xmag"), py::arg("ymag"), py::arg("znear") = 0.05, py::arg("zfar") = 100.0,
+           py::arg("name") = py::none())
+      .def_readwrite("xmag", &OrthographicCamera::xmag)
+      .def_readwrite("ymag", &OrthographicCamera::ymag)
+      .def("get_projection_matrix", &projection_of<OrthographicCamera>, py::arg("width"), py::arg("height"));
+  py::class_<IntrinsicsCamera, CameraBase, std::shared_ptr<IntrinsicsCamera>>(m, "IntrinsicsCamera",
+      "A pinhole camera from intrinsics in pixels (pyrender's IntrinsicsCamera). Image coordinates run right "
+      "and down from the top-left corner of the image, pixel (u, v)'s centre at (u + 0.5, v + 0.5), as in "
+      "pyrender; for OpenCV's K (centres on whole numbers) use IntrinsicsCamera.from_K, which adds the 0.5.")
+      .def(py::init([](double fx, double fy, double cx, double cy, double znear, double zfar,
+                       std::optional<std::string> name) {
+             auto c = std::make_shared<IntrinsicsCamera>();
+             c->fx = fx, c->fy = fy, c->cx = cx, c->cy = cy, c->znear = znear, c->zfar = zfar;
+             if (name) c->name = *name;
+             c->validate();
+             return c;
+           }),
+           py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"), py::arg("znear") = 0.05,
+           py::arg("zfar") = 100.0, py::arg("name") = py::none())
+      .def_readwrite("fx", &IntrinsicsCamera::fx)
+      .def_readwrite("fy", &IntrinsicsCamera::fy)
+      .def_readwrite("cx", &IntrinsicsCamera::cx)
+      .def_readwrite("cy", &IntrinsicsCamera::cy)
+      .def("get_projection_matrix", &projection_of<IntrinsicsCamera>, py::arg("width"), py::arg("height"));
+
+  // Lights.
+  py::class_<LightBase, std::shared_ptr<LightBase>> light(m, "Light", "Base class of the lights.");
+  light.def_readwrite("name", &LightBase::name)
+      .def_property("color", [](const LightBase& l) { return std::array<float, 3>{l.color.x, l.color.y, l.color.z}; },
+                    [](LightBase& l, py::object c) {
+                      auto v = color_of(c, "color", {1, 1, 1, 1});
+                      l.color = {float(v[0]), float(v[1]), float(v[2])};
+                    })
+      .def_readwrite("intensity", &LightBase::intensity);
+  auto make_light = [](auto l, py::object color, std::optional<double> intensity, std::optional<std::string> name) {
+    auto v = color_of(color, "color", {1, 1, 1, 1});
+    l->color = {float(v[0]), float(v[1]), float(v[2])};
+    l->intensity = intensity.value_or(1.0);
+    if (!(std::isfinite(l->intensity) && l->intensity >= 0)) throw py::value_error("intensity must be >= 0");
+    if (name) l->name = *name;
+    return l;
+  };
+  py::class_<DirectionalLight, LightBase, std::shared_ptr<DirectionalLight>>(m, "DirectionalLight",
+      "A light from infinitely far away, shining along the -Z axis of its pose (pyrender's DirectionalLight). "
+      "A Lambertian surface facing it gets albedo * color * intensity / pi.")
+      .def(py::init([make_light](py::object color, std::optional<double> intensity, std::optional<std::string> name) {
+             return make_light(std::make_shared<DirectionalLight>(), color, intensity, name);
+           }),
+           py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("name") = py::none());
+  py::class_<PointLight, LightBase, std::shared_ptr<PointLight>>(m, "PointLight",
+      "A light at the origin of its pose, falling off as 1 / d^2 (pyrender's PointLight; its `range` cut-off "
+      "is not supported and must be None).")
+      .def(py::init([make_light](py::object color, std::optional<double> intensity, py::object range,
+                                 std::optional<std::string> name) {
+             if (!range.is_none()) throw py::value_error("PointLight: range is not supported (use None)");
+             return make_light(std::make_shared<PointLight>(), color, intensity, name);
+           }),
+           py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("range") = py::none(),
+           py::arg("name") = py::none());
+
+  // Nodes and scenes.
+  py::class_<PyNode>(m, "Node", "A node of a Scene: one mesh, camera or light with a pose. `id` is what the "
+                                "segmentation mask holds where the node's mesh is drawn.")
+      .def_property_readonly("id", [](const PyNode& n) { return n.index + 1; })
+      .def_property_readonly("name", [](const PyNode& n) { return n.data().name; })
+      .def_property_readonly("mesh", [](const PyNode& n) -> std::optional<PyMesh> {
+        if (!n.data().mesh) return std::nullopt;
+        return PyMesh{n.data().mesh};
+      })
+      .def_property_readonly("camera", [](const PyNode& n) { return n.data().camera; })
+      .def_property_readonly("light", [](const PyNode& n) { return n.data().light; })
+      .def_property_readonly("matrix", [](const PyNode& n) { return pose_array(n.data().pose); },
+                             "The pose relative to the parent node (4x4).")
+      .def("__eq__", [](const PyNode& a, const PyNode& b) { return a.scene == b.scene && a.index == b.index; })
+      .def("__hash__", [](const PyNode& n) { return py::hash(py::make_tuple(size_t(n.scene.get()), n.index)); })
+      .def("__repr__", [](const PyNode& n) {
+        return "<velocity.Node " + std::to_string(n.index + 1) + " '" + n.data().name + "'>";
+      });
+
+  py::class_<PyScene>(m, "Scene", "Meshes, cameras and lights in a node hierarchy (pyrender's Scene).")
+      .def(py::init([](py::object bg_color, py::object ambient_light) {
+             PyScene s;
+             auto bg = color_of(bg_color, "bg_color", {1, 1, 1, 1});
+             std::copy(bg.begin(), bg.end(), s.data->bg_color);
+             auto a = color_of(ambient_light, "ambient_light", {0, 0, 0, 1});
+             s.data->ambient = {float(a[0]), float(a[1]), float(a[2])};
+             return s;
+           }),
+           py::arg("bg_color") = py::none(), py::arg("ambient_light") = py::none(),
+           "bg_color: RGBA background (default white, opaque); ambient_light: RGB ambient light (default none).")
+      .def("add", &PyScene::add, py::arg("obj"), py::arg("name") = py::none(), py::arg("pose") = py::none(),
+           py::arg("parent_node") = py::none(), py::arg("parent_name") = py::none(),
+           "Adds a Mesh, camera or light at `pose` (4x4, relative to the parent; None: identity) and returns "
+           "its Node. The first camera added becomes the main camera.")
+      .def("set_pose", [](PyScene& s, const PyNode& n, py::object pose) {
+             auto p = pose_of(pose, "pose");
+             std::copy(p.begin(), p.end(), s.node(n).pose);
+           }, py::arg("node"), py::arg("pose"), "Sets the node's pose relative to its parent.")
+      .def("get_pose", [](const PyScene& s, const PyNode& n) {
+             s.node(n);
+             auto world = s.data->world_poses();
+             return pose_array(world[n.index].data());
+           }, py::arg("node"), "The node's world pose (parents applied).")
+      .def("remove_node", &PyScene::remove, py::arg("node"), "Removes the node and its descendants.")
+      .def("has_node", [](const PyScene& s, const PyNode& n) { return n.scene == s.data && !n.data().removed; },
+           py::arg("node"))
+      .def_property("main_camera_node",
+                    [](const PyScene& s) -> std::optional<PyNode> {
+                      if (s.data->main_camera < 0 || s.data->nodes[size_t(s.data->main_camera)].removed) return std::nullopt;
+                      return PyNode{s.data, uint32_t(s.data->main_camera)};
+                    },
+                    [](PyScene& s, const PyNode& n) {
+                      if (!s.node(n).camera) throw py::value_error("main_camera_node must be a camera node");
+                      s.data->main_camera = n.index;
+                    })
+      .def_property_readonly("nodes", [](const PyScene& s) { return s.nodes(0); })
+      .def_property_readonly("mesh_nodes", [](const PyScene& s) { return s.nodes(1); })
+      .def_property_readonly("camera_nodes", [](const PyScene& s) { return s.nodes(2); })
+      .def_property_readonly("light_nodes", [](const PyScene& s) { return s.nodes(3); })
+      .def("get_nodes", [](const PyScene& s, std::optional<std::string> name) {
+             std::vector<PyNode> out;
+             for (const PyNode& n : s.nodes(0))
+               if (!name || n.data().name == *name) out.push_back(n);
+             return out;
+           }, py::arg("name") = py::none())
+      .def_property("bg_color",
+                    [](const PyScene& s) { return std::array<double, 4>{s.data->bg_color[0], s.data->bg_color[1], s.data->bg_color[2], s.data->bg_color[3]}; },
+                    [](PyScene& s, py::object c) {
+                      auto bg = color_of(c, "bg_color", {1, 1, 1, 1});
+                      std::copy(bg.begin(), bg.end(), s.data->bg_color);
+                    })
+      .def_property("ambient_light",
+                    [](const PyScene& s) { return std::array<float, 3>{s.data->ambient.x, s.data->ambient.y, s.data->ambient.z}; },
+                    [](PyScene& s, py::object c) {
+                      auto a = color_of(c, "ambient_light", {0, 0, 0, 1});
+                      s.data->ambient = {float(a[0]), float(a[1]), float(a[2])};
+                    })
+      .def_property_readonly("bounds", &PyScene::bounds, "2 x 3: the world-space box around every mesh.");
+
+  py::class_<PyRenderer>(m, "OffscreenRenderer",
+      "Renders scenes to numpy arrays on the CPU (pyrender's OffscreenRenderer; no display, no GL). Many "
+      "renderers may render at once from many threads; the GIL is released while one renders.")
+      .def(py::init<int, int, int, int>(), py::arg("viewport_width"), py::arg("viewport_height"),
+           py::arg("ssaa") = 1, py::arg("threads") = 0,
+           "viewport_width x viewport_height pixels (1..16384); ssaa: 1..4 samples per side per pixel (colour "
+           "averaged; depth and mask from the nearest sample, never blended); threads: cores for one frame "
+           "(0: all).")
+      .def_property("viewport_width", [](PyRenderer& r) { return r.renderer.width(); },
+                    [](PyRenderer& r, int w) {
+                      py::gil_scoped_release release;  // never wait for the mutex holding the GIL
+                      std::lock_guard lock(r.mutex);
+                      r.renderer.resize(w, r.renderer.height());
+                    })
+      .def_property("viewport_height", [](PyRenderer& r) { return r.renderer.height(); },
+                    [](PyRenderer& r, int h) {
+                      py::gil_scoped_release release;
+                      std::lock_guard lock(r.mutex);
+                      r.renderer.resize(r.renderer.width(), h);
+                    })
+      .def("_render", &render, py::arg("scene"), py::arg("flags"))
+      .def("delete", [](PyRenderer&) {}, "Nothing to free (pyrender needs this; kept for its users).");
+
+  m.def("_camera_pose_angles", [](py::object pose) {
+    auto p = pose_of(pose, "pose");
+    CameraPose c = camera_pose(p.data());
+    return py::make_tuple(std::array<float, 3>{c.position.x, c.position.y, c.position.z}, c.yaw, c.pitch, c.roll);
+  }, "Internal: (position, yaw, pitch, roll) the engine's camera takes for a camera pose.");
+  m.def("_rotation_from_angles", [](double yaw, double pitch, double roll) {
+    double r[9];
+    rotation_from_angles(yaw, pitch, roll, r);
+    return std::array<double, 9>{r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]};
+  });
+}

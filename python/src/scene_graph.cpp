@@ -1,0 +1,273 @@
+// The Python module's scene, its frames and the render itself (scene_graph.hpp).
+#include "scene_graph.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "convert.hpp"
+#include "velocity/error.hpp"
+
+namespace velocity::python {
+
+namespace {
+
+void multiply(const double a[16], const double b[16], double out[16]) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      out[i * 4 + j] = a[i * 4] * b[j] + a[i * 4 + 1] * b[4 + j] + a[i * 4 + 2] * b[8 + j] + a[i * 4 + 3] * b[12 + j];
+}
+
+bool finite_positive(double v) { return std::isfinite(v) && v > 0; }
+
+void check_clip(const CameraBase& c) {
+  if (!finite_positive(c.znear)) throw Error("camera znear must be finite and > 0, got " + std::to_string(c.znear));
+  if (c.zfar && !(std::isfinite(*c.zfar) && *c.zfar > c.znear))
+    throw Error("camera zfar must be finite and > znear (" + std::to_string(c.znear) + "), got " +
+                std::to_string(*c.zfar));
+}
+
+Sphere world_sphere(const Sphere& s, const Mat4& m) {
+  float stretch = 0;
+  for (int c = 0; c < 3; ++c) stretch = std::max(stretch, length({m.m[0][c], m.m[1][c], m.m[2][c]}));
+  return {m.transform_point(s.center), s.radius * stretch};
+}
+
+Vec3 scaled_color(const LightBase& l) {
+  float k = float(l.intensity / std::numbers::pi);
+  return l.color * k;
+}
+
+// Normals as colours: n in [-1, 1] -> 0.5 + 0.5 n, read back as 8-bit and decoded.
+Vec3 encode(Vec3 n) { return n * 0.5f + Vec3{0.5f, 0.5f, 0.5f}; }
+
+// The frame's meshes with their eye-space normals as unlit colours: per vertex for
+// smooth shading, per face for flat.
+std::vector<Mesh> normal_meshes(const Frame& frame, bool flat) {
+  std::vector<Mesh> out;
+  out.reserve(frame.items.size());
+  Mat4 view = frame.camera.view();
+  for (const Frame::Item& item : frame.items) {
+    const Mesh& src = *item.mesh;
+    Mesh m;
+    m.name = src.name;
+    m.positions = src.positions;
+    // Unlit shading never reads them, but a mesh without normals makes the renderer
+    // average some for every draw: carrying them costs less.
+    m.normals = src.normals;
+    m.triangles = src.triangles;
+    m.face_materials = src.face_materials;
+    m.materials = src.materials;
+    for (Material& mat : m.materials) mat.texture.reset(), mat.env_map.reset();
+    Mat4 nm = normal_matrix(view * item.world);
+    bool faces = flat;
+    for (const Material& mat : src.materials) faces |= mat.shading == Shading::Flat;
+    if (faces || src.normals.empty()) {
+      m.face_colors.resize(src.triangles.size());
+      for (size_t f = 0; f < src.triangles.size(); ++f)
+        m.face_colors[f] = encode(normalize(nm.transform_vector(face_normal(src, src.triangles[f]))));
+    } else {
+      m.colors.resize(src.normals.size());
+      for (size_t v = 0; v < src.normals.size(); ++v) m.colors[v] = encode(normalize(nm.transform_vector(src.normals[v])));
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const MeshData> make_mesh_data(std::string name, std::vector<std::shared_ptr<const Mesh>> parts,
+                                               std::vector<Mat4> poses) {
+  auto d = std::make_shared<MeshData>();
+  d->name = std::move(name);
+  d->parts = std::move(parts);
+  d->poses = std::move(poses);
+  // A box around every part's bounding sphere, then a sphere around the box's centre.
+  bool any = false;
+  Bounds box;
+  std::vector<Sphere> spheres;
+  for (size_t i = 0; i < d->parts.size(); ++i) {
+    if (d->parts[i]->positions.empty()) continue;
+    Sphere s = world_sphere(d->parts[i]->bounding_sphere(), d->poses[i]);
+    spheres.push_back(s);
+    Vec3 lo = s.center - Vec3{s.radius, s.radius, s.radius}, hi = s.center + Vec3{s.radius, s.radius, s.radius};
+    if (!any) box = {lo, hi}, any = true;
+    box.min = {std::min(box.min.x, lo.x), std::min(box.min.y, lo.y), std::min(box.min.z, lo.z)};
+    box.max = {std::max(box.max.x, hi.x), std::max(box.max.y, hi.y), std::max(box.max.z, hi.z)};
+  }
+  if (any) {
+    d->bounds.center = box.center();
+    for (const Sphere& s : spheres) d->bounds.radius = std::max(d->bounds.radius, length(s.center - d->bounds.center) + s.radius);
+  }
+  return d;
+}
+
+void CameraBase::validate() const { check_clip(*this); }
+
+void PerspectiveCamera::validate() const {
+  check_clip(*this);
+  if (!(std::isfinite(yfov) && yfov > 0 && yfov < std::numbers::pi))
+    throw Error("PerspectiveCamera: yfov must be in (0, pi) radians, got " + std::to_string(yfov));
+  if (aspect_ratio && !finite_positive(*aspect_ratio))
+    throw Error("PerspectiveCamera: aspectRatio must be finite and > 0, got " + std::to_string(*aspect_ratio));
+}
+void PerspectiveCamera::apply(Camera& c, int, int) const {
+  c.projection = Projection::Perspective;
+  c.fov_y = float(yfov);
+  if (aspect_ratio) {
+    float t = float(std::tan(yfov / 2)), a = float(*aspect_ratio);
+    c.window = ViewWindow{-t * a, t * a, -t, t};
+  }
+}
+
+void OrthographicCamera::validate() const {
+  check_clip(*this);
+  if (!finite_positive(xmag) || !finite_positive(ymag))
+    throw Error("OrthographicCamera: xmag and ymag must be finite and > 0, got " + std::to_string(xmag) + ", " +
+                std::to_string(ymag));
+}
+void OrthographicCamera::apply(Camera& c, int, int) const {
+  c.projection = Projection::Orthographic;
+  c.window = ViewWindow{float(-xmag), float(xmag), float(-ymag), float(ymag)};
+}
+
+void IntrinsicsCamera::validate() const {
+  check_clip(*this);
+  ViewWindow::pinhole(float(fx), float(fy), float(cx), float(cy), 1, 1);  // throws for bad values
+}
+void IntrinsicsCamera::apply(Camera& c, int width, int height) const {
+  c.projection = Projection::Perspective;
+  c.window = ViewWindow::pinhole(float(fx), float(fy), float(cx), float(cy), width, height);
+}
+
+Light DirectionalLight::make(const double w[16]) const {
+  // Shines along -Z of its pose: the direction towards the light is the pose's +Z.
+  return Light::directional({float(w[2]), float(w[6]), float(w[10])}, scaled_color(*this));
+}
+
+Light PointLight::make(const double w[16]) const {
+  Light l = Light::point({float(w[3]), float(w[7]), float(w[11])}, scaled_color(*this));
+  l.constant = 0, l.linear = 0, l.quadratic = 1;  // 1 / d^2, as pyrender's
+  return l;
+}
+
+std::vector<std::array<double, 16>> SceneData::world_poses() const {
+  std::vector<std::array<double, 16>> world(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const NodeData& n = nodes[i];
+    if (n.parent < 0) std::copy(n.pose, n.pose + 16, world[i].begin());
+    else multiply(world[size_t(n.parent)].data(), n.pose, world[i].data());
+  }
+  return world;
+}
+
+Frame build_frame(const SceneData& scene, int width, int height) {
+  if (scene.main_camera < 0 || scene.nodes[size_t(scene.main_camera)].removed)
+    throw Error("the scene has no camera: add one with scene.add(camera, pose=...)");
+  std::vector<std::array<double, 16>> world = scene.world_poses();
+  Frame f;
+  for (size_t i = 0; i < scene.nodes.size(); ++i) {
+    const NodeData& n = scene.nodes[i];
+    if (n.removed) continue;
+    if (n.mesh) {
+      Mat4 w = to_mat4(world[i].data(), "mesh pose");
+      for (size_t p = 0; p < n.mesh->parts.size(); ++p)
+        f.items.push_back({n.mesh->parts[p], w * n.mesh->poses[p], uint32_t(i + 1)});
+    }
+    if (n.light) f.lights.push_back(n.light->make(world[i].data()));
+  }
+  // Always an ambient term, so the core's default light never replaces the scene's
+  // (pyrender's scenes are dark without lights, and so are these).
+  f.lights.push_back(Light::ambient(scene.ambient));
+
+  const NodeData& cn = scene.nodes[size_t(scene.main_camera)];
+  const CameraBase& cam = *cn.camera;
+  cam.validate();
+  CameraPose pose = camera_pose(world[size_t(scene.main_camera)].data());
+  f.camera.position = pose.position;
+  f.camera.yaw = pose.yaw, f.camera.pitch = pose.pitch, f.camera.roll = pose.roll;
+  f.camera.near = float(cam.znear);
+  if (cam.zfar) {
+    f.camera.far = float(*cam.zfar);
+  } else {
+    // No far plane given (pyrender's infinite one): just beyond the farthest mesh, which
+    // keeps depth precise. Along the view axis, so it holds for any direction.
+    Mat4 view = f.camera.view();
+    float far = 0;
+    for (const Frame::Item& item : f.items) {
+      Sphere s = world_sphere(item.mesh->bounding_sphere(), item.world);
+      far = std::max(far, -view.transform_point(s.center).z + s.radius);
+    }
+    f.camera.far = std::max(far * 1.01f + 1e-3f, f.camera.near * 2);
+  }
+  cam.apply(f.camera, width, height);
+  f.start.color = {float(scene.bg_color[0]), float(scene.bg_color[1]), float(scene.bg_color[2]),
+                   float(scene.bg_color[3])};
+  return f;
+}
+
+RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& req) {
+  const int w = r.width(), h = r.height();
+  const size_t pixels = size_t(w) * size_t(h);
+  RenderOptions saved = r.options;
+  r.options.object_ids = req.mask;
+  r.options.shading = req.shading;
+  r.options.cull_back_faces = req.cull_back_faces;
+  RenderOutput out;
+  try {
+    r.begin_frame(frame.camera, frame.lights, frame.start);
+    for (const Frame::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
+    r.end_frame();
+    if (req.color) r.read_color(req.color_buffer, size_t(w) * (req.alpha ? 4 : 3), req.alpha ? 4 : 3);
+    out.depth = r.view_depth();
+    if (req.mask) out.mask = r.object_ids();
+    if (req.normals) {
+      // A second pass: the eye-space normals as unlit colours (8 bits a component),
+      // with the same geometry, so the same pixels are covered.
+      std::vector<Mesh> meshes = normal_meshes(frame, req.shading == Shading::Flat);
+      r.options.object_ids = false;
+      r.options.shading = Shading::Unlit;
+      FrameStart start;
+      start.color = {0.5f, 0.5f, 0.5f, 1.0f};
+      r.begin_frame(frame.camera, frame.lights, start);
+      for (size_t i = 0; i < meshes.size(); ++i) r.draw(meshes[i], frame.items[i].world);
+      r.end_frame();
+      std::vector<uint8_t> rgba(pixels * 4);
+      r.read_color(rgba.data(), size_t(w) * 4);
+      out.normals.assign(pixels * 3, 0.0f);
+      for (size_t i = 0; i < pixels; ++i) {
+        if (out.depth[i] == 0) continue;
+        Vec3 n = normalize({rgba[i * 4] / 127.5f - 1, rgba[i * 4 + 1] / 127.5f - 1, rgba[i * 4 + 2] / 127.5f - 1});
+        out.normals[i * 3] = n.x, out.normals[i * 3 + 1] = n.y, out.normals[i * 3 + 2] = n.z;
+      }
+    }
+  } catch (...) {
+    r.options = saved;
+    throw;
+  }
+  r.options = saved;
+  return out;
+}
+
+std::unique_ptr<uint8_t[]> BufferPool::take(size_t bytes) {
+  {
+    std::lock_guard lock(mutex_);
+    if (bytes == bytes_ && !free_.empty()) {
+      std::unique_ptr<uint8_t[]> b = std::move(free_.back());
+      free_.pop_back();
+      return b;
+    }
+  }
+  return std::unique_ptr<uint8_t[]>(new uint8_t[bytes]);  // uninitialised: read_color fills it
+}
+
+void BufferPool::give(std::unique_ptr<uint8_t[]> buffer, size_t bytes) {
+  std::lock_guard lock(mutex_);
+  if (bytes != bytes_) free_.clear(), bytes_ = bytes;  // the renderer was resized
+  if (free_.size() < 2) free_.push_back(std::move(buffer));
+}
+
+}  // namespace velocity::python

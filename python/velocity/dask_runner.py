@@ -1,0 +1,72 @@
+"""The batch job on a Dask cluster (Debian's python3-distributed): one Dask task per
+Velocity task (a model, or a chunk of its views), run by the workers, which write to
+the output folder on storage they all share, with the same atomic writes and task
+records as the local runner (velocity.jobs). Dask schedules; there is no scheduler here.
+
+A worker that dies in the middle of a task loses nothing: the scheduler runs the task
+again on another worker (up to distributed.scheduler.allowed-failures times), the new
+run skips the views already written, and files half-written by the dead worker sit in
+<out>/.velocity/tmp until the run ends, when they are removed; a file at its final
+name is always whole.
+
+    dask scheduler                                   # on one machine
+    dask worker tcp://scheduler:8786 --nworkers 2 --nthreads 1   # on each machine
+    velocity-batch job.json --out /shared/renders --dask tcp://scheduler:8786
+"""
+from __future__ import annotations
+
+import os
+from typing import Any
+
+from .jobs import Job, Progress, Run, Task, run_task, write_json
+
+
+def _task_on_worker(job: Job, task: Task, threads: int) -> dict:
+    return run_task(job, task, threads)
+
+
+def run_dask(job: Job, address: str | None = None, local_workers: int | None = None, client: Any = None,
+             threads: int = 1, progress: Progress | None = None, task_fn: Any = None) -> dict:
+    """Runs the job on the Dask cluster at `address`, on a LocalCluster of
+    `local_workers` processes started here, or through an existing `client`. The output
+    folder must be reachable at the same path by every worker. `threads` is the cores
+    one frame may use on a worker (1: a worker process renders on one core; start
+    workers with --nthreads 1 and one process per core). `task_fn(job, task, threads)`
+    replaces the function run on the workers (it must be importable there; for
+    instrumenting, as the killed-worker test does). Returns the manifest."""
+    from distributed import Client, LocalCluster, as_completed
+
+    own_cluster = own_client = None
+    if client is None:
+        if address:
+            client = own_client = Client(address)
+        else:
+            own_cluster = LocalCluster(n_workers=local_workers or os.cpu_count() or 1, threads_per_worker=1,
+                                       processes=True, dashboard_address=None)
+            client = own_client = Client(own_cluster)
+    try:
+        with Run(job, progress) as run:
+            futures = {}
+            for task in run.todo:
+                # A key of its own per task and content, so that a resubmitted job never
+                # picks up a stale result from the scheduler's memory.
+                f = client.submit(task_fn or _task_on_worker, job, task, threads, key=f"velocity-{task.id}-{task.hash[:12]}",
+                                  pure=False, retries=0)
+                futures[f] = task
+            for f in as_completed(futures):
+                task = futures[f]
+                try:
+                    record = f.result()
+                except Exception as e:  # the task's workers kept dying (KilledWorker), or Dask failed
+                    record = {"task": task.id, "model": task.model, "model_key": task.model_key, "hash": task.hash,
+                              "views": [task.start, task.stop], "status": "failed",
+                              "error": f"{type(e).__name__}: {e}"}
+                    write_json(job, job.record_path(task.id), record)
+                run.finished(record)
+                f.release()
+        return run.manifest
+    finally:
+        if own_client is not None:
+            own_client.close()
+        if own_cluster is not None:
+            own_cluster.close()

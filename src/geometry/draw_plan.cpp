@@ -1,0 +1,107 @@
+// Planning a draw: everything decided once per draw, before any vertex is touched.
+#include "geometry/draw_plan.hpp"
+
+#include <algorithm>
+
+#include "velocity/error.hpp"
+
+namespace velocity::geometry {
+
+namespace {
+
+using raster::KernelId;
+
+// The kernel and varyings for a material's shading mode and textures.
+void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool replace, Filter filter) {
+  auto with = [&](KernelId k) { return raster::kernel_with_filter(k, filter); };
+  s.flat = false;
+  if (tex && replace) {
+    s.kernel = with(KernelId::FlatTex), s.num_varyings = raster::kFlatTexVaryings, s.white = true, s.flat = true;
+    return;
+  }
+  switch (s.shading) {
+    case Shading::Flat:
+      s.flat = true;
+      if (tex || env) s.kernel = with(KernelId::FlatTex), s.num_varyings = raster::kFlatTexVaryings, s.uv_from_env = !tex;
+      else s.kernel = uint8_t(KernelId::Flat), s.num_varyings = 0;
+      return;
+    case Shading::Gouraud:
+    case Shading::Unlit:
+      if (tex || env) s.kernel = with(KernelId::SmoothTex), s.num_varyings = raster::kSmoothTexVaryings, s.uv_from_env = !tex;
+      else s.kernel = uint8_t(KernelId::Smooth), s.num_varyings = raster::kSmoothVaryings;
+      return;
+    case Shading::Phong:
+      s.kernel = tex && env ? with(KernelId::PhongTexEnv)
+                 : tex      ? with(KernelId::PhongTex)
+                 : env      ? with(KernelId::PhongEnv)
+                            : uint8_t(KernelId::Phong);
+      s.num_varyings = (tex || env) ? raster::kPhongTexVaryings : raster::kPhongVaryings;
+      return;
+    default:  // wireframe, points: the flat kernel with the material's colour
+      s.kernel = uint8_t(KernelId::Flat), s.num_varyings = 0;
+      return;
+  }
+}
+
+bool same_specular(const Specular& a, const Specular& b) { return a.ks == b.ks && a.exponent == b.exponent; }
+
+}  // namespace
+
+void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
+                    const Material& default_material) {
+  const Mesh& mesh = *d.mesh;
+  const RenderOptions& o = plan.options;
+  // Slot 0: the override (or the default material); slots 1..n: the mesh's materials.
+  d.slot_begin = uint32_t(plan.slots.size());
+  d.slot_count = override ? 1 : uint32_t(1 + mesh.materials.size());
+  bool first_lit = true;
+  // The one slot every face uses, when there is one, and whether faces share its colour.
+  const uint32_t only_slot = override ? 0 : mesh.face_materials.empty() ? (mesh.materials.empty() ? 0 : 1) : UINT32_MAX;
+  const bool uniform = only_slot != UINT32_MAX && mesh.face_colors.empty() && mesh.colors.empty();
+  for (uint32_t i = 0; i < d.slot_count; ++i) {
+    const Material& mat = override ? *override : i == 0 ? default_material : mesh.materials[i - 1];
+    SlotPlan s;
+    s.material = &mat;
+    s.shading = o.shading.value_or(mat.shading);
+    s.cull = o.cull_back_faces && !mat.two_sided;
+    s.lit = s.shading != Shading::Unlit;
+    s.specular = Specular(mat.specular, mat.shininess);
+    s.line_color = raster::pack_rgba(mat.color.x, mat.color.y, mat.color.z);
+    const Texture* tex = o.texture ? o.texture.get() : mat.texture.get();
+    const Texture* env = o.env_map ? o.env_map.get() : mat.env_map.get();
+    const Filter filter = o.filter.value_or(mat.filter);
+    choose_kernel(s, tex, env, mat.texture_mode == TextureMode::Replace, filter);
+
+    raster::DrawState st;
+    st.object_id = d.object_id;
+    st.specular = s.specular;
+    if (tex) st.texture = raster::SamplerView(*tex, filter, mat.wrap);
+    // Environment maps are addressed by the normal: clamped, never wrapped.
+    if (env) st.env_map = raster::SamplerView(*env, filter, Wrap::Clamp);
+    st.env_mix = mat.env_mix;
+    s.draw_state = uint32_t(states.size());
+    states.push_back(st);
+
+    // What the vertex stage computes for this draw.
+    const bool smooth = s.kernel == uint8_t(KernelId::Smooth) ||
+                        (s.kernel >= uint8_t(KernelId::SmoothTex) && s.kernel < uint8_t(KernelId::Phong));
+    const bool phong = s.kernel >= uint8_t(KernelId::Phong) && s.kernel < uint8_t(KernelId::Fixed);
+    if (smooth && s.lit) {
+      if (first_lit) d.light = true, d.vertex_specular = s.specular, first_lit = false;
+      s.vertex_light_ok = same_specular(s.specular, d.vertex_specular);
+      if (mat.two_sided) d.normal = d.eye = true;
+      if (i == only_slot && uniform && s.vertex_light_ok) {
+        d.vertex_color = s.vertex_color = true;
+        d.uniform_color = mat.color;
+      }
+    }
+    if (phong) d.normal = d.eye = true;
+    d.cull_all = d.cull_all && s.cull;
+    d.fill_only = d.fill_only && s.shading != Shading::Wireframe && s.shading != Shading::Points;
+    if (s.uv_from_env) d.normal = true;
+    plan.slots.push_back(s);
+  }
+  d.vertex_specular_terms = d.light && !d.vertex_color && d.vertex_specular.ks > 0;
+}
+
+}  // namespace velocity::geometry

@@ -1,0 +1,68 @@
+// The vertex stage: per vertex, the clip-space position and its region code, the
+// perspective divide and viewport transform with the snap to 24.8 fixed point, and for
+// the meshes that need them the eye-space normal and position and the lighting terms.
+// Written once against the SIMD layer (N vertices at a time), run on every core over
+// chunks of vertices.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "geometry/clip.hpp"
+#include "geometry/lighting.hpp"
+#include "velocity/math.hpp"
+
+namespace velocity::geometry {
+
+// What the triangle stage reads per vertex. fx, fy are meaningful only when the code
+// has no kMustClipPlanes, kOutNonFinite or kOutUnsnapped bit.
+struct ProjectedVertex {
+  int32_t fx, fy;  // screen position, 24.8 fixed point, y down
+  float z;         // window depth
+  float inv_w;     // 1 / w_clip
+};
+
+// clip -> window: x = (x/w + 1) * scale_x + offset_x, y = offset_y - (y/w + 1) * scale_y,
+// z = z/w * scale_z + offset_z (OpenGL's viewport transform in its order of operations,
+// so that snapped positions agree with Mesa's; y flipped so that row 0 is the top).
+struct ViewportMap {
+  float scale_x, offset_x, scale_y, offset_y, scale_z, offset_z;
+  GuardBand guard;
+};
+
+struct VertexOutputs {
+  ProjectedVertex* projected = nullptr;
+  uint32_t* codes = nullptr;
+  Vec3* diffuse = nullptr;   // with lighting: ambient + diffuse light, before the base colour
+  Vec3* specular = nullptr;  // and the specular light, scaled by Ks
+  Vec3* normal = nullptr;    // unit eye-space normal, when asked for
+  Vec3* eye = nullptr;       // eye-space position, when asked for
+};
+
+// A chunk [begin, end) of a mesh's vertices. Outputs are indexed like the positions.
+struct MeshVertexJob {
+  const Vec3* positions = nullptr;
+  const Vec3* normals = nullptr;  // needed for lighting and normal output
+  size_t begin = 0, end = 0;
+  Mat4 mvp, model_view, normal_matrix;
+  ViewportMap viewport{};
+  const EyeLights* lights = nullptr;  // set: compute diffuse and specular
+  Specular specular;
+  // With lighting: when set, the lit colour clamp(base * diffuse + specular) goes to
+  // out.diffuse and nothing to out.specular (a draw whose faces share one colour).
+  const Vec3* base_color = nullptr;
+  VertexOutputs out;
+};
+
+// A chunk of pre-transformed (clip-space) vertices.
+struct ClipVertexJob {
+  const Vec4* positions = nullptr;
+  size_t begin = 0, end = 0;
+  ViewportMap viewport{};
+  VertexOutputs out;  // projected and codes only
+};
+
+void transform_mesh_vertices(const MeshVertexJob& job);
+void project_clip_vertices(const ClipVertexJob& job);
+
+}  // namespace velocity::geometry

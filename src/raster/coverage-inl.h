@@ -1,0 +1,198 @@
+// Coverage: which pixels of a tile a record covers, as a list of 4x4 blocks with a
+// 16-bit mask each (bit y * 4 + x). Hierarchical for triangles: 16x16 blocks are
+// accepted or rejected whole with one exact 64-bit evaluation per edge, and only the
+// 4x4 blocks of partly covered 16x16 blocks test their pixels, 16 at a time.
+//
+// Exactness: a pixel is covered when all three edge functions are >= 0 at its centre,
+// E = a * px + b * py + c in 24.8 fixed point (raster_types.hpp). One pixel step adds
+// 256 * a, so for a block whose first centre has E0, E at pixel (i, j) of the block is
+// E0 + 256 * (a * i + b * j), and E >= 0 exactly when q + a * i + b * j >= 0 with
+// q = floor(E0 / 256). With |a|, |b| < 2^24 and q taken only where the block is neither
+// wholly inside nor wholly outside the edge, every such value fits int32.
+#if defined(VELOCITY_RASTER_COVERAGE_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_RASTER_COVERAGE_INL_H_
+#undef VELOCITY_RASTER_COVERAGE_INL_H_
+#else
+#define VELOCITY_RASTER_COVERAGE_INL_H_
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "raster/raster_types.hpp"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+// A covered 4x4 block of a tile: its index (row-major, 16 per row) and pixel mask.
+struct Block {
+  uint16_t index;
+  uint16_t mask;
+};
+inline constexpr int kMaxBlocks = kBlocksPerTileSide * kBlocksPerTileSide;  // 256
+
+// The pixels of the 4x4 block at (bx, by) (tile pixels) inside the inclusive box.
+HWY_INLINE uint32_t box_mask(int bx, int by, int x0, int y0, int x1, int y1) {
+  int c0 = std::max(x0 - bx, 0), c1 = std::min(x1 - bx, 3);
+  int r0 = std::max(y0 - by, 0), r1 = std::min(y1 - by, 3);
+  if (c0 > c1 || r0 > r1) return 0;
+  uint32_t cols = ((1u << (c1 + 1)) - 1) & ~((1u << c0) - 1);
+  uint32_t rows = ((1u << (4 * (r1 + 1))) - 1) & ~((1u << (4 * r0)) - 1);
+  return (cols * 0x1111u) & rows;
+}
+
+// The record's box within the tile, in tile pixels; false when they do not meet.
+struct TileBox {
+  int x0, y0, x1, y1;  // inclusive
+};
+HWY_INLINE bool tile_box(const RecordHeader& r, int tx, int ty, int tw, int th, TileBox& b) {
+  b.x0 = std::max<int>(r.min_x - tx, 0), b.y0 = std::max<int>(r.min_y - ty, 0);
+  b.x1 = std::min<int>(r.max_x - tx, tw - 1), b.y1 = std::min<int>(r.max_y - ty, th - 1);
+  return b.x0 <= b.x1 && b.y0 <= b.y1;
+}
+
+// A rectangle: every pixel of the box.
+HWY_INLINE int rect_blocks(const TileBox& b, Block* out) {
+  int n = 0;
+  for (int by = b.y0 & ~3; by <= b.y1; by += 4)
+    for (int bx = b.x0 & ~3; bx <= b.x1; bx += 4)
+      out[n++] = {uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), uint16_t(box_mask(bx, by, b.x0, b.y0, b.x1, b.y1))};
+  return n;
+}
+
+// A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels.
+inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
+  const TriangleEdges& e = shape<TriangleEdges>(r);
+  const DI di;
+  const VI minus1 = hn::Set(di, -1);  // E >= 0 is E > -1 (integer compares are Gt, Lt, Eq)
+  int n = 0;
+  // Per edge, a * i + b * j for each pixel (i, j) of a 4x4 block, lane by lane.
+  VI step[3][kVectorsPerBlock];
+  for (int k = 0; k < 3; ++k)
+    for (int v = 0; v < kVectorsPerBlock; ++v)
+      step[k][v] = hn::Add(hn::Mul(hn::Set(di, e.a[k]), hn::Load(di, kBlockXi + v * kLanes)),
+                           hn::Mul(hn::Set(di, e.b[k]), hn::Load(di, kBlockYi + v * kLanes)));
+
+  for (int my = box.y0 >> 4; my <= box.y1 >> 4; ++my)
+    for (int mx = box.x0 >> 4; mx <= box.x1 >> 4; ++mx) {
+      // Classify the 16x16 block against each edge at its first pixel centre: wholly
+      // outside one edge rejects it; edges it lies wholly inside need no pixel tests.
+      const int64_t px = int64_t(tx + mx * 16) * kSubpixelOne + kSubpixelHalf;
+      const int64_t py = int64_t(ty + my * 16) * kSubpixelOne + kSubpixelHalf;
+      int32_t q[3];
+      int edge[3], partial = 0;
+      bool outside = false;
+      for (int k = 0; k < 3; ++k) {
+        const int64_t a = e.a[k], b = e.b[k];
+        const int64_t Q = (a * px + b * py + e.c[k]) >> kSubpixelBits;  // floor(E / 256)
+        const int64_t lo = Q + std::min<int64_t>(0, 15 * a) + std::min<int64_t>(0, 15 * b);
+        const int64_t hi = Q + std::max<int64_t>(0, 15 * a) + std::max<int64_t>(0, 15 * b);
+        if (hi < 0) {
+          outside = true;
+          break;
+        }
+        if (lo < 0) q[partial] = int32_t(Q), edge[partial++] = k;
+      }
+      if (outside) continue;
+      const int bx0 = std::max(box.x0, mx * 16) & ~3, bx1 = std::min(box.x1, mx * 16 + 15);
+      const int by0 = std::max(box.y0, my * 16) & ~3, by1 = std::min(box.y1, my * 16 + 15);
+      for (int by = by0; by <= by1; by += 4)
+        for (int bx = bx0; bx <= bx1; bx += 4) {
+          uint32_t mask = box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
+          if (partial && mask) {
+            const int i = bx - mx * 16, j = by - my * 16;  // this 4x4 block in the 16x16 one
+            // The block against each partial edge, exactly, before any pixel test:
+            // wholly outside one rejects it; wholly inside all needs no pixel test.
+            int32_t qb[3];
+            bool out_block = false, all_in = true;
+            for (int p = 0; p < partial; ++p) {
+              const int32_t a = e.a[edge[p]], b = e.b[edge[p]];
+              qb[p] = q[p] + a * i + b * j;
+              const int32_t hi = qb[p] + std::max(0, 3 * a) + std::max(0, 3 * b);
+              const int32_t lo = qb[p] + std::min(0, 3 * a) + std::min(0, 3 * b);
+              out_block |= hi < 0;
+              all_in &= lo >= 0;
+            }
+            if (out_block) continue;
+            if (!all_in) {
+              uint32_t inside = 0;
+              for (int v = 0; v < kVectorsPerBlock; ++v) {
+                MI m = hn::Gt(hn::Add(hn::Set(di, qb[0]), step[edge[0]][v]), minus1);
+                for (int p = 1; p < partial; ++p) m = hn::And(m, hn::Gt(hn::Add(hn::Set(di, qb[p]), step[edge[p]][v]), minus1));
+                inside |= mask_bits(hn::RebindMask(DF(), m), v);
+              }
+              mask &= inside;
+            }
+          }
+          if (mask) out[n++] = {uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), uint16_t(mask)};
+        }
+    }
+  return n;
+}
+
+// A small triangle: its 8x8 mask at (min_x, min_y), cut into the aligned blocks it
+// straddles.
+HWY_INLINE int small_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
+  const uint64_t mask = shape<SmallShape>(r).mask;
+  const int ox = r.min_x - tx, oy = r.min_y - ty;  // the mask's origin in tile pixels
+  int n = 0;
+  for (int by = box.y0 & ~3; by <= box.y1; by += 4)
+    for (int bx = box.x0 & ~3; bx <= box.x1; bx += 4) {
+      uint32_t m = 0;
+      for (int row = 0; row < 4; ++row) {
+        const int src = by + row - oy;  // the mask's row landing on this block row
+        if (src < 0 || src >= kSmallSide) continue;
+        const int shift = ox - bx;  // mask column c lands on block column c + shift
+        const uint32_t line = uint32_t(mask >> (kSmallSide * src)) & 0xff;
+        const uint32_t bits = (shift >= 0 ? line << shift : line >> -shift) & 0xf;
+        m |= bits << (4 * row);
+      }
+      m &= box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
+      if (m) out[n++] = {uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), uint16_t(m)};
+    }
+  return n;
+}
+
+// A line: per column (x-major) or row (y-major) of the tile whose centre lies in the
+// half-open range along the major axis, `width` pixels across, centred on the segment.
+inline HWY_NOINLINE int line_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
+  const LineShape& l = shape<LineShape>(r);
+  uint16_t masks[kMaxBlocks] = {};
+  const bool xm = l.x_major != 0;
+  float a0 = xm ? l.x0 : l.y0, a1 = xm ? l.x1 : l.y1;  // major axis
+  float b0 = xm ? l.y0 : l.x0, b1 = xm ? l.y1 : l.x1;  // minor axis
+  if (a1 < a0) std::swap(a0, a1), std::swap(b0, b1);
+  const float len = a1 - a0;
+  const int origin_a = xm ? tx : ty, origin_b = xm ? ty : tx;
+  const int lo_a = std::max(int(std::ceil(a0 - 0.5f)), origin_a + (xm ? box.x0 : box.y0));
+  const int hi_a = std::min(int(std::ceil(a1 - 0.5f)) - 1, origin_a + (xm ? box.x1 : box.y1));
+  const int lo_b = origin_b + (xm ? box.y0 : box.x0), hi_b = origin_b + (xm ? box.y1 : box.x1);
+  const int half = (l.width - 1) / 2;
+  bool any = false;
+  for (int a = lo_a; a <= hi_a; ++a) {
+    const float s = len > 0 ? (float(a) + 0.5f - a0) / len : 0.0f;
+    const int centre = int(std::floor(b0 + s * (b1 - b0)));
+    for (int b = std::max(centre - half, lo_b); b <= std::min(centre - half + l.width - 1, hi_b); ++b) {
+      const int x = (xm ? a : b) - tx, y = (xm ? b : a) - ty;
+      masks[(y >> 2) * kBlocksPerTileSide + (x >> 2)] |= uint16_t(1u << ((y & 3) * 4 + (x & 3)));
+      any = true;
+    }
+  }
+  int n = 0;
+  if (!any) return 0;
+  for (int i = 0; i < kMaxBlocks; ++i)
+    if (masks[i]) out[n++] = {uint16_t(i), masks[i]};
+  return n;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_RASTER_COVERAGE_INL_H_ toggle

@@ -1,0 +1,87 @@
+// The fixed-function kernel of pre-transformed batches (OpenGL 1.x's per-fragment work).
+// Compiled once per instruction set; see raster/tile-inl.h.
+#include "raster/rasterize.hpp"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/kernels_fixed.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <hwy/highway.h>
+
+#include "raster/shade_fixed-inl.h"
+#include "raster/tile-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+// --- the fixed-function kernel (PrimitiveBatch draws).
+template <bool kTex, bool kFog>
+HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
+  const DF d;
+  const DU du;
+  const DrawState& draw = (*t.frame.draws)[r.draw];
+  const PixelState& p = draw.pixel;
+  FixedShader<kTex, kFog> shader(r, draw);
+  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const VU id = hn::Set(du, draw.object_id);
+  // With no alpha test, the depth test can come first and spare the shading.
+  const bool early_z = !p.alpha_test;
+  const bool writes_depth = p.depth_test && p.depth_write;
+  const uint32_t keep = ~(((p.color_mask & 1) ? 0xffu : 0) | ((p.color_mask & 2) ? 0xff00u : 0) |
+                          ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
+  if (keep == 0xffffffffu && !writes_depth && !t.ids) return;  // nothing would be written
+  for (int b = 0; b < n; ++b) {
+    const Block& blk = blocks[b];
+    float fx, fy;
+    block_origin(r, t, blk.index, fx, fy);
+    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    shader.begin_block(fx, fy);
+    const size_t at = size_t(blk.index) * 16;
+    for (int v = 0; v < kVectorsPerBlock; ++v) {
+      MF m = lane_mask(blk.mask, v);
+      if (kVectorsPerBlock > 1 && hn::AllFalse(d, m)) continue;
+      float* zp = t.depth + at + v * kLanes;
+      uint32_t* cp = t.color + at + v * kLanes;
+      // Window depth is clamped to [0, 1] (a polygon offset may push it out).
+      const VF z = saturate(hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0)));
+      VF zb;
+      if (p.depth_test) zb = hn::Load(d, zp);
+      if (p.depth_test && early_z) {
+        m = hn::And(m, compare(p.depth_func, z, zb));
+        if (hn::AllFalse(d, m)) continue;
+      }
+      Rgba c = shader.shade(v);
+      if (p.alpha_test) {
+        m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
+        if (p.depth_test) m = hn::And(m, compare(p.depth_func, z, zb));
+        if (hn::AllFalse(d, m)) continue;
+      }
+      if (writes_depth) hn::BlendedStore(z, m, d, zp);
+      const VU dst = hn::Load(du, cp);
+      if (p.blend) {
+        const Rgba dc = unpack(dst);
+        c = {blend_channel(p, 0, c, dc), blend_channel(p, 1, c, dc), blend_channel(p, 2, c, dc), blend_channel(p, 3, c, dc)};
+      }
+      VU out = pack_colors(c.r, c.g, c.b, c.a);
+      if (keep) out = hn::Or(hn::AndNot(hn::Set(du, keep), out), hn::And(dst, hn::Set(du, keep)));
+      const auto mu = hn::RebindMask(du, m);
+      hn::BlendedStore(out, mu, du, cp);
+      if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
+    }
+  }
+}
+
+const KernelFn* fixed_kernels() {
+  static const KernelFn table[] = {fixed_kernel<false, false>, fixed_kernel<false, true>, fixed_kernel<true, false>,
+                                   fixed_kernel<true, true>};
+  static_assert(sizeof(table) / sizeof(table[0]) == size_t(KernelId::Count) - size_t(KernelId::Fixed));
+  return table;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();

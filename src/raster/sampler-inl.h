@@ -1,0 +1,217 @@
+// Texture sampling, a vector of pixels at a time: nearest, bilinear and trilinear, with
+// repeat, clamp-to-edge, clamp-to-border and mirrored-repeat addressing.
+//
+// Addressing follows OpenGL: texel i covers [i, i+1) / size in u, so the sample point
+// u * size - 0.5 sits between the four nearest texel centres (bilinear); nearest takes
+// floor(u * size). Texel addresses and bilinear weights are computed for the whole
+// vector, the texels fetched with gathers. No division: coordinates are wrapped in
+// float (u - floor(u)) first, after which an index is at most one size out of range.
+// Any input is safe: NaN and infinite coordinates read texel 0 or the edge, never
+// outside the texture.
+//
+// The level of detail is chosen once per 4x4 block (scalar, level_of_detail below),
+// never per pixel: lambda = log2(rho), rho the larger screen-space footprint of a pixel
+// in texels at the block's centre.
+#if defined(VELOCITY_RASTER_SAMPLER_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_RASTER_SAMPLER_INL_H_
+#undef VELOCITY_RASTER_SAMPLER_INL_H_
+#else
+#define VELOCITY_RASTER_SAMPLER_INL_H_
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "raster/rasterize.hpp"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+struct Rgba {
+  VF r, g, b, a;  // [0, 1] (inside the sampler: [0, 255] until the end)
+};
+
+// Texels to [0, 255] floats; without kAlpha the alpha channel is left out (opaque).
+template <bool kAlpha = true>
+HWY_INLINE Rgba unpack255(VU t) {
+  return {channel<0>(t), channel<1>(t), channel<2>(t), kAlpha ? channel<3>(t) : hn::Set(DF(), 255.0f)};
+}
+
+HWY_INLINE Rgba scale(const Rgba& c, float k) {
+  const VF v = hn::Set(DF(), k);
+  return {hn::Mul(c.r, v), hn::Mul(c.g, v), hn::Mul(c.b, v), hn::Mul(c.a, v)};
+}
+
+// RGBA8 to [0, 1].
+HWY_INLINE Rgba unpack(VU t) { return scale(unpack255(t), 1.0f / 255.0f); }
+
+HWY_INLINE Rgba lerp(const Rgba& a, const Rgba& b, VF t) {
+  return {hn::MulAdd(hn::Sub(b.r, a.r), t, a.r), hn::MulAdd(hn::Sub(b.g, a.g), t, a.g),
+          hn::MulAdd(hn::Sub(b.b, a.b), t, a.b), hn::MulAdd(hn::Sub(b.a, a.a), t, a.a)};
+}
+
+// A coordinate made safe for the wrap mode: repeat in [0, 1], mirrored repeat in
+// [0, 2], the clamps in [-1, 2]; NaN becomes 0 (repeats) or -1 (clamps).
+HWY_INLINE VF prepare_coord(VF u, Wrap w) {
+  const DF d;
+  switch (w) {
+    case Wrap::Repeat: {
+      VF f = hn::Sub(u, hn::Floor(u));
+      return hn::IfThenElseZero(hn::Ge(f, hn::Zero(d)), f);  // NaN (from NaN or infinity) -> 0
+    }
+    case Wrap::MirroredRepeat: {
+      VF f = hn::Sub(u, hn::Mul(hn::Set(d, 2.0f), hn::Floor(hn::Mul(u, hn::Set(d, 0.5f)))));
+      return hn::IfThenElseZero(hn::Ge(f, hn::Zero(d)), f);
+    }
+    default: {
+      VF c = hn::IfThenElse(hn::Gt(u, hn::Set(d, -1.0f)), u, hn::Set(d, -1.0f));
+      return hn::Min(c, hn::Set(d, 2.0f));
+    }
+  }
+}
+
+// A texel index from prepare_coord's range into [0, n); `outside` marks indices that
+// clamp-to-border replaces by the border colour.
+HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
+  const DI di;
+  const VI vn = hn::Set(di, n), zero = hn::Zero(di), last = hn::Set(di, n - 1);
+  switch (w) {
+    case Wrap::Repeat:  // i in [-1, n]
+      i = hn::IfThenElse(hn::Lt(i, zero), hn::Add(i, vn), i);
+      return hn::IfThenElse(hn::Lt(i, vn), i, hn::Sub(i, vn));
+    case Wrap::MirroredRepeat: {  // i in [-1, 2n]
+      const VI n2 = hn::Set(di, 2 * n);
+      i = hn::IfThenElse(hn::Lt(i, zero), hn::Add(i, n2), i);
+      i = hn::IfThenElse(hn::Lt(i, n2), i, hn::Sub(i, n2));
+      return hn::IfThenElse(hn::Lt(i, vn), i, hn::Sub(hn::Sub(n2, hn::Set(di, 1)), i));
+    }
+    case Wrap::ClampToBorder:
+      outside = hn::Or(outside, hn::Or(hn::Lt(i, zero), hn::Gt(i, last)));
+      return hn::Min(hn::Max(i, zero), last);
+    default: return hn::Min(hn::Max(i, zero), last);
+  }
+}
+
+// Texels outside the image read the border colour ([0, 1]; the sampler works in 0..255).
+HWY_INLINE Rgba with_border(const Rgba& c, MI outside, const float* border) {
+  const DF d;
+  const MF m = hn::RebindMask(d, outside);
+  return {hn::IfThenElse(m, hn::Set(d, 255.0f * border[0]), c.r), hn::IfThenElse(m, hn::Set(d, 255.0f * border[1]), c.g),
+          hn::IfThenElse(m, hn::Set(d, 255.0f * border[2]), c.b), hn::IfThenElse(m, hn::Set(d, 255.0f * border[3]), c.a)};
+}
+
+HWY_INLINE VU fetch(const SamplerLevel& l, VI x, VI y) {
+  const DI di;
+  const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.width)), x);
+  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index));
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v) {
+  const DF d;
+  const DI di;
+  const VF x = hn::Mul(prepare_coord(u, s.wrap_s), hn::Set(d, float(l.width)));
+  const VF y = hn::Mul(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)));
+  MI outside = hn::FirstN(di, 0);
+  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside);
+  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside);
+  Rgba c = unpack255<kAlpha>(fetch(l, ix, iy));
+  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border);
+  return c;
+}
+
+// The four nearest texels weighted by the sample point's position between their centres.
+template <bool kAlpha>
+HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v) {
+  const DF d;
+  const DI di;
+  const VF x = hn::MulSub(prepare_coord(u, s.wrap_s), hn::Set(d, float(l.width)), hn::Set(d, 0.5f));
+  const VF y = hn::MulSub(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)), hn::Set(d, 0.5f));
+  const VF fx = hn::Floor(x), fy = hn::Floor(y);
+  const VF a = hn::Sub(x, fx), b = hn::Sub(y, fy);
+  const VI x0i = hn::ConvertTo(di, fx), y0i = hn::ConvertTo(di, fy);
+  const VI one = hn::Set(di, 1);
+  MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
+  const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1);
+  const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1);
+  Rgba t00 = unpack255<kAlpha>(fetch(l, x0, y0)), t10 = unpack255<kAlpha>(fetch(l, x1, y0));
+  Rgba t01 = unpack255<kAlpha>(fetch(l, x0, y1)), t11 = unpack255<kAlpha>(fetch(l, x1, y1));
+  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
+    t00 = with_border(t00, hn::Or(out0, outy0), s.border), t10 = with_border(t10, hn::Or(out1, outy0), s.border);
+    t01 = with_border(t01, hn::Or(out0, outy1), s.border), t11 = with_border(t11, hn::Or(out1, outy1), s.border);
+  }
+  return lerp(lerp(t00, t10, a), lerp(t01, t11, a), b);
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba texel_filter(const SamplerView& s, const SamplerLevel& l, VF u, VF v, SamplerState::Texel f) {
+  return f == SamplerState::Texel::Nearest ? nearest<kAlpha>(s, l, u, v) : bilinear<kAlpha>(s, l, u, v);
+}
+
+// How a block samples: the filter and the level(s), chosen once per block.
+struct LevelChoice {
+  SamplerState::Texel filter;
+  int level0, level1;  // level1 == level0: one level
+  float frac;          // weight of level1
+};
+
+HWY_INLINE LevelChoice choose_levels(const SamplerView& s, float lod) {
+  const int last = s.level_count - 1;
+  if (!(lod > 0) || s.mip == SamplerState::Mip::None || last == 0)
+    return {!(lod > 0) ? s.mag : s.min, 0, 0, 0};
+  if (s.mip == SamplerState::Mip::Nearest) {
+    // OpenGL: level ceil(lambda + 1/2) - 1 for lambda > 1/2, else 0.
+    int l = lod <= 0.5f ? 0 : std::min(int(std::ceil(lod + 0.5f)) - 1, last);
+    return {s.min, l, l, 0};
+  }
+  if (lod >= float(last)) return {s.min, last, last, 0};
+  const int l0 = int(lod);
+  return {s.min, l0, l0 + 1, lod - float(l0)};
+}
+
+// RGBA in [0, 1]; without kAlpha, alpha is 1 (for kernels that do not read it).
+// `frac`: the weight of level1 per lane (the fragments of several small triangles
+// share levels, not weights).
+template <bool kAlpha = true>
+HWY_INLINE Rgba sample(const SamplerView& s, const LevelChoice& c, VF u, VF v, VF frac) {
+  Rgba a = texel_filter<kAlpha>(s, s.levels[c.level0], u, v, c.filter);
+  if (c.level1 != c.level0) a = lerp(a, texel_filter<kAlpha>(s, s.levels[c.level1], u, v, c.filter), frac);
+  return scale(a, 1.0f / 255.0f);
+}
+template <bool kAlpha = true>
+HWY_INLINE Rgba sample(const SamplerView& s, const LevelChoice& c, VF u, VF v) {
+  return sample<kAlpha>(s, c, u, v, hn::Set(DF(), c.frac));
+}
+
+// log2(x) for a positive normal float, to about 0.002 (enough to choose and blend mip
+// levels): the exponent, plus a cubic in the mantissa.
+inline float fast_log2(float x) {
+  uint32_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const float e = float(int((bits >> 23) & 0xff) - 127);
+  bits = (bits & 0x007fffffu) | 0x3f800000u;
+  float m;
+  std::memcpy(&m, &bits, sizeof m);  // [1, 2)
+  return e + (((0.153914771f * m - 1.02950006f) * m + 3.01074372f) * m - 2.13515843f);
+}
+
+// The level of detail from the screen-space derivatives of (u, v), scalar, per block.
+inline float level_of_detail(const SamplerView& s, float dudx, float dvdx, float dudy, float dvdy) {
+  const float w = float(s.levels[0].width), h = float(s.levels[0].height);
+  const float rx = (dudx * w) * (dudx * w) + (dvdx * h) * (dvdx * h);
+  const float ry = (dudy * w) * (dudy * w) + (dvdy * h) * (dvdy * h);
+  const float rho2 = std::max(rx, ry);
+  return rho2 > 1e-30f && rho2 < 1e30f ? 0.5f * fast_log2(rho2) : (rho2 > 0 ? (rho2 < 1 ? -100.0f : 50.0f) : -100.0f);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_RASTER_SAMPLER_INL_H_ toggle

@@ -1,0 +1,35 @@
+// A texture as the SIMD sampler reads it, resolved once per draw.
+#include <algorithm>
+
+#include "raster/rasterize.hpp"
+
+namespace velocity::raster {
+
+namespace {
+void set_levels(SamplerView& s, const Texture& t) {
+  const auto& levels = t.levels();
+  s.level_count = int(std::min<size_t>(levels.size(), SamplerView::kMaxLevels));
+  for (int i = 0; i < s.level_count; ++i) s.levels[i] = {levels[size_t(i)].texels.data(), levels[size_t(i)].width, levels[size_t(i)].height};
+}
+}  // namespace
+
+SamplerView::SamplerView(const Texture& t, Filter f, Wrap w) {
+  set_levels(*this, t);
+  wrap_s = wrap_t = w;
+  using T = SamplerState::Texel;
+  using M = SamplerState::Mip;
+  switch (f) {
+    case Filter::Nearest: mag = min = T::Nearest, mip = M::None; break;
+    case Filter::Bilinear: mag = min = T::Linear, mip = M::None; break;
+    case Filter::Trilinear: mag = min = T::Linear, mip = M::Linear; break;
+  }
+}
+
+SamplerView::SamplerView(const Texture& t, const SamplerState& s) {
+  set_levels(*this, t);
+  wrap_s = s.wrap_s, wrap_t = s.wrap_t;
+  mag = s.mag, min = s.min, mip = s.mip;
+  border[0] = s.border_color.x, border[1] = s.border_color.y, border[2] = s.border_color.z, border[3] = s.border_color.w;
+}
+
+}  // namespace velocity::raster

@@ -1,0 +1,196 @@
+// The fixed-function kernel: OpenGL 1.x's per-fragment work for PrimitiveBatch draws,
+// in GL's order — texture environment, fog, (scissor: the set-up clipped the box),
+// alpha test, depth test, blending, colour mask.
+//
+// Templated on what changes the work per pixel most (a texture, fog); the rest of
+// PixelState is read per draw and branched on per vector of pixels, never per pixel.
+// Colours are floats in [0, 1] until they are packed to the RGBA8 framebuffer.
+#if defined(VELOCITY_RASTER_SHADE_FIXED_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_RASTER_SHADE_FIXED_INL_H_
+#undef VELOCITY_RASTER_SHADE_FIXED_INL_H_
+#else
+#define VELOCITY_RASTER_SHADE_FIXED_INL_H_
+#endif
+
+#include "raster/rasterize.hpp"
+#include "raster/sampler-inl.h"
+#include "raster/shade_mesh-inl.h"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+HWY_INLINE MF compare(CompareFunc f, VF a, VF b) {
+  const DF d;
+  switch (f) {
+    case CompareFunc::Never: return hn::FirstN(d, 0);
+    case CompareFunc::Less: return hn::Lt(a, b);
+    case CompareFunc::Equal: return hn::Eq(a, b);
+    case CompareFunc::LessEqual: return hn::Le(a, b);
+    case CompareFunc::Greater: return hn::Gt(a, b);
+    case CompareFunc::NotEqual: return hn::Ne(a, b);
+    case CompareFunc::GreaterEqual: return hn::Ge(a, b);
+    default: return hn::FirstN(d, kLanes);
+  }
+}
+
+// The texture environment (OpenGL 1.x's table of texture functions). `f` is the
+// fragment's colour, `t` the texel as the Texture stores it for its format.
+HWY_INLINE Rgba texture_environment(const DrawState& draw, const Rgba& f, const Rgba& t) {
+  const DF d;
+  const TextureStage& st = draw.pixel.texture;
+  const VF one = hn::Set(d, 1.0f);
+  const bool color = st.format != TexFormat::Alpha;  // does the texture bring a colour?
+  const bool alpha = st.format == TexFormat::Rgba || st.format == TexFormat::LuminanceAlpha ||
+                     st.format == TexFormat::Alpha || st.format == TexFormat::Intensity;
+  Rgba o = f;
+  switch (st.env) {
+    case TexEnvMode::Replace:
+      if (color) o.r = t.r, o.g = t.g, o.b = t.b;
+      if (alpha) o.a = t.a;
+      break;
+    case TexEnvMode::Modulate:
+      if (color) o.r = hn::Mul(f.r, t.r), o.g = hn::Mul(f.g, t.g), o.b = hn::Mul(f.b, t.b);
+      if (alpha) o.a = hn::Mul(f.a, t.a);
+      break;
+    case TexEnvMode::Decal:  // defined for RGB and RGBA: Cf (1 - At) + Ct At, alpha kept
+      if (st.format == TexFormat::Rgb || st.format == TexFormat::Rgba) {
+        o.r = hn::MulAdd(hn::Sub(t.r, f.r), t.a, f.r), o.g = hn::MulAdd(hn::Sub(t.g, f.g), t.a, f.g);
+        o.b = hn::MulAdd(hn::Sub(t.b, f.b), t.a, f.b);
+      }
+      break;
+    case TexEnvMode::Blend: {  // Cf (1 - Ct) + Cc Ct
+      if (color) {
+        o.r = hn::MulAdd(hn::Sub(hn::Set(d, st.env_color.x), f.r), t.r, f.r);
+        o.g = hn::MulAdd(hn::Sub(hn::Set(d, st.env_color.y), f.g), t.g, f.g);
+        o.b = hn::MulAdd(hn::Sub(hn::Set(d, st.env_color.z), f.b), t.b, f.b);
+      }
+      if (st.format == TexFormat::Intensity) o.a = hn::MulAdd(hn::Sub(hn::Set(d, st.env_color.w), f.a), t.a, f.a);
+      else if (alpha) o.a = hn::Mul(f.a, t.a);
+      break;
+    }
+    case TexEnvMode::Add:
+      if (color) o.r = hn::Min(hn::Add(f.r, t.r), one), o.g = hn::Min(hn::Add(f.g, t.g), one), o.b = hn::Min(hn::Add(f.b, t.b), one);
+      if (st.format == TexFormat::Intensity) o.a = hn::Min(hn::Add(f.a, t.a), one);
+      else if (alpha) o.a = hn::Mul(f.a, t.a);
+      break;
+  }
+  return o;
+}
+
+// The fog factor f from the fog coordinate c, clamped to [0, 1].
+HWY_INLINE VF fog_factor(const PixelState& s, VF c) {
+  const DF d;
+  switch (s.fog_mode) {
+    case FogMode::Linear: {
+      const float range = s.fog_end - s.fog_start;
+      if (range == 0) return hn::Set(d, 1.0f);
+      return saturate(hn::Mul(hn::Sub(hn::Set(d, s.fog_end), c), hn::Set(d, 1.0f / range)));
+    }
+    case FogMode::Exp:  // exp(-density c) = 2^(-density c log2(e))
+      return saturate(exp2_neg(hn::Min(hn::Mul(c, hn::Set(d, -s.fog_density * 1.44269504f)), hn::Zero(d))));
+    default: {  // exp(-(density c)^2)
+      const VF dc = hn::Mul(c, hn::Set(d, s.fog_density));
+      return saturate(exp2_neg(hn::Mul(hn::Mul(dc, dc), hn::Set(d, -1.44269504f))));
+    }
+  }
+}
+
+// One blend factor for colour channel `ch` (3 = alpha).
+HWY_INLINE VF blend_factor(BlendFactor f, int ch, const Rgba& s, const Rgba& dst, const Vec4& k) {
+  const DF d;
+  const VF one = hn::Set(d, 1.0f);
+  const VF sc = ch == 0 ? s.r : ch == 1 ? s.g : ch == 2 ? s.b : s.a;
+  const VF dc = ch == 0 ? dst.r : ch == 1 ? dst.g : ch == 2 ? dst.b : dst.a;
+  const float kc = ch == 0 ? k.x : ch == 1 ? k.y : ch == 2 ? k.z : k.w;
+  switch (f) {
+    case BlendFactor::Zero: return hn::Zero(d);
+    case BlendFactor::One: return one;
+    case BlendFactor::SrcColor: return sc;
+    case BlendFactor::OneMinusSrcColor: return hn::Sub(one, sc);
+    case BlendFactor::DstColor: return dc;
+    case BlendFactor::OneMinusDstColor: return hn::Sub(one, dc);
+    case BlendFactor::SrcAlpha: return s.a;
+    case BlendFactor::OneMinusSrcAlpha: return hn::Sub(one, s.a);
+    case BlendFactor::DstAlpha: return dst.a;
+    case BlendFactor::OneMinusDstAlpha: return hn::Sub(one, dst.a);
+    case BlendFactor::SrcAlphaSaturate: return ch == 3 ? one : hn::Min(s.a, hn::Sub(one, dst.a));
+    case BlendFactor::ConstantColor: return hn::Set(d, kc);
+    case BlendFactor::OneMinusConstantColor: return hn::Set(d, 1.0f - kc);
+    case BlendFactor::ConstantAlpha: return hn::Set(d, k.w);
+    default: return hn::Set(d, 1.0f - k.w);  // OneMinusConstantAlpha
+  }
+}
+
+HWY_INLINE VF blend_channel(const PixelState& p, int ch, const Rgba& s, const Rgba& dst) {
+  const VF sc = ch == 0 ? s.r : ch == 1 ? s.g : ch == 2 ? s.b : s.a;
+  const VF dc = ch == 0 ? dst.r : ch == 1 ? dst.g : ch == 2 ? dst.b : dst.a;
+  if (p.blend_op == BlendOp::Min) return hn::Min(sc, dc);
+  if (p.blend_op == BlendOp::Max) return hn::Max(sc, dc);
+  const VF fs = blend_factor(ch == 3 ? p.blend_src_alpha : p.blend_src_rgb, ch, s, dst, p.blend_color);
+  const VF fd = blend_factor(ch == 3 ? p.blend_dst_alpha : p.blend_dst_rgb, ch, s, dst, p.blend_color);
+  const VF a = hn::Mul(sc, fs), b = hn::Mul(dc, fd);
+  switch (p.blend_op) {
+    case BlendOp::Subtract: return hn::Sub(a, b);
+    case BlendOp::ReverseSubtract: return hn::Sub(b, a);
+    default: return hn::Add(a, b);
+  }
+}
+
+// Interpolated RGBA (planes 0-3), then with kTex s, t, q (4-6), then with kFog the fog
+// coordinate.
+template <bool kTex, bool kFog>
+struct FixedShader {
+  static constexpr int N = fixed_varyings(kTex, kFog);
+  static constexpr int kFogAt = varying::kFixedTex + (kTex ? 3 : 0);
+  Perspective<N> in;
+  const DrawState& draw;
+  LevelChoice level{};
+
+  FixedShader(const RecordHeader& r, const DrawState& d) : draw(d) { in.load(r); }
+
+  void begin_block(float fx, float fy) {
+    in.begin(fx, fy);
+    if constexpr (kTex) {
+      // u = s/q, v = t/q: derivatives of the quotients at the block's centre.
+      float s, sx, sy, t, tx, ty, q, qx, qy;
+      constexpr int st = varying::kFixedTex;
+      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(st + 2, q, qx, qy);
+      const float iq = q != 0 ? 1.0f / q : 0.0f;
+      const float u = s * iq, v = t * iq;
+      const SamplerView& tex = draw.texture;
+      level = choose_levels(tex, level_of_detail(tex, (sx - u * qx) * iq, (tx - v * qx) * iq, (sy - u * qy) * iq,
+                                                 (ty - v * qy) * iq));
+    }
+  }
+
+  HWY_INLINE Rgba shade(int v) {
+    const DF d;
+    in.at_vector(v);
+    constexpr int c0 = varying::kFixedColor, st = varying::kFixedTex;
+    Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
+    if constexpr (kTex) {
+      const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + 2, v));
+      Rgba t = sample(draw.texture, level, hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
+      c = texture_environment(draw, c, t);
+    }
+    if constexpr (kFog) {
+      const PixelState& p = draw.pixel;
+      const VF f = fog_factor(p, in(kFogAt, v));
+      c.r = hn::MulAdd(hn::Sub(c.r, hn::Set(d, p.fog_color.x)), f, hn::Set(d, p.fog_color.x));
+      c.g = hn::MulAdd(hn::Sub(c.g, hn::Set(d, p.fog_color.y)), f, hn::Set(d, p.fog_color.y));
+      c.b = hn::MulAdd(hn::Sub(c.b, hn::Set(d, p.fog_color.z)), f, hn::Set(d, p.fog_color.z));
+    }
+    return c;
+  }
+};
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_RASTER_SHADE_FIXED_INL_H_ toggle

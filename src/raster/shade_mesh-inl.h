@@ -1,0 +1,249 @@
+// The mesh shaders: what a kernel computes for a vector of pixels of a 4x4 block, from
+// the record's interpolation planes. Each has begin_block(fx, fy) at a block's first
+// pixel (offsets from the record's anchor pixel) and shade(v) for vector v of the
+// block, returning packed RGBA8. Chosen per draw, as template arguments of the kernel.
+#if defined(VELOCITY_RASTER_SHADE_MESH_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_RASTER_SHADE_MESH_INL_H_
+#undef VELOCITY_RASTER_SHADE_MESH_INL_H_
+#else
+#define VELOCITY_RASTER_SHADE_MESH_INL_H_
+#endif
+
+#include "geometry/lighting.hpp"
+#include "raster/rasterize.hpp"
+#include "raster/sampler-inl.h"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+// N planes evaluated at a block: value = base + dx * column + dy * row.
+template <int N>
+struct Planes {
+  float dx[N], dy[N], c[N], base[N];
+  void load(int i, const Plane& p) { c[i] = p.c, dx[i] = p.dx, dy[i] = p.dy; }
+  void begin(float fx, float fy) {
+    for (int i = 0; i < N; ++i) base[i] = c[i] + dx[i] * fx + dy[i] * fy;
+  }
+  HWY_INLINE VF at(int i, int v) const {
+    const DF d;
+    return hn::MulAdd(hn::Set(d, dx[i]), block_x(v), hn::MulAdd(hn::Set(d, dy[i]), block_y(v), hn::Set(d, base[i])));
+  }
+  // Scalar value at an offset from the block's first pixel.
+  float value(int i, float x, float y) const { return base[i] + dx[i] * x + dy[i] * y; }
+};
+
+// Plane 0 is 1/w, planes 1..N are varying/w: varying = plane / (1/w).
+template <int N>
+struct Perspective {
+  Planes<N + 1> p;
+  VF w;  // of the current vector
+  void load(const RecordHeader& r) {
+    p.load(0, r.inv_w);
+    const Plane* v = varyings(r);
+    for (int i = 0; i < N; ++i) p.load(i + 1, v[i]);
+  }
+  void begin(float fx, float fy) { p.begin(fx, fy); }
+  HWY_INLINE void at_vector(int v) { w = hn::Div(hn::Set(DF(), 1.0f), p.at(0, v)); }
+  HWY_INLINE VF operator()(int i, int v) const { return hn::Mul(p.at(i + 1, v), w); }
+  // The derivatives of varying i at the block's centre (1.5, 1.5), for mip-mapping:
+  // d(V/Q) = (dV - (V/Q) dQ) / Q.
+  void derivatives(int i, float& value, float& ddx, float& ddy) const {
+    const float q = p.value(0, 1.5f, 1.5f), vq = p.value(i + 1, 1.5f, 1.5f);
+    const float iq = q != 0 ? 1.0f / q : 0.0f;
+    value = vq * iq;
+    ddx = (p.dx[i + 1] - value * p.dx[0]) * iq;
+    ddy = (p.dy[i + 1] - value * p.dy[0]) * iq;
+  }
+};
+
+HWY_INLINE VU opaque(VF r, VF g, VF b) { return pack_colors(r, g, b, hn::Set(DF(), 1.0f)); }
+
+struct FlatShader {
+  static constexpr bool kConstant = true;
+  uint32_t color;
+  FlatShader(const RecordHeader& r, const DrawState&, const FrameData&) : color(r.flat_color) {}
+  void begin_block(float, float) {}
+  HWY_INLINE VU shade(int) const { return hn::Set(DU(), color); }
+};
+
+struct SmoothShader {
+  static constexpr bool kConstant = false;
+  Perspective<kSmoothVaryings> in;
+  SmoothShader(const RecordHeader& r, const DrawState&, const FrameData&) { in.load(r); }
+  void begin_block(float fx, float fy) { in.begin(fx, fy); }
+  HWY_INLINE VU shade(int v) {
+    in.at_vector(v);
+    return opaque(in(varying::kColor, v), in(varying::kColor + 1, v), in(varying::kColor + 2, v));
+  }
+};
+
+// A texture addressed by two varyings, its level chosen per block.
+template <int N>
+struct UvTexture {
+  const SamplerView& tex;
+  int iu;
+  LevelChoice level{};
+  void begin(const Perspective<N>& in) {
+    float u, dudx, dudy, v, dvdx, dvdy;
+    in.derivatives(iu, u, dudx, dudy);
+    in.derivatives(iu + 1, v, dvdx, dvdy);
+    level = choose_levels(tex, level_of_detail(tex, dudx, dvdx, dudy, dvdy));
+  }
+  HWY_INLINE Rgba operator()(const Perspective<N>& in, int v) const {
+    return sample<false>(tex, level, in(iu, v), in(iu + 1, v));
+  }
+};
+
+// The flat colour (a lit face, or white for "replace") times the texture.
+struct FlatTexShader {
+  static constexpr bool kConstant = false;
+  Perspective<kFlatTexVaryings> in;
+  UvTexture<kFlatTexVaryings> tex;
+  float r, g, b;
+  FlatTexShader(const RecordHeader& rec, const DrawState& d, const FrameData&)
+      : tex{d.texture ? d.texture : d.env_map, varying::kFlatUv} {
+    in.load(rec);
+    r = float(rec.flat_color & 0xff) / 255.0f, g = float((rec.flat_color >> 8) & 0xff) / 255.0f;
+    b = float((rec.flat_color >> 16) & 0xff) / 255.0f;
+  }
+  void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
+  HWY_INLINE VU shade(int v) {
+    const DF d;
+    in.at_vector(v);
+    Rgba t = tex(in, v);
+    return opaque(hn::Mul(hn::Set(d, r), t.r), hn::Mul(hn::Set(d, g), t.g), hn::Mul(hn::Set(d, b), t.b));
+  }
+};
+
+// Gouraud's lit colour times the texture (OpenGL's GL_MODULATE).
+struct SmoothTexShader {
+  static constexpr bool kConstant = false;
+  Perspective<kSmoothTexVaryings> in;
+  UvTexture<kSmoothTexVaryings> tex;
+  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const FrameData&) : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv} {
+    in.load(rec);
+  }
+  void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
+  HWY_INLINE VU shade(int v) {
+    in.at_vector(v);
+    Rgba t = tex(in, v);
+    return opaque(hn::Mul(in(varying::kColor, v), t.r), hn::Mul(in(varying::kColor + 1, v), t.g),
+                  hn::Mul(in(varying::kColor + 2, v), t.b));
+  }
+};
+
+// Per-pixel lighting (lighting.hpp's model); optionally a base texture (uv) and a
+// sphere environment map addressed by the normal: u = 0.5 + 0.5 Nx, v = 0.5 + 0.5 Ny.
+template <bool kTex, bool kEnv>
+struct PhongShader {
+  static constexpr bool kConstant = false;
+  static constexpr int N = (kTex || kEnv) ? kPhongTexVaryings : kPhongVaryings;
+  Perspective<N> in;
+  const DrawState& draw;
+  const geometry::EyeLights& lights;
+  UvTexture<N> tex;
+  LevelChoice env_level{};
+
+  PhongShader(const RecordHeader& r, const DrawState& d, const FrameData& f)
+      : draw(d), lights(*f.lights), tex{d.texture, varying::kPhongUv} {
+    in.load(r);
+  }
+
+  // The environment map's uv at an offset from the block's first pixel (scalar).
+  void env_uv(float x, float y, float& u, float& v) const {
+    constexpr int n0 = varying::kNormal + 1;  // planes: 1/w first
+    Vec3 n = normalize({in.p.value(n0, x, y), in.p.value(n0 + 1, x, y), in.p.value(n0 + 2, x, y)});
+    u = 0.5f + 0.5f * n.x, v = 0.5f + 0.5f * n.y;
+  }
+
+  void begin_block(float fx, float fy) {
+    in.begin(fx, fy);
+    if constexpr (kTex) tex.begin(in);
+    if constexpr (kEnv) {
+      // Finite differences across the block's centre, as a GPU's pixel quad would.
+      float u, v, ux, vx, uy, vy;
+      env_uv(1.5f, 1.5f, u, v), env_uv(2.5f, 1.5f, ux, vx), env_uv(1.5f, 2.5f, uy, vy);
+      env_level = choose_levels(draw.env_map, level_of_detail(draw.env_map, ux - u, vx - v, uy - u, vy - v));
+    }
+  }
+
+  HWY_INLINE VU shade(int v) {
+    const DF d;
+    in.at_vector(v);
+    VF br = in(varying::kColor, v), bg = in(varying::kColor + 1, v), bb = in(varying::kColor + 2, v);
+    // The normal / w (planes: 1/w first): w cancels in normalising.
+    constexpr int n0 = varying::kNormal + 1;
+    VF nx = in.p.at(n0, v), ny = in.p.at(n0 + 1, v), nz = in.p.at(n0 + 2, v);
+    const VF inv_len = rsqrt(hn::MulAdd(nx, nx, hn::MulAdd(ny, ny, hn::Mul(nz, nz))));
+    nx = hn::Mul(nx, inv_len), ny = hn::Mul(ny, inv_len), nz = hn::Mul(nz, inv_len);
+    if constexpr (kTex) {
+      Rgba t = tex(in, v);
+      br = hn::Mul(br, t.r), bg = hn::Mul(bg, t.g), bb = hn::Mul(bb, t.b);
+    }
+    if constexpr (kEnv) {
+      const VF half = hn::Set(d, 0.5f);
+      Rgba e = sample<false>(draw.env_map, env_level, hn::MulAdd(half, nx, half), hn::MulAdd(half, ny, half));
+      const VF mix = hn::Set(d, draw.env_mix);
+      br = hn::MulAdd(hn::Sub(e.r, br), mix, br), bg = hn::MulAdd(hn::Sub(e.g, bg), mix, bg);
+      bb = hn::MulAdd(hn::Sub(e.b, bb), mix, bb);
+    }
+    // Diffuse: ambient + sum of lights; specular: Ks * sum of lights * max(R.V, 0)^n.
+    VF dr = hn::Set(d, lights.ambient.x), dg = hn::Set(d, lights.ambient.y), db = hn::Set(d, lights.ambient.z);
+    VF sr = hn::Zero(d), sg = sr, sb = sr;
+    const geometry::Specular& s = draw.specular;
+    VF ex = hn::Zero(d), ey = ex, ez = ex;  // unit vector to the eye
+    VF px = ex, py = ex, pz = ex;
+    if (s.ks > 0 || !lights.point.empty()) px = in(varying::kEye, v), py = in(varying::kEye + 1, v), pz = in(varying::kEye + 2, v);
+    if (s.ks > 0) {
+      const VF il = rsqrt(hn::MulAdd(px, px, hn::MulAdd(py, py, hn::Mul(pz, pz))));
+      ex = hn::Neg(hn::Mul(px, il)), ey = hn::Neg(hn::Mul(py, il)), ez = hn::Neg(hn::Mul(pz, il));
+    }
+    auto add_light = [&](VF lx, VF ly, VF lz, VF cr, VF cg, VF cb) {
+      const VF nl = hn::MulAdd(nx, lx, hn::MulAdd(ny, ly, hn::Mul(nz, lz)));
+      const VF diffuse = hn::ZeroIfNegative(nl);
+      dr = hn::MulAdd(cr, diffuse, dr), dg = hn::MulAdd(cg, diffuse, dg), db = hn::MulAdd(cb, diffuse, db);
+      if (s.ks > 0) {
+        // R = 2 (N.L) N - L; as the reference computes it, not gated on N.L.
+        const VF two_nl = hn::Add(nl, nl);
+        const VF rx = hn::MulSub(two_nl, nx, lx), ry = hn::MulSub(two_nl, ny, ly), rz = hn::MulSub(two_nl, nz, lz);
+        const VF rv = hn::MulAdd(rx, ex, hn::MulAdd(ry, ey, hn::Mul(rz, ez)));
+        const MF lit = hn::Gt(rv, hn::Set(d, s.cutoff));
+        if (!hn::AllFalse(d, lit)) {
+          const VF p = hn::IfThenElseZero(lit, pow01(hn::Min(hn::IfThenElse(lit, rv, hn::Set(d, 1.0f)), hn::Set(d, 1.0f)),
+                                                     hn::Set(d, s.exponent)));
+          const VF k = hn::Mul(hn::Set(d, s.ks), p);
+          sr = hn::MulAdd(cr, k, sr), sg = hn::MulAdd(cg, k, sg), sb = hn::MulAdd(cb, k, sb);
+        }
+      }
+    };
+    for (const auto& l : lights.directional)
+      add_light(hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z), hn::Set(d, l.color.x),
+                hn::Set(d, l.color.y), hn::Set(d, l.color.z));
+    for (const auto& l : lights.point) {
+      const VF vx = hn::Sub(hn::Set(d, l.position.x), px), vy = hn::Sub(hn::Set(d, l.position.y), py);
+      const VF vz = hn::Sub(hn::Set(d, l.position.z), pz);
+      const VF d2 = hn::MulAdd(vx, vx, hn::MulAdd(vy, vy, hn::Mul(vz, vz)));
+      const VF il = rsqrt(d2);
+      const VF dist = hn::Mul(d2, il);
+      VF att = hn::MulAdd(hn::MulAdd(hn::Set(d, l.quadratic), dist, hn::Set(d, l.linear)), dist, hn::Set(d, l.constant));
+      att = hn::Div(hn::Set(d, 1.0f), hn::Max(att, hn::Set(d, 1e-6f)));
+      // A light at the surface point lights it along the normal (as lighting.hpp does).
+      const MF here = hn::Eq(d2, hn::Zero(d));
+      add_light(hn::IfThenElse(here, nx, hn::Mul(vx, il)), hn::IfThenElse(here, ny, hn::Mul(vy, il)),
+                hn::IfThenElse(here, nz, hn::Mul(vz, il)), hn::Mul(hn::Set(d, l.color.x), att),
+                hn::Mul(hn::Set(d, l.color.y), att), hn::Mul(hn::Set(d, l.color.z), att));
+    }
+    return opaque(hn::MulAdd(br, dr, sr), hn::MulAdd(bg, dg, sg), hn::MulAdd(bb, db, sb));
+  }
+};
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_RASTER_SHADE_MESH_INL_H_ toggle

@@ -1,0 +1,82 @@
+// What a tile's shading kernels share: where the tile's pixels are, and the kernel
+// tables, one per translation unit (so that the heavy kernels compile in parallel):
+// kernels_basic.cpp (flat, smooth and their per-vertex-textured forms),
+// kernels_phong.cpp (per-pixel lighting, textures, environment maps) and
+// kernels_fixed.cpp (the fixed-function kernel). Per instruction set, like the rest.
+#if defined(VELOCITY_RASTER_TILE_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_RASTER_TILE_INL_H_
+#undef VELOCITY_RASTER_TILE_INL_H_
+#else
+#define VELOCITY_RASTER_TILE_INL_H_
+#endif
+
+#include "raster/coverage-inl.h"
+#include "raster/rasterize.hpp"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+// Where a tile's pixels are, and what the frame asks of it.
+struct TileTarget {
+  const FrameData& frame;
+  uint32_t* color;  // the tile's first pixel (tiled layout, framebuffer.hpp)
+  float* depth;
+  uint32_t* ids;  // null when the frame keeps no object ids
+  int x0, y0;     // the tile's first pixel in the framebuffer
+};
+
+// The pixel offsets of a block from the record's anchor (its box's first pixel).
+HWY_INLINE void block_origin(const RecordHeader& r, const TileTarget& t, uint16_t index, float& fx, float& fy) {
+  fx = float(t.x0 + (index & 15) * 4 - r.min_x);
+  fy = float(t.y0 + (index >> 4) * 4 - r.min_y);
+}
+
+using KernelFn = void (*)(const RecordHeader&, const Block*, int, const TileTarget&);
+
+// The kernels of each translation unit, indexed from the first KernelId it holds.
+const KernelFn* basic_kernels();  // KernelId::Flat .. Phong (exclusive)
+const KernelFn* phong_kernels();  // KernelId::Phong .. Fixed (exclusive)
+const KernelFn* fixed_kernels();  // KernelId::Fixed .. Count (exclusive)
+
+// The depth test and the writes of the mesh kernels: LESS before shading (none in
+// painter's mode), opaque colour, object ids.
+template <class Shader>
+HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
+  const DF d;
+  const DU du;
+  const DrawState& draw = (*t.frame.draws)[r.draw];
+  Shader shader(r, draw, t.frame);
+  const bool depth_test = t.frame.depth_test;
+  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const VU id = hn::Set(du, draw.object_id);
+  for (int b = 0; b < n; ++b) {
+    const Block& blk = blocks[b];
+    float fx, fy;
+    block_origin(r, t, blk.index, fx, fy);
+    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    shader.begin_block(fx, fy);
+    const size_t at = size_t(blk.index) * 16;
+    for (int v = 0; v < kVectorsPerBlock; ++v) {
+      MF m = lane_mask(blk.mask, v);
+      if (kVectorsPerBlock > 1 && hn::AllFalse(d, m)) continue;
+      float* zp = t.depth + at + v * kLanes;
+      if (depth_test) {
+        const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
+        m = hn::And(m, hn::Lt(z, hn::Load(d, zp)));
+        if (hn::AllFalse(d, m)) continue;
+        hn::BlendedStore(z, m, d, zp);
+      }
+      const auto mu = hn::RebindMask(du, m);
+      hn::BlendedStore(shader.shade(v), mu, du, t.color + at + v * kLanes);
+      if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
+    }
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_RASTER_TILE_INL_H_ toggle
