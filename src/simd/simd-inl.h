@@ -57,13 +57,21 @@ HWY_INLINE MF lane_mask(uint32_t mask16, int v) {
 }
 
 // The bits of `m` as a 16-bit mask in lane order (for vector v of a block).
-HWY_INLINE uint32_t mask_bits(MF m, int v) {
+
+// The lanes of any mask as bits, lane i in bit i. (To walk the set lanes with a scalar
+// loop: Highway 1.0's Compress on AVX2 copies a 1 KiB table onto the stack at every
+// call, which cost more than the rest of the triangle cull pass together.)
+template <class D>
+HWY_INLINE uint32_t lane_bits(D d, hn::Mask<D> m) {
   uint8_t bytes[8] = {};
-  hn::StoreMaskBits(DF(), m, bytes);
+  hn::StoreMaskBits(d, m, bytes);
   uint32_t bits = uint32_t(bytes[0]) | (uint32_t(bytes[1]) << 8);
-  if (kLanes < 16) bits &= (1u << kLanes) - 1;
-  return bits << (v * int(kLanes));
+  if (hn::MaxLanes(d) < 16) bits &= (1u << hn::MaxLanes(d)) - 1;
+  return bits;
 }
+
+// The bits of `m` as a 16-bit mask in lane order (for vector v of a block).
+HWY_INLINE uint32_t mask_bits(MF m, int v) { return lane_bits(DF(), m) << (v * int(kLanes)); }
 
 // x clamped to [0, 1]; NaN becomes 0 (comparisons with NaN are false).
 HWY_INLINE VF saturate(VF x) {
