@@ -1,4 +1,4 @@
-// A small fixed pool of worker threads for data-parallel loops (tiles).
+// A small fixed pool of worker threads for data-parallel loops (the frame's stages).
 #pragma once
 
 #include <atomic>
@@ -50,15 +50,20 @@ class ThreadPool {
   void drain(int worker);
 
   std::vector<std::thread> workers_;
+  // Workers and the caller wait by spinning a little (a frame runs its stages back to
+  // back, and waking a sleeping thread costs tens of microseconds, more in a virtual
+  // machine), then by sleeping on these.
   std::mutex mutex_;
   std::condition_variable wake_, done_;
+  // The run in progress: written by run_items before it publishes a new generation,
+  // read by the workers after they see it.
   Job job_{nullptr, nullptr};
-  std::exception_ptr error_;  // the first exception an item threw in this run
   int count_ = 0;
-  std::atomic<int> next_{0};
-  int busy_ = 0;               // workers still inside the current generation
-  unsigned generation_ = 0;    // bumped for each run()
-  bool stop_ = false;
+  std::exception_ptr error_;   // the first exception an item threw in this run (under mutex_)
+  std::atomic<int> next_{0};   // the next item to take
+  std::atomic<int> busy_{0};   // workers still inside the current generation
+  std::atomic<unsigned> generation_{0};  // bumped for each run()
+  std::atomic<bool> stop_{false};
 };
 
 }  // namespace velocity
