@@ -11,6 +11,7 @@
 // Jobs are numbered in submission order and tiles merge the workers' lists by job, so
 // the image is the same for any number of threads.
 #include <algorithm>
+#include <chrono>
 #include <deque>
 #include <new>
 #include <unordered_set>
@@ -507,10 +508,15 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   Impl& r = *this;
   ThreadPool& pool = r.pool_for(r.plan.options.threads);
 
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  const Clock::time_point t0 = Clock::now();
   r.allocate_vertices();
   r.vertex_stage(pool);
+  const Clock::time_point t1 = Clock::now();
   r.triangle_stage(pool, painter);
   if (painter) r.painter_sort();
+  const Clock::time_point t2 = Clock::now();
 
   raster::FrameData frame;
   frame.bins = &r.bins;
@@ -522,6 +528,8 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   frame.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
   r.framebuffer.expect_clear(frame.color, frame.depth);
   pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(frame, tile, r.framebuffer); });
+  const Clock::time_point t3 = Clock::now();
+  r.stats.vertex_ms = ms(t0, t1), r.stats.triangle_ms = ms(t1, t2), r.stats.tile_ms = ms(t2, t3);
 
   // The frame's statistics, and one warning per mesh with non-finite vertices (not one
   // per frame, nor per triangle). The set only grows with distinct bad meshes; a

@@ -55,17 +55,22 @@ int run_bench(const BenchArgs& a) {
   Renderer renderer(w, h);
   renderer.options = look->options;
 
-  std::vector<double> ms;
-  ms.reserve(size_t(a.frames));
+  std::vector<double> ms, vertex_ms, triangle_ms, tile_ms;
+  ms.reserve(size_t(a.frames)), vertex_ms.reserve(size_t(a.frames));
+  triangle_ms.reserve(size_t(a.frames)), tile_ms.reserve(size_t(a.frames));
   for (int frame = 0; frame < a.frames; ++frame) {
     auto t0 = std::chrono::steady_clock::now();
     bench::draw_frame(renderer, mesh, look->material, frame, a.frames, a.copies);
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    const FrameStats& st = renderer.stats();
+    vertex_ms.push_back(st.vertex_ms), triangle_ms.push_back(st.triangle_ms), tile_ms.push_back(st.tile_ms);
     if (frame == 0 && !a.out.empty()) write_image(a.out, renderer.color_image());
   }
-  std::vector<double> sorted = ms;
-  std::sort(sorted.begin(), sorted.end());
-  double median = sorted[sorted.size() / 2], total = 0;
+  auto median_of = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  double median = median_of(ms), total = 0;
   for (double x : ms) total += x;
   size_t tris = mesh.triangles.size() * size_t(a.copies);
   std::printf("renderer=velocity mesh=%s tris=%zu size=%dx%d shade=%s frames=%d median_ms=%.3f fps=%.1f tris_per_s=%.3e\n",
@@ -78,6 +83,8 @@ int run_bench(const BenchArgs& a) {
                 simd_target(), a.threads, st.objects, st.objects_culled, st.triangles, st.triangles_rejected,
                 st.triangles_clipped, st.triangles_culled, st.triangles_nonfinite, st.triangles_rasterized, st.lines,
                 st.points);
+    std::printf("median stage ms: vertex=%.3f triangle=%.3f tile=%.3f\n", median_of(vertex_ms), median_of(triangle_ms),
+                median_of(tile_ms));
   }
   return 0;
 }
@@ -99,7 +106,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--copies", args->copies, "Draw the mesh N times per frame, in a square grid")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();
   cmd->add_option("--out", args->out, "Write the first frame to this image");
-  cmd->add_flag("--verbose", args->verbose, "Also print the instruction set and what the last frame did");
+  cmd->add_flag("--verbose", args->verbose, "Also print the instruction set, what the last frame did and the median time of each stage");
   return [args] { return run_bench(*args); };
 }
 

@@ -72,6 +72,10 @@ struct FrameStats {
   size_t triangles_culled = 0;        // back faces, and triangles covering no pixel centre
   size_t triangles_rasterized = 0;    // set up and binned (after clipping)
   size_t lines = 0, points = 0;       // set up and binned
+  // Wall-clock time of end_frame's stages, in milliseconds (for benchmarks).
+  double vertex_ms = 0;    // transform, project, light: every vertex
+  double triangle_ms = 0;  // reject, cull, clip, set up, bin: every triangle (and the painter's sort)
+  double tile_ms = 0;      // clear, rasterize and shade: every tile
 };
 
 // The instruction set the pixel and vertex kernels run with on this processor, as
