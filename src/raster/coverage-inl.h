@@ -163,7 +163,12 @@ HWY_INLINE int small_blocks(const RecordHeader& r, int tx, int ty, const TileBox
 // half-open range along the major axis, `width` pixels across, centred on the segment.
 inline HWY_NOINLINE int line_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
   const LineShape& l = shape<LineShape>(r);
-  uint16_t masks[kMaxBlocks] = {};
+  // Most lines touch a few blocks of the tile: collect their masks in `out` directly,
+  // through a map from block to its place there (valid where `seen` has the block's
+  // bit), rather than clearing and scanning a mask for every block of the tile.
+  uint64_t seen[kMaxBlocks / 64] = {};
+  uint8_t place[kMaxBlocks];
+  int n = 0;
   const bool xm = l.x_major != 0;
   float a0 = xm ? l.x0 : l.y0, a1 = xm ? l.x1 : l.y1;  // major axis
   float b0 = xm ? l.y0 : l.x0, b1 = xm ? l.y1 : l.x1;  // minor axis
@@ -174,20 +179,23 @@ inline HWY_NOINLINE int line_blocks(const RecordHeader& r, int tx, int ty, const
   const int hi_a = std::min(int(std::ceil(a1 - 0.5f)) - 1, origin_a + (xm ? box.x1 : box.y1));
   const int lo_b = origin_b + (xm ? box.y0 : box.x0), hi_b = origin_b + (xm ? box.y1 : box.x1);
   const int half = (l.width - 1) / 2;
-  bool any = false;
   for (int a = lo_a; a <= hi_a; ++a) {
     const float s = len > 0 ? (float(a) + 0.5f - a0) / len : 0.0f;
     const int centre = int(std::floor(b0 + s * (b1 - b0)));
     for (int b = std::max(centre - half, lo_b); b <= std::min(centre - half + l.width - 1, hi_b); ++b) {
       const int x = (xm ? a : b) - tx, y = (xm ? b : a) - ty;
-      masks[(y >> 2) * kBlocksPerTileSide + (x >> 2)] |= uint16_t(1u << ((y & 3) * 4 + (x & 3)));
-      any = true;
+      const int block = (y >> 2) * kBlocksPerTileSide + (x >> 2);
+      const uint16_t bit = uint16_t(1u << ((y & 3) * 4 + (x & 3)));
+      uint64_t& word = seen[block >> 6];
+      if (word >> (block & 63) & 1) {
+        out[place[block]].mask |= bit;
+      } else {
+        word |= uint64_t(1) << (block & 63);
+        place[block] = uint8_t(n);
+        out[n++] = {uint16_t(block), bit};
+      }
     }
   }
-  int n = 0;
-  if (!any) return 0;
-  for (int i = 0; i < kMaxBlocks; ++i)
-    if (masks[i]) out[n++] = {uint16_t(i), masks[i]};
   return n;
 }
 
