@@ -13,18 +13,30 @@ namespace {
 
 // Polls `ready` for up to about 100 microseconds (long enough to span the gap between
 // two stages of a frame, short enough that an idle pool soon stops using the CPU);
-// true if it became true.
+// true if it became true. After the first 10 microseconds it yields the core between
+// polls: on a machine busy with other programs a spinning worker must not take the
+// time slice of the thread it waits for.
 template <class Ready>
 bool spin_until(Ready ready) {
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::microseconds(100);
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  bool yielding = false;
   for (int i = 0;; ++i) {
     if (ready()) return true;
-    if ((i & 63) == 63 && std::chrono::steady_clock::now() > give_up) return false;
+    if ((i & 63) == 63) {
+      const auto spent = Clock::now() - start;
+      if (spent > std::chrono::microseconds(100)) return false;
+      yielding = spent > std::chrono::microseconds(10);
+    }
+    if (yielding) {
+      std::this_thread::yield();
+    } else {
 #if defined(__x86_64__) || defined(__i386__)
-    _mm_pause();
+      _mm_pause();
 #else
-    std::this_thread::yield();
+      std::this_thread::yield();
 #endif
+    }
   }
 }
 
