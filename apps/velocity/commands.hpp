@@ -14,5 +14,6 @@ void parse_size(const std::string& text, int& width, int& height);
 std::function<int()> add_render_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_info_command(CLI::App& app);
+std::function<int()> add_batch_command(CLI::App& app);
 
 }  // namespace velocity::cli

@@ -4,6 +4,7 @@
 //   velocity render MODEL ...     render a model file or a generated model
 //   velocity bench ...            the reference scene convention, timed
 //   velocity info FILE            what a model file holds
+//   velocity batch JOB ...        many models x many views to a folder (the Python job runner)
 #include <cstdio>
 
 #include "commands.hpp"
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   auto render = velocity::cli::add_render_command(app);
   auto bench = velocity::cli::add_bench_command(app);
   auto info = velocity::cli::add_info_command(app);
+  auto batch = velocity::cli::add_batch_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -24,6 +26,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("info")) return info();
+    if (app.got_subcommand("batch")) return batch();
     return render();  // `render`, or no command at all: the demo scene
   } catch (const velocity::Error& e) {
     std::fprintf(stderr, "velocity: %s\n", e.what());

@@ -61,7 +61,8 @@ def _summary(manifest: dict, out: str) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="velocity-batch", description=__doc__.split("\n\n")[0],
+    # `velocity batch` (the C++ program) runs this module and names itself so.
+    p = argparse.ArgumentParser(prog=os.environ.get("VELOCITY_BATCH_PROG", "velocity-batch"), description=__doc__.split("\n\n")[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter,
                                 epilog="The job format: docs/python.md (Batch jobs).")
     p.add_argument("job", help="the job file (JSON)")
