@@ -27,7 +27,9 @@ import time
 
 import distributed
 
-from velocity.dask_runner import run_dask
+import dask
+
+from velocity.dask_runner import DASK_CONFIG, run_dask
 from velocity.jobs import Progress, load_job
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -69,8 +71,9 @@ def main():
     total = len(MODELS) * args.views
     clusters = {}
     for n in (1, 2):
-        cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
-                                           silence_logs=50)
+        with dask.config.set(DASK_CONFIG):  # as run_dask starts its own LocalCluster
+            cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                               dashboard_address=None, silence_logs=50)
         clusters[n] = (cluster, distributed.Client(cluster))
     rates = {1: [], 2: []}
     try:

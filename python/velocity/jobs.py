@@ -236,8 +236,12 @@ class Job:
     def record_path(self, task_id: str) -> str:
         return os.path.join(self.state_dir, "tasks", task_id + ".json")
 
+    def view_names(self, model_key: str, view: int) -> dict[str, str]:
+        """A view's files, relative to the output folder (as the manifest lists them)."""
+        return {o: f"{model_key}/{view:06d}.{_SUFFIX[o]}" for o in self.spec["outputs"]}
+
     def view_files(self, model_key: str, view: int) -> dict[str, str]:
-        return {o: os.path.join(self.output, model_key, f"{view:06d}.{_SUFFIX[o]}") for o in self.spec["outputs"]}
+        return {o: os.path.join(self.output, name) for o, name in self.view_names(model_key, view).items()}
 
 
 def load_job(source: str | dict, output: str | None = None) -> Job:
@@ -613,8 +617,7 @@ class Run:
             if rec["status"] == "done":
                 done += t.stop - t.start
                 for v, cam in rec.get("cameras", {}).items():
-                    files = self.job.view_files(t.model_key, int(v))
-                    m["views"][v] = dict(cam, files={k: os.path.relpath(p, self.job.output) for k, p in files.items()})
+                    m["views"][v] = dict(cam, files=self.job.view_names(t.model_key, int(v)))
             else:
                 m["errors"].append(f"views {t.start}..{t.stop - 1}: {rec.get('error', 'unknown error')}")
         failed = []
