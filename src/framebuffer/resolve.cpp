@@ -1,6 +1,7 @@
 #include "framebuffer/resolve.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace velocity {
@@ -44,12 +45,20 @@ void resolve_color_into(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_
     return;
   }
   if (k == 1) {  // RGB: straight from the tiles, four pixels (one block row) at a time
+    static_assert(std::endian::native == std::endian::little, "colours are RGBA8 words with red in byte 0");
     for (int y = 0; y < h; ++y) {
       uint8_t* out = rgba + size_t(y) * row_bytes;
-      for (int x = 0; x < w; x += 4) {
-        const uint8_t* src = reinterpret_cast<const uint8_t*>(fb.color.data() + fb.index(x, y));
-        for (int i = 0; i < std::min(4, w - x); ++i) std::memcpy(out + size_t(x + i) * 3, src + i * 4, 3);
+      int x = 0;
+      for (; x + 4 <= w; x += 4) {
+        // Four RGBA8 pixels (byte 0 red) into twelve RGB bytes: three little-endian words.
+        uint32_t p[4];
+        std::memcpy(p, fb.color.data() + fb.index(x, y), sizeof p);
+        const uint32_t words[3] = {(p[0] & 0xffffffu) | p[1] << 24, (p[1] >> 8 & 0xffffu) | p[2] << 16,
+                                   (p[2] >> 16 & 0xffu) | p[3] << 8};
+        std::memcpy(out + size_t(x) * 3, words, sizeof words);
       }
+      const uint8_t* src = reinterpret_cast<const uint8_t*>(fb.color.data() + fb.index(x, y));
+      for (int i = 0; x + i < w; ++i) std::memcpy(out + size_t(x + i) * 3, src + i * 4, 3);
     }
     return;
   }
@@ -83,6 +92,10 @@ Image resolve_depth(const Framebuffer& fb, int k) {
 std::vector<float> resolve_window_depth(const Framebuffer& fb, int k) {
   const int w = fb.width / k, h = fb.height / k;
   std::vector<float> out(size_t(w) * h), rows;
+  if (k == 1) {
+    for (int y = 0; y < h; ++y) fb.read_depth_row(y, out.data() + size_t(y) * w);
+    return out;
+  }
   for (int y = 0; y < h; ++y)
     for_each_nearest_sample(fb, k, y, rows, [&](int x, int r, int c) { out[size_t(y) * w + x] = rows[size_t(r) * fb.width + c]; });
   return out;
