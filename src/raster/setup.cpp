@@ -1,5 +1,7 @@
 #include "raster/setup.hpp"
 
+#include "raster/small_coverage.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -119,26 +121,18 @@ RecordHeader* setup_triangle(WorkerBins& bins, const ScreenVertex& v0, const Scr
   }
 
   // Small triangles (centres within 8x8, the usual case in dense meshes): find the
-  // centres they cover here, exactly, step by step along each edge function; cover
+  // centres they cover here, exactly, a vector of centres at a time; cover
   // none and they are dropped, cover some and they need no edge functions later. With
   // coordinates relative to the box and below 10 pixels apart, everything fits int32.
   // (Small by the triangle's own box, not the part left inside the scissor.)
   if (last_centre(max_x) - first_centre(min_x) < kSmallSide && last_centre(max_y) - first_centre(min_y) < kSmallSide) {
     const int64_t px = int64_t(bx0) * kSubpixelOne + kSubpixelHalf, py = int64_t(by0) * kSubpixelOne + kSubpixelHalf;
-    int32_t row_start[3], step_x[3], step_y[3];
+    SmallEdges se;
     for (int i = 0; i < 3; ++i) {
-      row_start[i] = int32_t(int64_t(e.a[i]) * px + int64_t(e.b[i]) * py + e.c[i]);
-      step_x[i] = e.a[i] * kSubpixelOne, step_y[i] = e.b[i] * kSubpixelOne;
+      se.row_start[i] = int32_t(int64_t(e.a[i]) * px + int64_t(e.b[i]) * py + e.c[i]);
+      se.step_x[i] = e.a[i] * kSubpixelOne, se.step_y[i] = e.b[i] * kSubpixelOne;
     }
-    uint64_t mask = 0;
-    for (int y = 0; y <= by1 - by0; ++y) {
-      int32_t e0 = row_start[0], e1 = row_start[1], e2 = row_start[2];
-      for (int x = 0; x <= bx1 - bx0; ++x) {
-        if ((e0 | e1 | e2) >= 0) mask |= uint64_t(1) << (y * kSmallSide + x);
-        e0 += step_x[0], e1 += step_x[1], e2 += step_x[2];
-      }
-      for (int i = 0; i < 3; ++i) row_start[i] += step_y[i];
-    }
+    const uint64_t mask = small_coverage(se, bx1 - bx0 + 1, by1 - by0 + 1);
     if (!mask) return nullptr;
     uint64_t cols = 0;
     for (int y = 0; y < kSmallSide; ++y) cols |= mask >> (kSmallSide * y);
