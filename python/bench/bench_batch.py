@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
-"""Batch throughput on a Dask LocalCluster: 1,000 views on 1 worker process, then on 2,
-each worker rendering on one core; rounds alternate, medians reported, and the scaling
-ratio = (views/s on 2) / (2 x views/s on 1): 1.0 is perfect.
+"""Batch throughput: 1,000 views on 1 worker process, then on 2, each worker rendering on
+one core; rounds alternate, medians reported, and the scaling ratio = (views/s on 2) /
+(2 x views/s on 1): 1.0 is perfect. Two runners: `local` is `velocity batch --workers N`
+(the job in this process for 1, in N processes started by multiprocessing for more,
+their start-up included in the time); `dask` is a Dask LocalCluster of N worker
+processes (started and warmed up before the timing; its scheduler runs in this process).
 
-    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256]
+    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256] [--runner local|dask|both]
 
 The job: 10 models (the project's test models and Debian's assimp-testmodels), 100
 orbit views each, colour + depth + mask at size x size, one Dask task per 25 views.
@@ -29,6 +32,7 @@ import distributed
 
 import dask
 
+from velocity.batch import run_local
 from velocity.dask_runner import DASK_CONFIG, run_dask
 from velocity.jobs import Progress, load_job
 
@@ -63,18 +67,30 @@ def main():
     p.add_argument("--size", type=int, default=256)
     p.add_argument("--views", type=int, default=100, help="views per model")
     p.add_argument("--build", default=os.path.join(ROOT, "build"))
+    p.add_argument("--runner", choices=("local", "dask", "both"), default="both")
     args = p.parse_args()
     control = machine_scaling(args.build, args.rounds)
+    runners = ("local", "dask") if args.runner == "both" else (args.runner,)
+    for runner in runners:
+        one, two = measure(runner, args)
+        print(f"{runner}: median 1 worker {one:.1f} views/s, 2 workers {two:.1f} views/s, "
+              f"scaling {two / (2 * one):.3f} of 2x (cores: {os.cpu_count()}); the machine itself: {control:.3f} of 2x",
+              flush=True)
+
+
+def measure(runner, args):
+    """Median views/s of the job on 1 and on 2 worker processes, rounds alternating."""
     tmp = tempfile.mkdtemp(prefix="velocity-bench-batch-")
     spec = {"models": MODELS, "size": [args.size, args.size], "views": {"type": "orbit", "count": args.views},
             "outputs": ["color", "depth", "mask"], "chunk": 25}
     total = len(MODELS) * args.views
     clusters = {}
-    for n in (1, 2):
-        with dask.config.set(DASK_CONFIG):  # as run_dask starts its own LocalCluster
-            cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                               dashboard_address=None, silence_logs=50)
-        clusters[n] = (cluster, distributed.Client(cluster))
+    if runner == "dask":
+        for n in (1, 2):
+            with dask.config.set(DASK_CONFIG):  # as run_dask starts its own LocalCluster
+                cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                                   dashboard_address=None, silence_logs=50)
+            clusters[n] = (cluster, distributed.Client(cluster))
     rates = {1: [], 2: []}
     try:
         for r in range(args.rounds + 1):  # round 0 warms up (imports, renderers, page cache)
@@ -83,21 +99,22 @@ def main():
                 shutil.rmtree(out, ignore_errors=True)
                 job = load_job(spec, out)
                 t0 = time.perf_counter()
-                m = run_dask(job, client=clusters[n][1], progress=Progress(False))
+                if runner == "dask":
+                    m = run_dask(job, client=clusters[n][1], progress=Progress(False))
+                else:
+                    m = run_local(job, workers=n, threads=1, progress=Progress(False))
                 dt = time.perf_counter() - t0
                 assert m["views_done"] == total and not m["models_failed"], json.dumps(m["models_failed"])
                 if r:
                     rates[n].append(total / dt)
-                print(f"round {r}{' (warm-up)' if not r else ''}: {n} worker(s): {total} views in {dt:.2f} s "
+                print(f"{runner} round {r}{' (warm-up)' if not r else ''}: {n} worker(s): {total} views in {dt:.2f} s "
                       f"= {total / dt:.1f} views/s", flush=True)
     finally:
         for cluster, client in clusters.values():
             client.close()
             cluster.close()
         shutil.rmtree(tmp, ignore_errors=True)
-    one, two = statistics.median(rates[1]), statistics.median(rates[2])
-    print(f"median: 1 worker {one:.1f} views/s, 2 workers {two:.1f} views/s, "
-          f"scaling {two / (2 * one):.3f} of 2x (cores: {os.cpu_count()}); the machine itself: {control:.3f} of 2x")
+    return statistics.median(rates[1]), statistics.median(rates[2])
 
 
 if __name__ == "__main__":
