@@ -322,29 +322,70 @@ size_t Renderer::framebuffer_bytes() const {
   const Framebuffer& fb = impl_->framebuffer;
   return fb.color.size() * sizeof(uint32_t) + fb.depth.size() * sizeof(float) + fb.ids.size() * sizeof(uint32_t);
 }
+namespace {
+
+// Calls rows(y0, y1) for bands of an image's `height` rows, on `pool` when there is one
+// (the read-back is memory-bound: both cores' bandwidth). Bands of 64 rows, a tile row
+// of samples without super-sampling.
+template <class Rows>
+void for_row_bands(ThreadPool* pool, int height, Rows&& rows) {
+  constexpr int kBand = 64;
+  const int bands = (height + kBand - 1) / kBand;
+  auto band = [&](int b) { rows(b * kBand, std::min(height, (b + 1) * kBand)); };
+  if (pool) {
+    pool->run(bands, band);
+  } else {
+    for (int b = 0; b < bands; ++b) band(b);
+  }
+}
+
+}  // namespace
+
 void Renderer::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
   if (channels != 3 && channels != 4) throw Error("Renderer::read_color: channels must be 3 or 4, not " + std::to_string(channels));
-  resolve_color_into(impl_->framebuffer, impl_->ssaa, rgba, row_bytes, channels);
+  const Impl& r = *impl_;
+  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) {
+    resolve_color_rows(r.framebuffer, r.ssaa, rgba, row_bytes, channels, y0, y1);
+  });
 }
-std::vector<float> Renderer::window_depth() const { return resolve_window_depth(impl_->framebuffer, impl_->ssaa); }
+
+std::vector<float> Renderer::window_depth() const {
+  std::vector<float> d(size_t(impl_->width) * size_t(impl_->height));
+  read_window_depth(d.data());
+  return d;
+}
+
+void Renderer::read_window_depth(float* out) const {
+  const Impl& r = *impl_;
+  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) { resolve_window_depth_rows(r.framebuffer, r.ssaa, out, y0, y1); });
+}
+
 std::vector<uint32_t> Renderer::object_ids() const { return resolve_object_ids(impl_->framebuffer, impl_->ssaa); }
 
 std::vector<float> Renderer::view_depth() const {
+  std::vector<float> d(size_t(impl_->width) * size_t(impl_->height));
+  read_view_depth(d.data());
+  return d;
+}
+
+void Renderer::read_view_depth(float* out) const {
   // Window depth d = 0.5 z_ndc + 0.5 with z_ndc = (P22 z + P23) / (P32 z + P33) for the
   // eye-space z: solved for z, in double (the projection's own inverse, so it is exact
   // for perspective and orthographic cameras alike up to float depth).
-  const Mat4& p = impl_->projection;
-  std::vector<float> d = window_depth();
-  for (float& v : d) {
-    if (!(v < 1.0f)) {
-      v = 0;
-      continue;
+  const Impl& r = *impl_;
+  const Mat4& p = r.projection;
+  const double p22 = p.m[2][2], p23 = p.m[2][3], p32 = p.m[3][2], p33 = p.m[3][3];
+  const size_t w = size_t(r.width);
+  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) {
+    resolve_window_depth_rows(r.framebuffer, r.ssaa, out, y0, y1);
+    float* d = out + size_t(y0) * w;
+    const size_t n = size_t(y1 - y0) * w;
+    for (size_t i = 0; i < n; ++i) {  // no branch: the compiler vectorises it
+      const double ndc = 2.0 * double(d[i]) - 1.0;
+      const float z = float((ndc * p33 - p23) / (ndc * p32 - p22));
+      d[i] = d[i] < 1.0f ? z : 0.0f;
     }
-    double n = 2.0 * v - 1.0;
-    double z = (double(p.m[2][3]) - n * p.m[3][3]) / (n * p.m[3][2] - double(p.m[2][2]));
-    v = float(-z);
-  }
-  return d;
+  });
 }
 
 void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color) {

@@ -130,15 +130,21 @@ class Renderer {
   // The output image into `rgba` (width * height * 4 bytes, `row_bytes` apart, top row
   // first), without an intermediate Image. With channels = 3, RGB without alpha
   // (width * 3 bytes a row); channels must be 3 or 4.
+  // The read-back functions run on the renderer's threads (bands of rows); like
+  // render(), call them from one thread at a time.
   void read_color(uint8_t* rgba, size_t row_bytes, int channels = 4) const;
   // Per output pixel (top row first), the distance from the camera plane along the
   // view axis (-z in eye space; exact for orthographic cameras as well), 0 where
   // nothing was drawn. With super-sampling, the nearest of the pixel's samples.
   // Only for frames begun with a Camera (mesh draws).
   std::vector<float> view_depth() const;
+  // view_depth into caller memory: width * height floats, top row first.
+  void read_view_depth(float* out) const;
   // Per output pixel, window depth in [0, 1] (1 where nothing was drawn): what
   // glReadPixels(GL_DEPTH_COMPONENT) returns. With super-sampling, the nearest sample.
   std::vector<float> window_depth() const;
+  // window_depth into caller memory: width * height floats, top row first.
+  void read_window_depth(float* out) const;
   // Per output pixel, the object id of what was drawn there (0 for nothing), when
   // options.object_ids was set for the frame; otherwise empty. With super-sampling,
   // the id of the nearest sample, never a mix.

@@ -330,8 +330,8 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
   else if (flags & kFlat) req.shading = Shading::Flat;
   RenderOutput out;
   int w, h;
-  std::unique_ptr<uint8_t[]> color;
-  size_t color_bytes = 0;
+  std::unique_ptr<uint8_t[]> color, depth_buffer;
+  size_t color_bytes = 0, depth_bytes = 0;
   CollectWarnings warnings;
   {
     std::unique_lock lock(self.mutex, std::defer_lock);
@@ -347,23 +347,32 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
       color = self.pool->take(color_bytes);
       req.color_buffer = color.get();
     }
+    // Depth into a pooled buffer too (the same size as RGBA colour): no new pages to
+    // fault in and no zeroing for every frame.
+    depth_bytes = size_t(w) * size_t(h) * sizeof(float);
+    depth_buffer = self.pool->take(depth_bytes);
+    req.depth_buffer = reinterpret_cast<float*>(depth_buffer.get());
     out = render_frame(self.renderer, frame, req);
   }
   warnings.emit();
-  py::array depth = own(std::move(out.depth), {h, w});
-  if (!req.color) return depth;
-  py::list result;
-  // The array owns the buffer; when numpy frees it, it goes back to the renderer's pool.
+  // Each array owns its buffer; when numpy frees it, it goes back to the renderer's pool.
   struct Owner {
     std::shared_ptr<BufferPool> pool;
     std::unique_ptr<uint8_t[]> buffer;
     size_t bytes;
     ~Owner() { pool->give(std::move(buffer), bytes); }
   };
+  auto pooled = [&](std::unique_ptr<uint8_t[]> buffer, size_t bytes) {
+    auto* owner = new Owner{self.pool, std::move(buffer), bytes};
+    return py::capsule(owner, [](void* p) { delete static_cast<Owner*>(p); });
+  };
+  const float* depth_values = req.depth_buffer;
+  py::array depth = py::array_t<float>({py::ssize_t(h), py::ssize_t(w)}, depth_values, pooled(std::move(depth_buffer), depth_bytes));
+  if (!req.color) return depth;
+  py::list result;
   uint8_t* pixels = color.get();
-  auto* owner = new Owner{self.pool, std::move(color), color_bytes};
-  py::capsule free_color(owner, [](void* p) { delete static_cast<Owner*>(p); });
-  result.append(py::array_t<uint8_t>({py::ssize_t(h), py::ssize_t(w), py::ssize_t(req.alpha ? 4 : 3)}, pixels, free_color));
+  result.append(py::array_t<uint8_t>({py::ssize_t(h), py::ssize_t(w), py::ssize_t(req.alpha ? 4 : 3)}, pixels,
+                                     pooled(std::move(color), color_bytes)));
   result.append(depth);
   if (req.mask) result.append(own(std::move(out.mask), {h, w}));
   if (req.normals) result.append(own(std::move(out.normals), {h, w, 3}));

@@ -222,7 +222,12 @@ RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& 
     for (const Frame::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
     r.end_frame();
     if (req.color) r.read_color(req.color_buffer, size_t(w) * (req.alpha ? 4 : 3), req.alpha ? 4 : 3);
-    out.depth = r.view_depth();
+    float* depth = req.depth_buffer;
+    if (!depth) {
+      out.depth.resize(pixels);
+      depth = out.depth.data();
+    }
+    r.read_view_depth(depth);
     if (req.mask) out.mask = r.object_ids();
     if (req.normals) {
       // A second pass: the eye-space normals as unlit colours (8 bits a component),
@@ -239,7 +244,7 @@ RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& 
       r.read_color(rgba.data(), size_t(w) * 4);
       out.normals.assign(pixels * 3, 0.0f);
       for (size_t i = 0; i < pixels; ++i) {
-        if (out.depth[i] == 0) continue;
+        if (depth[i] == 0) continue;
         Vec3 n = normalize({rgba[i * 4] / 127.5f - 1, rgba[i * 4 + 1] / 127.5f - 1, rgba[i * 4 + 2] / 127.5f - 1});
         out.normals[i * 3] = n.x, out.normals[i * 3 + 1] = n.y, out.normals[i * 3 + 2] = n.z;
       }
@@ -267,7 +272,7 @@ std::unique_ptr<uint8_t[]> BufferPool::take(size_t bytes) {
 void BufferPool::give(std::unique_ptr<uint8_t[]> buffer, size_t bytes) {
   std::lock_guard lock(mutex_);
   if (bytes != bytes_) free_.clear(), bytes_ = bytes;  // the renderer was resized
-  if (free_.size() < 2) free_.push_back(std::move(buffer));
+  if (free_.size() < 4) free_.push_back(std::move(buffer));  // colour and depth, two frames
 }
 
 }  // namespace velocity::python

@@ -115,13 +115,15 @@ Frame build_frame(const SceneData& scene, int width, int height);
 struct RenderOutput {
   // The colour went into RenderRequest::color_buffer (width * height * 4 bytes): RGBA,
   // or packed RGB in its first 3/4 when !alpha.
-  std::vector<float> depth;     // view-axis distance, 0 = nothing
+  // View-axis distance, 0 = nothing: into RenderRequest::depth_buffer when given, else here.
+  std::vector<float> depth;
   std::vector<uint32_t> mask;   // node ids, 0 = nothing; empty if not asked
   std::vector<float> normals;   // width * height * 3, camera space; empty if not asked
 };
 struct RenderRequest {
   bool color = true, alpha = false, mask = false, normals = false;
   uint8_t* color_buffer = nullptr;  // width * height * 4 bytes, when color
+  float* depth_buffer = nullptr;    // width * height floats, or null: RenderOutput::depth
   std::optional<Shading> shading;
   bool cull_back_faces = true;
 };
@@ -137,7 +139,7 @@ class BufferPool {
  private:
   std::mutex mutex_;
   size_t bytes_ = 0;
-  std::vector<std::unique_ptr<uint8_t[]>> free_;  // each bytes_ long; at most 2 kept
+  std::vector<std::unique_ptr<uint8_t[]>> free_;  // each bytes_ long; at most 4 kept
 };
 
 }  // namespace velocity::python

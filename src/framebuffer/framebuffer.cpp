@@ -52,14 +52,15 @@ void Framebuffer::keep_ids(bool keep) {
 }
 
 namespace {
-// Copies row y of a tiled buffer: 4 pixels at a time from each block the row crosses.
+// Copies row y of a tiled buffer: 4 pixels at a time from each block the row crosses
+// (a fixed-size copy: one 16-byte move), then what is left of a last, partial block.
 template <class T>
 void read_row(const Framebuffer& fb, const T* data, int y, T* out) {
-  for (int x = 0; x < fb.width; x += 4) {
-    const T* src = data + fb.index(x, y);
-    const int n = std::min(4, fb.width - x);
-    std::memcpy(out + x, src, size_t(n) * sizeof(T));
-  }
+  const T* row = data + fb.index(0, y);  // the row's pixels in the first block of its tiles
+  auto block = [&](int x) { return row + size_t(x >> 6) * Framebuffer::kTilePixels + size_t((x >> 2) & 15) * 16; };
+  const int whole = fb.width & ~3;
+  for (int x = 0; x < whole; x += 4) std::memcpy(out + x, block(x), 4 * sizeof(T));
+  if (whole < fb.width) std::memcpy(out + whole, block(whole), size_t(fb.width - whole) * sizeof(T));
 }
 }  // namespace
 

@@ -1,7 +1,8 @@
 #include "framebuffer/resolve.hpp"
 
+#include "framebuffer/pack_rgb.hpp"
+
 #include <algorithm>
-#include <bit>
 #include <cstring>
 
 namespace velocity {
@@ -39,31 +40,25 @@ Image resolve_color(const Framebuffer& fb, int k) {
 }
 
 void resolve_color_into(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_bytes, int channels) {
-  const int w = fb.width / k, h = fb.height / k, n = k * k;
+  resolve_color_rows(fb, k, rgba, row_bytes, channels, 0, fb.height / k);
+}
+
+void resolve_color_rows(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_bytes, int channels, int y0, int y1) {
+  const int w = fb.width / k, n = k * k;
   if (k == 1 && channels == 4) {
-    for (int y = 0; y < h; ++y) fb.read_color_row(y, reinterpret_cast<uint32_t*>(rgba + size_t(y) * row_bytes));
+    for (int y = y0; y < y1; ++y) fb.read_color_row(y, reinterpret_cast<uint32_t*>(rgba + size_t(y) * row_bytes));
     return;
   }
-  if (k == 1) {  // RGB: straight from the tiles, four pixels (one block row) at a time
-    static_assert(std::endian::native == std::endian::little, "colours are RGBA8 words with red in byte 0");
-    for (int y = 0; y < h; ++y) {
-      uint8_t* out = rgba + size_t(y) * row_bytes;
-      int x = 0;
-      for (; x + 4 <= w; x += 4) {
-        // Four RGBA8 pixels (byte 0 red) into twelve RGB bytes: three little-endian words.
-        uint32_t p[4];
-        std::memcpy(p, fb.color.data() + fb.index(x, y), sizeof p);
-        const uint32_t words[3] = {(p[0] & 0xffffffu) | p[1] << 24, (p[1] >> 8 & 0xffffu) | p[2] << 16,
-                                   (p[2] >> 16 & 0xffu) | p[3] << 8};
-        std::memcpy(out + size_t(x) * 3, words, sizeof words);
-      }
-      const uint8_t* src = reinterpret_cast<const uint8_t*>(fb.color.data() + fb.index(x, y));
-      for (int i = 0; x + i < w; ++i) std::memcpy(out + size_t(x + i) * 3, src + i * 4, 3);
+  if (k == 1) {  // RGB: a row out of the tiles, then packed a vector at a time
+    std::vector<uint32_t> row(size_t(fb.width));
+    for (int y = y0; y < y1; ++y) {
+      fb.read_color_row(y, row.data());
+      pack_rgb(reinterpret_cast<const uint8_t*>(row.data()), rgba + size_t(y) * row_bytes, size_t(w));
     }
     return;
   }
   std::vector<uint32_t> rows;
-  for (int y = 0; y < h; ++y) {
+  for (int y = y0; y < y1; ++y) {
     read_sample_rows(fb, k, y, rows, &Framebuffer::read_color_row);
     for (int x = 0; x < w; ++x) {
       uint32_t sum[4] = {0, 0, 0, 0};
@@ -90,15 +85,20 @@ Image resolve_depth(const Framebuffer& fb, int k) {
 }
 
 std::vector<float> resolve_window_depth(const Framebuffer& fb, int k) {
-  const int w = fb.width / k, h = fb.height / k;
-  std::vector<float> out(size_t(w) * h), rows;
-  if (k == 1) {
-    for (int y = 0; y < h; ++y) fb.read_depth_row(y, out.data() + size_t(y) * w);
-    return out;
-  }
-  for (int y = 0; y < h; ++y)
-    for_each_nearest_sample(fb, k, y, rows, [&](int x, int r, int c) { out[size_t(y) * w + x] = rows[size_t(r) * fb.width + c]; });
+  std::vector<float> out(size_t(fb.width / k) * size_t(fb.height / k));
+  resolve_window_depth_rows(fb, k, out.data(), 0, fb.height / k);
   return out;
+}
+
+void resolve_window_depth_rows(const Framebuffer& fb, int k, float* out, int y0, int y1) {
+  const int w = fb.width / k;
+  if (k == 1) {
+    for (int y = y0; y < y1; ++y) fb.read_depth_row(y, out + size_t(y) * w);
+    return;
+  }
+  std::vector<float> rows;
+  for (int y = y0; y < y1; ++y)
+    for_each_nearest_sample(fb, k, y, rows, [&](int x, int r, int c) { out[size_t(y) * w + x] = rows[size_t(r) * fb.width + c]; });
 }
 
 std::vector<uint32_t> resolve_object_ids(const Framebuffer& fb, int k) {

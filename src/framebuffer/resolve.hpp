@@ -20,8 +20,13 @@ Image resolve_depth(const Framebuffer& samples, int k);
 // resolve_color into caller memory: width/k x height/k rows of RGBA8 (channels 4) or
 // RGB8 (channels 3) pixels, `row_bytes` apart.
 void resolve_color_into(const Framebuffer& samples, int k, uint8_t* rgba, size_t row_bytes, int channels = 4);
+// The same for output rows [y0, y1) only (`rgba` is still the image's first row): bands
+// of rows are independent, so threads can share the work.
+void resolve_color_rows(const Framebuffer& samples, int k, uint8_t* rgba, size_t row_bytes, int channels, int y0, int y1);
 // Per output pixel, the window depth of its nearest sample (1 where nothing was drawn).
 std::vector<float> resolve_window_depth(const Framebuffer& samples, int k);
+// The same into `out` (width/k floats a row), output rows [y0, y1) only.
+void resolve_window_depth_rows(const Framebuffer& samples, int k, float* out, int y0, int y1);
 // Per output pixel, the object id of its nearest sample (the first of equal depths, in
 // row order), never a mix of ids. Empty when the framebuffer keeps no ids.
 std::vector<uint32_t> resolve_object_ids(const Framebuffer& samples, int k);
