@@ -6,13 +6,16 @@ one core; rounds alternate, medians reported, and the scaling ratio = (views/s o
 their start-up included in the time); `dask` is a Dask LocalCluster of N worker
 processes (started and warmed up before the timing; its scheduler runs in this process).
 
-    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256] [--runner local|dask|both]
+    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256] [--runner local|dask|both] [--tmp DIR]
 
 The job: 10 models (the project's test models and Debian's assimp-testmodels), 100
 orbit views each, colour + depth + mask at size x size, one Dask task per 25 views.
 Times the job only (the cluster is started and warmed up before).
 
-As a control, the machine's own scaling: the same single-threaded C++ render loop
+Two controls: the disk's own scaling (files written and renamed by one process, then
+by two: on this machine's virtual disk, creating a file costs about 0.2 ms and two
+processes do not create them twice as fast; `--tmp /dev/shm` takes the disk out), and
+the machine's own scaling: the same single-threaded C++ render loop
 (velocity_python_bench --threads 1), one copy alone, then two copies at once. On a
 machine whose two cores are two hyperthreads of one physical core, or that others
 share, two processes never reach 2x, whatever the batch runner does.
@@ -61,15 +64,55 @@ def machine_scaling(build, rounds):
     return a / b
 
 
+def _write_files(folder, n, go):
+    go.wait()  # timed from here: the process has started
+    for i in range(n):
+        path = os.path.join(folder, f"{i}.png")
+        with open(path + ".tmp", "wb") as f:
+            f.write(bytes(20000))
+        os.replace(path + ".tmp", path)
+
+
+def disk_scaling(base, rounds, n=1500):
+    """The batch's writes without the rendering: n files of 20 KB, each written to a
+    temporary name and renamed (as the runner writes), by one process, then by two at
+    once, each in its own folder under `base`; timed once the processes have started."""
+    import multiprocessing
+    ctx = multiprocessing.get_context("spawn")
+    one, two = [], []
+    for _ in range(rounds):
+        for k, rates in ((1, one), (2, two)):
+            folders = [tempfile.mkdtemp(prefix="velocity-bench-disk-", dir=base) for _ in range(k)]
+            go = ctx.Event()
+            procs = [ctx.Process(target=_write_files, args=(f, n, go)) for f in folders]
+            for p in procs:
+                p.start()
+            time.sleep(1.0)  # let them start (spawn imports the interpreter anew)
+            t0 = time.perf_counter()
+            go.set()
+            for p in procs:
+                p.join()
+            rates.append(k * n / (time.perf_counter() - t0))
+            for f in folders:
+                shutil.rmtree(f, ignore_errors=True)
+    a, b = statistics.median(one), statistics.median(two)
+    print(f"control: writing files in {base or tempfile.gettempdir()}: one process {a:.0f} files/s, two at once "
+          f"{b:.0f} files/s: the disk scales {b / (2 * a):.3f} of 2x (each view writes 3 files)", flush=True)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--rounds", type=int, default=3)
     p.add_argument("--size", type=int, default=256)
     p.add_argument("--views", type=int, default=100, help="views per model")
     p.add_argument("--build", default=os.path.join(ROOT, "build"))
+    p.add_argument("--tmp", default=None,
+                   help="where the job writes (default: the system's temporary folder; /dev/shm measures the "
+                        "runner rather than the disk)")
     p.add_argument("--runner", choices=("local", "dask", "both"), default="both")
     args = p.parse_args()
     control = machine_scaling(args.build, args.rounds)
+    disk_scaling(args.tmp, args.rounds)
     runners = ("local", "dask") if args.runner == "both" else (args.runner,)
     for runner in runners:
         one, two = measure(runner, args)
@@ -80,7 +123,7 @@ def main():
 
 def measure(runner, args):
     """Median views/s of the job on 1 and on 2 worker processes, rounds alternating."""
-    tmp = tempfile.mkdtemp(prefix="velocity-bench-batch-")
+    tmp = tempfile.mkdtemp(prefix="velocity-bench-batch-", dir=args.tmp)
     spec = {"models": MODELS, "size": [args.size, args.size], "views": {"type": "orbit", "count": args.views},
             "outputs": ["color", "depth", "mask"], "chunk": 25}
     total = len(MODELS) * args.views
