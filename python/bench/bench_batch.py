@@ -109,6 +109,7 @@ def main():
     p.add_argument("--tmp", default=None,
                    help="where the job writes (default: the system's temporary folder; /dev/shm measures the "
                         "runner rather than the disk)")
+    p.add_argument("--chunk", type=int, default=25, help="views per task")
     p.add_argument("--runner", choices=("local", "dask", "both"), default="both")
     args = p.parse_args()
     control = machine_scaling(args.build, args.rounds)
@@ -125,7 +126,7 @@ def measure(runner, args):
     """Median views/s of the job on 1 and on 2 worker processes, rounds alternating."""
     tmp = tempfile.mkdtemp(prefix="velocity-bench-batch-", dir=args.tmp)
     spec = {"models": MODELS, "size": [args.size, args.size], "views": {"type": "orbit", "count": args.views},
-            "outputs": ["color", "depth", "mask"], "chunk": 25}
+            "outputs": ["color", "depth", "mask"], "chunk": args.chunk}
     total = len(MODELS) * args.views
     clusters = {}
     if runner == "dask":
