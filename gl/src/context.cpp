@@ -282,8 +282,10 @@ PixelState Context::pixel_state(bool offset) {
         default: sm.min = T::Linear, sm.mip = Mp::Linear; break;
       }
       auto wrap = [](GLenum w) {
-        return w == GL_CLAMP ? Wrap::ClampToBorder
-               : w == GL_CLAMP_TO_EDGE ? Wrap::Clamp
+        // GL_CLAMP clamps s to [0, 1] and filters with the border: for GL_NEAREST that
+        // is the edge texel; with GL_LINEAR it differs from the edge only in the last
+        // half texel, where GL blends in the border colour (not done here: docs/gl.md).
+        return w == GL_CLAMP || w == GL_CLAMP_TO_EDGE ? Wrap::Clamp
                : w == GL_MIRRORED_REPEAT ? Wrap::MirroredRepeat
                                          : Wrap::Repeat;
       };

@@ -157,10 +157,10 @@ void Context::assemble(bool final) {
     case GL_QUAD_STRIP:
       if (!final) break;
       for (uint32_t i = 0; i + 3 < n; i += 2) {
-        // The quad (i, i+1, i+3, i+2), starting at i+2 so that the split below runs
-        // along i - i+3 as Mesa's does; i+3 is the provoking vertex.
-        const uint32_t q[4] = {i + 2, i, i + 1, i + 3};
-        polygon(q, 4, 3);
+        // The quad (i, i+1, i+3, i+2): the fan below splits it along i - i+3, as
+        // Mesa does; i+3 provokes.
+        const uint32_t q[4] = {i, i + 1, i + 3, i + 2};
+        polygon(q, 4, 2);
       }
       break;
     case GL_POLYGON:
@@ -207,11 +207,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
     auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
       emit_vertex(prim_[a], color(a)), emit_vertex(prim_[b], color(b)), emit_vertex(prim_[c], color(c));
     };
-    if (n == 4) {
-      tri(idx[0], idx[1], idx[3]), tri(idx[1], idx[2], idx[3]);
-    } else {
-      for (int k = 1; k + 1 < n; ++k) tri(idx[0], idx[k], idx[k + 1]);
-    }
+    for (int k = 1; k + 1 < n; ++k) tri(idx[0], idx[k], idx[k + 1]);  // a fan from the first vertex
   } else if (mode == GL_LINE) {
     target(PrimitiveKind::Lines, offset_line_);
     for (int k = 0; k < n; ++k) {
