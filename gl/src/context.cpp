@@ -79,13 +79,13 @@ BlendFactor blend_factor(GLenum f) {
   }
 }
 
-bool is_blend_factor(GLenum f, bool source) {
+bool is_blend_factor(GLenum f, bool /*source*/) {
   switch (f) {
     case GL_ZERO: case GL_ONE: case GL_SRC_ALPHA: case GL_ONE_MINUS_SRC_ALPHA: case GL_DST_ALPHA:
     case GL_ONE_MINUS_DST_ALPHA: case GL_SRC_COLOR: case GL_ONE_MINUS_SRC_COLOR: case GL_DST_COLOR:
     case GL_ONE_MINUS_DST_COLOR:
       return true;
-    case GL_SRC_ALPHA_SATURATE: return source;
+    case GL_SRC_ALPHA_SATURATE: return true;  // also as a destination factor (Mesa, GL 3.3)
     default: return false;
   }
 }

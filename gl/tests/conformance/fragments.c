@@ -83,8 +83,8 @@ int main(int argc, char** argv) {
     for (k = 0; k < 8; ++k) {
       glColor3f(k % 2 ? 1.0f : 0.1f, 0.3f + 0.08f * k, i == 2 ? 1.0f : 0.2f);
       glLoadIdentity();
-      glTranslatef(-2.5f + 2.5f * i, -1, -2.0f - 3.0f * k);
-      quad(-1, 0, 1, 2, 0);
+      glTranslatef((-3.0f + 3.0f * i) * (1 + 0.4f * k), -2.5f + 0.9f * k, -5.0f - 3.0f * k);
+      quad(-0.8f, 0, 0.8f, 1.2f, 0);
     }
   }
   glDisable(GL_FOG);
