@@ -45,8 +45,13 @@ bool invert(const M4& a, M4& out) {
         for (int k = 0; k < 8; ++k) w[r][k] -= f * w[c][k];
     }
   }
+  // Round-off residues of zero entries (1e-40 and the like) would become float
+  // denormals, which make every multiply with them dozens of times slower.
   for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) out.m[c * 4 + r] = float(w[r][c + 4]);
+    for (int c = 0; c < 4; ++c) {
+      const double v = w[r][c + 4];
+      out.m[c * 4 + r] = std::fabs(v) < 1e-30 ? 0.0f : float(v);
+    }
   return true;
 }
 
@@ -188,6 +193,8 @@ void Context::submit_pending() {
   b.texcoord = kept.texcoord.empty() ? nullptr : kept.texcoord.data();
   b.fog = kept.fog.empty() ? nullptr : kept.fog.data();
   b.vertex_count = uint32_t(kept.position.size());
+  b.indices = kept.index.data();
+  b.index_count = uint32_t(kept.index.size());
   b.viewport.x = vp_x_;
   b.viewport.y = height_ - (vp_y_ + vp_h_);
   b.viewport.width = std::max(vp_w_, 1);
@@ -197,7 +204,7 @@ void Context::submit_pending() {
   b.line_width = std::max(1.0f, line_width_);
   if (vp_w_ == 0 || vp_h_ == 0) return;  // nothing is drawn in an empty viewport
   renderer_->draw(b, kept.state);
-  frame_vertices_ += kept.position.size();
+  frame_vertices_ += kept.index.size();
   if (frame_vertices_ > kMaxVerticesPerFrame) run_frame();  // bounded memory in a frame never flushed
 }
 
@@ -326,13 +333,24 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
     pending_.offset = offset;
     pending_.state = pixel_state(offset);
     have_pending_ = true;
+    if (++pending_gen_ == 0) {  // wrapped: forget every old mark
+      for (Emitted& e : emitted_) e = {};
+      pending_gen_ = 1;
+    }
     pixel_dirty_ = false;
   }
   return pending_;
 }
 
-void Context::emit_vertex(const Vertex& v, const Vec4& color) {
+void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
   Pending& p = pending_;
+  if (shared) {
+    const Emitted e = emitted_[i];
+    if (e.gen == pending_gen_) return p.index.push_back(e.index);
+    emitted_[i] = {pending_gen_, uint32_t(p.position.size())};
+  }
+  const Vertex& v = prim_[i];
+  p.index.push_back(uint32_t(p.position.size()));
   p.position.push_back(v.clip);
   p.color.push_back(color);
   if (p.state.texture.texture) p.texcoord.push_back(v.tex);

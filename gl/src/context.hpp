@@ -234,7 +234,8 @@ class Context {
     PixelState state;
     std::vector<Vec4> position, color, texcoord;
     std::vector<float> fog;
-    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(); }
+    std::vector<uint32_t> index;
+    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), index.clear(); }
   };
 
   void ensure_frame();
@@ -242,13 +243,26 @@ class Context {
   void run_frame();  // end the frame, copy colour (and depth) out
   void copy_depth();
   PixelState pixel_state(bool offset);
-  void emit_vertex(const Vertex& v, const Vec4& color);
+  // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
+  // so a vertex already in the batch is referenced again instead of copied.
+  void emit_vertex(uint32_t i, const Vec4& color, bool shared);
+  void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
   Pending& target(PrimitiveKind kind, bool offset);
   void assemble(bool final);
   void polygon(const uint32_t* idx, int n, int provoking);
   void line_segment(uint32_t a, uint32_t b, uint32_t provoking);
   void point_vertex(uint32_t a);
   Vec4 lit(const Vec4& eye, Vec3 normal, bool back) const;
+  void prepare_lighting();
+  struct LightUse {
+    const Light* light = nullptr;
+    bool positional = false, spot = false;
+    float cos_cutoff = -1;
+    Vec3 direction, half, spot_direction;
+  };
+  LightUse light_use_[kMaxLights];
+  int lights_used_ = 0;
+  bool need_eye_ = false;
   void update_derived();
   TextureObject* bound_texture();
   const Texture* texture_for_draw(TextureObject& t);
@@ -271,8 +285,18 @@ class Context {
   // primitives
   bool in_begin_ = false;
   GLenum mode_ = GL_POINTS;
-  std::vector<Vertex> prim_;
-  size_t assembled_ = 0;  // prim_ vertices of a loop/strip/fan/polygon kept for assembly
+  std::vector<Vertex> prim_;       // the processed vertices of this glBegin/glEnd
+  std::vector<uint32_t> order_;    // the primitive's vertex sequence, as indices into prim_
+  // Per prim_ vertex: where it sits in the pending batch (valid while `gen` is
+  // pending_gen_), so that shared vertices go to the renderer once.
+  struct Emitted {
+    uint32_t gen = 0, index = 0;
+  };
+  std::vector<Emitted> emitted_;
+  uint32_t pending_gen_ = 1;
+  // glDrawElements: array index -> prim_ index + 1, so that each element is processed once.
+  std::vector<uint32_t> element_cache_;
+  bool caching_ = false;
   Vec4 color_{1, 1, 1, 1}, texcoord_{0, 0, 0, 1};
   Vec3 normal_{0, 0, 1};
 
