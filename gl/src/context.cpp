@@ -172,6 +172,15 @@ void Context::ensure_frame() {
   start.clear_color = start.clear_depth = first_frame_;
   start.color = {0, 0, 0, 0};
   start.depth = 1;
+  if (start_clear_) {
+    // A whole-framebuffer glClear before anything else in the frame: the frame starts
+    // cleared, which lets the renderer skip tiles that stay empty and clean.
+    start.clear_color = start_clear_color_ || first_frame_;
+    start.clear_depth = start_clear_depth_ || first_frame_;
+    if (start_clear_color_) start.color = start_color_;
+    if (start_clear_depth_) start.depth = start_depth_;
+    start_clear_ = start_clear_color_ = start_clear_depth_ = false;
+  }
   renderer_->begin_frame(Camera{}, {}, start);
   first_frame_ = false;
   in_frame_ = true;
@@ -196,7 +205,7 @@ void Context::submit_pending() {
   b.indices = kept.index.data();
   b.index_count = uint32_t(kept.index.size());
   b.viewport.x = vp_x_;
-  b.viewport.y = height_ - (vp_y_ + vp_h_);
+  b.viewport.y = vp_y_;  // the framebuffer is kept bottom row first (see update_derived)
   b.viewport.width = std::max(vp_w_, 1);
   b.viewport.height = std::max(vp_h_, 1);
   b.viewport.depth_near = depth_near_, b.viewport.depth_far = depth_far_;
@@ -210,21 +219,29 @@ void Context::submit_pending() {
 
 void Context::run_frame() {
   submit_pending();
-  if (!renderer_ || !in_frame_) return;  // nothing drawn since the last frame
+  if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
+  ensure_frame();
   renderer_->end_frame();
   in_frame_ = false;
   for (size_t i = 0; i < submitted_used_; ++i) submitted_[i].clear();
   submitted_used_ = 0;
   frame_textures_.clear();
   frame_vertices_ = 0;
+  // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
+  // buffer of the framebuffer's width takes the colour directly.
+  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_);
+  if (direct_) {
+    renderer_->read_color(static_cast<uint8_t*>(buffer_), size_t(width_) * 4, 4);
+    if (depth_requested_) copy_depth();
+    return;
+  }
   renderer_->read_color(colour_.data(), size_t(width_) * 4, 4);
-  // To the caller's buffer: OSMesa's row 0 is the bottom one unless Y_UP is off.
   const int stride_px = row_length > 0 ? row_length : width_;
   const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   uint8_t* out = static_cast<uint8_t*>(buffer_);
   for (int y = 0; y < height_; ++y) {
     const uint8_t* src = colour_.data() + size_t(y) * width_ * 4;
-    uint8_t* dst = out + size_t(y_up ? height_ - 1 - y : y) * stride_px * bpp;
+    uint8_t* dst = out + size_t(y_up ? y : height_ - 1 - y) * stride_px * bpp;
     switch (format_) {
       case GL_RGBA: std::memcpy(dst, src, size_t(width_) * 4); break;
       case GL_RGB:
@@ -252,7 +269,7 @@ void Context::copy_depth() {
     depth_out_.resize(d.size());
     for (int y = 0; y < height_; ++y)
       for (int x = 0; x < width_; ++x)
-        depth_out_[size_t(y_up ? height_ - 1 - y : y) * width_ + x] =
+        depth_out_[size_t(y_up ? y : height_ - 1 - y) * width_ + x] =
             uint32_t(std::lround(double(std::clamp(d[size_t(y) * width_ + x], 0.0f, 1.0f)) * 4294967295.0));
   }
 }
@@ -307,7 +324,7 @@ PixelState Context::pixel_state(bool offset) {
   s.scissor = scissor_test_;
   if (scissor_test_) {
     s.scissor_x0 = sc_x_, s.scissor_x1 = sc_x_ + sc_w_;
-    s.scissor_y0 = height_ - (sc_y_ + sc_h_), s.scissor_y1 = height_ - sc_y_;
+    s.scissor_y0 = sc_y_, s.scissor_y1 = sc_y_ + sc_h_;
   }
   s.alpha_test = alpha_test_;
   s.alpha_func = compare_func(alpha_func_);
@@ -414,7 +431,10 @@ int Context::stack_depth(GLenum which) const {
 void Context::update_derived() {
   if (!derived_dirty_) return;
   derived_dirty_ = false;
+  // Clip-space y is negated: the renderer's row 0 (its top) is then GL's bottom row, so
+  // the framebuffer is in GL's (and OSMesa's) row order and is read out without a flip.
   mvp_ = projection_.back() * modelview_.back();
+  for (int c = 0; c < 4; ++c) mvp_.m[c * 4 + 1] = -mvp_.m[c * 4 + 1];
   M4 inv;
   if (!invert(modelview_.back(), inv)) inv = M4{};
   // The transpose of the inverse.
@@ -508,6 +528,17 @@ void Context::clear(GLbitfield mask) {
     return error(GL_INVALID_VALUE);
   if (!renderer_) return;
   submit_pending();
+  const bool color = mask & GL_COLOR_BUFFER_BIT, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;
+  const bool all_channels = mask_[0] && mask_[1] && mask_[2] && mask_[3];
+  if (!in_frame_ && !scissor_test_ && (!color || all_channels) && (!depth || depth_write_) && (color || depth)) {
+    start_clear_ = true;  // the frame begins with it (ensure_frame)
+    if (color) {
+      start_clear_color_ = true;
+      start_color_ = {clamp01(clear_color_.x), clamp01(clear_color_.y), clamp01(clear_color_.z), clamp01(clear_color_.w)};
+    }
+    if (depth) start_clear_depth_ = true, start_depth_ = clear_depth_;
+    return;
+  }
   ensure_frame();
   ClearRequest q;
   q.color = mask & GL_COLOR_BUFFER_BIT;
@@ -517,7 +548,7 @@ void Context::clear(GLbitfield mask) {
   q.color_mask = uint8_t((mask_[0] ? 1 : 0) | (mask_[1] ? 2 : 0) | (mask_[2] ? 4 : 0) | (mask_[3] ? 8 : 0));
   q.depth_write = depth_write_;
   q.scissor = scissor_test_;
-  if (scissor_test_) q.x0 = sc_x_, q.x1 = sc_x_ + sc_w_, q.y0 = height_ - (sc_y_ + sc_h_), q.y1 = height_ - sc_y_;
+  if (scissor_test_) q.x0 = sc_x_, q.x1 = sc_x_ + sc_w_, q.y0 = sc_y_, q.y1 = sc_y_ + sc_h_;
   if (q.color || q.depth) renderer_->clear(q);
 }
 

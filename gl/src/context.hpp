@@ -276,7 +276,13 @@ class Context {
   int width_ = 0, height_ = 0;
   std::unique_ptr<Renderer> renderer_;
   bool in_frame_ = false, first_frame_ = true;
-  std::vector<uint8_t> colour_;  // the last frame's colour, RGBA, top row first
+  // A glClear of the whole framebuffer before the frame began, to begin it with.
+  bool start_clear_ = false, start_clear_color_ = false, start_clear_depth_ = false;
+  Vec4 start_color_{0, 0, 0, 0};
+  float start_depth_ = 1;
+  std::vector<uint8_t> colour_;  // the last frame's colour, RGBA, bottom row first
+  bool direct_ = false;          // ... or in the caller's buffer (RGBA, Y_UP, its own width)
+  const uint8_t* colour_rows() const { return direct_ ? static_cast<const uint8_t*>(buffer_) : colour_.data(); }
   std::vector<uint32_t> depth_out_;  // OSMesaGetDepthBuffer's copy
   bool depth_requested_ = false;
 

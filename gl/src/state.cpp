@@ -196,7 +196,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   for (GLsizei j = 0; j < h; ++j) {
     const int64_t wy = int64_t(y) + j;
     if (wy < 0 || wy >= height_) continue;
-    const size_t row = size_t(height_ - 1 - wy);
+    const size_t row = size_t(wy);  // the framebuffer is bottom row first
     for (GLsizei i = 0; i < w; ++i) {
       const int64_t wx = int64_t(x) + i;
       if (wx < 0 || wx >= width_) continue;
@@ -205,7 +205,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
       if (depth) {
         c[0] = zbuf[at];
       } else {
-        const uint8_t* p = colour_.data() + at * 4;
+        const uint8_t* p = colour_rows() + at * 4;
         const float r = p[0] / 255.0f, g = p[1] / 255.0f, b = p[2] / 255.0f;
         const float a = format_ == GL_RGB || format_ == 0x4 ? 1.0f : p[3] / 255.0f;
         switch (format) {

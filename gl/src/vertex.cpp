@@ -228,7 +228,8 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
     area = double(a.x) * (double(b.y) * c.w - double(c.y) * b.w) - double(b.x) * (double(a.y) * c.w - double(c.y) * a.w) +
            double(c.x) * (double(a.y) * b.w - double(b.y) * a.w);
   }
-  const bool front = (area >= 0) == (front_face_ == GL_CCW);
+  // (Clip-space y is negated for the renderer: GL's counter-clockwise is clockwise here.)
+  const bool front = (area <= 0) == (front_face_ == GL_CCW);
   if (cull_ && (cull_mode_ == GL_FRONT_AND_BACK || (cull_mode_ == GL_FRONT) == front)) return;
   const bool back_colors = lighting_ && two_side_ && !front;
   const bool flat = shade_model_ == GL_FLAT;
