@@ -15,13 +15,14 @@
 #   libhwy-dev                       Google Highway: the SIMD kernels, one source for every instruction set
 #   libbenchmark-dev                 Google Benchmark: the stages' micro-benchmarks (tests/bench/micro.cpp)
 #   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
+#   libglu1-mesa-dev                 GLU for pGL's conformance programs built against Mesa (gl/tests)
 #   pkg-config                       finds OSMesa
 #   python3-dev, pybind11-dev        the Python module (python/): headers and the bindings
 #   python3-numpy                    its arrays (colour, depth, masks, meshes)
 #   python3-pytest                   the Python tests, run by ctest
 #   python3-distributed              the batch renderer on a Dask cluster (and its tests)
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev
+packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed "$@")
 missing=()
 for p in "${packages[@]}"; do

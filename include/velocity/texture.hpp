@@ -37,6 +37,11 @@ class Texture {
   // average of the one above (odd sizes round down, as OpenGL's). Throws
   // velocity::Error for an empty image.
   explicit Texture(const Image& image);
+  // A texture from levels the caller made (OpenGL's glTexImage2D per level): level 0
+  // first, each next level max(1, size / 2) of the one above, as many as given (a
+  // chain may stop before 1x1). Throws velocity::Error for no level, an empty level,
+  // a size that does not halve, or a texel count that does not match the size.
+  explicit Texture(std::vector<Level> levels);
 
   int width() const { return levels_[0].width; }
   int height() const { return levels_[0].height; }

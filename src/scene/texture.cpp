@@ -45,6 +45,18 @@ Texture::Texture(const Image& image) {
   }
 }
 
+Texture::Texture(std::vector<Level> levels) : levels_(std::move(levels)) {
+  if (levels_.empty()) throw Error("texture: no levels");
+  for (size_t i = 0; i < levels_.size(); ++i) {
+    const Level& l = levels_[i];
+    if (l.width <= 0 || l.height <= 0 || l.width > 65536 || l.height > 65536 ||
+        l.texels.size() != size_t(l.width) * size_t(l.height))
+      throw Error("texture: level " + std::to_string(i) + " is empty or its texels do not match its size");
+    if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) || l.height != std::max(1, levels_[i - 1].height / 2)))
+      throw Error("texture: level " + std::to_string(i) + " is not half the size of the level above");
+  }
+}
+
 size_t Texture::memory_bytes() const {
   size_t n = 0;
   for (const Level& l : levels_) n += l.texels.size() * 4;

@@ -1,0 +1,35 @@
+/* Velocity's GLU subset (pGL): the GLU 1.3 calls libvelocity-gl implements. */
+#ifndef __glu_h__
+#define __glu_h__
+
+#include <GL/gl.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GLU_FALSE 0
+#define GLU_TRUE 1
+#define GLU_INVALID_ENUM 100900
+#define GLU_INVALID_VALUE 100901
+#define GLU_OUT_OF_MEMORY 100902
+
+GLAPI void GLAPIENTRY gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
+GLAPI void GLAPIENTRY gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
+GLAPI void GLAPIENTRY gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY,
+                                GLdouble centerZ, GLdouble upX, GLdouble upY, GLdouble upZ);
+GLAPI GLint GLAPIENTRY gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble *model,
+                                  const GLdouble *proj, const GLint *view, GLdouble *winX, GLdouble *winY,
+                                  GLdouble *winZ);
+GLAPI GLint GLAPIENTRY gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble *model,
+                                    const GLdouble *proj, const GLint *view, GLdouble *objX, GLdouble *objY,
+                                    GLdouble *objZ);
+GLAPI GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
+                                         GLenum format, GLenum type, const void *data);
+GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* __glu_h__ */

@@ -1,0 +1,184 @@
+// The GLU subset: camera matrices, projection helpers and gluBuild2DMipmaps, on top of
+// the GL entry points (as GLU is on any OpenGL).
+#include <GL/glu.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "context.hpp"
+#include "pixels.hpp"
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+void multiply(const double* a, const double* b, double* r) {  // r = a * b, column-major
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row) {
+      double s = 0;
+      for (int k = 0; k < 4; ++k) s += a[k * 4 + row] * b[c * 4 + k];
+      r[c * 4 + row] = s;
+    }
+}
+void transform(const double* m, const double* in, double* out) {
+  for (int row = 0; row < 4; ++row)
+    out[row] = m[row] * in[0] + m[4 + row] * in[1] + m[8 + row] * in[2] + m[12 + row] * in[3];
+}
+bool invert(const double* m, double* out) {
+  velocity::gl::M4 a, inv;
+  for (int i = 0; i < 16; ++i) a.m[i] = float(m[i]);
+  // Double precision where it matters: solve with the float inverse, then refine once.
+  if (!velocity::gl::invert(a, inv)) return false;
+  double x[16], ax[16], r[16];
+  for (int i = 0; i < 16; ++i) x[i] = inv.m[i];
+  multiply(m, x, ax);
+  for (int i = 0; i < 16; ++i) r[i] = (i % 5 == 0 ? 2.0 : 0.0) - ax[i];  // 2I - A X
+  multiply(x, r, out);
+  return true;
+}
+
+// GLU's rounding of a size to a power of two (3 -> 4, 5 -> 4, 6 -> 8).
+int nearest_power(int v) {
+  int i = 1;
+  for (;;) {
+    if (v == 1) return i;
+    if (v == 3) return i * 4;
+    v >>= 1;
+    i *= 2;
+  }
+}
+
+// Box-filter resampling of RGBA8 texels (each output texel averages its footprint).
+std::vector<uint32_t> scale(const std::vector<uint32_t>& in, int w, int h, int nw, int nh) {
+  std::vector<uint32_t> out(size_t(nw) * nh);
+  const double sx = double(w) / nw, sy = double(h) / nh;
+  for (int y = 0; y < nh; ++y)
+    for (int x = 0; x < nw; ++x) {
+      const double x0 = x * sx, x1 = (x + 1) * sx, y0 = y * sy, y1 = (y + 1) * sy;
+      double acc[4] = {0, 0, 0, 0}, total = 0;
+      for (int yy = int(y0); yy < int(std::ceil(y1)) && yy < h; ++yy)
+        for (int xx = int(x0); xx < int(std::ceil(x1)) && xx < w; ++xx) {
+          const double wx = std::min(x1, xx + 1.0) - std::max(x0, double(xx));
+          const double wy = std::min(y1, yy + 1.0) - std::max(y0, double(yy));
+          const double wgt = wx * wy;
+          if (wgt <= 0) continue;
+          const uint32_t p = in[size_t(yy) * w + xx];
+          for (int c = 0; c < 4; ++c) acc[c] += wgt * double((p >> (8 * c)) & 0xff);
+          total += wgt;
+        }
+      uint32_t o = 0;
+      for (int c = 0; c < 4; ++c) o |= uint32_t(std::lround(total > 0 ? acc[c] / total : 0)) << (8 * c);
+      out[size_t(y) * nw + x] = o;
+    }
+  return out;
+}
+}  // namespace
+
+extern "C" {
+
+void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar) {
+  const double r = fovy / 2 * kPi / 180, dz = zFar - zNear, s = std::sin(r);
+  if (dz == 0 || s == 0 || aspect == 0) return;
+  const double cot = std::cos(r) / s;
+  GLdouble m[16] = {cot / aspect, 0, 0, 0, 0, cot, 0, 0, 0, 0, -(zFar + zNear) / dz, -1, 0, 0, -2 * zNear * zFar / dz, 0};
+  glMultMatrixd(m);
+}
+
+void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top) {
+  glOrtho(left, right, bottom, top, -1, 1);
+}
+
+void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, GLdouble cz, GLdouble ux,
+               GLdouble uy, GLdouble uz) {
+  auto norm = [](double* v) {
+    const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (l != 0) v[0] /= l, v[1] /= l, v[2] /= l;
+  };
+  double f[3] = {cx - ex, cy - ey, cz - ez}, up[3] = {ux, uy, uz};
+  norm(f);
+  double s[3] = {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2], f[0] * up[1] - f[1] * up[0]};
+  norm(s);
+  const double u[3] = {s[1] * f[2] - s[2] * f[1], s[2] * f[0] - s[0] * f[2], s[0] * f[1] - s[1] * f[0]};
+  GLfloat m[16] = {float(s[0]), float(u[0]), float(-f[0]), 0, float(s[1]), float(u[1]), float(-f[1]), 0,
+                   float(s[2]), float(u[2]), float(-f[2]), 0, 0, 0, 0, 1};
+  glMultMatrixf(m);
+  glTranslated(-ex, -ey, -ez);
+}
+
+GLint gluProject(GLdouble ox, GLdouble oy, GLdouble oz, const GLdouble* model, const GLdouble* proj, const GLint* view,
+                 GLdouble* wx, GLdouble* wy, GLdouble* wz) {
+  if (!model || !proj || !view || !wx || !wy || !wz) return GL_FALSE;
+  const double in[4] = {ox, oy, oz, 1};
+  double eye[4], clip[4];
+  transform(model, in, eye);
+  transform(proj, eye, clip);
+  if (clip[3] == 0) return GL_FALSE;
+  for (int i = 0; i < 3; ++i) clip[i] = clip[i] / clip[3] * 0.5 + 0.5;
+  *wx = view[0] + clip[0] * view[2];
+  *wy = view[1] + clip[1] * view[3];
+  *wz = clip[2];
+  return GL_TRUE;
+}
+
+GLint gluUnProject(GLdouble wx, GLdouble wy, GLdouble wz, const GLdouble* model, const GLdouble* proj,
+                   const GLint* view, GLdouble* ox, GLdouble* oy, GLdouble* oz) {
+  if (!model || !proj || !view || !ox || !oy || !oz || view[2] == 0 || view[3] == 0) return GL_FALSE;
+  double pm[16], inv[16];
+  multiply(proj, model, pm);
+  if (!invert(pm, inv)) return GL_FALSE;
+  const double in[4] = {(wx - view[0]) / view[2] * 2 - 1, (wy - view[1]) / view[3] * 2 - 1, wz * 2 - 1, 1};
+  double out[4];
+  transform(inv, in, out);
+  if (out[3] == 0) return GL_FALSE;
+  *ox = out[0] / out[3], *oy = out[1] / out[3], *oz = out[2] / out[3];
+  return GL_TRUE;
+}
+
+GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                        const void* data) {
+  if (target != GL_TEXTURE_2D) return GLU_INVALID_ENUM;
+  if (width < 1 || height < 1 || width > 65536 || height > 65536) return GLU_INVALID_VALUE;
+  if (!velocity::gl::Context::base_format(internalFormat)) return GLU_INVALID_VALUE;
+  GLint alignment = 4;
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  try {
+    auto texels = velocity::gl::unpack_rgba(format, type, width, height, alignment, data);
+    if (!texels) return GLU_INVALID_ENUM;
+    std::vector<uint32_t> level = std::move(*texels);
+    int w = std::min(nearest_power(width), velocity::gl::kMaxTextureSize);
+    int h = std::min(nearest_power(height), velocity::gl::kMaxTextureSize);
+    if (w != width || h != height) level = scale(level, width, height, w, h);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    for (int l = 0;; ++l) {
+      glTexImage2D(GL_TEXTURE_2D, l, internalFormat, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, level.data());
+      if (w == 1 && h == 1) break;
+      const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
+      level = scale(level, w, h, nw, nh);
+      w = nw, h = nh;
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+  } catch (const std::exception&) {
+    return GLU_OUT_OF_MEMORY;
+  }
+  return 0;
+}
+
+const GLubyte* gluErrorString(GLenum error) {
+  const char* s;
+  switch (error) {
+    case GL_NO_ERROR: s = "no error"; break;
+    case GL_INVALID_ENUM: s = "invalid enumerant"; break;
+    case GL_INVALID_VALUE: s = "invalid value"; break;
+    case GL_INVALID_OPERATION: s = "invalid operation"; break;
+    case GL_STACK_OVERFLOW: s = "stack overflow"; break;
+    case GL_STACK_UNDERFLOW: s = "stack underflow"; break;
+    case GL_OUT_OF_MEMORY: s = "out of memory"; break;
+    case GLU_INVALID_ENUM: s = "invalid enumerant"; break;
+    case GLU_INVALID_VALUE: s = "invalid value"; break;
+    case GLU_OUT_OF_MEMORY: s = "out of memory"; break;
+    default: return nullptr;
+  }
+  return reinterpret_cast<const GLubyte*>(s);
+}
+
+}  // extern "C"

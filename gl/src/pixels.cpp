@@ -1,0 +1,63 @@
+#include "pixels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace velocity::gl {
+
+int format_components(GLenum format) {
+  switch (format) {
+    case GL_RGBA: case GL_BGRA: return 4;
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_LUMINANCE: case GL_ALPHA: case 0x1903: /* GL_RED */ return 1;
+    default: return 0;
+  }
+}
+
+std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height, int alignment,
+                                                 const void* data) {
+  const int comps = format_components(format);
+  if (!comps) return std::nullopt;
+  size_t tsize;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: tsize = 1; break;
+    case GL_FLOAT: tsize = 4; break;
+    default: return std::nullopt;
+  }
+  std::vector<uint32_t> out(size_t(width) * size_t(height), 0xff000000u);
+  if (!data) return out;
+  const size_t align = size_t(std::max(alignment, 1));
+  const size_t row_bytes = (size_t(width) * comps * tsize + align - 1) / align * align;
+  const uint8_t* src = static_cast<const uint8_t*>(data);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const uint8_t* p = src + size_t(y) * row_bytes + size_t(x) * comps * tsize;
+      uint32_t c[4];
+      for (int k = 0; k < comps; ++k) {
+        if (type == GL_UNSIGNED_BYTE) {
+          c[k] = p[k];
+        } else {
+          float f;
+          std::memcpy(&f, p + 4 * k, 4);
+          c[k] = f > 0 ? uint32_t(std::lround(std::min(f, 1.0f) * 255.0f)) : 0u;  // NaN reads 0
+        }
+      }
+      uint32_t r = 0, g = 0, b = 0, a = 255;
+      switch (format) {
+        case GL_RGBA: r = c[0], g = c[1], b = c[2], a = c[3]; break;
+        case GL_BGRA: b = c[0], g = c[1], r = c[2], a = c[3]; break;
+        case GL_RGB: r = c[0], g = c[1], b = c[2]; break;
+        case GL_BGR: b = c[0], g = c[1], r = c[2]; break;
+        case GL_LUMINANCE_ALPHA: r = g = b = c[0], a = c[1]; break;
+        case GL_LUMINANCE: r = g = b = c[0]; break;
+        case GL_ALPHA: a = c[0]; break;
+        default: r = c[0]; break;  // GL_RED
+      }
+      out[size_t(y) * width + x] = r | g << 8 | b << 16 | a << 24;
+    }
+  return out;
+}
+
+}  // namespace velocity::gl

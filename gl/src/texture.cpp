@@ -1,0 +1,245 @@
+// Texture objects: glGenTextures, glBindTexture, glTexImage2D and friends. Texels are
+// stored RGBA8 per level; the velocity::Texture the renderer samples is built from
+// them when the texture is first drawn after a change.
+#include <algorithm>
+#include <cmath>
+
+#include "context.hpp"
+#include "velocity/error.hpp"
+
+namespace velocity::gl {
+
+GLenum Context::base_format(GLint internal) {
+  switch (internal) {
+    case 1: case GL_LUMINANCE: case 0x8040: /* GL_LUMINANCE8 */ return GL_LUMINANCE;
+    case 2: case GL_LUMINANCE_ALPHA: case 0x8045: /* GL_LUMINANCE8_ALPHA8 */ return GL_LUMINANCE_ALPHA;
+    case 3: case GL_RGB: case 0x8051: /* GL_RGB8 */ return GL_RGB;
+    case 4: case GL_RGBA: case 0x8058: /* GL_RGBA8 */ return GL_RGBA;
+    case GL_ALPHA: case 0x803C: /* GL_ALPHA8 */ return GL_ALPHA;
+    case 0x8049: /* GL_INTENSITY */ return 0x8049;
+    default: return 0;
+  }
+}
+
+TextureObject* Context::bound_texture() {
+  if (bound_ == 0) return &default_texture_;
+  auto it = textures_.find(bound_);
+  return it == textures_.end() ? &default_texture_ : it->second.get();
+}
+
+void Context::gen_textures(GLsizei n, GLuint* out) {
+  if (in_begin_error()) return;
+  if (n < 0) return error(GL_INVALID_VALUE);
+  if (!out) return;
+  for (GLsizei i = 0; i < n; ++i) {
+    while (next_texture_ == 0 || textures_.count(next_texture_)) ++next_texture_;
+    if (textures_.size() >= 65536) return error(GL_OUT_OF_MEMORY);
+    textures_[next_texture_] = std::make_unique<TextureObject>();
+    out[i] = next_texture_++;
+  }
+}
+
+void Context::delete_textures(GLsizei n, const GLuint* ids) {
+  if (in_begin_error()) return;
+  if (n < 0) return error(GL_INVALID_VALUE);
+  if (!ids) return;
+  for (GLsizei i = 0; i < n; ++i) {
+    if (ids[i] == 0) continue;
+    if (ids[i] == bound_) bound_ = 0, changed();
+    textures_.erase(ids[i]);  // draws already recorded keep their built texture
+  }
+}
+
+void Context::bind_texture(GLenum target, GLuint id) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (id != 0 && !textures_.count(id)) {
+    if (textures_.size() >= 65536) return error(GL_OUT_OF_MEMORY);
+    textures_[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
+  }
+  if (id != bound_) changed();
+  bound_ = id;
+}
+
+void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
+                        const std::vector<uint32_t>* rgba) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  const GLenum base = base_format(internal);
+  if (!base) return error(GL_INVALID_VALUE);
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
+      h > (kMaxTextureSize >> level) || border != 0)
+    return error(GL_INVALID_VALUE);
+  TextureObject& t = *bound_texture();
+  Texture::Level& l = t.levels[size_t(level)];
+  l.width = w, l.height = h;
+  l.texels.assign(size_t(w) * h, 0xff000000u);
+  if (rgba && rgba->size() == l.texels.size()) l.texels = *rgba;
+  if (level == 0) {
+    t.internal_format = base;
+    t.format = base == GL_RGB         ? TexFormat::Rgb
+               : base == GL_LUMINANCE ? TexFormat::Luminance
+               : base == GL_LUMINANCE_ALPHA ? TexFormat::LuminanceAlpha
+               : base == GL_ALPHA     ? TexFormat::Alpha
+               : base == 0x8049       ? TexFormat::Intensity
+                                      : TexFormat::Rgba;
+  }
+  // The texels as the format keeps them: luminance (L, L, L, 1), alpha (0, 0, 0, A)...
+  for (uint32_t& p : l.texels) {
+    const uint32_t r = p & 0xff, a = p >> 24;
+    switch (base) {
+      case GL_RGB: p |= 0xff000000u; break;
+      case GL_LUMINANCE: p = r | r << 8 | r << 16 | 0xff000000u; break;
+      case GL_LUMINANCE_ALPHA: p = r | r << 8 | r << 16 | a << 24; break;
+      case GL_ALPHA: p = a << 24; break;
+      case 0x8049: p = r | r << 8 | r << 16 | r << 24; break;
+      default: break;
+    }
+  }
+  t.dirty = true;
+  changed();
+}
+
+void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
+                            const std::vector<uint32_t>& rgba) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  TextureObject& t = *bound_texture();
+  Texture::Level& l = t.levels[size_t(level)];
+  if (l.width == 0) return error(GL_INVALID_OPERATION);
+  if (x < 0 || y < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height) return error(GL_INVALID_VALUE);
+  if (rgba.size() != size_t(w) * size_t(h)) return;
+  const GLenum base = t.internal_format;
+  for (int row = 0; row < h; ++row)
+    for (int col = 0; col < w; ++col) {
+      uint32_t p = rgba[size_t(row) * w + col];
+      const uint32_t r = p & 0xff, a = p >> 24;
+      switch (base) {
+        case GL_RGB: p |= 0xff000000u; break;
+        case GL_LUMINANCE: p = r | r << 8 | r << 16 | 0xff000000u; break;
+        case GL_LUMINANCE_ALPHA: p = r | r << 8 | r << 16 | a << 24; break;
+        case GL_ALPHA: p = a << 24; break;
+        case 0x8049: p = r | r << 8 | r << 16 | r << 24; break;
+        default: break;
+      }
+      l.texels[size_t(y + row) * l.width + size_t(x + col)] = p;
+    }
+  t.dirty = true;
+  changed();
+}
+
+void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  TextureObject& t = *bound_texture();
+  const GLenum e = GLenum(v[0]);
+  switch (pname) {
+    case GL_TEXTURE_MIN_FILTER:
+      if (e != GL_NEAREST && e != GL_LINEAR && (e < GL_NEAREST_MIPMAP_NEAREST || e > GL_LINEAR_MIPMAP_LINEAR))
+        return error(GL_INVALID_ENUM);
+      t.min_filter = e;
+      t.dirty = true;
+      break;
+    case GL_TEXTURE_MAG_FILTER:
+      if (e != GL_NEAREST && e != GL_LINEAR) return error(GL_INVALID_ENUM);
+      t.mag_filter = e;
+      break;
+    case GL_TEXTURE_WRAP_S:
+    case GL_TEXTURE_WRAP_T:
+      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT)
+        return error(GL_INVALID_ENUM);
+      (pname == GL_TEXTURE_WRAP_S ? t.wrap_s : t.wrap_t) = e;
+      break;
+    case GL_TEXTURE_BORDER_COLOR:
+      t.border = {std::clamp(v[0], 0.0f, 1.0f), std::clamp(v[1], 0.0f, 1.0f), std::clamp(v[2], 0.0f, 1.0f),
+                  std::clamp(v[3], 0.0f, 1.0f)};
+      break;
+    case GL_GENERATE_MIPMAP:
+      t.generate_mipmap = v[0] != 0;
+      t.dirty = true;
+      break;
+    default: return error(GL_INVALID_ENUM);
+  }
+  changed();
+}
+
+void Context::tex_env(GLenum target, GLenum pname, const float* v) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_ENV) return error(GL_INVALID_ENUM);
+  if (pname == GL_TEXTURE_ENV_MODE) {
+    const GLenum m = GLenum(v[0]);
+    if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != 0x0104 /* GL_ADD */)
+      return error(GL_INVALID_ENUM);
+    env_mode_ = m;
+  } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    env_color_ = {std::clamp(v[0], 0.0f, 1.0f), std::clamp(v[1], 0.0f, 1.0f), std::clamp(v[2], 0.0f, 1.0f),
+                  std::clamp(v[3], 0.0f, 1.0f)};
+  } else {
+    return error(GL_INVALID_ENUM);
+  }
+  changed();
+}
+
+namespace {
+// The next mip level as a 2x2 box average (a side of 1 repeats its texel), the way
+// Mesa generates mip-maps.
+Texture::Level half(const Texture::Level& up) {
+  const int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2);
+  Texture::Level next{w, h, std::vector<uint32_t>(size_t(w) * h)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
+      const int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
+      const uint32_t t[4] = {up.texels[size_t(y0) * up.width + x0], up.texels[size_t(y0) * up.width + x1],
+                             up.texels[size_t(y1) * up.width + x0], up.texels[size_t(y1) * up.width + x1]};
+      uint32_t out = 0;
+      for (int c = 0; c < 4; ++c) {
+        uint32_t sum = 0;
+        for (uint32_t v : t) sum += (v >> (8 * c)) & 0xff;
+        out |= ((sum + 2) / 4) << (8 * c);
+      }
+      next.texels[size_t(y) * w + x] = out;
+    }
+  return next;
+}
+}  // namespace
+
+// The texture the renderer samples for the next draws, or null when texturing is off
+// for it (GL: an incomplete texture disables texturing).
+const Texture* Context::texture_for_draw(TextureObject& t) {
+  if (t.dirty) {
+    t.dirty = false;
+    t.built.reset();
+    t.complete = false;
+    const Texture::Level& base = t.levels[0];
+    if (base.width == 0 || base.height == 0) return nullptr;
+    const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
+    if (t.generate_mipmap) {
+      for (size_t i = 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
+        t.levels[i] = half(t.levels[i - 1]);
+    }
+    std::vector<Texture::Level> levels{base};
+    if (mip) {
+      for (size_t i = 1; levels.back().width > 1 || levels.back().height > 1; ++i) {
+        if (i >= t.levels.size()) return nullptr;
+        const Texture::Level& l = t.levels[i];
+        if (l.width != std::max(1, levels.back().width / 2) ||
+            l.height != std::max(1, levels.back().height / 2))
+          return nullptr;  // an incomplete mip chain
+        levels.push_back(l);
+      }
+    }
+    try {
+      t.built = std::make_shared<const Texture>(std::move(levels));
+    } catch (const std::exception&) {
+      return nullptr;
+    }
+    t.complete = true;
+  }
+  if (!t.built) return nullptr;
+  if (frame_textures_.empty() || frame_textures_.back() != t.built) frame_textures_.push_back(t.built);
+  return t.built.get();
+}
+
+}  // namespace velocity::gl

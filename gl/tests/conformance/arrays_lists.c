@@ -1,0 +1,120 @@
+/* Vertex arrays (the four pointers, glDrawArrays, glDrawElements, glArrayElement) and
+ * display lists (GL_COMPILE, GL_COMPILE_AND_EXECUTE, nested lists, glCallLists with a
+ * list base, glDeleteLists), culling, front face, polygon modes and polygon offset. */
+#include "harness.h"
+
+static const GLfloat verts[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+/* Colours affine in the position, so that they do not depend on the diagonal a quad is
+ * split along (Mesa splits quads differently in immediate mode and in display lists). */
+static const GLubyte colors[8][4] = {{0, 0, 0, 255},     {255, 0, 0, 255},   {255, 255, 0, 255}, {0, 255, 0, 255},
+                                     {0, 0, 255, 255},   {255, 0, 255, 255}, {255, 255, 255, 255}, {0, 255, 255, 255}};
+static const GLushort faces[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 2, 3, 7, 6, 0, 4, 7, 3, 1, 2, 6, 5};
+
+int main(int argc, char** argv) {
+  GLuint base;
+  int i;
+  conf_init(argc, argv, 200, 150);
+  glEnable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  gluPerspective(45, 200.0 / 150.0, 1, 30);
+  glMatrixMode(GL_MODELVIEW);
+
+  glVertexPointer(3, GL_FLOAT, 0, verts);
+  glColorPointer(4, GL_UNSIGNED_BYTE, 0, colors);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+
+  /* Lists: 1 = an indexed cube (arrays read at compile time), 2 = a ring of three
+   * cubes calling list 1, 3.. = small translations for glCallLists. */
+  base = glGenLists(5);
+  glNewList(base, GL_COMPILE);
+  glDrawElements(GL_QUADS, 24, GL_UNSIGNED_SHORT, faces);
+  glEndList();
+  glNewList(base + 1, GL_COMPILE);
+  for (i = 0; i < 3; ++i) {
+    glPushMatrix();
+    glRotatef(120.0f * i, 0, 1, 0);
+    glTranslatef(2.2f, 0, 0);
+    glScalef(0.5f, 0.5f, 0.5f);
+    glCallList(base);
+    glPopMatrix();
+  }
+  glEndList();
+  glNewList(base + 2, GL_COMPILE);
+  glTranslatef(0, 1.2f, 0);
+  glEndList();
+  glNewList(base + 3, GL_COMPILE);
+  glTranslatef(0, -2.4f, 0);
+  glEndList();
+
+  /* Frame 1: arrays drawn directly, then the lists. */
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glLoadIdentity();
+  glTranslatef(0, 0, -9);
+  glRotatef(25, 1, 0, 0);
+  glRotatef(30, 0, 1, 0);
+  glCallList(base + 1);
+  {
+    const GLubyte offsets[2] = {2, 3};
+    glListBase(base);
+    glCallLists(2, GL_UNSIGNED_BYTE, offsets); /* up 1.2, then down 2.4 */
+    glListBase(0);
+  }
+  glPushMatrix();
+  glScalef(0.4f, 0.4f, 0.4f);
+  glDrawArrays(GL_QUADS, 0, 8); /* the cube's two z faces from the arrays in order */
+  glPopMatrix();
+  glTranslatef(0, 2.4f, 0);
+  glBegin(GL_TRIANGLES);
+  glArrayElement(0);
+  glArrayElement(5);
+  glArrayElement(6);
+  glEnd();
+  conf_frame("arrays_lists");
+
+  /* Frame 2: COMPILE_AND_EXECUTE, culling, front face, polygon modes and offset. */
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glLoadIdentity();
+  glTranslatef(-1.8f, 0, -8);
+  glRotatef(35, 1, 1, 0);
+  glNewList(base + 4, GL_COMPILE_AND_EXECUTE);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glCallList(base);
+  glEndList();
+  glTranslatef(3.6f, 0, 0);
+  glFrontFace(GL_CW);
+  glCallList(base); /* now the far faces are drawn */
+  glFrontFace(GL_CCW);
+  glDisable(GL_CULL_FACE);
+  glTranslatef(-1.8f, -1.8f, 0);
+  glPolygonMode(GL_FRONT, GL_LINE);
+  glPolygonMode(GL_BACK, GL_POINT);
+  glPointSize(3);
+  glScalef(0.6f, 0.6f, 0.6f);
+  glCallList(base);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  /* Polygon offset: a quad coplanar with a face, pushed in front. */
+  glTranslatef(0, 3.5f, 0);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glColor3f(0.3f, 0.3f, 0.9f);
+  glDrawElements(GL_QUADS, 4, GL_UNSIGNED_SHORT, faces + 4);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1, -2);
+  glColor3f(1, 0.6f, 0.1f);
+  glBegin(GL_QUADS);
+  glVertex3f(-0.5f, -0.5f, 1);
+  glVertex3f(0.5f, -0.5f, 1);
+  glVertex3f(0.5f, 0.5f, 1);
+  glVertex3f(-0.5f, 0.5f, 1);
+  glEnd();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  conf_frame("modes_offset");
+
+  glDeleteLists(base, 5);
+  conf_value("is_list_after_delete", glIsList(base));
+  return conf_end();
+}

@@ -1,0 +1,116 @@
+/* Per-fragment operations: blending with GL's factors, the alpha test, fog (linear,
+ * exp, exp2), the scissor test (also for glClear), the colour mask. */
+#include "harness.h"
+
+static void quad(float x0, float y0, float x1, float y1, float z) {
+  glBegin(GL_QUADS);
+  glVertex3f(x0, y0, z);
+  glVertex3f(x1, y0, z);
+  glVertex3f(x1, y1, z);
+  glVertex3f(x0, y1, z);
+  glEnd();
+}
+
+int main(int argc, char** argv) {
+  static const GLenum src[6] = {GL_SRC_ALPHA, GL_ONE, GL_DST_COLOR, GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE, GL_ZERO};
+  static const GLenum dst[6] = {GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_COLOR};
+  static const GLenum funcs[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+  int i;
+  conf_init(argc, argv, 192, 128);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 192, 0, 128, -10, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+
+  /* Blending: a gradient background, then translucent quads with each factor pair. */
+  glClearColor(0.2f, 0.3f, 0.4f, 0.5f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_QUADS);
+  glColor4f(1, 0, 0, 0.2f);
+  glVertex2f(0, 0);
+  glColor4f(0, 1, 0, 0.9f);
+  glVertex2f(192, 0);
+  glColor4f(0, 0, 1, 0.6f);
+  glVertex2f(192, 128);
+  glColor4f(1, 1, 1, 0.0f);
+  glVertex2f(0, 128);
+  glEnd();
+  glEnable(GL_BLEND);
+  for (i = 0; i < 6; ++i) {
+    glBlendFunc(src[i], dst[i]);
+    glColor4f(0.9f, 0.6f, 0.1f + 0.15f * i, 0.25f + 0.12f * i);
+    quad(8.0f + 30 * i, 20, 30.0f + 30 * i, 108, 0);
+  }
+  glDisable(GL_BLEND);
+  conf_frame("blend");
+
+  /* Alpha test: per comparison a band of five quads with alpha 0, 0.25, 0.5, 0.75, 1
+   * (reference 0.6, or 0 for GL_EQUAL: no value sits on the reference). */
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_ALPHA_TEST);
+  for (i = 0; i < 8; ++i) {
+    int k;
+    glAlphaFunc(funcs[i], i == 2 ? 0.0f : 0.6f);
+    for (k = 0; k < 5; ++k) {
+      glColor4f(0.2f + 0.2f * k, 0.8f, 1.0f - 0.15f * k, 0.25f * k);
+      quad(10.0f + 34 * k, 4.0f + 15 * i, 40.0f + 34 * k, 16.0f + 15 * i, 0);
+    }
+  }
+  glDisable(GL_ALPHA_TEST);
+  conf_frame("alpha_test");
+
+  /* Fog: three rows of quads going away from the eye, one per fog mode. */
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.15, 0.15, -0.1, 0.1, 0.2, 40);
+  glMatrixMode(GL_MODELVIEW);
+  glClearColor(0.5f, 0.5f, 0.6f, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_FOG);
+  {
+    const GLfloat fog_color[4] = {0.5f, 0.5f, 0.6f, 1};
+    glFogfv(GL_FOG_COLOR, fog_color);
+  }
+  for (i = 0; i < 3; ++i) {
+    int k;
+    glFogi(GL_FOG_MODE, i == 0 ? GL_LINEAR : i == 1 ? GL_EXP : GL_EXP2);
+    glFogf(GL_FOG_START, 2);
+    glFogf(GL_FOG_END, 25);
+    glFogf(GL_FOG_DENSITY, i == 1 ? 0.12f : 0.09f);
+    for (k = 0; k < 8; ++k) {
+      glColor3f(k % 2 ? 1.0f : 0.1f, 0.3f + 0.08f * k, i == 2 ? 1.0f : 0.2f);
+      glLoadIdentity();
+      glTranslatef((-3.0f + 3.0f * i) * (1 + 0.4f * k), -2.5f + 0.9f * k, -5.0f - 3.0f * k);
+      quad(-0.8f, 0, 0.8f, 1.2f, 0);
+    }
+  }
+  glDisable(GL_FOG);
+  glDisable(GL_DEPTH_TEST);
+  conf_frame("fog");
+
+  /* Scissor (drawing and clearing) and the colour mask. */
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 192, 0, 128, -10, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(20, 10, 60, 50);
+  glClearColor(0.8f, 0.2f, 0.2f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glScissor(50, 30, 100, 80);
+  glColor3f(0.2f, 0.9f, 0.3f);
+  quad(0, 0, 192, 128, 0);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+  glColor3f(0.9f, 0.9f, 0.9f);
+  quad(120, 5, 180, 60, 0);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  conf_frame("scissor_mask");
+  return conf_end();
+}

@@ -1,0 +1,81 @@
+/* The conformance programs' harness. Each program in this folder is one C source built
+ * twice — against Velocity (gl/include, libvelocity-gl) and against Mesa (the system's
+ * <GL/gl.h>, libOSMesa, libGLU) — and run with an output folder: every conf_frame()
+ * writes the frame as NAME.ppm, every conf_value() a line "NAME VALUE" to values.txt.
+ * compare.cpp then holds the two runs' outputs side by side. */
+#ifndef VELOCITY_GL_CONFORMANCE_HARNESS_H
+#define VELOCITY_GL_CONFORMANCE_HARNESS_H
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <GL/osmesa.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static OSMesaContext conf_ctx;
+static unsigned char* conf_buffer;
+static int conf_width, conf_height;
+static const char* conf_dir = ".";
+
+static void conf_fail(const char* what) {
+  fprintf(stderr, "conformance: %s\n", what);
+  exit(1);
+}
+
+/* An RGBA context with a depth buffer rendering into a width x height buffer. */
+static void conf_init(int argc, char** argv, int width, int height) {
+  if (argc > 1) conf_dir = argv[1];
+  conf_width = width, conf_height = height;
+  conf_ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+  if (!conf_ctx) conf_fail("OSMesaCreateContextExt failed");
+  conf_buffer = (unsigned char*)calloc((size_t)width * height, 4);
+  if (!conf_buffer) conf_fail("out of memory");
+  if (!OSMesaMakeCurrent(conf_ctx, conf_buffer, GL_UNSIGNED_BYTE, width, height)) conf_fail("OSMesaMakeCurrent failed");
+  {
+    char path[1024];
+    FILE* f;
+    snprintf(path, sizeof path, "%s/values.txt", conf_dir);
+    f = fopen(path, "w");
+    if (!f) conf_fail("cannot write values.txt");
+    fclose(f);
+  }
+}
+
+/* glFinish, then the buffer (bottom row first, OSMesa's Y_UP) as NAME.ppm, top row first. */
+static void conf_frame(const char* name) {
+  char path[1024];
+  FILE* f;
+  int y;
+  glFinish();
+  snprintf(path, sizeof path, "%s/%s.ppm", conf_dir, name);
+  f = fopen(path, "wb");
+  if (!f) conf_fail("cannot write a frame");
+  fprintf(f, "P6\n%d %d\n255\n", conf_width, conf_height);
+  for (y = conf_height - 1; y >= 0; --y) {
+    const unsigned char* row = conf_buffer + (size_t)y * conf_width * 4;
+    int x;
+    for (x = 0; x < conf_width; ++x) fwrite(row + 4 * x, 1, 3, f);
+  }
+  fclose(f);
+}
+
+static void conf_value(const char* name, double value) __attribute__((unused));
+static void conf_value(const char* name, double value) {
+  char path[1024];
+  FILE* f;
+  snprintf(path, sizeof path, "%s/values.txt", conf_dir);
+  f = fopen(path, "a");
+  if (!f) conf_fail("cannot write values.txt");
+  fprintf(f, "%s %.6g\n", name, value);
+  fclose(f);
+}
+
+static int conf_end(void) {
+  OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+  OSMesaDestroyContext(conf_ctx);
+  free(conf_buffer);
+  return 0;
+}
+
+#endif

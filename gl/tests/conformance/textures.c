@@ -1,0 +1,169 @@
+/* Textures: RGB, RGBA, LUMINANCE and ALPHA images of odd sizes, glTexSubImage2D, every
+ * filter (the four mip-map ones with gluBuild2DMipmaps and GL_GENERATE_MIPMAP), wrap
+ * modes REPEAT, CLAMP, CLAMP_TO_EDGE, environments MODULATE, REPLACE, DECAL, BLEND. */
+#include "harness.h"
+
+static unsigned char checker[64 * 64 * 4];
+
+static void make_checker(int size, int square) {
+  int x, y;
+  for (y = 0; y < size; ++y)
+    for (x = 0; x < size; ++x) {
+      unsigned char* p = checker + 4 * (y * size + x);
+      const int on = ((x / square) + (y / square)) % 2;
+      p[0] = on ? 230 : 40, p[1] = on ? 200 : (unsigned char)(60 + 2 * x), p[2] = on ? 80 : 160;
+      p[3] = (unsigned char)(on ? 255 : 90 + y);
+    }
+}
+
+static void textured_quad(float x0, float y0, float x1, float y1, float s1, float t1) {
+  glBegin(GL_QUADS);
+  glTexCoord2f(-s1 * 0.25f, -t1 * 0.25f);
+  glVertex2f(x0, y0);
+  glTexCoord2f(s1, -t1 * 0.25f);
+  glVertex2f(x1, y0);
+  glTexCoord2f(s1, t1);
+  glVertex2f(x1, y1);
+  glTexCoord2f(-s1 * 0.25f, t1);
+  glVertex2f(x0, y1);
+  glEnd();
+}
+
+/* A floor going into the distance, for minification. */
+static void floor_quad(void) {
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0);
+  glVertex3f(-2, -1, -1.5f);
+  glTexCoord2f(3, 0);
+  glVertex3f(2, -1, -1.5f);
+  glTexCoord2f(3, 6);
+  glVertex3f(2, -1, -30);
+  glTexCoord2f(0, 6);
+  glVertex3f(-2, -1, -30);
+  glEnd();
+}
+
+int main(int argc, char** argv) {
+  GLuint tex[4];
+  int i;
+  conf_init(argc, argv, 192, 128);
+  make_checker(64, 8);
+  glGenTextures(4, tex);
+
+  /* tex[0]: RGBA 64x64 with mip-maps from GLU. */
+  glBindTexture(GL_TEXTURE_2D, tex[0]);
+  gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, 64, 64, GL_RGBA, GL_UNSIGNED_BYTE, checker);
+  /* tex[1]: RGB 13x7 (any size), rows byte aligned. */
+  glBindTexture(GL_TEXTURE_2D, tex[1]);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  {
+    unsigned char rgb[13 * 7 * 3];
+    for (i = 0; i < 13 * 7; ++i) rgb[3 * i] = (unsigned char)(i * 37), rgb[3 * i + 1] = (unsigned char)(i * 11), rgb[3 * i + 2] = (unsigned char)(255 - i * 3);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 13, 7, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  /* tex[2]: LUMINANCE 16x16 with GL_GENERATE_MIPMAP, then a sub-image. */
+  glBindTexture(GL_TEXTURE_2D, tex[2]);
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  {
+    unsigned char lum[16 * 16], patch[4 * 4];
+    for (i = 0; i < 256; ++i) lum[i] = (unsigned char)(((i % 16) ^ (i / 16)) * 16);
+    for (i = 0; i < 16; ++i) patch[i] = 255;
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 16, 16, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, lum);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 6, 6, 4, 4, GL_LUMINANCE, GL_UNSIGNED_BYTE, patch);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  /* tex[3]: ALPHA 8x8. */
+  glBindTexture(GL_TEXTURE_2D, tex[3]);
+  {
+    unsigned char a[64];
+    for (i = 0; i < 64; ++i) a[i] = (unsigned char)((i % 8) * 32 + (i / 8) * 3);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 8, 8, 0, GL_ALPHA, GL_UNSIGNED_BYTE, a);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+
+  glEnable(GL_TEXTURE_2D);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  gluOrtho2D(0, 192, 0, 128);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+
+  /* Frame 1: wrap modes and magnification filters on tex[0] and tex[1]. */
+  glClearColor(0.3f, 0.3f, 0.3f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glBindTexture(GL_TEXTURE_2D, tex[0]);
+  for (i = 0; i < 3; ++i) {
+    static const GLenum wraps[3] = {GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE};
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wraps[i]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wraps[(i + 1) % 3]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, i == 1 ? GL_NEAREST : GL_LINEAR);
+    textured_quad(4.0f + 62 * i, 4, 62.0f + 62 * i, 62, 1.6f, 1.6f);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glBindTexture(GL_TEXTURE_2D, tex[1]);
+  textured_quad(4, 66, 90, 124, 1, 1);
+  glBindTexture(GL_TEXTURE_2D, tex[2]);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  textured_quad(100, 66, 188, 124, 1, 1);
+  conf_frame("wrap_mag");
+
+  /* Frame 2: environments on a coloured quad. */
+  glClear(GL_COLOR_BUFFER_BIT);
+  {
+    static const GLenum envs[4] = {GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND};
+    const GLfloat env_color[4] = {0.1f, 0.9f, 0.2f, 0.5f};
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env_color);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for (i = 0; i < 16; ++i) {
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, envs[i % 4]);
+      glBindTexture(GL_TEXTURE_2D, tex[i / 4]);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, i / 4 == 2 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+      glBegin(GL_QUADS);
+      glColor4f(1, 0.5f, 0.2f, 0.8f);
+      glTexCoord2f(0, 0);
+      glVertex2f(4.0f + 47 * (i % 4), 4.0f + 31 * (i / 4));
+      glColor4f(0.2f, 0.6f, 1, 1);
+      glTexCoord2f(1, 0);
+      glVertex2f(48.0f + 47 * (i % 4), 4.0f + 31 * (i / 4));
+      glTexCoord2f(1, 1);
+      glVertex2f(48.0f + 47 * (i % 4), 32.0f + 31 * (i / 4));
+      glColor4f(1, 1, 1, 0.6f);
+      glTexCoord2f(0, 1);
+      glVertex2f(4.0f + 47 * (i % 4), 32.0f + 31 * (i / 4));
+      glEnd();
+    }
+    glDisable(GL_BLEND);
+  }
+  conf_frame("env");
+
+  /* Frames 3-4: minification with each filter on a receding floor. */
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  gluPerspective(60, 192.0 / 128.0, 0.5, 50);
+  glMatrixMode(GL_MODELVIEW);
+  /* Modulated by grey: where a nearest filter's texel choice is a tie (a pixel centre
+   * on a texel edge, to within float rounding) the two renderers may pick either. */
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glColor3f(0.55f, 0.55f, 0.55f);
+  glBindTexture(GL_TEXTURE_2D, tex[0]);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (i = 0; i < 6; ++i) {
+    static const GLenum mins[6] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+                                   GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+    char name[32];
+    glClear(GL_COLOR_BUFFER_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, mins[i]);
+    floor_quad();
+    snprintf(name, sizeof name, "min%d", i);
+    conf_frame(name);
+  }
+  glDeleteTextures(4, tex);
+  return conf_end();
+}

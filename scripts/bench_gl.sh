@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# pGL against Mesa's llvmpipe on the same GL program (gl/bench/gl_bench.c), same machine,
+# same run: Velocity on 2 threads (VELOCITY_THREADS=2), llvmpipe on 2 (LP_NUM_THREADS=2).
+#
+#   scripts/bench_gl.sh [WxH] [FRAMES]        default 1920x1080, 30 frames
+#
+# Prints one line per scene: median frame time (clear, draw, glFinish) of each and the
+# ratio llvmpipe / Velocity (> 1: Velocity is faster); and immediate mode / vertex arrays
+# on Velocity.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+size="${1:-1920x1080}"
+frames="${2:-30}"
+build="$root/build"
+cmake --build "$build" --target gl_bench gl_bench_mesa >/dev/null
+ms() { sed -n 's/.*median_ms=\([0-9.]*\).*/\1/p'; }
+declare -A vel
+printf '| scene | size | llvmpipe ms | Velocity ms | ratio |\n|---|---|---|---|---|\n'
+for scene in gears mesh-immediate mesh-arrays; do
+  m=$(LP_NUM_THREADS=2 "$build/gl/bench/gl_bench_mesa" "$scene" "$size" "$frames" | ms)
+  v=$(VELOCITY_THREADS=2 "$build/gl/bench/gl_bench" "$scene" "$size" "$frames" | ms)
+  vel[$scene]=$v
+  awk -v s="$scene" -v z="$size" -v m="$m" -v v="$v" 'BEGIN { printf "| %s | %s | %s | %s | %.2f |\n", s, z, m, v, m / v }'
+done
+awk -v i="${vel[mesh-immediate]}" -v a="${vel[mesh-arrays]}" 'BEGIN { printf "\nVelocity immediate mode / vertex arrays: %.2f\n", i / a }'

@@ -1,0 +1,270 @@
+// Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
+// arguments. The input's bytes choose a context (1..96 pixels a side, any OSMesa
+// format, with or without depth), then up to 512 calls among ~90 GL, GLU and OSMesa
+// entry points, with enums drawn from valid and invalid values and numbers that are
+// often NaN, infinite, huge or negative; glBegin/glEnd nesting, display lists
+// compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
+// with indices inside the arrays (the caller's contract), read-back.
+//
+// Properties: no sanitizer report, no crash, glGetError only ever returns GL's codes,
+// the caller's colour buffer is never written outside its size (ASan), and after
+// the sequence the context still draws and reads back.
+#include <GL/gl.h>
+#include <GL/glu.h>
+#include <GL/osmesa.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "fuzz_util.hpp"
+
+namespace {
+
+class Bytes {
+ public:
+  Bytes(const uint8_t* data, size_t size) : p_(data), n_(size) {}
+  bool empty() const { return n_ == 0; }
+  uint8_t u8() {
+    if (n_ == 0) return 0;
+    --n_;
+    return *p_++;
+  }
+  uint16_t u16() { return uint16_t(u8() | (u8() << 8)); }
+  uint32_t u32() { return uint32_t(u16()) | (uint32_t(u16()) << 16); }
+  int below(int n) { return int(u8() % n); }
+  float number() {
+    const uint8_t k = u8();
+    if (k < 160) return float(int8_t(u8())) / 32.0f;
+    if (k < 200) return float(int16_t(u16())) / 16.0f;
+    if (k < 230) {
+      static const float special[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, std::numeric_limits<float>::quiet_NaN(),
+                                      std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                                      1e30f, -1e30f, 1e-30f, 3.4e38f, 1e7f, 180.0f, 90.0f, 128.0f};
+      return special[k % 16];
+    }
+    const uint32_t bits = u32();
+    float f;
+    std::memcpy(&f, &bits, 4);
+    return f;
+  }
+  int integer() {
+    const uint8_t k = u8();
+    if (k < 200) return int(int8_t(u8()));
+    if (k < 240) return int(int16_t(u16()));
+    return int(u32());
+  }
+  // An enum: mostly one that some call takes, sometimes anything.
+  GLenum enumerant() {
+    static const GLenum e[] = {
+        GL_POINTS, GL_LINES, GL_LINE_LOOP, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS,
+        GL_QUAD_STRIP, GL_POLYGON, GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE, GL_DEPTH_TEST, GL_CULL_FACE, GL_LIGHTING,
+        GL_LIGHT0, GL_LIGHT1, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL, GL_TEXTURE_2D, GL_BLEND,
+        GL_ALPHA_TEST, GL_FOG, GL_SCISSOR_TEST, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
+        GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS, GL_ZERO, GL_ONE,
+        GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_COLOR, GL_SRC_ALPHA_SATURATE, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK,
+        GL_CW, GL_CCW, GL_POINT, GL_LINE, GL_FILL, GL_FLAT, GL_SMOOTH, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR,
+        GL_POSITION, GL_SPOT_DIRECTION, GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
+        GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION, GL_EMISSION, GL_SHININESS, GL_AMBIENT_AND_DIFFUSE,
+        GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_FOG_MODE, GL_FOG_DENSITY,
+        GL_FOG_START, GL_FOG_END, GL_FOG_COLOR, GL_LINEAR, GL_EXP, GL_EXP2, GL_NEAREST, GL_NEAREST_MIPMAP_NEAREST,
+        GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_NEAREST, GL_TEXTURE_MIN_FILTER,
+        GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE,
+        GL_GENERATE_MIPMAP, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR,
+        GL_MODULATE, GL_REPLACE, GL_DECAL, GL_RGB, GL_RGBA, GL_LUMINANCE, GL_ALPHA, GL_LUMINANCE_ALPHA, GL_BGRA,
+        GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, GL_SHORT, GL_INT, GL_DOUBLE, GL_BYTE,
+        GL_COMPILE, GL_COMPILE_AND_EXECUTE, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY,
+        GL_VIEWPORT, GL_MODELVIEW_MATRIX, GL_PROJECTION_STACK_DEPTH, GL_CURRENT_COLOR, GL_DEPTH_COMPONENT,
+        GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF};
+    if (u8() < 240) return e[u8() % (sizeof e / sizeof e[0])];
+    return GLenum(u32());
+  }
+
+ private:
+  const uint8_t* p_;
+  size_t n_;
+};
+
+bool valid_error(GLenum e) {
+  return e == GL_NO_ERROR || (e >= GL_INVALID_ENUM && e <= GL_OUT_OF_MEMORY);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  Bytes in(data, size);
+  static const GLenum formats[] = {OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR};
+  const GLenum format = formats[in.below(5)];
+  const int w = 1 + in.below(96), h = 1 + in.below(96);
+  OSMesaContext ctx = OSMesaCreateContextExt(format, in.below(3) ? 24 : 0, 0, 0, nullptr);
+  fuzz_check(ctx != nullptr);
+  const size_t bpp = format == OSMESA_RGB || format == OSMESA_BGR ? 3 : 4;
+  std::vector<uint8_t> buffer(size_t(w) * h * bpp);
+  fuzz_check(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
+
+  // Client memory the calls may point at: 64 vertices of every attribute, 64 indices
+  // below 64, a 64x64 RGBA float image (large enough for any format and type).
+  std::vector<float> attrib(64 * 4 * 2);
+  for (float& f : attrib) f = in.number();
+  std::vector<uint32_t> idx32(64);
+  std::vector<uint16_t> idx16(64);
+  std::vector<uint8_t> idx8(64);
+  for (int i = 0; i < 64; ++i) idx32[size_t(i)] = idx16[size_t(i)] = idx8[size_t(i)] = uint8_t(in.below(64));
+  std::vector<float> pixels(64 * 64 * 4);
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % 97) / 96.0f;
+  std::vector<float> out(96 * 96 * 4 + 16);
+  GLuint names[4] = {0, 0, 0, 0};
+
+  for (int call = 0; call < 512 && !in.empty(); ++call) {
+    const GLenum e1 = in.enumerant(), e2 = in.enumerant();
+    const float a = in.number(), b = in.number(), c = in.number(), d = in.number();
+    const float v4[4] = {a, b, c, d};
+    const GLint iv4[4] = {in.integer(), in.integer(), in.integer(), in.integer()};
+    switch (in.below(64)) {
+      case 0: glBegin(e1); break;
+      case 1: glEnd(); break;
+      case 2: glVertex3f(a, b, c); break;
+      case 3: glVertex4fv(v4); break;
+      case 4: glColor4f(a, b, c, d); break;
+      case 5: glColor3ub(uint8_t(iv4[0]), uint8_t(iv4[1]), uint8_t(iv4[2])); break;
+      case 6: glNormal3f(a, b, c); break;
+      case 7: glTexCoord4f(a, b, c, d); break;
+      case 8: glMatrixMode(e1); break;
+      case 9: glLoadIdentity(); break;
+      case 10: glPushMatrix(); break;
+      case 11: glPopMatrix(); break;
+      case 12: glRotatef(a, b, c, d); break;
+      case 13: glTranslatef(a, b, c); break;
+      case 14: glScalef(a, b, c); break;
+      case 15: glOrtho(a, b, c, d, in.number(), in.number()); break;
+      case 16: glFrustum(a, b, c, d, in.number(), in.number()); break;
+      case 17: gluPerspective(a, b, c, d); break;
+      case 18: gluLookAt(a, b, c, d, 0, 0, 0, 1, 0); break;
+      case 19: glViewport(iv4[0], iv4[1], iv4[2], iv4[3]); break;
+      case 20: glScissor(iv4[0], iv4[1], iv4[2], iv4[3]); break;
+      case 21: glClear(GLbitfield(in.u32())); break;
+      case 22: glClearColor(a, b, c, d); break;
+      case 23: glEnable(e1); break;
+      case 24: glDisable(e1); break;
+      case 25: glDepthFunc(e1); break;
+      case 26: glBlendFunc(e1, e2); break;
+      case 27: glAlphaFunc(e1, a); break;
+      case 28: glFogfv(e1, v4); break;
+      case 29: glLightfv(GL_LIGHT0 + GLenum(in.below(9)), e1, v4); break;
+      case 30: glLightModelfv(e1, v4); break;
+      case 31: glMaterialfv(e1, e2, v4); break;
+      case 32: glColorMaterial(e1, e2); break;
+      case 33: glShadeModel(e1); break;
+      case 34: glCullFace(e1); break;
+      case 35: glFrontFace(e1); break;
+      case 36: glPolygonMode(e1, e2); break;
+      case 37: glPolygonOffset(a, b); break;
+      case 38: glPointSize(a); break;
+      case 39: glLineWidth(a); break;
+      case 40: glGenTextures(in.below(5) - 1, names); break;
+      case 41: glBindTexture(e1, names[in.below(4)] + GLuint(in.below(3))); break;
+      case 42: glDeleteTextures(in.below(5) - 1, names); break;
+      case 43: {
+        const int tw = in.below(67) - 2, th = in.below(67) - 2;  // at most 64: `pixels` holds 64x64 RGBA floats
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1 << in.below(4));
+        glTexImage2D(e1 == GL_TEXTURE ? GL_TEXTURE_2D : GL_TEXTURE_2D, in.below(9) - 1, GLint(in.enumerant()), tw, th,
+                     in.below(3) - 1, in.enumerant(), in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
+                     in.u8() & 1 ? pixels.data() : nullptr);
+        break;
+      }
+      case 44: {
+        const int tw = in.below(65), th = in.below(65);
+        glTexSubImage2D(GL_TEXTURE_2D, in.below(3), in.integer(), in.integer(), tw, th, in.enumerant(),
+                        in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT, pixels.data());
+        break;
+      }
+      case 45: glTexParameterf(e1, e2, a); break;
+      case 46: glTexEnvfv(e1, e2, v4); break;
+      case 47: gluBuild2DMipmaps(GL_TEXTURE_2D, GLint(e1), 1 + in.below(64), 1 + in.below(64), e2, GL_UNSIGNED_BYTE,
+                                 pixels.data());
+        break;
+      case 48: {
+        // Arrays inside `attrib`: sizes and types whose 64 elements fit in it.
+        const GLsizei stride = GLsizei(in.below(3) * 4);
+        const int sz = 2 + in.below(3);
+        glVertexPointer(sz, in.u8() & 1 ? GL_FLOAT : e1, stride, attrib.data());
+        glColorPointer(3 + in.below(2), in.u8() & 1 ? GL_FLOAT : GL_UNSIGNED_BYTE, 0, attrib.data() + 4);
+        glNormalPointer(GL_FLOAT, 0, attrib.data() + 8);
+        glTexCoordPointer(1 + in.below(4), GL_FLOAT, 0, attrib.data() + 12);
+        break;
+      }
+      case 49: (in.u8() & 1 ? glEnableClientState : glDisableClientState)(e1); break;
+      case 50: {
+        const int first = in.below(70) - 3, count = in.below(70) - 3;
+        glDrawArrays(e1, first, first >= 0 && first + count > 56 ? 56 - first : count);
+        break;
+      }
+      case 51: {
+        const int n = in.below(66) - 1;
+        const int t = in.below(4);
+        const void* p = t == 0 ? static_cast<const void*>(idx8.data()) : t == 1 ? static_cast<const void*>(idx16.data())
+                                                                                 : static_cast<const void*>(idx32.data());
+        const GLenum type = t == 0 ? GL_UNSIGNED_BYTE : t == 1 ? GL_UNSIGNED_SHORT : t == 2 ? GL_UNSIGNED_INT : e2;
+        glDrawElements(e1, n > 64 ? 64 : n, type, p);
+        break;
+      }
+      case 52: glArrayElement(in.below(56)); break;
+      case 53: glNewList(GLuint(in.below(6)), e1); break;
+      case 54: glEndList(); break;
+      case 55: glCallList(GLuint(in.below(6))); break;
+      case 56: {
+        const GLubyte lists[4] = {uint8_t(in.below(6)), uint8_t(in.below(6)), uint8_t(in.below(6)), uint8_t(in.below(6))};
+        glListBase(GLuint(in.below(3)));
+        glCallLists(in.below(6) - 1, GL_UNSIGNED_BYTE, lists);
+        break;
+      }
+      case 57: glGenLists(in.below(6) - 1); break;
+      case 58: glDeleteLists(GLuint(in.below(6)), in.below(6) - 1); break;
+      case 59: {
+        const int rw = in.below(12) - 1, rh = in.below(12) - 1;
+        glPixelStorei(GL_PACK_ALIGNMENT, 1 << in.below(4));
+        glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, e1, in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
+                     out.data());
+        break;
+      }
+      case 60: {
+        GLdouble dv[16];
+        GLint iv[16];
+        GLboolean bv[16];
+        glGetDoublev(e1, dv);
+        glGetIntegerv(e1, iv);
+        glGetBooleanv(e1, bv);
+        glIsEnabled(e1);
+        glGetString(e1);
+        break;
+      }
+      case 61: (in.u8() & 1 ? glFinish : glFlush)(); break;
+      case 62: glRectf(a, b, c, d); break;
+      default: {
+        GLint ww, hh, bytes;
+        void* depth = nullptr;
+        if (OSMesaGetDepthBuffer(ctx, &ww, &hh, &bytes, &depth) && depth) {
+          fuzz_check(ww == w && hh == h && bytes == 4);
+        }
+        break;
+      }
+    }
+    fuzz_check(valid_error(glGetError()));
+  }
+
+  // Still a working context: finish any open primitive and list, draw, read back.
+  glEnd();
+  glEndList();
+  glGetError();
+  glViewport(0, 0, w, h);
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  uint8_t px[4] = {0, 0, 0, 0};
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  fuzz_check(glGetError() == GL_NO_ERROR);
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  OSMesaDestroyContext(ctx);
+  return 0;
+}
