@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   auto info = velocity::cli::add_info_command(app);
   auto batch = velocity::cli::add_batch_command(app);
   auto view = velocity::cli::add_view_command(app);
+  auto fly = velocity::cli::add_fly_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("batch")) return batch();
     if (app.got_subcommand("view")) return view();
+    if (app.got_subcommand("fly")) return fly();
     return render();  // `render`, or no command at all: the demo scene
   } catch (const velocity::Error& e) {
     std::fprintf(stderr, "velocity: %s\n", e.what());

@@ -182,9 +182,11 @@ LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) 
     }
 
     // Render frame n on the render thread while frame n - 1 is presented here.
-    auto next = std::async(std::launch::async, render_job, std::ref(renderer), std::move(job));
-    if (pending.valid()) show(pending.get());
-    pending = std::move(next);
+    // (The renderer draws one frame at a time: take frame n - 1 first.)
+    std::optional<Rendered> previous;
+    if (pending.valid()) previous = pending.get();
+    pending = std::async(std::launch::async, render_job, std::ref(renderer), std::move(job));
+    if (previous) show(std::move(*previous));
     ++result.frames;
 
     // A fixed step with sound on: keep the program's time with the audio's.
