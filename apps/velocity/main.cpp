@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   auto batch = velocity::cli::add_batch_command(app);
   auto view = velocity::cli::add_view_command(app);
   auto fly = velocity::cli::add_fly_command(app);
+  auto drive = velocity::cli::add_drive_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("batch")) return batch();
     if (app.got_subcommand("view")) return view();
     if (app.got_subcommand("fly")) return fly();
+    if (app.got_subcommand("drive")) return drive();
     return render();  // `render`, or no command at all: the demo scene
   } catch (const velocity::Error& e) {
     std::fprintf(stderr, "velocity: %s\n", e.what());
