@@ -135,6 +135,16 @@ void FlyProgram::build_world(const FlyOptions& o) {
   scene_.camera.far = 900.0f;
 }
 
+Sphere FlyProgram::solid(size_t i) const {
+  const Solid& s = solids_.at(i);
+  return {scene_.world_matrices()[s.id].transform_point({0, 0, 0}), s.radius};
+}
+
+void FlyProgram::place(Vec3 position, float yaw, float pitch) {
+  pos_ = position, yaw_ = yaw, pitch_ = pitch;
+  place_camera();
+}
+
 void FlyProgram::event(const InputEvent&, const InputState&) {}
 
 void FlyProgram::place_camera() {
@@ -192,6 +202,9 @@ void FlyProgram::update(double dt_d, const InputState& in) {
       ++pending_crashes_;
     }
   }
+  clearance_ = 1e30f;
+  for (const Solid& s : solids_)
+    clearance_ = std::min(clearance_, length(pos_ - world[s.id].transform_point({0, 0, 0})) - s.radius);
   place_camera();
 }
 

@@ -42,6 +42,12 @@ class FlyProgram : public Game {
   // Objects rejected by their bounding sphere in the last frame(), of all with a mesh.
   size_t rejected() const { return rejected_; }
   size_t solid_objects() const { return solids_.size(); }
+  // Object i's bounding sphere now (world space), and the viewer's distance from the
+  // nearest object's surface after the last update.
+  Sphere solid(size_t i) const;
+  float clearance() const { return clearance_; }
+  // Puts the viewer somewhere (tests).
+  void place(Vec3 position, float yaw, float pitch);
 
   static constexpr float kWorld = 1000.0f;    // the world is kWorld across, wrapping
   static constexpr float kTurnRate = 1.2f;    // radians a second
@@ -69,6 +75,7 @@ class FlyProgram : public Game {
   double time_ = 0;
   int collisions_ = 0, pending_crashes_ = 0;
   size_t rejected_ = 0;
+  float clearance_ = 1e30f;
 };
 
 }  // namespace velocity::rt
