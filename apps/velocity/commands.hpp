@@ -15,5 +15,9 @@ std::function<int()> add_render_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_info_command(CLI::App& app);
 std::function<int()> add_batch_command(CLI::App& app);
+// Real time (present/commands): a window, input and sound.
+std::function<int()> add_view_command(CLI::App& app);
+std::function<int()> add_fly_command(CLI::App& app);
+std::function<int()> add_drive_command(CLI::App& app);
 
 }  // namespace velocity::cli

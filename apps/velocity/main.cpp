@@ -5,6 +5,9 @@
 //   velocity bench ...            the reference scene convention, timed
 //   velocity info FILE            what a model file holds
 //   velocity batch JOB ...        many models x many views to a folder (the Python job runner)
+//   velocity view [FILE]          look at a model in a window (present/)
+//   velocity fly                  seed 001's flythrough
+//   velocity drive                seed 000's driving simulation
 #include <cstdio>
 
 #include "commands.hpp"
@@ -18,6 +21,9 @@ int main(int argc, char** argv) {
   auto bench = velocity::cli::add_bench_command(app);
   auto info = velocity::cli::add_info_command(app);
   auto batch = velocity::cli::add_batch_command(app);
+  auto view = velocity::cli::add_view_command(app);
+  auto fly = velocity::cli::add_fly_command(app);
+  auto drive = velocity::cli::add_drive_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -27,6 +33,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("batch")) return batch();
+    if (app.got_subcommand("view")) return view();
+    if (app.got_subcommand("fly")) return fly();
+    if (app.got_subcommand("drive")) return drive();
     return render();  // `render`, or no command at all: the demo scene
   } catch (const velocity::Error& e) {
     std::fprintf(stderr, "velocity: %s\n", e.what());

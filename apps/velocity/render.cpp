@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "rt/viewing.hpp"
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
@@ -35,7 +36,7 @@ struct RenderArgs {
   float fov = 0;
   int ssaa = 0;  // 0: 3 for the demo scene, 1 for anything else
   int threads = 0;
-  bool ortho = false, painter = false, no_cull = false, verbose = false, swap_yz = true, affine = false;
+  bool ortho = false, painter = false, no_cull = false, cull = false, verbose = false, swap_yz = true, affine = false;
   size_t max_memory = LoadOptions{}.max_memory;
 };
 
@@ -127,7 +128,11 @@ Scene build_scene(const RenderArgs& a, float aspect) {
     LoadOptions options;
     options.swap_yz = a.swap_yz;
     options.max_memory = a.max_memory;
-    add_to_scene(scene, load_model(a.model, options));
+    Model model = load_model(a.model, options);
+    // Back faces drawn and lit from both sides, as model viewers do (f3d, MeshLab): an
+    // open mesh (a floor, a bumper) seen from behind would otherwise vanish.
+    if (!a.cull) rt::make_two_sided(model);
+    add_to_scene(scene, model);
     // A file with no light of its own but an ambient line (3D Studio writes one) would
     // render dark: add the renderer's usual key light from over the viewer's shoulder.
     bool has_key = std::any_of(scene.lights.begin(), scene.lights.end(),
@@ -177,6 +182,10 @@ int run_render(const RenderArgs& a) {
   o.cull_back_faces = !a.no_cull;
   const FrameStats& st = renderer.render(scene);
   write_image(a.out, renderer.color_image());
+  // Never silently empty: say why nothing was drawn.
+  const bool model_file = !a.model.empty() && a.model != "cube" && a.model != "sphere" && a.model != "torus";
+  if (std::string why = rt::explain_empty_frame(st, o.cull_back_faces && (a.cull || !model_file)); !why.empty())
+    std::fprintf(stderr, "velocity: nothing was drawn: %s\n", why.c_str());
   if (!a.depth_out.empty()) write_image(a.depth_out, renderer.depth_image());
   if (a.verbose) {
     std::printf("size=%dx%d ssaa=%d samples=%dx%d framebuffer_bytes=%zu\n", w, h, o.ssaa, w * o.ssaa, h * o.ssaa,
@@ -210,7 +219,8 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--fov", args->fov, "Vertical field of view in degrees");
   cmd->add_flag("--ortho", args->ortho, "Orthographic projection");
   cmd->add_flag("--painter", args->painter, "Painter's algorithm (depth sort) instead of the depth buffer");
-  cmd->add_flag("--no-cull", args->no_cull, "Draw back faces too");
+  cmd->add_flag("--no-cull", args->no_cull, "Draw back faces of every material (model files draw theirs by default)");
+  cmd->add_flag("--cull", args->cull, "Cull the back faces of a model file's one-sided faces (default: drawn, lit from both sides)");
   cmd->add_flag("!--no-swap-yz", args->swap_yz, "Keep 3D Studio's Z-up coordinates (ASC files)");
   cmd->add_option("--max-memory", args->max_memory, "Most the model loader may allocate, e.g. 512M (K, M, G: x1024)")
       ->transform(CLI::AsSizeValue(false))

@@ -1,0 +1,71 @@
+// `velocity fly`: seed 001's flythrough (rt/fly.hpp) behind its title screen and menu.
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+
+#include "commands.hpp"
+#include "commands/realtime.hpp"
+#include "rt/fly.hpp"
+#include "velocity/error.hpp"
+
+namespace velocity::cli {
+
+namespace {
+
+const char* const kCredits =
+    "*VELOCITY FLIGHT\n\nA FLYTHROUGH AFTER SEED 001\n\n\n"
+    "*ENGINE\nVELOCITY SOFTWARE RENDERER\nEVERY PIXEL ON THE CPU\n\n\n"
+    "*CONTROLS\nLEFT / RIGHT  TURN\nUP  DIVE     DOWN  CLIMB\nA or CTRL  FASTER\nZ or SHIFT  SLOWER\nESC  MENU\n\n\n"
+    "*MODELS\nCUBES, PYRAMIDS AND TORI\nOR YOUR OWN PLG FILES\n\n\n"
+    "*MUSIC AND SOUND\nSYNTHESISED AS YOU LISTEN\n\n\n"
+    "*THANK YOU FOR FLYING\n";
+
+}  // namespace
+
+std::function<int()> add_fly_command(CLI::App& app) {
+  struct Args {
+    present::RealtimeArgs rt;
+    std::vector<std::string> models;
+    std::string plg_dir;
+    int objects = 90;
+    unsigned seed = 1;
+    bool skip_menu = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("fly", "Seed 001's flythrough: arrows turn, dive and climb; A/Z faster/slower; Esc menu");
+  cmd->add_option("--models", args->models, "Model files to fill the world with (PLG, ASC, OBJ, ...)");
+  cmd->add_option("--plg", args->plg_dir, "Fill the world with every .plg file in this folder (e.g. ../shared/data/models/plg)");
+  cmd->add_option("--objects", args->objects, "How many objects (1..2000)")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "World layout seed")->capture_default_str();
+  cmd->add_flag("--skip-menu", args->skip_menu, "Start flying at once (no title screen or menu)");
+  present::add_realtime_options(cmd, args->rt);
+  return [args] {
+    rt::FlyOptions o;
+    o.models = args->models;
+    if (!args->plg_dir.empty()) {
+      std::error_code ec;
+      std::vector<std::string> found;
+      for (const auto& entry : std::filesystem::directory_iterator(args->plg_dir, ec)) {
+        std::string ext = entry.path().extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (entry.is_regular_file() && ext == ".plg") found.push_back(entry.path().string());
+      }
+      if (ec) throw Error("--plg: cannot read folder " + args->plg_dir + ": " + ec.message());
+      std::sort(found.begin(), found.end());
+      o.models.insert(o.models.end(), found.begin(), found.end());
+    }
+    if (args->objects < 1 || args->objects > 2000) throw Error("--objects must be 1..2000");
+    o.objects = args->objects;
+    o.seed = args->seed;
+    rt::FlyProgram fly(o);
+    rt::ShellText text;
+    text.title = "VELOCITY FLIGHT";
+    text.subtitle = "A POLYGON FLYTHROUGH";
+    text.start = "FLY";
+    text.credits = kCredits;
+    rt::Shell shell(fly, text, args->skip_menu);
+    return present::run_realtime(shell, args->rt, "640x480", true);
+  };
+}
+
+}  // namespace velocity::cli

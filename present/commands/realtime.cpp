@@ -1,0 +1,82 @@
+#include "commands/realtime.hpp"
+
+#include <SDL.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "commands.hpp"
+#include "rt/loop.hpp"
+#include "rt/synth.hpp"
+#include "sdl/presenter.hpp"
+#include "velocity/error.hpp"
+
+namespace velocity::present {
+
+void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
+  cmd->add_option("--size", a.size,
+                  "Frame size WxH (the seed's modes: 320x200, 320x240, 640x480, 800x600) or 'window' (the window's size)");
+  cmd->add_option("--scale", a.scale, "Window size as a multiple of the frame size (default: fits the screen)");
+  cmd->add_flag("--fullscreen", a.fullscreen, "Start fullscreen (F11 or Alt+Enter toggles)");
+  cmd->add_option("--frames", a.frames, "Stop after this many frames");
+  cmd->add_option("--record", a.record, "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step)");
+  cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/rt/script.hpp)");
+  cmd->add_flag("--headless", a.headless, "No window (with --frames and/or --record)");
+  cmd->add_flag("--mute", a.mute, "No sound");
+  cmd->add_flag("--no-overlay", a.no_overlay, "Hide the frame-rate overlay (F3 toggles)");
+  cmd->add_flag("--no-vsync", a.no_vsync, "Present without waiting for vertical sync (may tear)");
+  cmd->add_flag("--window-at-origin", a.at_origin, "Put the window at the screen's top-left corner");
+  cmd->add_option("--linger", a.linger, "After the last frame, keep the window open this many seconds");
+  cmd->add_option("--threads", a.threads, "Threads rasterizing tiles (0: every core)");
+}
+
+int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string& default_size, bool sound) {
+  rt::LoopOptions lo;
+  std::string size = a.size.empty() ? default_size : a.size;
+  if (size == "window") {
+    lo.follow_window = true;
+    lo.width = 800, lo.height = 600;
+  } else {
+    cli::parse_size(size, lo.width, lo.height);
+  }
+  if (a.frames < 0) throw Error("--frames must be 0 or more");
+  if (a.scale < 0 || a.scale > 16) throw Error("--scale must be 1..16");
+  if (a.linger < 0 || a.linger > 3600) throw Error("--linger must be 0..3600 seconds");
+  lo.frames = a.frames;
+  lo.record_dir = a.record;
+  if (!a.script.empty()) lo.script = rt::load_script(a.script);
+  lo.overlay = !a.no_overlay;
+  lo.linger = a.linger;
+  lo.threads = a.threads;
+
+  std::unique_ptr<SdlPresenter> window;
+  if (!a.headless) {
+    WindowOptions w;
+    w.title = program.title();
+    // Small modes get a bigger window (the seed's 320x200 is a postage stamp today).
+    int scale = a.scale ? a.scale : std::max(1, 800 / std::max(lo.width, 1));
+    w.width = lo.width * scale, w.height = lo.height * scale;
+    w.fullscreen = a.fullscreen;
+    w.vsync = !a.no_vsync;
+    w.at_origin = a.at_origin;
+    try {
+      window = std::make_unique<SdlPresenter>(w);
+    } catch (const Error& e) {
+      if (a.frames <= 0 && a.record.empty())
+        throw Error(std::string(e.what()) + " (without a display, use --headless with --frames N and/or --record DIR)");
+      std::fprintf(stderr, "velocity: %s; running headless\n", e.what());
+    }
+  }
+  rt::Synth synth;
+  std::unique_ptr<SdlAudio> audio;
+  if (sound && !a.mute) audio = std::make_unique<SdlAudio>(synth);
+  lo.synth = &synth;
+  lo.pace_to_clock = audio && audio->active();
+  rt::run_loop(program, window.get(), lo);
+  audio.reset();
+  window.reset();
+  SDL_Quit();
+  return 0;
+}
+
+}  // namespace velocity::present

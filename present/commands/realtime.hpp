@@ -1,0 +1,35 @@
+// What `velocity view`, `fly` and `drive` share: the window, sound, scripts, recording
+// and the statistics line, as command-line options.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "rt/program.hpp"
+
+namespace velocity::present {
+
+struct RealtimeArgs {
+  std::string size;          // "WxH" or "window"; empty: the command's default
+  int scale = 0;             // window = frame size x scale (0: fit the screen sensibly)
+  bool fullscreen = false;
+  long frames = 0;
+  std::string record;
+  std::string script;
+  bool headless = false;
+  bool mute = false;
+  bool no_overlay = false;
+  bool no_vsync = false;
+  bool at_origin = false;
+  double linger = 0;
+  int threads = 0;
+};
+
+// Registers the options above on `cmd`.
+void add_realtime_options(CLI::App* cmd, RealtimeArgs& args);
+// Runs `program` with a window (or headless), sound and the main loop; prints the
+// frame-time statistics at exit. `default_size` when --size is not given.
+int run_realtime(rt::Program& program, const RealtimeArgs& args, const std::string& default_size, bool sound);
+
+}  // namespace velocity::present

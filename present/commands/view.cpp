@@ -1,0 +1,38 @@
+// `velocity view [FILE]`: the orbit viewer (rt/viewer.hpp) in a window.
+#include <memory>
+
+#include "commands.hpp"
+#include "commands/realtime.hpp"
+#include "rt/viewer.hpp"
+
+namespace velocity::cli {
+
+std::function<int()> add_view_command(CLI::App& app) {
+  struct Args {
+    present::RealtimeArgs rt;
+    std::string model;
+    bool cull = false, swap_yz = true;
+    int ssaa = 1;
+    std::string shot = "velocity-shot";
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("view", "Look at a model in a window: drag rotates, wheel zooms, right-drag pans, H for help");
+  cmd->add_option("model", args->model, "Model file (.asc, .plg, .obj, .gltf, .glb, .3ds, .ply, .stl); none: the demo scene");
+  cmd->add_flag("--cull", args->cull, "Cull back faces (default: drawn, lit from both sides)");
+  cmd->add_flag("!--no-swap-yz", args->swap_yz, "Keep 3D Studio's Z-up coordinates (ASC files)");
+  cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor 1..3 to start with (A cycles)");
+  cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
+  present::add_realtime_options(cmd, args->rt);
+  return [args] {
+    rt::ViewerOptions o;
+    o.model = args->model;
+    o.load.swap_yz = args->swap_yz;
+    o.cull_back_faces = args->cull;
+    o.ssaa = args->ssaa;
+    o.screenshot_prefix = args->shot;
+    rt::ViewerProgram viewer(o);
+    return present::run_realtime(viewer, args->rt, "800x600", false);
+  };
+}
+
+}  // namespace velocity::cli

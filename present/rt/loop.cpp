@@ -1,0 +1,222 @@
+#include "rt/loop.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <future>
+#include <thread>
+
+#include "rt/synth.hpp"
+#include "velocity/error.hpp"
+#include "velocity/image.hpp"
+
+namespace velocity::rt {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// The render thread's side: owns the renderer; one frame at a time.
+struct RenderJob {
+  Frame frame;
+  int width = 0, height = 0;
+  std::string stats_text;  // the overlay's frame-rate line ("" when off)
+};
+
+struct Rendered {
+  Image image;
+  double ms = 0;
+  std::string screenshot;
+};
+
+Rendered render_job(Renderer& renderer, RenderJob job) {
+  auto start = Clock::now();
+  Rendered out;
+  out.image = Image(job.width, job.height, 0xff000000u);
+  Frame& f = job.frame;
+  if (renderer.width() != job.width || renderer.height() != job.height) renderer.resize(job.width, job.height);
+  int threads = renderer.options.threads;
+  renderer.options = f.options;
+  renderer.options.threads = threads;
+  if (f.draw_scene) {
+    renderer.render(f.scene);
+    renderer.read_color(out.image.pixels.data(), size_t(job.width) * 4, 4);
+  } else {
+    Vec3 bg = f.scene.background;
+    auto c = [](float v) { return uint32_t(std::lrint(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    out.image = Image(job.width, job.height, 0xff000000u | c(bg.z) << 16 | c(bg.y) << 8 | c(bg.x));
+  }
+  Canvas canvas{out.image.pixels.data(), job.width, job.height, size_t(job.width) * 4};
+  f.overlay.draw(canvas);
+  if (!job.stats_text.empty()) {
+    int scale = std::max(1, job.height / 300);
+    int w = text_width(job.stats_text, scale) + 6 * scale, h = text_height(job.stats_text, scale) + 6 * scale;
+    fill_rect(canvas, 0, 0, w, h, {0, 0, 0, 150});
+    draw_text(canvas, 3 * scale, 3 * scale + scale, job.stats_text, {255, 255, 120, 255}, scale);
+  }
+  out.screenshot = std::move(f.screenshot);
+  out.ms = ms_since(start);
+  return out;
+}
+
+}  // namespace
+
+double percentile(std::vector<double> samples, double fraction) {
+  if (samples.empty()) return 0;
+  std::sort(samples.begin(), samples.end());
+  size_t rank = size_t(std::ceil(std::clamp(fraction, 0.0, 1.0) * double(samples.size())));
+  return samples[std::clamp<size_t>(rank, 1, samples.size()) - 1];
+}
+
+std::string summarize(const LoopResult& r) {
+  double med = percentile(r.frame_ms, 0.5), p99 = percentile(r.frame_ms, 0.99);
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "frames=%ld size=%dx%d median_ms=%.2f p99_ms=%.2f fps=%.1f render_median_ms=%.2f render_p99_ms=%.2f",
+                r.frames, r.width, r.height, med, p99, med > 0 ? 1000.0 / med : 0.0, percentile(r.render_ms, 0.5),
+                percentile(r.render_ms, 0.99));
+  return buf;
+}
+
+LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) {
+  if (!o.record_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.record_dir, ec);
+    if (ec) throw Error("--record: cannot create folder " + o.record_dir + ": " + ec.message());
+  }
+  const bool fixed = o.fixed_step || o.script || !o.record_dir.empty();
+  std::optional<ScriptPlayer> script;
+  if (o.script) script.emplace(*o.script);
+
+  int width = o.width, height = o.height;
+  bool follow = o.follow_window && frontend;
+  if (follow) std::tie(width, height) = frontend->window_size();
+  program.resize(width, height);
+  bool overlay = o.overlay;
+  int mode = -1;  // index into kScreenModes once F2 is pressed; 4 = the window's size
+
+  Renderer renderer(std::max(width, 1), std::max(height, 1));
+  renderer.options.threads = o.threads;
+  InputState input;
+  std::vector<InputEvent> events;
+  LoopResult result;
+  std::future<Rendered> pending;
+  long recorded = 0;
+  double sim_time = 0;
+  auto start = Clock::now();
+  auto last = start;
+  std::string title;
+  Image last_image;  // what the window shows, for lingering
+
+  // Shows (and records) a finished frame.
+  auto show = [&](Rendered r) {
+    result.render_ms.push_back(r.ms);
+    if (frontend) frontend->present(r.image.pixels.data(), r.image.width, r.image.height);
+    if (!o.record_dir.empty()) {
+      char name[64];
+      std::snprintf(name, sizeof name, "/frame_%05ld.png", recorded);
+      write_png(o.record_dir + name, r.image);
+    }
+    ++recorded;
+    if (!r.screenshot.empty()) {
+      write_png(r.screenshot, r.image);
+      std::printf("wrote %s (%dx%d)\n", r.screenshot.c_str(), r.image.width, r.image.height);
+      std::fflush(stdout);
+    }
+    last_image = std::move(r.image);
+  };
+
+  bool quit = false;
+  for (long n = 0; !quit && (o.frames <= 0 || n < o.frames); ++n) {
+    // Time step.
+    auto now = Clock::now();
+    double dt = fixed ? kFixedStep : std::clamp(std::chrono::duration<double>(now - last).count(), 0.0, 0.1);
+    if (n > 0) result.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
+    last = now;
+    sim_time += n > 0 ? dt : 0.0;
+
+    // Events: the window's, then the script's due ones.
+    events.clear();
+    if (frontend) frontend->poll(events);
+    if (script) script->due(sim_time, events);
+    for (const InputEvent& e : events) {
+      if (e.kind == InputEvent::Quit) quit = true;
+      if (e.kind == InputEvent::KeyDown && e.key == KeyF11 && frontend) frontend->toggle_fullscreen();
+      if (e.kind == InputEvent::KeyDown && e.key == KeyF3) overlay = !overlay;
+      if (e.kind == InputEvent::KeyDown && e.key == KeyF2) {
+        mode = (mode + 1) % 5;
+        follow = mode == 4 && frontend;
+        if (mode < 4) width = kScreenModes[mode].width, height = kScreenModes[mode].height;
+        else if (frontend) std::tie(width, height) = frontend->window_size();
+        program.resize(width, height);
+      }
+      if (e.kind == InputEvent::Resize && follow && e.x > 0 && e.y > 0) {
+        width = std::min(e.x, 16384), height = std::min(e.y, 16384);
+        program.resize(width, height);
+      }
+      input.apply(e);
+      program.event(e, input);
+    }
+    if (program.finished()) quit = true;
+    if (quit) break;
+
+    program.update(n > 0 ? dt : 0.0, input);
+    if (o.synth) program.sound(*o.synth);
+    if (frontend && program.title() != title) frontend->set_title(title = program.title());
+
+    RenderJob job;
+    program.frame(job.frame);
+    job.width = width, job.height = height;
+    if (overlay) {
+      double med = percentile(std::vector<double>(result.frame_ms.end() - std::min<size_t>(result.frame_ms.size(), 60),
+                                                  result.frame_ms.end()),
+                              0.5);
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "%.0f FPS  %.1f MS  RENDER %.1f MS  %dX%d", med > 0 ? 1000.0 / med : 0.0, med,
+                    result.render_ms.empty() ? 0.0 : result.render_ms.back(), width, height);
+      job.stats_text = buf;
+    }
+
+    // Render frame n on the render thread while frame n - 1 is presented here.
+    // (The renderer draws one frame at a time: take frame n - 1 first.)
+    std::optional<Rendered> previous;
+    if (pending.valid()) previous = pending.get();
+    pending = std::async(std::launch::async, render_job, std::ref(renderer), std::move(job));
+    if (previous) show(std::move(*previous));
+    ++result.frames;
+
+    // A fixed step with sound on: keep the program's time with the audio's.
+    if (fixed && o.pace_to_clock) {
+      auto due = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(sim_time));
+      std::this_thread::sleep_until(due);
+    }
+  }
+  if (pending.valid()) show(pending.get());
+  result.width = width, result.height = height;
+
+  // Keep the last frame on screen a while (tests take the window's picture then).
+  if (frontend && o.linger > 0) {
+    auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.linger));
+    while (Clock::now() < until) {
+      events.clear();
+      frontend->poll(events);
+      if (std::any_of(events.begin(), events.end(), [](const InputEvent& e) {
+            return e.kind == InputEvent::Quit || (e.kind == InputEvent::KeyDown && e.key == KeyEscape);
+          }))
+        break;
+      if (last_image.width > 0) frontend->present(last_image.pixels.data(), last_image.width, last_image.height);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
+  if (!o.quiet) {
+    std::printf("%s\n", summarize(result).c_str());
+    std::fflush(stdout);
+  }
+  return result;
+}
+
+}  // namespace velocity::rt

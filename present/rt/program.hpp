@@ -1,0 +1,52 @@
+// A real-time program (the viewer, the flythrough, the driving simulation) as the main
+// loop sees it: events in, fixed or measured time steps, and each frame described as
+// data (a scene to render, render options, a 2D layer on top). Nothing here knows
+// about SDL, so tests drive programs directly and deterministically.
+#pragma once
+
+#include <string>
+
+#include "rt/canvas.hpp"
+#include "rt/input.hpp"
+#include "velocity/renderer.hpp"
+#include "velocity/scene.hpp"
+
+namespace velocity::rt {
+
+class Synth;
+
+// One frame, as the program wants it drawn. The render thread owns it once handed over.
+struct Frame {
+  Scene scene;
+  bool draw_scene = true;   // false: just the background colour and the 2D layer
+  RenderOptions options;
+  DrawList overlay;         // drawn over the 3D image
+  std::string screenshot;   // when set, the finished frame is also written there (PNG)
+};
+
+class Program {
+ public:
+  virtual ~Program() = default;
+  // The frame size in pixels; called before the first update and whenever it changes.
+  virtual void resize(int width, int height) {
+    width_ = width;
+    height_ = height;
+  }
+  virtual void event(const InputEvent& e, const InputState& input) = 0;
+  // Advances the program by `dt` seconds.
+  virtual void update(double dt, const InputState& input) = 0;
+  // Describes the current state as a frame (called once after each update).
+  virtual void frame(Frame& out) = 0;
+  // Pushes sound parameters (engine pitch, effects, music) to the synthesiser.
+  virtual void sound(Synth&) {}
+  virtual bool finished() const = 0;
+  virtual std::string title() const = 0;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ protected:
+  int width_ = 640, height_ = 480;
+};
+
+}  // namespace velocity::rt

@@ -1,0 +1,221 @@
+#include "rt/viewer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include "rt/viewing.hpp"
+#include "velocity/demo.hpp"
+#include "velocity/error.hpp"
+
+namespace velocity::rt {
+
+namespace {
+
+constexpr Shading kShadings[] = {Shading::Flat, Shading::Gouraud, Shading::Phong, Shading::Unlit, Shading::Points};
+constexpr float kPi = std::numbers::pi_v<float>;
+
+std::string upper(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return r;
+}
+
+}  // namespace
+
+ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
+  options_.ssaa = std::clamp(o_.ssaa, 1, 4);
+  options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see viewing.hpp)
+  open(o_.model);
+}
+
+void ViewerProgram::open(const std::string& path) {
+  Scene scene;
+  if (path.empty()) {
+    scene = make_demo_scene();
+    name_ = "DEMO SCENE";
+  } else {
+    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_));
+    name_ = std::filesystem::path(path).filename().string();
+  }
+  triangles_ = 0;
+  for (const Object& obj : scene.objects())
+    if (obj.mesh) triangles_ += obj.mesh->triangle_count();
+  Sphere b = scene.bounds();
+  target_ = b.center;
+  radius_ = std::max(b.radius, 1e-3f);
+  // Start where the scene's own camera is (the demo's, or the framed one).
+  Vec3 d = scene.camera.position - target_;
+  if (length(d) > 1e-6f) initial_dir_ = normalize(d);
+  scene_ = std::move(scene);
+  reset_view();
+  distance_ = std::max(length(d), radius_ * 0.1f);
+}
+
+void ViewerProgram::reset_view() {
+  Vec3 d = initial_dir_;
+  yaw_ = std::atan2(d.x, d.z);
+  pitch_ = std::asin(std::clamp(d.y, -1.0f, 1.0f));
+  float fov = scene_.camera.fov_y;
+  distance_ = radius_ / std::sin(fov / 2) * 1.05f;
+}
+
+void ViewerProgram::place_camera() {
+  Camera& c = scene_.camera;
+  Vec3 dir{std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_), std::cos(pitch_) * std::cos(yaw_)};
+  c.position = target_ + dir * distance_;
+  c.roll = 0;
+  c.look_at(target_);
+  float to_center = length(scene_.bounds().center - c.position);
+  c.near = std::max(to_center - radius_ * 1.2f, std::max(distance_, radius_) * 1e-3f);
+  c.far = to_center + radius_ * 1.2f;
+}
+
+void ViewerProgram::resize(int width, int height) { Program::resize(width, height); }
+
+void ViewerProgram::event(const InputEvent& e, const InputState&) {
+  auto say = [&](std::string m) {
+    message_ = std::move(m);
+    message_time_ = 2.5;
+  };
+  switch (e.kind) {
+    case InputEvent::MouseDown:
+      drag_ = e.button == MouseButton::Left ? 1 : 2;
+      last_x_ = e.x, last_y_ = e.y;
+      break;
+    case InputEvent::MouseUp: drag_ = 0; break;
+    case InputEvent::MouseMove:
+      if (drag_) {
+        float dx = float(e.x - last_x_), dy = float(e.y - last_y_);
+        float per_pixel = 1.0f / float(std::max(height_, 1));
+        if (drag_ == 1) {
+          yaw_ -= dx * per_pixel * kPi;
+          pitch_ = std::clamp(pitch_ + dy * per_pixel * kPi, -1.55f, 1.55f);
+        } else {
+          // Pan in the view plane, so the point under the mouse follows it.
+          const Camera& c = scene_.camera;
+          Mat4 v = c.view();
+          Vec3 right{v.m[0][0], v.m[0][1], v.m[0][2]}, up{v.m[1][0], v.m[1][1], v.m[1][2]};
+          float scale = 2.0f * distance_ * std::tan(c.fov_y / 2) * per_pixel;
+          target_ = target_ - right * (dx * scale) + up * (dy * scale);
+        }
+        last_x_ = e.x, last_y_ = e.y;
+      }
+      break;
+    case InputEvent::Wheel:
+      distance_ = std::clamp(distance_ * std::pow(0.88f, e.wheel), radius_ * 0.05f, radius_ * 50.0f);
+      break;
+    case InputEvent::Drop:
+      try {
+        open(e.path);
+        o_.model = e.path;
+        say("OPENED " + upper(name_));
+      } catch (const std::exception& ex) {
+        say(ex.what());
+      }
+      break;
+    case InputEvent::KeyDown:
+      switch (int(e.key)) {
+        case KeyEscape:
+        case 'q': quit_ = true; break;
+        case 's':
+          shading_ = (shading_ + 1) % int(std::size(kShadings) + 1);
+          say("SHADING " + (shading_ ? upper(to_string(kShadings[shading_ - 1])) : std::string("AS THE MODEL SAYS")));
+          break;
+        case 'w':
+          wire_ = !wire_;
+          say(wire_ ? "WIREFRAME" : "SOLID");
+          break;
+        case 'p':
+          options_.depth_mode = options_.depth_mode == DepthMode::ZBuffer ? DepthMode::Painter : DepthMode::ZBuffer;
+          say(options_.depth_mode == DepthMode::Painter ? "PAINTER'S ALGORITHM" : "DEPTH BUFFER");
+          break;
+        case 'a':
+          options_.ssaa = options_.ssaa % 3 + 1;
+          say("SSAA " + std::to_string(options_.ssaa) + "X" + std::to_string(options_.ssaa));
+          break;
+        case 't':
+          options_.affine = !options_.affine;
+          say(options_.affine ? "AFFINE TEXTURES" : "PERSPECTIVE-CORRECT TEXTURES");
+          break;
+        case 'b':
+          // Back faces: RenderOptions culls only one-sided materials; two-sided ones
+          // (every loaded model's, by default) are drawn unless culling is forced.
+          o_.cull_back_faces = !o_.cull_back_faces;
+          try {
+            if (!o_.model.empty()) open(o_.model);
+          } catch (const std::exception& ex) {
+            say(ex.what());
+            break;
+          }
+          say(o_.cull_back_faces ? "BACK FACES CULLED" : "BACK FACES DRAWN");
+          break;
+        case 'r': reset_view(); break;
+        case ' ': spin_ = !spin_; break;
+        case 'h':
+        case KeyF1: help_ = !help_; break;
+        case 'c':
+        case KeyF12: {
+          char name[64];
+          std::snprintf(name, sizeof name, "-%03d.png", shots_++);
+          pending_shot_ = o_.screenshot_prefix + name;
+          break;
+        }
+        default: break;
+      }
+      break;
+    default: break;
+  }
+}
+
+void ViewerProgram::update(double dt, const InputState& input) {
+  if (spin_) yaw_ += float(dt) * 0.6f;
+  float turn = float(dt) * 1.5f;
+  if (input.held(KeyLeft)) yaw_ -= turn;
+  if (input.held(KeyRight)) yaw_ += turn;
+  if (input.held(KeyUp)) pitch_ = std::min(pitch_ + turn, 1.55f);
+  if (input.held(KeyDown)) pitch_ = std::max(pitch_ - turn, -1.55f);
+  if (input.held('+') || input.held('=')) distance_ *= std::pow(0.5f, float(dt));
+  if (input.held('-')) distance_ *= std::pow(2.0f, float(dt));
+  message_time_ = std::max(0.0, message_time_ - dt);
+  place_camera();
+}
+
+std::string ViewerProgram::title() const { return "Velocity - " + name_; }
+
+void ViewerProgram::frame(Frame& out) {
+  out.scene = scene_;
+  out.options = options_;
+  if (wire_) out.options.shading = Shading::Wireframe;
+  else if (shading_) out.options.shading = kShadings[shading_ - 1];
+  out.screenshot = std::move(pending_shot_);
+  pending_shot_.clear();
+
+  const int s = std::max(1, height_ / 300);
+  DrawList& d = out.overlay;
+  char line[256];
+  std::snprintf(line, sizeof line, "%s  %zu TRIS  %s  %s  SSAA %d  %s  H: HELP", upper(name_).c_str(), triangles_,
+                wire_ ? "WIRE" : shading_ ? upper(to_string(kShadings[shading_ - 1])).c_str() : "OWN",
+                options_.depth_mode == DepthMode::Painter ? "PAINTER" : "Z-BUFFER", options_.ssaa,
+                options_.affine ? "AFFINE" : "PERSPECTIVE");
+  d.rect(0, height_ - 12 * s, width_, 12 * s, {0, 0, 0, 140});
+  d.text(3 * s, height_ - 10 * s, line, {220, 230, 255, 255}, s);
+  if (message_time_ > 0) d.text_centered(width_ / 2, height_ - 30 * s, message_, {255, 230, 120, 255}, s);
+  if (help_) {
+    const char* help =
+        "LEFT DRAG: ROTATE   RIGHT DRAG: PAN   WHEEL: ZOOM\n"
+        "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: RESET\n"
+        "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
+        "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
+        "C or F12: SCREENSHOT   F2: SCREEN MODE   F3: FPS\n"
+        "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";
+    int w = text_width(help, s) + 16 * s, h = text_height(help, s) + 16 * s;
+    int x = (width_ - w) / 2, y = (height_ - h) / 2;
+    d.rect(x, y, w, h, {10, 20, 40, 200});
+    d.text(x + 8 * s, y + 8 * s, help, {255, 255, 255, 255}, s);
+  }
+}
+
+}  // namespace velocity::rt

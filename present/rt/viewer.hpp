@@ -1,0 +1,63 @@
+// `velocity view`: an orbit viewer. Left-drag rotates about the model, the wheel zooms,
+// right-drag pans; keys switch shading, wireframe, painter's / depth buffer, SSAA,
+// affine / perspective textures, back faces, and take screenshots. A file dropped on
+// the window replaces the model.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "rt/program.hpp"
+#include "velocity/load.hpp"
+
+namespace velocity::rt {
+
+struct ViewerOptions {
+  std::string model;          // empty: the demo scene
+  LoadOptions load;
+  bool cull_back_faces = false;
+  std::string screenshot_prefix = "velocity-shot";  // screenshots: PREFIX-NNN.png
+  int ssaa = 1;
+};
+
+class ViewerProgram : public Program {
+ public:
+  // Throws velocity::Error when the model cannot be loaded.
+  explicit ViewerProgram(ViewerOptions options);
+  void resize(int width, int height) override;
+  void event(const InputEvent& e, const InputState& input) override;
+  void update(double dt, const InputState& input) override;
+  void frame(Frame& out) override;
+  bool finished() const override { return quit_; }
+  std::string title() const override;
+
+  // The orbit, for tests: angles in radians, distance in scene units.
+  float yaw() const { return yaw_; }
+  float pitch() const { return pitch_; }
+  float distance() const { return distance_; }
+  const Scene& scene() const { return scene_; }
+  const RenderOptions& render_options() const { return options_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  void open(const std::string& path);  // throws
+  void reset_view();
+  void place_camera();
+
+  ViewerOptions o_;
+  Scene scene_;
+  std::string name_;
+  size_t triangles_ = 0;
+  Vec3 target_, initial_dir_{0.6f, 0.45f, 1.0f};
+  float radius_ = 1, yaw_ = 0, pitch_ = 0, distance_ = 3;
+  RenderOptions options_;
+  int shading_ = 0;  // 0: the model's own; then flat, gouraud, phong, unlit, points
+  bool wire_ = false, help_ = false, spin_ = false, quit_ = false;
+  int drag_ = 0, last_x_ = 0, last_y_ = 0;
+  int shots_ = 0;
+  std::string pending_shot_;
+  std::string message_;
+  double message_time_ = 0;
+};
+
+}  // namespace velocity::rt

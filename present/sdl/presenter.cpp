@@ -1,0 +1,208 @@
+#include "sdl/presenter.hpp"
+
+#include <SDL.h>
+
+#include <algorithm>
+
+#include "velocity/error.hpp"
+
+namespace velocity::present {
+
+using rt::InputEvent;
+using rt::Key;
+
+namespace {
+
+Key translate_key(SDL_Keycode k) {
+  switch (k) {
+    case SDLK_LEFT: return rt::KeyLeft;
+    case SDLK_RIGHT: return rt::KeyRight;
+    case SDLK_UP: return rt::KeyUp;
+    case SDLK_DOWN: return rt::KeyDown;
+    case SDLK_LCTRL:
+    case SDLK_RCTRL: return rt::KeyCtrl;
+    case SDLK_LSHIFT:
+    case SDLK_RSHIFT: return rt::KeyShift;
+    case SDLK_PAGEUP: return rt::KeyPageUp;
+    case SDLK_PAGEDOWN: return rt::KeyPageDown;
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER: return rt::KeyEnter;
+    case SDLK_KP_PLUS: return Key('+');
+    case SDLK_KP_MINUS: return Key('-');
+    default: break;
+  }
+  if (k >= SDLK_F1 && k <= SDLK_F12) return Key(rt::KeyF1 + (k - SDLK_F1));
+  if (k > 0 && k < 127) return Key(k);  // SDL keycodes are ASCII for these (lowercase letters)
+  return rt::KeyNone;
+}
+
+}  // namespace
+
+struct SdlPresenter::Impl {
+  SDL_Window* window = nullptr;
+  SDL_Renderer* renderer = nullptr;
+  SDL_Texture* texture = nullptr;
+  int tex_w = 0, tex_h = 0;
+  bool fullscreen = false;
+};
+
+SdlPresenter::SdlPresenter(const WindowOptions& o) : impl_(std::make_unique<Impl>()) {
+  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) throw Error(std::string("cannot open a window: ") + SDL_GetError());
+  // Nearest filtering: a 320x200 frame stays crisp pixels at any window size.
+  SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");
+  SDL_SetHint(SDL_HINT_RENDER_VSYNC, o.vsync ? "1" : "0");
+  int pos = o.at_origin ? 0 : SDL_WINDOWPOS_CENTERED;
+  Uint32 flags = SDL_WINDOW_RESIZABLE | (o.fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+  impl_->fullscreen = o.fullscreen;
+  impl_->window = SDL_CreateWindow(o.title.c_str(), pos, pos, o.width, o.height, flags);
+  if (!impl_->window) {
+    std::string why = SDL_GetError();
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    throw Error("cannot open a window: " + why);
+  }
+  Uint32 rflags = o.vsync ? SDL_RENDERER_PRESENTVSYNC : 0;
+  impl_->renderer = SDL_CreateRenderer(impl_->window, -1, SDL_RENDERER_ACCELERATED | rflags);
+  if (!impl_->renderer) impl_->renderer = SDL_CreateRenderer(impl_->window, -1, SDL_RENDERER_SOFTWARE);
+  if (!impl_->renderer) {
+    std::string why = SDL_GetError();
+    SDL_DestroyWindow(impl_->window);
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    throw Error("cannot draw to the window: " + why);
+  }
+  SDL_EventState(SDL_DROPFILE, SDL_ENABLE);
+}
+
+SdlPresenter::~SdlPresenter() {
+  if (impl_->texture) SDL_DestroyTexture(impl_->texture);
+  SDL_DestroyRenderer(impl_->renderer);
+  SDL_DestroyWindow(impl_->window);
+  SDL_QuitSubSystem(SDL_INIT_VIDEO);
+}
+
+void SdlPresenter::poll(std::vector<InputEvent>& out) {
+  SDL_Event ev;
+  while (SDL_PollEvent(&ev)) {
+    InputEvent e;
+    switch (ev.type) {
+      case SDL_QUIT: e.kind = InputEvent::Quit; break;
+      case SDL_KEYDOWN:
+      case SDL_KEYUP:
+        if (ev.key.repeat) continue;
+        e.kind = ev.type == SDL_KEYDOWN ? InputEvent::KeyDown : InputEvent::KeyUp;
+        e.key = translate_key(ev.key.keysym.sym);
+        if (e.key == rt::KeyNone) continue;
+        // Alt+Enter toggles fullscreen, as F11 does.
+        if (e.key == rt::KeyEnter && (ev.key.keysym.mod & KMOD_ALT)) e.key = rt::KeyF11;
+        break;
+      case SDL_MOUSEMOTION:
+        // With a logical size set, SDL gives positions in frame pixels.
+        e.kind = InputEvent::MouseMove;
+        e.x = ev.motion.x, e.y = ev.motion.y;
+        break;
+      case SDL_MOUSEBUTTONDOWN:
+      case SDL_MOUSEBUTTONUP:
+        e.kind = ev.type == SDL_MOUSEBUTTONDOWN ? InputEvent::MouseDown : InputEvent::MouseUp;
+        e.button = ev.button.button == SDL_BUTTON_RIGHT    ? rt::MouseButton::Right
+                   : ev.button.button == SDL_BUTTON_MIDDLE ? rt::MouseButton::Middle
+                                                           : rt::MouseButton::Left;
+        e.x = ev.button.x, e.y = ev.button.y;
+        break;
+      case SDL_MOUSEWHEEL:
+        e.kind = InputEvent::Wheel;
+        e.wheel = ev.wheel.preciseY;
+        break;
+      case SDL_DROPFILE:
+        e.kind = InputEvent::Drop;
+        if (ev.drop.file) {
+          e.path = ev.drop.file;
+          SDL_free(ev.drop.file);
+        }
+        break;
+      case SDL_WINDOWEVENT:
+        if (ev.window.event != SDL_WINDOWEVENT_SIZE_CHANGED) continue;
+        e.kind = InputEvent::Resize;
+        std::tie(e.x, e.y) = window_size();
+        break;
+      default: continue;
+    }
+    out.push_back(std::move(e));
+  }
+}
+
+void SdlPresenter::present(const uint8_t* rgba, int width, int height) {
+  Impl& m = *impl_;
+  if (!m.texture || m.tex_w != width || m.tex_h != height) {
+    if (m.texture) SDL_DestroyTexture(m.texture);
+    // RGBA bytes in memory are SDL's ABGR8888 on a little-endian machine (RGBA32 names
+    // the byte order on any machine).
+    m.texture = SDL_CreateTexture(m.renderer, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, width, height);
+    if (!m.texture) throw Error(std::string("cannot create the frame texture: ") + SDL_GetError());
+    m.tex_w = width, m.tex_h = height;
+    // Letterbox: the frame keeps its aspect ratio in any window.
+    SDL_RenderSetLogicalSize(m.renderer, width, height);
+  }
+  void* dst = nullptr;
+  int pitch = 0;
+  if (SDL_LockTexture(m.texture, nullptr, &dst, &pitch) == 0) {
+    for (int y = 0; y < height; ++y)
+      std::copy_n(rgba + size_t(y) * width * 4, size_t(width) * 4, static_cast<uint8_t*>(dst) + size_t(y) * pitch);
+    SDL_UnlockTexture(m.texture);
+  }
+  SDL_SetRenderDrawColor(m.renderer, 0, 0, 0, 255);
+  SDL_RenderClear(m.renderer);
+  SDL_RenderCopy(m.renderer, m.texture, nullptr, nullptr);
+  SDL_RenderPresent(m.renderer);  // waits for vertical sync (SDL_RENDERER_PRESENTVSYNC)
+}
+
+void SdlPresenter::set_title(const std::string& title) { SDL_SetWindowTitle(impl_->window, title.c_str()); }
+
+void SdlPresenter::toggle_fullscreen() {
+  impl_->fullscreen = !impl_->fullscreen;
+  SDL_SetWindowFullscreen(impl_->window, impl_->fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+}
+
+std::pair<int, int> SdlPresenter::window_size() const {
+  int w = 0, h = 0;
+  SDL_GetRendererOutputSize(impl_->renderer, &w, &h);
+  return {std::max(w, 1), std::max(h, 1)};
+}
+
+std::string SdlPresenter::driver() const {
+  SDL_RendererInfo info{};
+  SDL_GetRendererInfo(impl_->renderer, &info);
+  return std::string(SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "?") + "/" +
+         (info.name ? info.name : "?");
+}
+
+namespace {
+
+void audio_callback(void* user, Uint8* stream, int len) {
+  static_cast<rt::Synth*>(user)->render(reinterpret_cast<int16_t*>(stream), size_t(len) / 2);
+}
+
+}  // namespace
+
+SdlAudio::SdlAudio(rt::Synth& synth) : synth_(synth) {
+  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return;  // no audio: silently off
+  SDL_AudioSpec want{}, have{};
+  want.freq = synth.sample_rate();
+  want.format = AUDIO_S16SYS;
+  want.channels = 1;
+  want.samples = 1024;
+  want.callback = audio_callback;
+  want.userdata = &synth_;
+  device_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);  // exactly this format: SDL converts
+  if (device_ == 0) {
+    SDL_QuitSubSystem(SDL_INIT_AUDIO);
+    return;
+  }
+  SDL_PauseAudioDevice(device_, 0);
+}
+
+SdlAudio::~SdlAudio() {
+  if (device_ == 0) return;
+  SDL_CloseAudioDevice(device_);
+  SDL_QuitSubSystem(SDL_INIT_AUDIO);
+}
+
+}  // namespace velocity::present

@@ -1,0 +1,59 @@
+// The SDL2 window: frames go to a streaming texture, scaled to the window with nearest
+// filtering and letterboxed to keep their aspect ratio, presented with vertical sync
+// (no tearing). Translates SDL's events to rt::InputEvent, with mouse positions in
+// frame pixels.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "rt/loop.hpp"
+#include "rt/synth.hpp"
+
+namespace velocity::present {
+
+struct WindowOptions {
+  std::string title = "Velocity";
+  int width = 800, height = 600;  // the window's first size
+  bool fullscreen = false;
+  bool vsync = true;
+  bool at_origin = false;  // place the window at (0, 0) (tests read the screen there)
+};
+
+class SdlPresenter : public rt::Frontend {
+ public:
+  // Throws velocity::Error with SDL's reason when no window can be opened (no display).
+  explicit SdlPresenter(const WindowOptions& options);
+  ~SdlPresenter() override;
+  SdlPresenter(const SdlPresenter&) = delete;
+  SdlPresenter& operator=(const SdlPresenter&) = delete;
+
+  void poll(std::vector<rt::InputEvent>& out) override;
+  void present(const uint8_t* rgba, int width, int height) override;
+  void set_title(const std::string& title) override;
+  void toggle_fullscreen() override;
+  std::pair<int, int> window_size() const override;
+  // The video driver in use ("x11", "wayland", "dummy", ...) and the renderer's name.
+  std::string driver() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Plays a Synth through the default audio device. Opening fails silently (no device,
+// no driver): `active()` says whether sound is playing.
+class SdlAudio {
+ public:
+  explicit SdlAudio(rt::Synth& synth);
+  ~SdlAudio();
+  SdlAudio(const SdlAudio&) = delete;
+  SdlAudio& operator=(const SdlAudio&) = delete;
+  bool active() const { return device_ != 0; }
+
+ private:
+  rt::Synth& synth_;
+  uint32_t device_ = 0;
+};
+
+}  // namespace velocity::present

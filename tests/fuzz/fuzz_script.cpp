@@ -1,0 +1,32 @@
+// Fuzz target: the real-time programs' script reader (present/rt/script.cpp). The input
+// is the script's text. Property: it parses or throws velocity::Error; what parses is
+// in time order, with finite non-negative times, and plays back completely.
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include "rt/script.hpp"
+#include "velocity/error.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace velocity;
+  std::string_view text(reinterpret_cast<const char*>(data), size);
+  rt::Script script;
+  try {
+    script = rt::parse_script(text, "fuzz.txt");
+  } catch (const Error&) {
+    return 0;
+  }
+  if (script.events.size() > rt::kMaxScriptEvents) std::abort();
+  double last = 0;
+  for (const rt::TimedEvent& e : script.events) {
+    if (!std::isfinite(e.time) || e.time < 0 || e.time < last) std::abort();
+    last = e.time;
+  }
+  rt::ScriptPlayer player(script);
+  std::vector<rt::InputEvent> events;
+  player.due(2e6, events);
+  if (events.size() != script.events.size() || !player.finished()) std::abort();
+  return 0;
+}
