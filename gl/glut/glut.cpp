@@ -1,0 +1,394 @@
+// GLUT for pGL (<GL/glut.h>): one window on Velocity's SDL2 presenter, whose pixels are
+// an OSMesa buffer that pGL renders into, and GLUT's callbacks driven from the
+// presenter's events (or a script's), timers and the idle function.
+//
+// The loop, one turn at a time: events -> their callbacks; due timers; then the display
+// callback if a redisplay was posted, else the idle callback. glutSwapBuffers (or, for a
+// single-buffered window, the end of the display callback) finishes the GL frame and
+// hands it to the presenter, which shows it with vertical sync.
+//
+// Misuse follows freeglut: a function that needs a window, called before
+// glutCreateWindow, prints what was wrong and ends the program (exit(1)); so does a
+// window that cannot be opened (no display).
+#include <GL/glut.h>
+#include <GL/osmesa.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rt/input.hpp"
+#include "rt/script.hpp"
+#include "sdl/presenter.hpp"
+#include "velocity/error.hpp"
+#include "velocity/image.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using velocity::rt::InputEvent;
+using velocity::rt::Key;
+
+struct Timer {
+  Clock::time_point due;
+  unsigned long order;  // timers due at the same time fire in the order they were set
+  void (*callback)(int);
+  int value;
+};
+
+struct Glut {
+  bool initialised = false;
+  Clock::time_point start = Clock::now();
+  unsigned int display_mode = GLUT_RGB | GLUT_SINGLE;
+  int init_width = 300, init_height = 300;  // GLUT's defaults
+  int init_x = -1, init_y = -1;
+
+  // The window (one).
+  std::unique_ptr<velocity::present::SdlPresenter> window;
+  OSMesaContext context = nullptr;
+  std::vector<uint8_t> pixels;  // RGBA8, top row first
+  int width = 0, height = 0;
+  bool double_buffered = false;
+
+  void (*display)() = nullptr;
+  void (*reshape)(int, int) = nullptr;
+  void (*keyboard)(unsigned char, int, int) = nullptr;
+  void (*keyboard_up)(unsigned char, int, int) = nullptr;
+  void (*special)(int, int, int) = nullptr;
+  void (*special_up)(int, int, int) = nullptr;
+  void (*mouse)(int, int, int, int) = nullptr;
+  void (*motion)(int, int) = nullptr;
+  void (*passive_motion)(int, int) = nullptr;
+  void (*idle)() = nullptr;
+  std::vector<Timer> timers;
+  unsigned long timer_order = 0;
+
+  bool redisplay = true;  // the first turn draws
+  bool reshape_pending = true;
+  bool leave = false;
+  velocity::rt::InputState input;
+  int modifiers = 0;  // during an input callback (glutGetModifiers)
+
+  // Automation (environment variables; see glut.h).
+  std::optional<velocity::rt::ScriptPlayer> script;
+  long max_frames = 0;
+  std::string record_dir;
+  long frames = 0;
+};
+
+Glut& glut() {
+  static Glut g;
+  return g;
+}
+
+[[noreturn]] void fail(const std::string& message) {
+  std::fprintf(stderr, "velocity-glut: %s\n", message.c_str());
+  std::exit(1);
+}
+
+Glut& need_window(const char* function) {
+  Glut& g = glut();
+  if (!g.initialised) fail(std::string(function) + " called without first calling glutInit");
+  if (!g.window) fail(std::string(function) + " called with no window (glutCreateWindow first)");
+  return g;
+}
+
+Glut& need_init(const char* function) {
+  Glut& g = glut();
+  if (!g.initialised) fail(std::string(function) + " called without first calling glutInit");
+  return g;
+}
+
+long elapsed_ms(const Glut& g) {
+  return long(std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - g.start).count());
+}
+
+// Sizes the OSMesa buffer to the window and makes it current (top row first: what the
+// presenter shows).
+void bind_buffer(Glut& g, int w, int h) {
+  w = std::clamp(w, 1, 16384), h = std::clamp(h, 1, 16384);
+  g.width = w, g.height = h;
+  g.pixels.assign(size_t(w) * size_t(h) * 4, 0);
+  if (!OSMesaMakeCurrent(g.context, g.pixels.data(), GL_UNSIGNED_BYTE, w, h)) fail("cannot bind the window's buffer");
+  OSMesaPixelStore(OSMESA_Y_UP, 0);
+}
+
+void show_frame(Glut& g) {
+  glFinish();
+  g.window->present(g.pixels.data(), g.width, g.height);
+  if (!g.record_dir.empty()) {
+    velocity::Image image(g.width, g.height);
+    std::copy(g.pixels.begin(), g.pixels.end(), image.pixels.begin());
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05ld.png", g.frames);
+    try {
+      velocity::write_png((std::filesystem::path(g.record_dir) / name).string(), image);
+    } catch (const velocity::Error& e) {
+      fail(e.what());
+    }
+  }
+  ++g.frames;
+  if (g.max_frames > 0 && g.frames >= g.max_frames) g.leave = true;
+}
+
+// GLUT's special keys for the presenter's, or 0 for none.
+int special_key(int key) {
+  if (key >= velocity::rt::KeyF1 && key <= velocity::rt::KeyF12) return GLUT_KEY_F1 + (key - velocity::rt::KeyF1);
+  switch (key) {
+    case velocity::rt::KeyLeft: return GLUT_KEY_LEFT;
+    case velocity::rt::KeyRight: return GLUT_KEY_RIGHT;
+    case velocity::rt::KeyUp: return GLUT_KEY_UP;
+    case velocity::rt::KeyDown: return GLUT_KEY_DOWN;
+    case velocity::rt::KeyPageUp: return GLUT_KEY_PAGE_UP;
+    case velocity::rt::KeyPageDown: return GLUT_KEY_PAGE_DOWN;
+    default: return 0;
+  }
+}
+
+int glut_button(velocity::rt::MouseButton b) {
+  switch (b) {
+    case velocity::rt::MouseButton::Middle: return GLUT_MIDDLE_BUTTON;
+    case velocity::rt::MouseButton::Right: return GLUT_RIGHT_BUTTON;
+    default: return GLUT_LEFT_BUTTON;
+  }
+}
+
+void dispatch(Glut& g, const InputEvent& e) {
+  g.input.apply(e);
+  g.modifiers = (g.input.held(velocity::rt::KeyShift) ? GLUT_ACTIVE_SHIFT : 0) |
+                (g.input.held(velocity::rt::KeyCtrl) ? GLUT_ACTIVE_CTRL : 0);
+  const int mx = g.input.mouse_x() < 0 ? 0 : g.input.mouse_x(), my = g.input.mouse_y() < 0 ? 0 : g.input.mouse_y();
+  switch (e.kind) {
+    case InputEvent::KeyDown:
+    case InputEvent::KeyUp: {
+      const bool down = e.kind == InputEvent::KeyDown;
+      if (const int s = special_key(e.key)) {
+        if (auto f = down ? g.special : g.special_up) f(s, mx, my);
+      } else if (e.key > 0 && e.key < 128) {
+        int c = e.key;
+        if ((g.modifiers & GLUT_ACTIVE_SHIFT) && c >= 'a' && c <= 'z') c -= 'a' - 'A';
+        if ((g.modifiers & GLUT_ACTIVE_CTRL) && c >= 'a' && c <= 'z') c -= 'a' - 1;  // as GLUT: Ctrl+A is 1
+        if (auto f = down ? g.keyboard : g.keyboard_up) f((unsigned char)c, mx, my);
+      }
+      break;
+    }
+    case InputEvent::MouseDown:
+    case InputEvent::MouseUp:
+      if (g.mouse) g.mouse(glut_button(e.button), e.kind == InputEvent::MouseDown ? GLUT_DOWN : GLUT_UP, e.x, e.y);
+      break;
+    case InputEvent::MouseMove: {
+      const bool dragging = g.input.button(velocity::rt::MouseButton::Left) ||
+                            g.input.button(velocity::rt::MouseButton::Middle) ||
+                            g.input.button(velocity::rt::MouseButton::Right);
+      if (auto f = dragging ? g.motion : g.passive_motion) f(e.x, e.y);
+      break;
+    }
+    case InputEvent::Resize:
+      if (e.x > 0 && e.y > 0 && (e.x != g.width || e.y != g.height)) {
+        bind_buffer(g, e.x, e.y);
+        g.reshape_pending = true;
+      }
+      break;
+    case InputEvent::Quit:
+      // GLUT ends the program when its window is closed.
+      std::fflush(stdout);
+      std::exit(0);
+    default: break;  // wheel and dropped files: no GLUT 3 callback
+  }
+  g.modifiers = 0;
+}
+
+void fire_timers(Glut& g) {
+  const Clock::time_point now = Clock::now();
+  // Take the due ones first: a callback may set new timers.
+  std::vector<Timer> due;
+  for (auto it = g.timers.begin(); it != g.timers.end();) {
+    if (it->due <= now) {
+      due.push_back(*it);
+      it = g.timers.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  std::sort(due.begin(), due.end(), [](const Timer& a, const Timer& b) {
+    return a.due != b.due ? a.due < b.due : a.order < b.order;
+  });
+  for (const Timer& t : due) t.callback(t.value);
+}
+
+}  // namespace
+
+extern "C" {
+
+void glutInit(int* argcp, char** argv) {
+  (void)argcp, (void)argv;  // X11 options (-display, -geometry) are not read
+  Glut& g = glut();
+  if (g.initialised) fail("glutInit called twice");
+  g.initialised = true;
+  g.start = Clock::now();
+  if (const char* s = std::getenv("VELOCITY_GLUT_SCRIPT"); s && *s) {
+    try {
+      g.script.emplace(velocity::rt::load_script(s));
+    } catch (const velocity::Error& e) {
+      fail(e.what());
+    }
+  }
+  if (const char* s = std::getenv("VELOCITY_GLUT_FRAMES"); s && *s) {
+    char* end = nullptr;
+    const long n = std::strtol(s, &end, 10);
+    if (*end || n < 1) fail(std::string("VELOCITY_GLUT_FRAMES must be a whole number of frames >= 1, got '") + s + "'");
+    g.max_frames = n;
+  }
+  if (const char* s = std::getenv("VELOCITY_GLUT_RECORD"); s && *s) {
+    std::error_code ec;
+    std::filesystem::create_directories(s, ec);
+    if (ec) fail(std::string("VELOCITY_GLUT_RECORD: cannot create ") + s + ": " + ec.message());
+    g.record_dir = s;
+  }
+}
+
+void glutInitDisplayMode(unsigned int mode) { glut().display_mode = mode; }
+
+void glutInitWindowSize(int width, int height) {
+  if (width > 0 && height > 0) glut().init_width = width, glut().init_height = height;
+}
+
+void glutInitWindowPosition(int x, int y) { glut().init_x = x, glut().init_y = y; }
+
+int glutCreateWindow(const char* title) {
+  Glut& g = need_init("glutCreateWindow");
+  if (g.window) fail("glutCreateWindow: this GLUT has one window, and it is open");
+  velocity::present::WindowOptions options;
+  options.title = title ? title : "";
+  options.width = std::clamp(g.init_width, 1, 16384), options.height = std::clamp(g.init_height, 1, 16384);
+  options.at_origin = g.init_x == 0 && g.init_y == 0;
+  try {
+    g.window = std::make_unique<velocity::present::SdlPresenter>(options);
+  } catch (const velocity::Error& e) {
+    fail(std::string("cannot open a window: ") + e.what());
+  }
+  g.double_buffered = g.display_mode & GLUT_DOUBLE;
+  g.context = OSMesaCreateContextExt(OSMESA_RGBA, (g.display_mode & GLUT_DEPTH) ? 24 : 0,
+                                     (g.display_mode & GLUT_STENCIL) ? 8 : 0, 0, nullptr);
+  if (!g.context) fail("cannot create the GL context");
+  bind_buffer(g, options.width, options.height);
+  return 1;
+}
+
+void glutDestroyWindow(int window) {
+  Glut& g = need_window("glutDestroyWindow");
+  if (window != 1) return;
+  OSMesaDestroyContext(g.context);
+  g.context = nullptr;
+  g.window.reset();
+}
+
+int glutGetWindow(void) { return glut().window ? 1 : 0; }
+
+void glutSetWindowTitle(const char* title) { need_window("glutSetWindowTitle").window->set_title(title ? title : ""); }
+
+void glutReshapeWindow(int width, int height) {
+  Glut& g = need_window("glutReshapeWindow");
+  if (width < 1 || height < 1) return;
+  bind_buffer(g, width, height);
+  g.reshape_pending = true;
+}
+
+void glutFullScreen(void) { need_window("glutFullScreen").window->toggle_fullscreen(); }
+
+void glutPostRedisplay(void) { need_window("glutPostRedisplay").redisplay = true; }
+
+void glutSwapBuffers(void) { show_frame(need_window("glutSwapBuffers")); }
+
+void glutDisplayFunc(void (*callback)(void)) {
+  if (!callback) fail("glutDisplayFunc: the display callback cannot be NULL");
+  need_window("glutDisplayFunc").display = callback;
+}
+void glutReshapeFunc(void (*callback)(int, int)) { need_window("glutReshapeFunc").reshape = callback; }
+void glutKeyboardFunc(void (*callback)(unsigned char, int, int)) { need_window("glutKeyboardFunc").keyboard = callback; }
+void glutKeyboardUpFunc(void (*callback)(unsigned char, int, int)) {
+  need_window("glutKeyboardUpFunc").keyboard_up = callback;
+}
+void glutSpecialFunc(void (*callback)(int, int, int)) { need_window("glutSpecialFunc").special = callback; }
+void glutSpecialUpFunc(void (*callback)(int, int, int)) { need_window("glutSpecialUpFunc").special_up = callback; }
+void glutMouseFunc(void (*callback)(int, int, int, int)) { need_window("glutMouseFunc").mouse = callback; }
+void glutMotionFunc(void (*callback)(int, int)) { need_window("glutMotionFunc").motion = callback; }
+void glutPassiveMotionFunc(void (*callback)(int, int)) { need_window("glutPassiveMotionFunc").passive_motion = callback; }
+void glutIdleFunc(void (*callback)(void)) { need_init("glutIdleFunc").idle = callback; }
+
+void glutTimerFunc(unsigned int milliseconds, void (*callback)(int), int value) {
+  Glut& g = need_init("glutTimerFunc");
+  if (!callback) return;
+  g.timers.push_back({Clock::now() + std::chrono::milliseconds(milliseconds), g.timer_order++, callback, value});
+}
+
+void glutMainLoop(void) {
+  Glut& g = need_window("glutMainLoop");
+  if (!g.display) fail("glutMainLoop: no display callback for the window (glutDisplayFunc)");
+  std::vector<InputEvent> events;
+  g.leave = false;
+  while (!g.leave) {
+    events.clear();
+    g.window->poll(events);
+    if (g.script) g.script->due(double(elapsed_ms(g)) / 1000.0, events);
+    for (const InputEvent& e : events) {
+      dispatch(g, e);
+      if (g.leave) break;
+    }
+    if (g.reshape_pending) {
+      g.reshape_pending = false;
+      if (g.reshape) {
+        g.reshape(g.width, g.height);
+      } else {
+        glViewport(0, 0, g.width, g.height);
+      }
+      g.redisplay = true;
+    }
+    fire_timers(g);
+    if (g.leave) break;
+    if (g.redisplay) {
+      g.redisplay = false;
+      g.display();
+      if (!g.double_buffered) show_frame(g);
+    } else if (g.idle) {
+      g.idle();
+    } else {
+      // Nothing to do until an event or a timer: wait a little (the presenter polls).
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+  g.leave = false;
+}
+
+void glutLeaveMainLoop(void) { glut().leave = true; }
+
+int glutGet(GLenum what) {
+  Glut& g = glut();
+  switch (what) {
+    case GLUT_ELAPSED_TIME: return g.initialised ? int(elapsed_ms(g)) : 0;
+    case GLUT_WINDOW_WIDTH: return g.window ? g.width : 0;
+    case GLUT_WINDOW_HEIGHT: return g.window ? g.height : 0;
+    case GLUT_WINDOW_X: return 0;
+    case GLUT_WINDOW_Y: return 0;
+    case GLUT_WINDOW_DOUBLEBUFFER: return g.window && g.double_buffered;
+    case GLUT_SCREEN_WIDTH: return g.window ? g.window->window_size().first : 0;
+    case GLUT_SCREEN_HEIGHT: return g.window ? g.window->window_size().second : 0;
+    case GLUT_INIT_WINDOW_WIDTH: return g.init_width;
+    case GLUT_INIT_WINDOW_HEIGHT: return g.init_height;
+    case GLUT_INIT_DISPLAY_MODE: return int(g.display_mode);
+    default:
+      std::fprintf(stderr, "velocity-glut: glutGet(0x%x): not a value this GLUT knows; returns -1\n", unsigned(what));
+      return -1;
+  }
+}
+
+int glutGetModifiers(void) { return glut().modifiers; }
+
+}  // extern "C"

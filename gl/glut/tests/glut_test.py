@@ -1,0 +1,135 @@
+#!/usr/bin/env python3
+"""GLUT for pGL, driven as a person would drive a GLUT program.
+
+    glut_test.py callbacks GLUT_DEMO WORKDIR   SDL's dummy video driver, a script of key
+                                              presses and clicks: every callback gets
+                                              them, the timer fires, frames are recorded
+    glut_test.py window GLUT_DEMO WORKDIR      under Xvfb: the window shows exactly the
+                                              frame the program rendered (glReadPixels)
+"""
+import os
+import signal
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "present", "tests"))
+from window_test import read_png, read_xwd  # noqa: E402  (the real-time tests' image readers)
+
+
+def read_ppm(path):
+    data = open(path, "rb").read()
+    parts = data.split(b"\n", 3)
+    assert parts[0] == b"P6" and parts[2] == b"255", path
+    w, h = map(int, parts[1].split())
+    return np.frombuffer(parts[3], np.uint8, count=w * h * 3).reshape(h, w, 3)
+
+
+def callbacks(demo, work):
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    script = os.path.join(work, "script.txt")
+    with open(script, "w") as f:
+        f.write("# keys, a special key, a click, then close the window\n"
+                "0.15 press a\n0.25 press left\n0.35 click 100 50 left\n0.45 press p\n0.9 quit\n")
+    out = subprocess.run([demo], env=dict(env, VELOCITY_GLUT_SCRIPT=script), capture_output=True, text=True, timeout=60)
+    print(out.stdout, out.stderr)
+    assert out.returncode == 0, f"glut_demo exited with {out.returncode}"
+    lines = out.stdout.splitlines()
+    assert lines[0] == "reshape 320 240", "the reshape callback comes first, with the window's size"
+    assert any(l.startswith("key 97 ") for l in lines), "'a' reached the keyboard callback"
+    assert any(l.startswith("special 100 ") for l in lines), "the left arrow reached the special callback (GLUT_KEY_LEFT)"
+    assert "mouse 0 0 100 50" in lines and "mouse 0 1 100 50" in lines, "the click reached the mouse callback, down then up"
+    assert any(l.startswith("key 112 ") for l in lines), "'p' reached the keyboard callback"
+    timers = [l for l in lines if l.startswith("timer 7 after ")]
+    assert len(timers) == 1 and int(timers[0].split()[3]) >= 100, "the timer fired once, not before its 100 ms"
+    order = [l.split()[0] for l in lines if l.split()[0] in ("key", "special", "mouse")]
+    assert order == ["key", "special", "mouse", "mouse", "key"], f"events in the script's order: {order}"
+
+    # VELOCITY_GLUT_FRAMES leaves the main loop; VELOCITY_GLUT_RECORD keeps every frame.
+    rec = os.path.join(work, "frames")
+    out = subprocess.run([demo], env=dict(env, VELOCITY_GLUT_FRAMES="4", VELOCITY_GLUT_RECORD=rec),
+                         capture_output=True, text=True, timeout=60)
+    print(out.stdout, out.stderr)
+    assert out.returncode == 0 and "main loop left after 4 frames" in out.stdout
+    frames = [read_png(os.path.join(rec, f"frame_{i:05d}.png")) for i in range(4)]
+    assert not os.path.exists(os.path.join(rec, "frame_00004.png"))
+    for f in frames:
+        assert f.shape == (240, 320, 3)
+        lit = np.count_nonzero(np.abs(f.astype(int) - [26, 26, 38]).max(axis=2) > 8)  # not the clear colour
+        assert 5000 < lit < 40000, f"the cube covers part of the window: {lit} pixels"
+    assert np.any(frames[0] != frames[3]), "the idle callback spins the cube between frames"
+    print("callbacks, timer, frames and recording: as GLUT defines them")
+
+
+def window(demo, work):
+    xvfb = shutil.which("Xvfb")
+    if not xvfb:
+        print("SKIPPED: Xvfb is not installed (Debian's xvfb; scripts/deps.sh installs it)")
+        return 77
+    fbdir = os.path.join(work, "fb")
+    os.makedirs(fbdir)
+    r, w = os.pipe()
+    server = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "640x480x24", "-fbdir", fbdir,
+                               "-nolisten", "tcp"], pass_fds=[w])
+    os.close(w)
+    display = b""
+    while not display.endswith(b"\n"):
+        chunk = os.read(r, 16)
+        if not chunk:
+            break
+        display += chunk
+    os.close(r)
+    display = display.decode().strip()
+    assert display, "Xvfb did not start"
+    for _ in range(100):
+        if os.path.exists(f"{fbdir}/Xvfb_screen0"):
+            break
+        time.sleep(0.1)
+    dump = os.path.join(work, "frame.ppm")
+    env = dict(os.environ, DISPLAY=":" + display, SDL_VIDEODRIVER="x11", SDL_AUDIODRIVER="dummy",
+               SDL_RENDER_DRIVER="software")
+    app = subprocess.Popen([demo, dump, "10"], env=env, stdout=subprocess.PIPE, text=True)
+    try:
+        deadline = time.time() + 60
+        matched, last = False, None
+        while time.time() < deadline and app.poll() is None:
+            time.sleep(0.25)
+            if not os.path.exists(dump) or os.path.getsize(dump) < 320 * 240 * 3:
+                continue
+            expect = read_ppm(dump)
+            screen = read_xwd(f"{fbdir}/Xvfb_screen0")[:240, :320]
+            last = np.abs(screen.astype(int) - expect.astype(int))
+            if last.max() <= 2:
+                matched = True
+                break
+        assert app.poll() is None, "glut_demo exited before its window was seen"
+        app.send_signal(signal.SIGTERM)  # SDL makes it a quit event: GLUT ends the program
+        out, _ = app.communicate(timeout=30)
+    finally:
+        if app.poll() is None:
+            app.kill()
+        server.terminate()
+        server.wait(timeout=10)
+    print(out)
+    assert app.returncode == 0, f"glut_demo exited with {app.returncode}"
+    assert last is not None, "the frame was never dumped"
+    assert expect.std() > 10, "the dumped frame is blank: nothing to compare"
+    assert matched, f"the window differs from the GL frame: max {last.max()}, {np.count_nonzero(last.max(axis=2) > 2)} pixels"
+    print("the window shows the frame pGL rendered (320x240, every channel within 2)")
+    return 0
+
+
+def main():
+    mode, demo, work = sys.argv[1:4]
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    if mode == "callbacks":
+        return callbacks(demo, work) or 0
+    return window(demo, work)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,130 @@
+/* GLUT for pGL: the subset of the OpenGL Utility Toolkit that classic windowed GL 1.x
+ * programs use (one window, its callbacks, the main loop, timers), on Velocity's SDL2
+ * window (present/). Names, types and values are GLUT's (as freeglut defines them).
+ *
+ *   cc demo.c $(pkg-config --cflags --libs velocity-glut) -lm
+ *
+ * The window's pixels are an OSMesa buffer that pGL renders into; glutSwapBuffers shows
+ * it with vertical sync. One window per program. A function GLUT has and this library
+ * lacks is not declared here (see docs/gl.md), so a program using one fails to build
+ * rather than run without it.
+ *
+ * For tests and recordings (no person at the keyboard), environment variables:
+ *   VELOCITY_GLUT_SCRIPT=FILE   timed key presses and mouse events (the format of
+ *                               `velocity view --script`, docs in present/rt/script.hpp)
+ *   VELOCITY_GLUT_FRAMES=N      glutMainLoop returns after N frames have been shown
+ *   VELOCITY_GLUT_RECORD=DIR    every frame shown is also written as DIR/frame_NNNNN.png
+ * With SDL_VIDEODRIVER=dummy no display is needed. */
+#ifndef VELOCITY_GL_GLUT_H
+#define VELOCITY_GL_GLUT_H
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* glutInitDisplayMode */
+#define GLUT_RGB 0x0000
+#define GLUT_RGBA 0x0000
+#define GLUT_INDEX 0x0001
+#define GLUT_SINGLE 0x0000
+#define GLUT_DOUBLE 0x0002
+#define GLUT_ACCUM 0x0004
+#define GLUT_ALPHA 0x0008
+#define GLUT_DEPTH 0x0010
+#define GLUT_STENCIL 0x0020
+#define GLUT_MULTISAMPLE 0x0080
+
+/* glutSpecialFunc keys */
+#define GLUT_KEY_F1 0x0001
+#define GLUT_KEY_F2 0x0002
+#define GLUT_KEY_F3 0x0003
+#define GLUT_KEY_F4 0x0004
+#define GLUT_KEY_F5 0x0005
+#define GLUT_KEY_F6 0x0006
+#define GLUT_KEY_F7 0x0007
+#define GLUT_KEY_F8 0x0008
+#define GLUT_KEY_F9 0x0009
+#define GLUT_KEY_F10 0x000A
+#define GLUT_KEY_F11 0x000B
+#define GLUT_KEY_F12 0x000C
+#define GLUT_KEY_LEFT 0x0064
+#define GLUT_KEY_UP 0x0065
+#define GLUT_KEY_RIGHT 0x0066
+#define GLUT_KEY_DOWN 0x0067
+#define GLUT_KEY_PAGE_UP 0x0068
+#define GLUT_KEY_PAGE_DOWN 0x0069
+#define GLUT_KEY_HOME 0x006A
+#define GLUT_KEY_END 0x006B
+#define GLUT_KEY_INSERT 0x006C
+
+/* glutMouseFunc */
+#define GLUT_LEFT_BUTTON 0x0000
+#define GLUT_MIDDLE_BUTTON 0x0001
+#define GLUT_RIGHT_BUTTON 0x0002
+#define GLUT_DOWN 0x0000
+#define GLUT_UP 0x0001
+
+/* glutGetModifiers */
+#define GLUT_ACTIVE_SHIFT 0x0001
+#define GLUT_ACTIVE_CTRL 0x0002
+#define GLUT_ACTIVE_ALT 0x0004
+
+/* glutGet */
+#define GLUT_WINDOW_X 0x0064
+#define GLUT_WINDOW_Y 0x0065
+#define GLUT_WINDOW_WIDTH 0x0066
+#define GLUT_WINDOW_HEIGHT 0x0067
+#define GLUT_WINDOW_DOUBLEBUFFER 0x0073
+#define GLUT_SCREEN_WIDTH 0x00C8
+#define GLUT_SCREEN_HEIGHT 0x00C9
+#define GLUT_INIT_WINDOW_WIDTH 0x01F6
+#define GLUT_INIT_WINDOW_HEIGHT 0x01F7
+#define GLUT_INIT_DISPLAY_MODE 0x01F8
+#define GLUT_ELAPSED_TIME 0x02BC
+
+/* Initialisation */
+void glutInit(int *argcp, char **argv);
+void glutInitDisplayMode(unsigned int mode);
+void glutInitWindowSize(int width, int height);
+void glutInitWindowPosition(int x, int y);
+
+/* The window */
+int glutCreateWindow(const char *title);
+void glutDestroyWindow(int window);
+int glutGetWindow(void);
+void glutSetWindowTitle(const char *title);
+void glutReshapeWindow(int width, int height);
+void glutFullScreen(void);
+void glutPostRedisplay(void);
+void glutSwapBuffers(void);
+
+/* Callbacks */
+void glutDisplayFunc(void (*callback)(void));
+void glutReshapeFunc(void (*callback)(int width, int height));
+void glutKeyboardFunc(void (*callback)(unsigned char key, int x, int y));
+void glutKeyboardUpFunc(void (*callback)(unsigned char key, int x, int y));
+void glutSpecialFunc(void (*callback)(int key, int x, int y));
+void glutSpecialUpFunc(void (*callback)(int key, int x, int y));
+void glutMouseFunc(void (*callback)(int button, int state, int x, int y));
+void glutMotionFunc(void (*callback)(int x, int y));
+void glutPassiveMotionFunc(void (*callback)(int x, int y));
+void glutIdleFunc(void (*callback)(void));
+void glutTimerFunc(unsigned int milliseconds, void (*callback)(int value), int value);
+
+/* The main loop: never returns, except after glutLeaveMainLoop (freeglut's) or
+ * VELOCITY_GLUT_FRAMES frames. Closing the window ends the program (exit(0)). */
+void glutMainLoop(void);
+void glutLeaveMainLoop(void);
+
+/* State */
+int glutGet(GLenum what);
+int glutGetModifiers(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* VELOCITY_GL_GLUT_H */
