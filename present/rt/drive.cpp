@@ -295,6 +295,20 @@ void DriveProgram::build_car(const DriveOptions& o) {
     glass.env_mix = 0.55f;
     ObjectId c = scene_.add_object("windows", cabin, body_);
     scene_.object(c).material = glass;
+    // Lamps (unlit: they glow) and a dark sill along the bottom of the body.
+    auto lamp = std::make_shared<const Mesh>(make_cube(1.0f));
+    auto add_part = [&](const char* name, Vec3 at, Vec3 size, Vec3 colour, Shading shading) {
+      ObjectId id = scene_.add_object(name, lamp, body_);
+      scene_.object(id).transform.translation = at;
+      scene_.object(id).transform.scale = size;
+      scene_.object(id).material = material(colour, shading);
+    };
+    for (float x : {-0.58f, 0.58f}) {
+      add_part("headlamp", {x, 0.66f, -2.151f}, {0.36f, 0.14f, 0.02f}, {1.0f, 0.97f, 0.8f}, Shading::Unlit);
+      add_part("tail lamp", {x, 0.74f, 2.151f}, {0.4f, 0.12f, 0.02f}, {0.9f, 0.05f, 0.04f}, Shading::Unlit);
+    }
+    add_part("grille", {0, 0.5f, -2.152f}, {0.7f, 0.12f, 0.02f}, {0.05f, 0.05f, 0.06f}, Shading::Flat);
+    add_part("sill", {0, 0.36f, 0}, {1.64f, 0.1f, 4.2f}, {0.08f, 0.08f, 0.09f}, Shading::Flat);
   } else {
     LoadOptions lo;
     Model model = load_model(o.car, lo);

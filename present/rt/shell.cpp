@@ -11,6 +11,9 @@ namespace {
 constexpr float kFadeSeconds = 0.35f;
 const char* const kButtonLabels[] = {nullptr, "CREDITS", "QUIT"};
 
+// Function keys belong to the window (fullscreen, screen mode, overlay), not the screens.
+bool is_window_key(Key k) { return k >= KeyF1 && k <= KeyF12; }
+
 int ui_scale(int height) { return std::max(1, height / 200); }
 
 }  // namespace
@@ -60,7 +63,7 @@ void Shell::event(const InputEvent& e, const InputState& input) {
   switch (screen_) {
     case Screen::Title:
       if ((e.kind == InputEvent::KeyDown && e.key == KeyEscape)) quit_ = true;
-      else if (e.kind == InputEvent::KeyDown || e.kind == InputEvent::MouseDown) {
+      else if ((e.kind == InputEvent::KeyDown && !is_window_key(e.key)) || e.kind == InputEvent::MouseDown) {
         effects_.push_back(Effect::Click);
         go(Screen::Menu);
       }
@@ -86,7 +89,7 @@ void Shell::event(const InputEvent& e, const InputState& input) {
       }
       break;
     case Screen::Credits:
-      if ((e.kind == InputEvent::KeyDown && e.key != KeyF3 && e.key != KeyF2 && e.key != KeyF11) ||
+      if ((e.kind == InputEvent::KeyDown && !is_window_key(e.key)) ||
           e.kind == InputEvent::MouseDown) {
         effects_.push_back(Effect::Click);
         go(Screen::Menu);

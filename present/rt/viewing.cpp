@@ -41,7 +41,7 @@ std::string explain_empty_frame(const FrameStats& s, bool cull_back_faces) {
   }
   if (cull_back_faces)
     return "every triangle in view faces away from the camera and back faces are culled "
-           "(an open mesh seen from behind: draw back faces, or move the camera)";
+           "(an open mesh seen from behind: draw back faces, the default without --cull, or move the camera)";
   return "no triangle covers a pixel centre (the model is too small or too thin at this image size)";
 }
 

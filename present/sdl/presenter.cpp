@@ -3,6 +3,8 @@
 #include <SDL.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 
 #include "velocity/error.hpp"
 
@@ -180,10 +182,22 @@ void audio_callback(void* user, Uint8* stream, int len) {
   static_cast<rt::Synth*>(user)->render(reinterpret_cast<int16_t*>(stream), size_t(len) / 2);
 }
 
+// Whether the machine could have a sound device: a sound card, a sound server, or a
+// driver chosen by hand (SDL_AUDIODRIVER, e.g. disk). Without one, ALSA would print
+// errors while SDL looked for a device.
+bool may_have_sound() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (std::getenv("SDL_AUDIODRIVER") || std::getenv("PULSE_SERVER") || fs::exists("/dev/snd", ec)) return true;
+  const char* run = std::getenv("XDG_RUNTIME_DIR");
+  return run && (fs::exists(fs::path(run) / "pulse" / "native", ec) || fs::exists(fs::path(run) / "pipewire-0", ec));
+}
+
 }  // namespace
 
 SdlAudio::SdlAudio(rt::Synth& synth) : synth_(synth) {
-  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return;  // no audio: silently off
+  // No audio: silently off.
+  if (!may_have_sound() || SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return;
   SDL_AudioSpec want{}, have{};
   want.freq = synth.sample_rate();
   want.format = AUDIO_S16SYS;

@@ -114,7 +114,8 @@ def main():
             break
         time.sleep(0.1)
     env = dict(os.environ, DISPLAY=":" + display, SDL_VIDEODRIVER="x11", SDL_AUDIODRIVER="dummy",
-               SDL_RENDER_DRIVER="software")
+               SDL_RENDER_DRIVER="software", SDL_FRAMEBUFFER_ACCELERATION="0")
+    # (The software renderer straight onto X11: no OpenGL driver is loaded.)
     app = subprocess.Popen([velocity, *common, "--scale", "1", "--window-at-origin", "--record", f"{work}/window",
                             "--linger", "60"], env=env, stdout=subprocess.PIPE, text=True)
     try:
