@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <new>
@@ -580,7 +581,9 @@ void glDrawArrays(GLenum mode, GLint first, GLsizei count) {
       // In a display list the arrays are read now.
       if (mode > GL_POLYGON) return c.error(GL_INVALID_ENUM);
       if (count < 0 || first < 0) return c.error(GL_INVALID_VALUE);
-      glBegin(mode); for (GLsizei k = 0; k < count; ++k) record_array_element(c, first + k); glEnd());
+      glBegin(mode);
+      for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) record_array_element(c, GLint(i));
+      glEnd());
 }
 
 void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
@@ -669,6 +672,7 @@ void glGetBooleanv(GLenum pname, GLboolean* params) {
 }
 void glGetIntegerv(GLenum pname, GLint* params) {
   get_values(pname, params, [](double v, int kind) {
+    if (!(v == v)) return GLint(0);  // NaN
     if (kind == 1) return GLint(std::llround(std::clamp(v, -1.0, 1.0) * 2147483647.0));
     return GLint(std::llround(std::clamp(v, -2147483648.0, 2147483647.0)));
   });

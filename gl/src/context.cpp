@@ -96,7 +96,7 @@ bool is_blend_factor(GLenum f, bool /*source*/) {
 }
 
 bool is_compare(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
-float clamp01(double v) { return float(std::clamp(v, 0.0, 1.0)); }
+float clamp01(double v) { return unit(v); }
 }  // namespace
 
 Context* current() { return g_current; }
@@ -343,7 +343,9 @@ PixelState Context::pixel_state(bool offset) {
 }
 
 Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
-  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset)) submit_pending();
+  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset ||
+                        pending_.index.size() >= kMaxBatchVertices))
+    submit_pending();
   if (!have_pending_) {
     pending_.clear();
     pending_.kind = kind;
@@ -518,7 +520,9 @@ void Context::depth_range(double n, double f) {
 void Context::scissor(GLint x, GLint y, GLsizei w, GLsizei h) {
   if (in_begin_error()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  sc_x_ = x, sc_y_ = y, sc_w_ = w, sc_h_ = h;
+  // Kept within reach of the framebuffer's limits, so that x + width cannot overflow.
+  sc_x_ = std::clamp(x, -kMaxViewport, kMaxViewport), sc_y_ = std::clamp(y, -kMaxViewport, kMaxViewport);
+  sc_w_ = std::min(w, kMaxViewport), sc_h_ = std::min(h, kMaxViewport);
   changed();
 }
 
@@ -594,7 +598,7 @@ void Context::fog(GLenum pname, const float* v) {
   if (in_begin_error()) return;
   switch (pname) {
     case GL_FOG_MODE: {
-      const GLenum m = GLenum(v[0]);
+      const GLenum m = to_enum(v[0]);
       if (m != GL_LINEAR && m != GL_EXP && m != GL_EXP2) return error(GL_INVALID_ENUM);
       fog_mode_ = m;
       break;

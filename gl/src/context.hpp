@@ -47,7 +47,13 @@ constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
 constexpr int kMaxListNesting = 64;
 constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
-constexpr size_t kMaxVerticesPerFrame = size_t(1) << 24;  // more: the frame is run, a new one begun
+constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
+constexpr size_t kMaxBatchVertices = size_t(1) << 20;     // more: the batch goes to the renderer
+// A strip, fan, loop or polygon longer than this (GL_OUT_OF_MEMORY; the rest is dropped).
+constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
+// Commands one outermost glCallList may run, nested lists included: lists that call each
+// other twice over would otherwise run 2^64 of them (GL_OUT_OF_MEMORY, the rest skipped).
+constexpr uint64_t kMaxListCallCommands = uint64_t(1) << 25;
 constexpr int kMaxViewport = 16384;
 
 struct Light {
@@ -377,9 +383,16 @@ class Context {
   std::vector<ListCommand> compiling_commands_;
   bool list_overflow_ = false;
   int list_depth_ = 0;
+  uint64_t list_budget_ = 0;
 
   friend struct ContextAccess;
 };
+
+// A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,
+// glTexParameterf...): anything that is not a whole number in GLenum's range becomes
+// an invalid enum, never an out-of-range conversion.
+inline float unit(double v) { return v > 0 ? (v < 1 ? float(v) : 1.0f) : 0.0f; }
+inline GLenum to_enum(float v) { return v >= 0 && v < 4294967296.0f ? GLenum(v) : GLenum(0xffffffffu); }
 
 // The calling thread's current context (OSMesaMakeCurrent), or null.
 Context* current();

@@ -59,10 +59,15 @@ void Context::execute_list(GLuint list, int) {
   if (list_depth_ >= kMaxListNesting) return;  // GL: deeper calls are ignored
   auto it = lists_.find(list);
   if (it == lists_.end()) return;
+  if (list_depth_ == 0) list_budget_ = kMaxListCallCommands;
   ++list_depth_;
   // The commands of a list cannot change lists (glNewList, glDeleteLists are never
   // compiled), so the vector stays put while it runs.
-  for (const ListCommand& c : it->second) c(*this);
+  for (const ListCommand& c : it->second) {
+    if (list_budget_ == 0) break;
+    if (--list_budget_ == 0) error(GL_OUT_OF_MEMORY);
+    c(*this);
+  }
   --list_depth_;
 }
 

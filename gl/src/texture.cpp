@@ -133,7 +133,7 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
   if (in_begin_error()) return;
   if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
   TextureObject& t = *bound_texture();
-  const GLenum e = GLenum(v[0]);
+  const GLenum e = to_enum(v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && (e < GL_NEAREST_MIPMAP_NEAREST || e > GL_LINEAR_MIPMAP_LINEAR))
@@ -152,8 +152,7 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       (pname == GL_TEXTURE_WRAP_S ? t.wrap_s : t.wrap_t) = e;
       break;
     case GL_TEXTURE_BORDER_COLOR:
-      t.border = {std::clamp(v[0], 0.0f, 1.0f), std::clamp(v[1], 0.0f, 1.0f), std::clamp(v[2], 0.0f, 1.0f),
-                  std::clamp(v[3], 0.0f, 1.0f)};
+      t.border = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
       break;
     case GL_GENERATE_MIPMAP:
       t.generate_mipmap = v[0] != 0;
@@ -168,13 +167,12 @@ void Context::tex_env(GLenum target, GLenum pname, const float* v) {
   if (in_begin_error()) return;
   if (target != GL_TEXTURE_ENV) return error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_MODE) {
-    const GLenum m = GLenum(v[0]);
+    const GLenum m = to_enum(v[0]);
     if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != 0x0104 /* GL_ADD */)
       return error(GL_INVALID_ENUM);
     env_mode_ = m;
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    env_color_ = {std::clamp(v[0], 0.0f, 1.0f), std::clamp(v[1], 0.0f, 1.0f), std::clamp(v[2], 0.0f, 1.0f),
-                  std::clamp(v[3], 0.0f, 1.0f)};
+    env_color_ = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
   } else {
     return error(GL_INVALID_ENUM);
   }

@@ -3,6 +3,7 @@
 // vertex arrays, which feed the same stage.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include "context.hpp"
@@ -10,10 +11,7 @@
 namespace velocity::gl {
 
 namespace {
-[[gnu::always_inline]] inline Vec4 clamp_color(Vec4 c) {
-  return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f),
-          std::clamp(c.w, 0.0f, 1.0f)};
-}
+[[gnu::always_inline]] inline Vec4 clamp_color(Vec4 c) { return {unit(c.x), unit(c.y), unit(c.z), unit(c.w)}; }
 float dot3(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Vec3 normalized(Vec3 v) {
   const float l = std::sqrt(dot3(v, v));
@@ -137,6 +135,10 @@ void Context::vertex(Vec4 v) {
 }
 
 void Context::push_vertex(const Vertex& v) {
+  if (order_.size() >= kMaxPrimitiveVertices) {
+    error(GL_OUT_OF_MEMORY);  // (only the first error is kept until glGetError)
+    return;
+  }
   order_.push_back(uint32_t(prim_.size()));
   prim_.push_back(v);
   emitted_.emplace_back();
@@ -356,7 +358,7 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   if (in_begin_error()) return;
   if (!vertex_array.enabled || !vertex_array.pointer) return;
   begin(mode);
-  for (GLsizei k = 0; k < count; ++k) array_element(first + k);
+  for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) array_element(GLint(i));
   end();
 }
 
@@ -391,11 +393,12 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
     const uint32_t i = index_at(k);
     if (i > 0x7fffffffu) continue;
     if (i < cache_size && element_cache_[i]) {
-      order_.push_back(element_cache_[i] - 1);
+      if (order_.size() < kMaxPrimitiveVertices) order_.push_back(element_cache_[i] - 1);
       continue;
     }
+    const size_t before = prim_.size();
     array_element(GLint(i));
-    if (i < cache_size) element_cache_[i] = uint32_t(prim_.size());
+    if (i < cache_size && prim_.size() > before) element_cache_[i] = uint32_t(prim_.size());
   }
   caching_ = false;
   end();

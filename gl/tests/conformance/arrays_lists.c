@@ -73,6 +73,50 @@ int main(int argc, char** argv) {
   glArrayElement(5);
   glArrayElement(6);
   glEnd();
+  /* A lit, textured strip from all four arrays (float normals, short texture
+   * coordinates, double positions, float colours with stride). */
+  {
+    static const GLdouble pos[8][3] = {{-1, -0.5, 0}, {-1, 0.5, 0}, {-0.3, -0.6, 0.3}, {-0.3, 0.6, 0.3},
+                                       {0.3, -0.6, 0.3}, {0.3, 0.6, 0.3}, {1, -0.5, 0}, {1, 0.5, 0}};
+    static const GLfloat nrm[8][3] = {{-0.4f, 0, 1}, {-0.4f, 0, 1}, {-0.1f, 0, 1}, {-0.1f, 0, 1},
+                                      {0.1f, 0, 1}, {0.1f, 0, 1}, {0.4f, 0, 1}, {0.4f, 0, 1}};
+    static const GLshort tc[8][2] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}, {2, 0}, {2, 1}, {3, 0}, {3, 1}};
+    static const GLfloat col[8][5] = {{1, 1, 1, 1, 0}, {1, 0.5f, 0.5f, 1, 0}, {0.5f, 1, 0.5f, 1, 0}, {1, 1, 1, 1, 0},
+                                      {0.5f, 0.5f, 1, 1, 0}, {1, 1, 0.5f, 1, 0}, {1, 1, 1, 1, 0}, {0.5f, 1, 1, 1, 0}};
+    static GLubyte texels[4 * 4 * 3];
+    const GLfloat light_dir[4] = {0.3f, 0.4f, 1, 0};
+    GLuint tex;
+    int t;
+    for (t = 0; t < 16; ++t) texels[3 * t] = (GLubyte)(t % 2 ? 255 : 60), texels[3 * t + 1] = (GLubyte)(t / 4 * 60), texels[3 * t + 2] = 200;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glEnable(GL_TEXTURE_2D);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_COLOR_MATERIAL);
+    glLightfv(GL_LIGHT0, GL_POSITION, light_dir);
+    glLoadIdentity();
+    glTranslatef(0, -2.2f, -7);
+    glVertexPointer(3, GL_DOUBLE, 0, pos);
+    glNormalPointer(GL_FLOAT, 0, nrm);
+    glTexCoordPointer(2, GL_SHORT, 0, tc);
+    glColorPointer(4, GL_FLOAT, 5 * sizeof(GLfloat), col);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 8);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glDisable(GL_COLOR_MATERIAL);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_TEXTURE_2D);
+    glDeleteTextures(1, &tex);
+    glVertexPointer(3, GL_FLOAT, 0, verts);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, colors);
+  }
   conf_frame("arrays_lists");
 
   /* Frame 2: COMPILE_AND_EXECUTE, culling, front face, polygon modes and offset. */

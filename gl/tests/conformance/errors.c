@@ -133,6 +133,31 @@ int main(int argc, char** argv) {
   conf_value("is_enabled_lighting", glIsEnabled(GL_LIGHTING));
   err("after_gets");
 
+  /* gluProject / gluUnProject with the matrices read back by glGetDoublev. */
+  {
+    GLdouble model[16], proj[16], wx, wy, wz, ox, oy, oz;
+    GLint view[4];
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    gluPerspective(50, 4.0 / 3.0, 0.5, 40);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    gluLookAt(1, 2, 6, 0, 0.5, 0, 0, 1, 0);
+    glRotatef(30, 0, 1, 0);
+    glGetDoublev(GL_MODELVIEW_MATRIX, model);
+    glGetDoublev(GL_PROJECTION_MATRIX, proj);
+    glGetIntegerv(GL_VIEWPORT, view);
+    conf_value("glu_project_ok", gluProject(0.5, -0.25, 1.0, model, proj, view, &wx, &wy, &wz));
+    conf_value("glu_project_x", wx);
+    conf_value("glu_project_y", wy);
+    conf_value("glu_project_z", wz);
+    conf_value("glu_unproject_ok", gluUnProject(wx, wy, wz, model, proj, view, &ox, &oy, &oz));
+    conf_value("glu_unproject_x", ox);
+    conf_value("glu_unproject_y", oy);
+    conf_value("glu_unproject_z", oz);
+    glLoadIdentity();
+  }
+
   /* glReadPixels: a cleared frame with two coloured rectangles. */
   glClearColor(0.2f, 0.4f, 0.6f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

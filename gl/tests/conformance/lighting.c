@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
 
     /* Right: a scaled sphere with colour material (diffuse from glColor), normals
      * renormalised. */
-    glEnable(GL_NORMALIZE);
+    glEnable(frame == 3 ? GL_RESCALE_NORMAL : GL_NORMALIZE); /* a uniform scale: both give unit normals */
     glEnable(GL_COLOR_MATERIAL);
     glColorMaterial(GL_FRONT, frame == 3 ? GL_AMBIENT_AND_DIFFUSE : GL_DIFFUSE);
     glColor3f(0.3f, 0.9f, 0.4f);
@@ -113,6 +113,7 @@ int main(int argc, char** argv) {
     glPopMatrix();
     glDisable(GL_COLOR_MATERIAL);
     glDisable(GL_NORMALIZE);
+    glDisable(GL_RESCALE_NORMAL);
 
     /* Bottom: a plane tilted so that its back shows in two frames (two-sided lighting),
      * with a different back material. */

@@ -110,6 +110,19 @@ int main(int argc, char** argv) {
   glBindTexture(GL_TEXTURE_2D, tex[2]);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   textured_quad(100, 66, 188, 124, 1, 1);
+  /* The texture matrix: a rotated and scaled checker on a small quad at the top. */
+  glMatrixMode(GL_TEXTURE);
+  glPushMatrix();
+  glTranslatef(0.5f, 0.5f, 0);
+  glRotatef(30, 0, 0, 1);
+  glScalef(2, 1.5f, 1);
+  glBindTexture(GL_TEXTURE_2D, tex[0]);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glMatrixMode(GL_MODELVIEW);
+  textured_quad(150, 2, 190, 30, 1, 1);
+  glMatrixMode(GL_TEXTURE);
+  glPopMatrix();
+  glMatrixMode(GL_MODELVIEW);
   conf_frame("wrap_mag");
 
   /* Frame 2: environments on a coloured quad. */
