@@ -83,9 +83,11 @@ struct Glut {
   long frames = 0;
 };
 
+// Never destroyed: GLUT programs end with exit() from inside the main loop, and the
+// window must outlive everything that may still run then.
 Glut& glut() {
-  static Glut g;
-  return g;
+  static Glut* g = new Glut;
+  return *g;
 }
 
 [[noreturn]] void fail(const std::string& message) {
@@ -119,6 +121,23 @@ void bind_buffer(Glut& g, int w, int h) {
   if (!OSMesaMakeCurrent(g.context, g.pixels.data(), GL_UNSIGNED_BYTE, w, h)) fail("cannot bind the window's buffer");
   OSMesaPixelStore(OSMESA_Y_UP, 0);
 }
+
+void release_context() {
+  Glut& g = glut();
+  if (g.context) OSMesaDestroyContext(g.context);
+  g.context = nullptr;
+}
+
+void release_window() {
+  release_context();
+  glut().window.reset();
+}
+
+// At exit (GLUT programs end with exit(), from a callback or when the window closes):
+// the GL context goes, with the renderer's threads; the window is left to the end of
+// the process, as GLUT leaves it (closing SDL here would unload the display's
+// libraries while their own exit handlers may still run).
+void at_exit() { release_context(); }
 
 void show_frame(Glut& g) {
   glFinish();
@@ -278,16 +297,15 @@ int glutCreateWindow(const char* title) {
   g.context = OSMesaCreateContextExt(OSMESA_RGBA, (g.display_mode & GLUT_DEPTH) ? 24 : 0,
                                      (g.display_mode & GLUT_STENCIL) ? 8 : 0, 0, nullptr);
   if (!g.context) fail("cannot create the GL context");
+  std::atexit(at_exit);  // after the GL library's own state exists: it runs first
   bind_buffer(g, options.width, options.height);
   return 1;
 }
 
 void glutDestroyWindow(int window) {
-  Glut& g = need_window("glutDestroyWindow");
+  need_window("glutDestroyWindow");
   if (window != 1) return;
-  OSMesaDestroyContext(g.context);
-  g.context = nullptr;
-  g.window.reset();
+  release_window();
 }
 
 int glutGetWindow(void) { return glut().window ? 1 : 0; }

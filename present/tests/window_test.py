@@ -78,23 +78,9 @@ def read_xwd(path):
     return np.dstack([channel(rmask), channel(gmask), channel(bmask)])
 
 
-def main():
-    velocity, work = sys.argv[1], sys.argv[2]
-    xvfb = shutil.which("Xvfb")
-    if not xvfb:
-        print("SKIPPED: Xvfb is not installed (Debian's xvfb; scripts/deps.sh installs it)")
-        return 77
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    common = ["view", "--size", "320x240", "--no-overlay", "--frames", "3", "--mute"]
-
-    # The headless frame.
-    subprocess.run([velocity, *common, "--headless", "--record", f"{work}/headless"], check=True)
-    expect = read_png(f"{work}/headless/frame_00002.png")
-    assert expect.std() > 10, "the headless frame is blank: nothing to compare"
-
-    # The window, on a private X server whose screen is a file.
-    fbdir = f"{work}/fb"
+def start_xvfb(xvfb, fbdir):
+    """A private X server (640x480x24) whose screen is the file FBDIR/Xvfb_screen0.
+    Returns the server's process and its display number."""
     os.makedirs(fbdir)
     r, w = os.pipe()
     server = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "640x480x24", "-fbdir", fbdir,
@@ -113,6 +99,27 @@ def main():
         if os.path.exists(f"{fbdir}/Xvfb_screen0"):
             break
         time.sleep(0.1)
+    return server, display
+
+
+def main():
+    velocity, work = sys.argv[1], sys.argv[2]
+    xvfb = shutil.which("Xvfb")
+    if not xvfb:
+        print("SKIPPED: Xvfb is not installed (Debian's xvfb; scripts/deps.sh installs it)")
+        return 77
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    common = ["view", "--size", "320x240", "--no-overlay", "--frames", "3", "--mute"]
+
+    # The headless frame.
+    subprocess.run([velocity, *common, "--headless", "--record", f"{work}/headless"], check=True)
+    expect = read_png(f"{work}/headless/frame_00002.png")
+    assert expect.std() > 10, "the headless frame is blank: nothing to compare"
+
+    # The window, on a private X server whose screen is a file.
+    fbdir = f"{work}/fb"
+    server, display = start_xvfb(xvfb, fbdir)
     env = dict(os.environ, DISPLAY=":" + display, SDL_VIDEODRIVER="x11", SDL_AUDIODRIVER="dummy",
                SDL_RENDER_DRIVER="software", SDL_FRAMEBUFFER_ACCELERATION="0")
     # (The software renderer straight onto X11: no OpenGL driver is loaded.)

@@ -17,7 +17,7 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "present", "tests"))
-from window_test import read_png, read_xwd  # noqa: E402  (the real-time tests' image readers)
+from window_test import read_png, read_xwd, start_xvfb  # noqa: E402  (the real-time tests' helpers)
 
 
 def read_ppm(path):
@@ -70,24 +70,7 @@ def window(demo, work):
         print("SKIPPED: Xvfb is not installed (Debian's xvfb; scripts/deps.sh installs it)")
         return 77
     fbdir = os.path.join(work, "fb")
-    os.makedirs(fbdir)
-    r, w = os.pipe()
-    server = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "640x480x24", "-fbdir", fbdir,
-                               "-nolisten", "tcp"], pass_fds=[w])
-    os.close(w)
-    display = b""
-    while not display.endswith(b"\n"):
-        chunk = os.read(r, 16)
-        if not chunk:
-            break
-        display += chunk
-    os.close(r)
-    display = display.decode().strip()
-    assert display, "Xvfb did not start"
-    for _ in range(100):
-        if os.path.exists(f"{fbdir}/Xvfb_screen0"):
-            break
-        time.sleep(0.1)
+    server, display = start_xvfb(xvfb, fbdir)
     dump = os.path.join(work, "frame.ppm")
     env = dict(os.environ, DISPLAY=":" + display, SDL_VIDEODRIVER="x11", SDL_AUDIODRIVER="dummy",
                SDL_RENDER_DRIVER="software")
