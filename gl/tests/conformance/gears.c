@@ -6,11 +6,10 @@
 
 /* A gear of `teeth` teeth between radii r0 (hole) and r1 (root), teeth reaching r2,
  * `width` thick, centred on z = 0. */
-static void gear(float r0, float r1, float r2, float width, int teeth, float tooth_depth_share) {
+static void gear(float r0, float r1, float r2, float width, int teeth) {
   const float pi = 3.14159265f, half = width * 0.5f;
   const float step = 2 * pi / teeth, q = step / 4;
   int i;
-  (void)tooth_depth_share;
   glShadeModel(GL_FLAT);
   glNormal3f(0, 0, 1);
   /* Front face (a ring) and the front of the teeth. */
@@ -109,17 +108,17 @@ int main(int argc, char** argv) {
   g1 = glGenLists(1);
   glNewList(g1, GL_COMPILE);
   glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
-  gear(1.0f, 3.0f, 4.0f, 1.0f, 20, 0.7f);
+  gear(1.0f, 3.0f, 4.0f, 1.0f, 20);
   glEndList();
   g2 = glGenLists(1);
   glNewList(g2, GL_COMPILE);
   glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, green);
-  gear(0.5f, 1.5f, 2.5f, 2.0f, 10, 0.7f);
+  gear(0.5f, 1.5f, 2.5f, 2.0f, 10);
   glEndList();
   g3 = glGenLists(1);
   glNewList(g3, GL_COMPILE);
   glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
-  gear(1.3f, 1.5f, 2.5f, 0.5f, 10, 0.7f);
+  gear(1.3f, 1.5f, 2.5f, 0.5f, 10);
   glEndList();
   glEnable(GL_NORMALIZE);
 
