@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Batch throughput: 1,000 views on 1 worker process, then on 2, each worker rendering on
 one core; rounds alternate, medians reported, and the scaling ratio = (views/s on 2) /
-(2 x views/s on 1): 1.0 is perfect. Two runners: `local` is `velocity batch --workers N`
-(the job in this process for 1, in N processes started by multiprocessing for more,
-their start-up included in the time); `dask` is a Dask LocalCluster of N worker
-processes (started and warmed up before the timing; its scheduler runs in this process).
+(2 x views/s on 1): 1.0 is perfect. Two runners, each with its N worker processes
+started before the timing (a job's time is the job's alone): `local` is a
+velocity.batch.LocalPool of N processes (what `velocity batch --workers N` starts for
+its job), `dask` a Dask LocalCluster of N worker processes (its scheduler runs in this
+process, as does the local runner's coordinator).
 
     PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256] [--runner local|dask|both] [--tmp DIR]
 
@@ -35,7 +36,7 @@ import distributed
 
 import dask
 
-from velocity.batch import run_local
+from velocity.batch import LocalPool, run_local
 from velocity.dask_runner import DASK_CONFIG, run_dask
 from velocity.jobs import Progress, load_job
 
@@ -128,7 +129,9 @@ def measure(runner, args):
     spec = {"models": MODELS, "size": [args.size, args.size], "views": {"type": "orbit", "count": args.views},
             "outputs": ["color", "depth", "mask"], "chunk": args.chunk}
     total = len(MODELS) * args.views
-    clusters = {}
+    clusters, pools = {}, {}
+    if runner == "local":
+        pools = {n: LocalPool(n, threads=1) for n in (1, 2)}
     if runner == "dask":
         for n in (1, 2):
             with dask.config.set(DASK_CONFIG):  # as run_dask starts its own LocalCluster
@@ -146,7 +149,7 @@ def measure(runner, args):
                 if runner == "dask":
                     m = run_dask(job, client=clusters[n][1], progress=Progress(False))
                 else:
-                    m = run_local(job, workers=n, threads=1, progress=Progress(False))
+                    m = run_local(job, pool=pools[n], progress=Progress(False))
                 dt = time.perf_counter() - t0
                 assert m["views_done"] == total and not m["models_failed"], json.dumps(m["models_failed"])
                 if r:
@@ -157,6 +160,8 @@ def measure(runner, args):
         for cluster, client in clusters.values():
             client.close()
             cluster.close()
+        for pool in pools.values():
+            pool.close()
         shutil.rmtree(tmp, ignore_errors=True)
     return statistics.median(rates[1]), statistics.median(rates[2])
 

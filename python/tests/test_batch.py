@@ -104,6 +104,27 @@ def test_workers_in_processes_give_the_same_files(tmp_path):
         assert (a / f).read_bytes() == (b / f).read_bytes(), f
 
 
+def test_a_pool_keeps_its_workers_for_several_jobs(tmp_path):
+    from velocity.batch import LocalPool
+
+    path = make_job(tmp_path, models=[model("duck.asc"), model("fork.asc")])
+    ref = tmp_path / "ref"
+    run_local(load_job(path, str(ref)), workers=1, progress=Progress(False))
+    workers = []
+    with LocalPool(2) as pool:
+        for name in ("a", "b"):
+            m = run_local(load_job(path, str(tmp_path / name)), pool=pool, progress=Progress(False))
+            assert m["complete"] and m["views_done"] == 16
+            records = [json.loads(p.read_text()) for p in (tmp_path / name / ".velocity" / "tasks").iterdir()]
+            workers.append({r["worker"] for r in records})
+            for f in files_under(ref):
+                if not f.startswith(".velocity") and f != "manifest.json":
+                    assert (ref / f).read_bytes() == (tmp_path / name / f).read_bytes(), f
+    # Both jobs ran in the same processes, none of them this one.
+    assert workers[0] == workers[1] and 1 <= len(workers[0]) <= 2
+    assert not any(w.endswith(f":{os.getpid()}") for w in workers[0])
+
+
 def test_command_line(tmp_path):
     path = make_job(tmp_path, models=[model("fork.asc"), str(tmp_path / "broken.obj")], output="renders")
     env = dict(os.environ)

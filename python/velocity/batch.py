@@ -16,38 +16,108 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import threading
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
-from multiprocessing import get_context
 from typing import Any
 
 from .jobs import Job, JobError, Progress, Run, load_job, run_task
 
 
+def _mp_context():
+    """forkserver where the platform has it: the server imports numpy and the engine
+    once, and each worker is a fork of it, ready at once; a fork of a server that has
+    started no renderer, so no engine thread is copied half-way. spawn elsewhere."""
+    import multiprocessing
+    if "forkserver" in multiprocessing.get_all_start_methods():
+        ctx = multiprocessing.get_context("forkserver")
+        ctx.set_forkserver_preload(["numpy", "velocity", "velocity.jobs", "velocity.png"])
+        return ctx
+    return multiprocessing.get_context("spawn")
+
+
+def _worker_started(barrier: Any) -> None:
+    import velocity  # noqa: F401  (already there under forkserver)
+    barrier.wait()
+
+
+def _no_op() -> None:
+    pass
+
+
+class LocalPool:
+    """Worker processes on this machine, started once and given any number of jobs, as
+    a Dask cluster is. Each renders one task at a time; `threads` is the cores one frame
+    may use in a worker (1: one core per worker, as many workers as cores).
+
+        with LocalPool(2) as pool:
+            run_local(job_a, pool=pool)
+            run_local(job_b, pool=pool)
+
+    The constructor returns once every worker has started and imported the engine, so
+    that a job's time is the job's alone."""
+
+    def __init__(self, workers: int, threads: int = 1, start_timeout: float = 120.0) -> None:
+        if workers < 1:
+            raise JobError(f"--workers must be at least 1, got {workers}")
+        self.workers, self.threads = workers, threads
+        ctx = _mp_context()
+        barrier = ctx.Barrier(workers + 1)
+        self._executor = ProcessPoolExecutor(workers, mp_context=ctx, initializer=_worker_started,
+                                             initargs=(barrier,))
+        try:
+            # The executor starts a worker per task submitted while none is idle.
+            for _ in range(workers):
+                self._executor.submit(_no_op)
+            barrier.wait(start_timeout)
+        except BaseException as e:
+            self._executor.shutdown(wait=False, cancel_futures=True)
+            if isinstance(e, threading.BrokenBarrierError):
+                raise JobError(f"the {workers} worker processes did not start within {start_timeout:.0f} s") from None
+            raise
+
+    def run(self, job: Job, progress: Progress | None = None) -> dict:
+        """Runs the job on the pool's workers; returns the manifest."""
+        with Run(job, progress) as run:
+            futures = {self._executor.submit(run_task, job, task, self.threads): task for task in run.todo}
+            try:
+                for f in as_completed(futures):
+                    run.finished(f.result())
+            except BrokenProcessPool:
+                # A process was killed (out of memory, say). What it finished is
+                # recorded; a second run resumes the rest.
+                raise JobError("a worker process died; run the job again to resume it") from None
+        return run.manifest
+
+    def close(self) -> None:
+        self._executor.shutdown(wait=True, cancel_futures=True)
+
+    def __enter__(self) -> "LocalPool":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+
 def run_local(job: Job, workers: int = 1, threads: int | None = None, progress: Progress | None = None,
-              hooks: dict | None = None) -> dict:
-    """Runs the job here: in this process (workers=1) or in `workers` processes started
-    with multiprocessing ("spawn"), each rendering one task at a time. `threads` is the
-    cores one frame may use (default: every core for one worker, 1 each for several).
-    Returns the manifest."""
+              hooks: dict | None = None, pool: LocalPool | None = None) -> dict:
+    """Runs the job here: on `pool`'s workers when one is given, else in this process
+    (workers=1) or in a LocalPool of `workers` processes started for this job. `threads`
+    is the cores one frame may use (default: every core for one worker, 1 each for
+    several; a pool has its own). `hooks` (in-process only) are for tests. Returns the
+    manifest."""
+    if pool is not None:
+        return pool.run(job, progress)
     if workers < 1:
         raise JobError(f"--workers must be at least 1, got {workers}")
     if threads is None:
         threads = 0 if workers == 1 else 1
+    if workers > 1:
+        with LocalPool(workers, threads) as own:
+            return own.run(job, progress)
     with Run(job, progress) as run:
-        if workers == 1:
-            for task in run.todo:
-                run.finished(run_task(job, task, threads, hooks))
-        else:
-            with ProcessPoolExecutor(workers, mp_context=get_context("spawn")) as pool:
-                futures = {pool.submit(run_task, job, task, threads): task for task in run.todo}
-                try:
-                    for f in as_completed(futures):
-                        run.finished(f.result())
-                except BrokenProcessPool:
-                    # A process was killed (out of memory, say). What it finished is
-                    # recorded; a second run resumes the rest.
-                    raise JobError("a worker process died; run the job again to resume it") from None
+        for task in run.todo:
+            run.finished(run_task(job, task, threads, hooks))
     return run.manifest
 
 

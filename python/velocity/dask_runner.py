@@ -18,7 +18,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from .jobs import Job, Progress, Run, Task, run_task, write_json
+from .jobs import Job, Progress, Run, Task, read_record, run_task, write_json
 
 
 # Dask settings for rendering tasks (each one a few hundred milliseconds or more). Dask's
@@ -40,6 +40,14 @@ DASK_CONFIG = {
 
 def _task_on_worker(job: Job, task: Task, threads: int) -> dict:
     return run_task(job, task, threads)
+
+
+def _finished_record(job: Job, task: Task) -> dict | None:
+    """The record a finished task left in the output folder, if it is this task's final one."""
+    record = read_record(job, task.id)
+    if record and record.get("hash") == task.hash and record.get("status") in ("done", "failed"):
+        return record
+    return None
 
 
 def run_dask(job: Job, address: str | None = None, local_workers: int | None = None, client: Any = None,
@@ -76,13 +84,21 @@ def run_dask(job: Job, address: str | None = None, local_workers: int | None = N
             futures = dict(zip(submitted, run.todo))
             for f in as_completed(futures):
                 task = futures[f]
-                try:
-                    record = f.result()
-                except Exception as e:  # the task's workers kept dying (KilledWorker), or Dask failed
-                    record = {"task": task.id, "model": task.model, "model_key": task.model_key, "hash": task.hash,
-                              "views": [task.start, task.stop], "status": "failed",
-                              "error": f"{type(e).__name__}: {e}"}
-                    write_json(job, job.record_path(task.id), record)
+                # The worker wrote the task's record to the shared output folder before
+                # it finished: read it there rather than fetch the result from the
+                # worker (a round trip through the scheduler and the worker for each
+                # task, CPU taken from a small cluster's rendering). Fetched only when
+                # the file does not show it yet (a file system slow to show another
+                # machine's rename, say).
+                record = _finished_record(job, task) if f.status == "finished" else None
+                if record is None:
+                    try:
+                        record = f.result()
+                    except Exception as e:  # the task's workers kept dying (KilledWorker), or Dask failed
+                        record = {"task": task.id, "model": task.model, "model_key": task.model_key,
+                                  "hash": task.hash, "views": [task.start, task.stop], "status": "failed",
+                                  "error": f"{type(e).__name__}: {e}"}
+                        write_json(job, job.record_path(task.id), record)
                 run.finished(record)
                 f.release()
         return run.manifest
