@@ -17,7 +17,7 @@ Two controls: the disk's own scaling (files written and renamed by one process, 
 by two: on this machine's virtual disk, creating a file costs about 0.2 ms and two
 processes do not create them twice as fast; `--tmp /dev/shm` takes the disk out), and
 the machine's own scaling: the same single-threaded C++ render loop
-(velocity_python_bench --threads 1), one copy alone, then two copies at once. On a
+(velocity bench --threads 1), one copy alone, then two copies at once. On a
 machine whose two cores are two hyperthreads of one physical core, or that others
 share, two processes never reach 2x, whatever the batch runner does.
 """
@@ -51,8 +51,8 @@ MODELS = [os.path.join(ROOT, "tests", "data", "models", m) for m in
 
 
 def machine_scaling(build, rounds):
-    cmd = [os.path.join(build, "python", "velocity_python_bench"), "--renderer", "velocity", "--mesh", "sphere:128",
-           "--size", "256x256", "--frames", "400", "--threads", "1"]
+    cmd = [os.path.join(build, "velocity"), "bench", "--mesh", "sphere:128", "--size", "256x256", "--frames", "400",
+           "--threads", "1"]
     ms = lambda out: float(re.search(r"median_ms=([0-9.]+)", out).group(1))  # noqa: E731
     alone, pair = [], []
     for _ in range(rounds):
@@ -112,36 +112,40 @@ def main():
                         "runner rather than the disk)")
     p.add_argument("--chunk", type=int, default=25, help="views per task")
     p.add_argument("--runner", choices=("local", "dask", "both"), default="both")
+    p.add_argument("--workers", default="1,2",
+                   help="worker counts to time, comma-separated; each is compared with 1 (default 1,2)")
     args = p.parse_args()
+    args.workers = sorted({1} | {int(n) for n in args.workers.split(",")})
     control = machine_scaling(args.build, args.rounds)
     disk_scaling(args.tmp, args.rounds)
     runners = ("local", "dask") if args.runner == "both" else (args.runner,)
     for runner in runners:
-        one, two = measure(runner, args)
-        print(f"{runner}: median 1 worker {one:.1f} views/s, 2 workers {two:.1f} views/s, "
-              f"scaling {two / (2 * one):.3f} of 2x (cores: {os.cpu_count()}); the machine itself: {control:.3f} of 2x",
-              flush=True)
+        rates = measure(runner, args)
+        for n in args.workers[1:]:
+            print(f"{runner}: median 1 worker {rates[1]:.1f} views/s, {n} workers {rates[n]:.1f} views/s, "
+                  f"scaling {rates[n] / (n * rates[1]):.3f} of {n}x (cores: {os.cpu_count()}); "
+                  f"the machine itself: {control:.3f} of 2x", flush=True)
 
 
 def measure(runner, args):
-    """Median views/s of the job on 1 and on 2 worker processes, rounds alternating."""
+    """Median views/s of the job on each count of worker processes, rounds alternating."""
     tmp = tempfile.mkdtemp(prefix="velocity-bench-batch-", dir=args.tmp)
     spec = {"models": MODELS, "size": [args.size, args.size], "views": {"type": "orbit", "count": args.views},
             "outputs": ["color", "depth", "mask"], "chunk": args.chunk}
     total = len(MODELS) * args.views
     clusters, pools = {}, {}
     if runner == "local":
-        pools = {n: LocalPool(n, threads=1) for n in (1, 2)}
+        pools = {n: LocalPool(n, threads=1) for n in args.workers}
     if runner == "dask":
-        for n in (1, 2):
+        for n in args.workers:
             with dask.config.set(DASK_CONFIG):  # as run_dask starts its own LocalCluster
                 cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                                    dashboard_address=None, silence_logs=50)
             clusters[n] = (cluster, distributed.Client(cluster))
-    rates = {1: [], 2: []}
+    rates = {n: [] for n in args.workers}
     try:
         for r in range(args.rounds + 1):  # round 0 warms up (imports, renderers, page cache)
-            for n in (1, 2):
+            for n in args.workers:
                 out = os.path.join(tmp, f"out-{n}")
                 shutil.rmtree(out, ignore_errors=True)
                 job = load_job(spec, out)
@@ -163,7 +167,7 @@ def measure(runner, args):
         for pool in pools.values():
             pool.close()
         shutil.rmtree(tmp, ignore_errors=True)
-    return statistics.median(rates[1]), statistics.median(rates[2])
+    return {n: statistics.median(r) for n, r in rates.items()}
 
 
 if __name__ == "__main__":
