@@ -123,6 +123,9 @@ def test_a_pool_keeps_its_workers_for_several_jobs(tmp_path):
     # Both jobs ran in the same processes, none of them this one.
     assert workers[0] == workers[1] and 1 <= len(workers[0]) <= 2
     assert not any(w.endswith(f":{os.getpid()}") for w in workers[0])
+    from velocity.jobs import JobError
+    with pytest.raises(JobError, match="at least 1"):
+        LocalPool(0)
 
 
 def test_command_line(tmp_path):

@@ -59,7 +59,7 @@ class LocalPool:
 
     def __init__(self, workers: int, threads: int = 1, start_timeout: float = 120.0) -> None:
         if workers < 1:
-            raise JobError(f"--workers must be at least 1, got {workers}")
+            raise JobError(f"LocalPool: workers must be at least 1, got {workers}")
         self.workers, self.threads = workers, threads
         ctx = _mp_context()
         barrier = ctx.Barrier(workers + 1)
