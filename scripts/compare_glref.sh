@@ -10,8 +10,8 @@
 #   scripts/compare_glref.sh [--threads N] [--pairs N] [--frames N] [--only REGEX]
 #
 # Both renderers use the same number of threads (LP_NUM_THREADS for llvmpipe, --threads
-# for Velocity; default 2, this machine's cores). Needs ../shared/tools (glref is built
-# into /tmp/velocity-glref) and a built build/velocity. Prints a Markdown table.
+# for Velocity; default 2, this machine's cores). VELOCITY and GLREF name the programs
+# (scripts/lib/against_llvmpipe.sh). Prints a Markdown table.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 threads=2 pairs=5 frames=20 only=.
@@ -24,13 +24,8 @@ while (($#)); do
     *) echo "usage: scripts/compare_glref.sh [--threads N] [--pairs N] [--frames N] [--only REGEX]" >&2; exit 2 ;;
   esac
 done
-tools="$root/../shared/tools"
-[[ -d "$tools" ]] || { echo "compare_glref: $tools not found" >&2; exit 2; }
-bin=/tmp/velocity-glref
-mkdir -p "$bin"
-[[ -x "$bin/glref" ]] || g++ -O2 -o "$bin/glref" "$tools/glref/glref.cpp" -lOSMesa -ltinyobjloader -lstb
-[[ -x "$root/build/velocity" ]] || cmake --build "$root/build" --target velocity_cli >/dev/null
-velocity="$root/build/velocity"
+# shellcheck source=lib/against_llvmpipe.sh
+source "$root/scripts/lib/against_llvmpipe.sh"
 
 # scene: "name|bench arguments|target ratio (or -)"
 scenes=(
@@ -50,10 +45,7 @@ scenes=(
   "sphere:512 wire|--mesh sphere:512 --shade wire --size 1920x1080|-"
 )
 
-median() { sort -g | awk '{a[NR] = $1} END { if (NR % 2) print a[(NR + 1) / 2]; else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
-ms() { sed -n 's/.* median_ms=\([0-9.]*\).*/\1/p'; }
-
-echo "Velocity $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?') against llvmpipe, $(date -u +%Y-%m-%d), $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), both on $threads threads, $pairs alternating pairs of $frames frames, simd=$("$velocity" bench --mesh sphere:8 --size 64x64 --frames 1 --verbose | sed -n 's/^simd=\([^ ]*\).*/\1/p')"
+echo "Velocity $(machine) against llvmpipe, both on $threads threads, $pairs alternating pairs of $frames frames, simd=$(simd)"
 echo
 echo "| scene (1920x1080 unless said) | llvmpipe ms | Velocity ms | ratio | target |"
 echo "|---|---|---|---|---|"
@@ -63,10 +55,10 @@ for s in "${scenes[@]}"; do
   ref=() ours=() ratios=()
   for ((p = 0; p < pairs; ++p)); do
     # shellcheck disable=SC2086
-    a=$(LP_NUM_THREADS=$threads "$bin/glref" $args --frames "$frames" | ms)
+    a=$(LP_NUM_THREADS=$threads "$glref" $args --frames "$frames" | ms)
     # shellcheck disable=SC2086
     b=$("$velocity" bench $args --frames "$frames" --threads "$threads" | ms)
-    ref+=("$a") ours+=("$b") ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }')")
+    ref+=("$a") ours+=("$b") ratios+=("$(ratio "$a" "$b")")
   done
   r=$(printf '%s\n' "${ratios[@]}" | median)
   verdict=""
@@ -83,7 +75,7 @@ one=() many=() ratios=()
 for ((p = 0; p < pairs; ++p)); do
   a=$("$velocity" bench --mesh sphere:512 --shade gouraud --frames "$frames" --threads 1 | ms)
   b=$("$velocity" bench --mesh sphere:512 --shade gouraud --frames "$frames" --threads "$threads" | ms)
-  one+=("$a") many+=("$b") ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }')")
+  one+=("$a") many+=("$b") ratios+=("$(ratio "$a" "$b")")
 done
 r=$(printf '%s\n' "${ratios[@]}" | median)
 printf '| | %.2f | %.2f | %.2fx | %s |\n' "$(printf '%s\n' "${one[@]}" | median)" "$(printf '%s\n' "${many[@]}" | median)" "$r" \

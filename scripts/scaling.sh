@@ -9,8 +9,8 @@
 #   scripts/scaling.sh [--threads "1 2 4 8 16"] [--pairs N] [--frames N] [--only REGEX]
 #
 # Thread counts above the machine's cores are skipped. VELOCITY and GLREF name the two
-# programs (default: build/velocity, and glref built into /tmp/velocity-glref from
-# ../shared/tools); scripts/bundle.sh render packs both to run this on another machine.
+# programs (scripts/lib/against_llvmpipe.sh); scripts/bundle.sh render packs both to run
+# this on another machine.
 # Prints a Markdown table.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -24,13 +24,8 @@ while (($#)); do
     *) echo "usage: scripts/scaling.sh [--threads \"1 2 4 8 16\"] [--pairs N] [--frames N] [--only REGEX]" >&2; exit 2 ;;
   esac
 done
-velocity="${VELOCITY:-$root/build/velocity}"
-glref="${GLREF:-/tmp/velocity-glref/glref}"
-if [[ ! -x "$glref" ]]; then
-  mkdir -p "$(dirname "$glref")"
-  g++ -O2 -o "$glref" "$root/../shared/tools/glref/glref.cpp" -lOSMesa -ltinyobjloader -lstb
-fi
-[[ -x "$velocity" ]] || cmake --build "$root/build" --target velocity_cli >/dev/null
+# shellcheck source=lib/against_llvmpipe.sh
+source "$root/scripts/lib/against_llvmpipe.sh"
 cores=$(nproc)
 
 scenes=(
@@ -41,10 +36,7 @@ scenes=(
   "sphere:64 phong|--mesh sphere:64 --shade phong --size 1920x1080"
 )
 
-median() { sort -g | awk '{a[NR] = $1} END { if (NR % 2) print a[(NR + 1) / 2]; else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
-ms() { sed -n 's/.* median_ms=\([0-9.]*\).*/\1/p'; }
-
-echo "Velocity $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?') and llvmpipe by threads, $(date -u +%Y-%m-%d), $cores cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), $pairs alternating pairs of $frames frames, simd=$("$velocity" bench --mesh sphere:8 --size 64x64 --frames 1 --verbose | sed -n 's/^simd=\([^ ]*\).*/\1/p')"
+echo "Velocity $(machine) and llvmpipe by threads, $pairs alternating pairs of $frames frames, simd=$(simd)"
 echo
 echo "| scene (1920x1080) | threads | llvmpipe ms | Velocity ms | ratio | llvmpipe speed-up | Velocity speed-up |"
 echo "|---|---|---|---|---|---|---|"
@@ -60,12 +52,12 @@ for s in "${scenes[@]}"; do
       a=$(LP_NUM_THREADS=$n "$glref" $args --frames "$frames" | ms)
       # shellcheck disable=SC2086
       b=$("$velocity" bench $args --frames "$frames" --threads "$n" | ms)
-      ref+=("$a") ours+=("$b") ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", a / b }')")
+      ref+=("$a") ours+=("$b") ratios+=("$(ratio "$a" "$b")")
     done
     r=$(printf '%s\n' "${ref[@]}" | median) o=$(printf '%s\n' "${ours[@]}" | median)
     [[ -z "$ref1" ]] && ref1=$r ours1=$o
     printf '| %s | %d | %.2f | %.2f | %.2f | %.2fx | %.2fx |\n' "$name" "$n" "$r" "$o" \
-      "$(printf '%s\n' "${ratios[@]}" | median)" "$(awk -v a="$ref1" -v b="$r" 'BEGIN { print a / b }')" \
-      "$(awk -v a="$ours1" -v b="$o" 'BEGIN { print a / b }')"
+      "$(printf '%s\n' "${ratios[@]}" | median)" "$(ratio "$ref1" "$r")" \
+      "$(ratio "$ours1" "$o")"
   done
 done
