@@ -7,7 +7,7 @@ velocity.batch.LocalPool of N processes (what `velocity batch --workers N` start
 its job), `dask` a Dask LocalCluster of N worker processes (its scheduler runs in this
 process, as does the local runner's coordinator).
 
-    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256] [--runner local|dask|both] [--tmp DIR]
+    PYTHONPATH=build/python python3 python/bench/bench_batch.py [--rounds 3] [--size 256] [--runner local|dask|both] [--tmp DIR] [--workers 1,2,4]
 
 The job: 10 models (the project's test models and Debian's assimp-testmodels), 100
 orbit views each, colour + depth + mask at size x size, one Dask task per 25 views.
@@ -34,10 +34,8 @@ import time
 
 import distributed
 
-import dask
-
 from velocity.batch import LocalPool, run_local
-from velocity.dask_runner import DASK_CONFIG, run_dask
+from velocity.dask_runner import local_cluster, run_dask
 from velocity.jobs import Progress, load_job
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -138,9 +136,7 @@ def measure(runner, args):
         pools = {n: LocalPool(n, threads=1) for n in args.workers}
     if runner == "dask":
         for n in args.workers:
-            with dask.config.set(DASK_CONFIG):  # as run_dask starts its own LocalCluster
-                cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                                   dashboard_address=None, silence_logs=50)
+            cluster = local_cluster(n, silence_logs=50)  # as run_dask starts its own
             clusters[n] = (cluster, distributed.Client(cluster))
     rates = {n: [] for n in args.workers}
     try:

@@ -78,14 +78,10 @@ def test_the_cluster_keeps_glibc_heap_for_a_views_arrays(monkeypatch):
     # (13% more CPU per view); velocity's LocalCluster sets larger thresholds. (The
     # environment wins over Dask's setting, and the other tests' nannies put Dask's
     # default into this process's environment.)
-    import dask
+    from velocity.dask_runner import local_cluster
     monkeypatch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
     monkeypatch.delenv("MALLOC_MMAP_THRESHOLD_", raising=False)
-
-    from velocity.dask_runner import DASK_CONFIG
-    with dask.config.set(DASK_CONFIG):
-        cluster = distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
-                                           dashboard_address=None, silence_logs=50)
+    cluster = local_cluster(1, silence_logs=50)
     with cluster, distributed.Client(cluster) as c:
         env = c.run(lambda: {k: os.environ.get(k) for k in ("MALLOC_TRIM_THRESHOLD_", "MALLOC_MMAP_THRESHOLD_")})
     assert list(env.values()) == [{"MALLOC_TRIM_THRESHOLD_": "134217728", "MALLOC_MMAP_THRESHOLD_": "33554432"}]

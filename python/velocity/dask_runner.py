@@ -18,7 +18,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from .jobs import Job, Progress, Run, Task, read_record, run_task, write_json
+from .jobs import Job, Progress, Run, Task, read_record, run_task, task_record, write_json
 
 
 # Dask settings for rendering tasks (each one a few hundred milliseconds or more). Dask's
@@ -53,6 +53,16 @@ def _task_on_worker(job: Job, task: Task, threads: int) -> dict:
     return run_task(job, task, threads)
 
 
+def local_cluster(workers: int, **kwargs: Any) -> Any:
+    """A Dask LocalCluster of `workers` processes of one thread each, with DASK_CONFIG
+    (its workers inherit it from their nannies). `kwargs` go to LocalCluster."""
+    import dask
+    from distributed import LocalCluster
+    with dask.config.set(DASK_CONFIG):
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                            **kwargs)
+
+
 def _finished_record(job: Job, task: Task) -> dict | None:
     """The record a finished task left in the output folder, if it is this task's final one."""
     record = read_record(job, task.id)
@@ -70,17 +80,14 @@ def run_dask(job: Job, address: str | None = None, local_workers: int | None = N
     workers with --nthreads 1 and one process per core). `task_fn(job, task, threads)`
     replaces the function run on the workers (it must be importable there; for
     instrumenting, as the killed-worker test does). Returns the manifest."""
-    from distributed import Client, LocalCluster, as_completed
+    from distributed import Client, as_completed
 
     own_cluster = own_client = None
     if client is None:
         if address:
             client = own_client = Client(address)
         else:
-            import dask
-            with dask.config.set(DASK_CONFIG):  # the workers inherit it from their nannies
-                own_cluster = LocalCluster(n_workers=local_workers or os.cpu_count() or 1, threads_per_worker=1,
-                                           processes=True, dashboard_address=None)
+            own_cluster = local_cluster(local_workers or os.cpu_count() or 1)
             client = own_client = Client(own_cluster)
     try:
         with Run(job, progress) as run:
@@ -106,9 +113,7 @@ def run_dask(job: Job, address: str | None = None, local_workers: int | None = N
                     try:
                         record = f.result()
                     except Exception as e:  # the task's workers kept dying (KilledWorker), or Dask failed
-                        record = {"task": task.id, "model": task.model, "model_key": task.model_key,
-                                  "hash": task.hash, "views": [task.start, task.stop], "status": "failed",
-                                  "error": f"{type(e).__name__}: {e}"}
+                        record = task_record(task, "failed", error=f"{type(e).__name__}: {e}")
                         write_json(job, job.record_path(task.id), record)
                 run.finished(record)
                 f.release()

@@ -458,6 +458,13 @@ def _failure(e: BaseException) -> str:
     return str(e) if isinstance(e, velocity.Error) else f"{type(e).__name__}: {e}"
 
 
+def task_record(task: Task, status: str, **fields: Any) -> dict[str, Any]:
+    """A task's record: which task, model and views, the hash its output depends on,
+    its status ("running", "done" or "failed"), and `fields`."""
+    return {"task": task.id, "model": task.model, "model_key": task.model_key, "hash": task.hash,
+            "views": [task.start, task.stop], "status": status, **fields}
+
+
 def run_task(job: Job, task: Task, threads: int = 1, hooks: dict | None = None) -> dict:
     """Renders one task's views and returns its record (also written to the task's
     record file). A model that cannot be loaded or rendered gives a "failed" record
@@ -471,9 +478,7 @@ def run_task(job: Job, task: Task, threads: int = 1, hooks: dict | None = None) 
     if same and prev.get("status") == "done" and all(
             os.path.exists(p) for v in range(task.start, task.stop) for p in job.view_files(task.model_key, v).values()):
         return prev
-    record: dict[str, Any] = {"task": task.id, "model": task.model, "model_key": task.model_key, "hash": task.hash,
-                              "views": [task.start, task.stop], "status": "running",
-                              "worker": f"{socket.gethostname()}:{os.getpid()}"}
+    record = task_record(task, "running", worker=f"{socket.gethostname()}:{os.getpid()}")
     write_json(job, job.record_path(task.id), record)
     cameras: dict[str, Any] = {}
     try:
