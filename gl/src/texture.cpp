@@ -61,6 +61,25 @@ void Context::bind_texture(GLenum target, GLuint id) {
   bound_ = id;
 }
 
+namespace {
+
+// An RGBA8 texel (R in the low byte) as a texture of internal format `base` keeps it:
+// RGB opaque, luminance (L, L, L, 1), luminance-alpha (L, L, L, A), alpha (0, 0, 0, A),
+// intensity (GL_INTENSITY, 0x8049) (I, I, I, I); RGBA as it is.
+uint32_t stored_texel(GLenum base, uint32_t p) {
+  const uint32_t r = p & 0xff, a = p >> 24;
+  switch (base) {
+    case GL_RGB: return p | 0xff000000u;
+    case GL_LUMINANCE: return r | r << 8 | r << 16 | 0xff000000u;
+    case GL_LUMINANCE_ALPHA: return r | r << 8 | r << 16 | a << 24;
+    case GL_ALPHA: return a << 24;
+    case 0x8049: return r | r << 8 | r << 16 | r << 24;
+    default: return p;
+  }
+}
+
+}  // namespace
+
 void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
                         const std::vector<uint32_t>* rgba) {
   if (in_begin_error()) return;
@@ -85,17 +104,7 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
                                       : TexFormat::Rgba;
   }
   // The texels as the format keeps them: luminance (L, L, L, 1), alpha (0, 0, 0, A)...
-  for (uint32_t& p : l.texels) {
-    const uint32_t r = p & 0xff, a = p >> 24;
-    switch (base) {
-      case GL_RGB: p |= 0xff000000u; break;
-      case GL_LUMINANCE: p = r | r << 8 | r << 16 | 0xff000000u; break;
-      case GL_LUMINANCE_ALPHA: p = r | r << 8 | r << 16 | a << 24; break;
-      case GL_ALPHA: p = a << 24; break;
-      case 0x8049: p = r | r << 8 | r << 16 | r << 24; break;
-      default: break;
-    }
-  }
+  for (uint32_t& p : l.texels) p = stored_texel(base, p);
   t.dirty = true;
   changed();
 }
@@ -113,17 +122,7 @@ void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsize
   const GLenum base = t.internal_format;
   for (int row = 0; row < h; ++row)
     for (int col = 0; col < w; ++col) {
-      uint32_t p = rgba[size_t(row) * w + col];
-      const uint32_t r = p & 0xff, a = p >> 24;
-      switch (base) {
-        case GL_RGB: p |= 0xff000000u; break;
-        case GL_LUMINANCE: p = r | r << 8 | r << 16 | 0xff000000u; break;
-        case GL_LUMINANCE_ALPHA: p = r | r << 8 | r << 16 | a << 24; break;
-        case GL_ALPHA: p = a << 24; break;
-        case 0x8049: p = r | r << 8 | r << 16 | r << 24; break;
-        default: break;
-      }
-      l.texels[size_t(y + row) * l.width + size_t(x + col)] = p;
+      l.texels[size_t(y + row) * l.width + size_t(x + col)] = stored_texel(base, rgba[size_t(row) * w + col]);
     }
   t.dirty = true;
   changed();
