@@ -27,9 +27,8 @@ mkdir -p "$stage/bin" "$stage/build" "$stage/lib"
 cp "$root/build/velocity" "$stage/bin/"
 ln -s ../bin/velocity "$stage/build/velocity"
 if [[ $part == render ]]; then
-  glref=/tmp/velocity-glref/glref
-  [[ -x "$glref" ]] || { mkdir -p /tmp/velocity-glref &&
-    g++ -O2 -o "$glref" "$root/../shared/tools/glref/glref.cpp" -lOSMesa -ltinyobjloader -lstb; }
+  # shellcheck source=lib/against_llvmpipe.sh
+  source "$root/scripts/lib/against_llvmpipe.sh"  # builds glref if it is not there
   cp "$glref" "$stage/bin/"
 else
   mkdir -p "$stage/build/python" "$stage/py/usr/bin" "$stage/py/usr/lib"
