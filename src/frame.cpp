@@ -23,6 +23,7 @@
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
+#include "simd/targets.hpp"
 #include "velocity/error.hpp"
 #include "velocity/log.hpp"
 #include "velocity/renderer.hpp"
@@ -307,7 +308,10 @@ struct Renderer::Impl {
 
 const char* simd_target() { return raster::simd_target(); }
 
-Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) { impl_->resize(width, height, 1); }
+Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
+  if (const std::string& error = simd::apply_target_request(); !error.empty()) throw Error(error);
+  impl_->resize(width, height, 1);
+}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
