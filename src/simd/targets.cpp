@@ -24,7 +24,10 @@ std::string apply(const char* request) {
     // Highway's targets are bits, better ones lower: disabling every bit below the
     // requested one leaves it the best. The baseline cannot be disabled, so check.
     hwy::DisableTargets(target - 1);
+    // Highway 1.0 chooses once, at the first dispatch (SupportedTargets() above counts
+    // as one), and DisableTargets does not undo that choice: choose again.
     const int64_t chosen = hwy::SupportedTargets() & HWY_TARGETS;
+    hwy::GetChosenTarget().Update(hwy::SupportedTargets());
     if ((chosen & -chosen) == target) return {};
     break;
   }

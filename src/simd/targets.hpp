@@ -1,7 +1,7 @@
 // Which instruction set the kernels run with. Highway picks the best one the processor
 // has; VELOCITY_SIMD_TARGET names another of those compiled in (AVX3, AVX2, SSE4,
-// EMU128, SCALAR: Highway's names), so that every compiled kernel can be tested on one
-// machine (scripts/simd_targets.sh runs the whole suite once per target).
+// SCALAR: Highway's names), so that every compiled kernel can be tested on one machine
+// (scripts/simd_targets.sh runs the whole suite once per target).
 #pragma once
 
 #include <string>
@@ -15,7 +15,7 @@ namespace velocity::simd {
 const std::string& apply_target_request();
 
 // The targets this build compiled and this processor runs, best first, space-separated
-// ("AVX3 AVX2 SSE4 EMU128"): what VELOCITY_SIMD_TARGET may name.
+// ("AVX3 AVX2 SSE4 SCALAR"): what VELOCITY_SIMD_TARGET may name.
 std::string available_targets();
 
 }  // namespace velocity::simd
