@@ -12,6 +12,11 @@
 # Both renderers use the same number of threads (LP_NUM_THREADS for llvmpipe, --threads
 # for Velocity; default 2, this machine's cores). VELOCITY and GLREF name the programs
 # (scripts/lib/against_llvmpipe.sh). Prints a Markdown table.
+#
+# BASELINE=/path/to/an/older/velocity adds that build to every pair of the first table
+# (three runs a pair, in turn), with two more columns: its median and the median of the
+# pairs' ratios of this build's time to its time (above 1: this build is slower). That
+# is how a change is shown not to slow a scene down: both builds in one run.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 threads=2 pairs=5 frames=20 only=.
@@ -47,24 +52,37 @@ scenes=(
 
 echo "Velocity $(machine) against llvmpipe, both on $threads threads, $pairs alternating pairs of $frames frames, simd=$(simd)"
 echo
-echo "| scene (1920x1080 unless said) | llvmpipe ms | Velocity ms | ratio | target |"
-echo "|---|---|---|---|---|"
+baseline="${BASELINE:-}"
+if [[ -n "$baseline" ]]; then
+  echo "| scene (1920x1080 unless said) | llvmpipe ms | Velocity ms | ratio | target | baseline ms | Velocity / baseline |"
+  echo "|---|---|---|---|---|---|---|"
+else
+  echo "| scene (1920x1080 unless said) | llvmpipe ms | Velocity ms | ratio | target |"
+  echo "|---|---|---|---|---|"
+fi
 for s in "${scenes[@]}"; do
   IFS='|' read -r name args target <<<"$s"
   [[ "$name" =~ $only ]] || continue
-  ref=() ours=() ratios=()
+  ref=() ours=() ratios=() old=() slower=()
   for ((p = 0; p < pairs; ++p)); do
     # shellcheck disable=SC2086
     a=$(LP_NUM_THREADS=$threads "$glref" $args --frames "$frames" | ms)
     # shellcheck disable=SC2086
     b=$("$velocity" bench $args --frames "$frames" --threads "$threads" | ms)
     ref+=("$a") ours+=("$b") ratios+=("$(ratio "$a" "$b")")
+    if [[ -n "$baseline" ]]; then
+      # shellcheck disable=SC2086
+      c=$("$baseline" bench $args --frames "$frames" --threads "$threads" | ms)
+      old+=("$c") slower+=("$(ratio "$b" "$c")")
+    fi
   done
   r=$(printf '%s\n' "${ratios[@]}" | median)
   verdict=""
   [[ "$target" != "-" ]] && verdict=$(awk -v r="$r" -v t="$target" 'BEGIN { print (r >= t ? "≥ " t " met" : "≥ " t " missed") }')
-  printf '| %s | %.2f | %.2f | %.2f | %s |\n' "$name" "$(printf '%s\n' "${ref[@]}" | median)" \
+  printf '| %s | %.2f | %.2f | %.2f | %s |' "$name" "$(printf '%s\n' "${ref[@]}" | median)" \
     "$(printf '%s\n' "${ours[@]}" | median)" "$r" "${verdict:--}"
+  [[ -n "$baseline" ]] && printf ' %.2f | %.3f |' "$(printf '%s\n' "${old[@]}" | median)" "$(printf '%s\n' "${slower[@]}" | median)"
+  echo
 done
 
 # Velocity's scaling from 1 thread to `threads`, alternating as above.
