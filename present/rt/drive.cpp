@@ -8,7 +8,6 @@
 
 #include "rt/shapes.hpp"
 #include "rt/synth.hpp"
-#include "rt/viewing.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/texture.hpp"

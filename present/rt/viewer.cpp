@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <numbers>
 
-#include "rt/viewing.hpp"
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
+#include "velocity/view_setup.hpp"
 
 namespace velocity::rt {
 
@@ -27,7 +27,7 @@ std::string upper(std::string_view s) {
 
 ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
   options_.ssaa = std::clamp(o_.ssaa, 1, 4);
-  options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see viewing.hpp)
+  options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see velocity/view_setup.hpp)
   open(o_.model);
 }
 

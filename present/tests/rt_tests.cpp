@@ -15,8 +15,8 @@
 #include "rt/shell.hpp"
 #include "rt/synth.hpp"
 #include "rt/viewer.hpp"
-#include "rt/viewing.hpp"
 #include "velocity/error.hpp"
+#include "velocity/view_setup.hpp"
 
 using namespace velocity;
 using namespace velocity::rt;
