@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "rt/loop.hpp"
-#include "rt/synth.hpp"
+#include "runtime/loop.hpp"
+#include "runtime/synth.hpp"
 
 namespace velocity::present {
 

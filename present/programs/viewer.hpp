@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "rt/program.hpp"
+#include "runtime/program.hpp"
 #include "velocity/load.hpp"
 
 namespace velocity::rt {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "rt/program.hpp"
-#include "rt/synth.hpp"
+#include "runtime/program.hpp"
+#include "runtime/synth.hpp"
 
 namespace velocity::rt {
 

@@ -1,4 +1,4 @@
-#include "rt/drive.hpp"
+#include "programs/drive.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "rt/shapes.hpp"
-#include "rt/synth.hpp"
+#include "programs/shapes.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/texture.hpp"

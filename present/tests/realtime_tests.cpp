@@ -7,14 +7,14 @@
 #include <filesystem>
 #include <numbers>
 
-#include "rt/canvas.hpp"
-#include "rt/drive.hpp"
-#include "rt/fly.hpp"
-#include "rt/loop.hpp"
-#include "rt/script.hpp"
-#include "rt/shell.hpp"
-#include "rt/synth.hpp"
-#include "rt/viewer.hpp"
+#include "programs/drive.hpp"
+#include "programs/fly.hpp"
+#include "programs/viewer.hpp"
+#include "runtime/canvas.hpp"
+#include "runtime/loop.hpp"
+#include "runtime/script.hpp"
+#include "runtime/shell.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/error.hpp"
 #include "velocity/view_setup.hpp"
 

@@ -1,4 +1,4 @@
-#include "rt/loop.hpp"
+#include "runtime/loop.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <future>
 #include <thread>
 
-#include "rt/synth.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
 

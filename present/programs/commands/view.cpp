@@ -1,9 +1,9 @@
-// `velocity view [FILE]`: the orbit viewer (rt/viewer.hpp) in a window.
+// `velocity view [FILE]`: the orbit viewer (programs/viewer.hpp) in a window.
 #include <memory>
 
 #include "commands.hpp"
-#include "commands/realtime.hpp"
-#include "rt/viewer.hpp"
+#include "programs/commands/realtime.hpp"
+#include "programs/viewer.hpp"
 
 namespace velocity::cli {
 

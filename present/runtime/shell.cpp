@@ -1,4 +1,4 @@
-#include "rt/shell.hpp"
+#include "runtime/shell.hpp"
 
 #include <algorithm>
 #include <cmath>

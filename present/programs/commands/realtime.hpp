@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "rt/program.hpp"
+#include "runtime/program.hpp"
 
 namespace velocity::present {
 

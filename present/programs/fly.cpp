@@ -1,4 +1,4 @@
-#include "rt/fly.hpp"
+#include "programs/fly.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "rt/shapes.hpp"
-#include "rt/synth.hpp"
+#include "programs/shapes.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/load.hpp"
 
 namespace velocity::rt {

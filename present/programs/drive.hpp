@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/shell.hpp"
+#include "runtime/shell.hpp"
 
 namespace velocity::rt {
 

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "rt/program.hpp"
-#include "rt/script.hpp"
+#include "runtime/program.hpp"
+#include "runtime/script.hpp"
 
 namespace velocity::rt {
 

@@ -1,4 +1,4 @@
-#include "commands/realtime.hpp"
+#include "programs/commands/realtime.hpp"
 
 #include <SDL.h>
 
@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "rt/loop.hpp"
-#include "rt/synth.hpp"
+#include "runtime/loop.hpp"
+#include "runtime/synth.hpp"
 #include "sdl/presenter.hpp"
 #include "velocity/error.hpp"
 
@@ -20,7 +20,7 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_flag("--fullscreen", a.fullscreen, "Start fullscreen (F11 or Alt+Enter toggles)");
   cmd->add_option("--frames", a.frames, "Stop after this many frames");
   cmd->add_option("--record", a.record, "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step)");
-  cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/rt/script.hpp)");
+  cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/runtime/script.hpp)");
   cmd->add_flag("--headless", a.headless, "No window (with --frames and/or --record)");
   cmd->add_flag("--mute", a.mute, "No sound");
   cmd->add_flag("--no-overlay", a.no_overlay, "Hide the frame-rate overlay (F3 toggles)");

@@ -1,11 +1,11 @@
-// `velocity fly`: seed 001's flythrough (rt/fly.hpp) behind its title screen and menu.
+// `velocity fly`: seed 001's flythrough (programs/fly.hpp) behind its title screen and menu.
 #include <algorithm>
 #include <filesystem>
 #include <memory>
 
 #include "commands.hpp"
-#include "commands/realtime.hpp"
-#include "rt/fly.hpp"
+#include "programs/commands/realtime.hpp"
+#include "programs/fly.hpp"
 #include "velocity/error.hpp"
 
 namespace velocity::cli {

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "rt/canvas.hpp"
-#include "rt/input.hpp"
+#include "runtime/canvas.hpp"
+#include "runtime/input.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/scene.hpp"
 

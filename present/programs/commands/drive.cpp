@@ -1,10 +1,10 @@
-// `velocity drive`: seed 000's driving simulation (rt/drive.hpp) behind a title screen
+// `velocity drive`: seed 000's driving simulation (programs/drive.hpp) behind a title screen
 // and menu.
 #include <memory>
 
 #include "commands.hpp"
-#include "commands/realtime.hpp"
-#include "rt/drive.hpp"
+#include "programs/commands/realtime.hpp"
+#include "programs/drive.hpp"
 
 namespace velocity::cli {
 

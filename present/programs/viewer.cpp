@@ -1,4 +1,4 @@
-#include "rt/viewer.hpp"
+#include "programs/viewer.hpp"
 
 #include <algorithm>
 #include <cmath>
