@@ -498,7 +498,7 @@ void DriveProgram::place_camera(float dt) {
   }
 }
 
-void DriveProgram::frame(Frame& out) {
+void DriveProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options.ssaa = hq_ ? 3 : 1;
   if (camera_ == CameraMode::Cockpit) {

@@ -208,7 +208,7 @@ void FlyProgram::update(double dt_d, const InputState& in) {
   place_camera();
 }
 
-void FlyProgram::frame(Frame& out) {
+void FlyProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options.depth_mode = DepthMode::ZBuffer;
   out.options.shading = Shading::Flat;  // the seed's look: flat shading

@@ -185,7 +185,7 @@ void ViewerProgram::update(double dt, const InputState& input) {
 
 std::string ViewerProgram::title() const { return "Velocity - " + name_; }
 
-void ViewerProgram::frame(Frame& out) {
+void ViewerProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options = options_;
   if (wire_) out.options.shading = Shading::Wireframe;

@@ -27,7 +27,7 @@ class ViewerProgram : public Program {
   void resize(int width, int height) override;
   void event(const InputEvent& e, const InputState& input) override;
   void update(double dt, const InputState& input) override;
-  void frame(Frame& out) override;
+  void frame(FrameDescription& out) override;
   bool finished() const override { return quit_; }
   std::string title() const override;
 

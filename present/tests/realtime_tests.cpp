@@ -192,7 +192,7 @@ TEST(Fly, DiveClimbSpeedAndBoundingSpheres) {
   EXPECT_FLOAT_EQ(fly.speed(), FlyProgram::kMinSpeed);
   // Objects out of view are rejected by their bounding spheres, the rest kept.
   fly.resize(320, 200);
-  Frame f;
+  FrameDescription f;
   fly.frame(f);
   EXPECT_GT(fly.rejected(), 0u);
   EXPECT_LT(fly.rejected(), fly.solid_objects());
@@ -275,7 +275,7 @@ TEST(Drive, CamerasAndHighQuality) {
   EXPECT_EQ(drive.camera_mode(), DriveProgram::CameraMode::Cockpit);
   EXPECT_GT(drive.focal_mm(), 18.0f * 1.3f);  // ] lengthens the lens
   EXPECT_TRUE(drive.high_quality());
-  Frame f;
+  FrameDescription f;
   drive.frame(f);
   EXPECT_EQ(f.options.ssaa, 3);
   EXPECT_FALSE(f.scene.object(*f.scene.find("body")).visible);  // the cockpit sees out
@@ -300,7 +300,7 @@ TEST(Menu, ReactsToMouseMoveAndClick) {
   in.apply(move);
   shell.event(move, in);
   EXPECT_EQ(shell.highlighted(), Shell::ButtonCredits);
-  Frame f;
+  FrameDescription f;
   shell.frame(f);
   Image img(640, 400, 0xff000000u);
   Canvas c{img.pixels.data(), 640, 400, 640 * 4};
@@ -405,7 +405,7 @@ TEST(Viewer, OrbitZoomAndModes) {
   EXPECT_EQ(v.render_options().depth_mode, DepthMode::Painter);
   EXPECT_EQ(v.render_options().ssaa, 2);
   EXPECT_TRUE(v.render_options().affine);
-  Frame f;
+  FrameDescription f;
   v.frame(f);
   EXPECT_EQ(f.options.shading, Shading::Wireframe);
   // A dropped file that cannot be read leaves the scene and says why.
