@@ -1,6 +1,6 @@
 // Tests of the real-time programs without a window: scripts, the 2D layer, the loop,
-// the flythrough's path, the car's wheels and physics, the menus, the synthesiser, and
-// that every model in ../shared/data shows something.
+// the flythrough's path, the car's wheels and physics, the menus, the synthesiser. (The
+// viewer's model policy is the library's: tests/unit/test_view_setup.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,7 +16,6 @@
 #include "runtime/shell.hpp"
 #include "runtime/synth.hpp"
 #include "velocity/error.hpp"
-#include "velocity/view_setup.hpp"
 
 using namespace velocity;
 using namespace velocity::rt;
@@ -357,41 +356,6 @@ TEST(Synth, EngineNoteHasTheRequestedPitch) {
   quiet.play(Effect::Click);
   quiet.render(buf.data(), buf.size());
   EXPECT_NE(*std::max_element(buf.begin(), buf.end()), 0);
-}
-
-TEST(Viewing, EmptyFramesAreExplained) {
-  FrameStats s;
-  EXPECT_NE(explain_empty_frame(s, true).find("no triangles"), std::string::npos);
-  s.objects = 1, s.triangles = 10, s.triangles_culled = 10;
-  EXPECT_NE(explain_empty_frame(s, true).find("back faces"), std::string::npos);
-  s.triangles_rasterized = 1;
-  EXPECT_EQ(explain_empty_frame(s, true), "");
-}
-
-// Issue 10, item 7: every model in ../shared/data shows something in the viewer's first
-// frame (open meshes such as bumper.asc, floor.asc and plunger.asc included).
-TEST(Viewing, EverySharedModelIsVisible) {
-  namespace fs = std::filesystem;
-  const fs::path root = VELOCITY_SHARED_DATA;
-  if (!fs::exists(root / "models")) GTEST_SKIP() << "no " << root << " (the shared test data)";
-  int checked = 0;
-  for (const char* sub : {"models/asc", "models/plg"})
-    for (const auto& entry : fs::directory_iterator(root / sub)) {
-      if (!entry.is_regular_file()) continue;
-      const std::string path = entry.path().string();
-      Scene scene;
-      try {
-        scene = scene_from_model(path, {}, false, 4.0f / 3.0f);
-      } catch (const Error&) {
-        continue;  // files the loaders refuse (the invalid sample) have their own tests
-      }
-      Renderer r(96, 72);
-      r.options.threads = 1;
-      const FrameStats& st = r.render(scene);
-      EXPECT_GT(st.triangles_rasterized, 0u) << path << ": " << explain_empty_frame(st, false);
-      ++checked;
-    }
-  EXPECT_GT(checked, 40);
 }
 
 TEST(Viewer, OrbitZoomAndModes) {
