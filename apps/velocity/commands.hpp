@@ -1,8 +1,9 @@
-// The command-line program's subcommands.
+// The command-line program's subcommands: each part of the program registers its own.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <string>
 
 namespace velocity::cli {
@@ -15,7 +16,9 @@ std::function<int()> add_render_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_info_command(CLI::App& app);
 std::function<int()> add_batch_command(CLI::App& app);
-// Real time (present/commands): a window, input and sound.
+// Real time: a window, input and sound. Defined by the real-time part
+// (present/programs/commands), registered when it is built (VELOCITY_HAVE_REALTIME:
+// apps/velocity/CMakeLists.txt).
 std::function<int()> add_view_command(CLI::App& app);
 std::function<int()> add_fly_command(CLI::App& app);
 std::function<int()> add_drive_command(CLI::App& app);

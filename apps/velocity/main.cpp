@@ -5,7 +5,7 @@
 //   velocity bench ...            the reference scene convention, timed
 //   velocity info FILE            what a model file holds
 //   velocity batch JOB ...        many models x many views to a folder (the Python job runner)
-//   velocity view [FILE]          look at a model in a window (present/)
+//   velocity view [FILE]          look at a model in a window (present/programs)
 //   velocity fly                  seed 001's flythrough
 //   velocity drive                seed 000's driving simulation
 #include <cstdio>
@@ -21,9 +21,11 @@ int main(int argc, char** argv) {
   auto bench = velocity::cli::add_bench_command(app);
   auto info = velocity::cli::add_info_command(app);
   auto batch = velocity::cli::add_batch_command(app);
+#ifdef VELOCITY_HAVE_REALTIME
   auto view = velocity::cli::add_view_command(app);
   auto fly = velocity::cli::add_fly_command(app);
   auto drive = velocity::cli::add_drive_command(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -33,9 +35,11 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("batch")) return batch();
+#ifdef VELOCITY_HAVE_REALTIME
     if (app.got_subcommand("view")) return view();
     if (app.got_subcommand("fly")) return fly();
     if (app.got_subcommand("drive")) return drive();
+#endif
     return render();  // `render`, or no command at all: the demo scene
   } catch (const velocity::Error& e) {
     std::fprintf(stderr, "velocity: %s\n", e.what());

@@ -4,12 +4,12 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "rt/viewing.hpp"
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/texture.hpp"
+#include "velocity/view_setup.hpp"
 
 namespace velocity::cli {
 
@@ -111,40 +111,27 @@ bool scene_has_texture(const Scene& scene) {
 
 Scene build_scene(const RenderArgs& a, float aspect) {
   if (a.model.empty()) return make_demo_scene();
-  Scene scene;
   std::shared_ptr<Mesh> generated;
   if (a.model == "cube") generated = std::make_shared<Mesh>(make_cube(1.2f));
   else if (a.model == "sphere") generated = std::make_shared<Mesh>(make_sphere(48));
   else if (a.model == "torus") generated = std::make_shared<Mesh>(make_torus());
-  if (generated) {
-    ObjectId id = scene.add_object(a.model, generated);
-    scene.object(id).transform.rotation = {radians(20), radians(-30), 0};
-    Material m;
-    m.color = {0.8f, 0.7f, 0.6f};
-    m.shading = Shading::Phong;
-    m.specular = 0.5f;
-    scene.object(id).material = m;
-  } else {
+  if (!generated) {
+    // As a model viewer shows it: back faces drawn and lit from both sides unless
+    // --cull, the default light when the file brings none, a three-quarter view.
     LoadOptions options;
     options.swap_yz = a.swap_yz;
     options.max_memory = a.max_memory;
-    Model model = load_model(a.model, options);
-    // Back faces drawn and lit from both sides, as model viewers do (f3d, MeshLab): an
-    // open mesh (a floor, a bumper) seen from behind would otherwise vanish.
-    if (!a.cull) rt::make_two_sided(model);
-    add_to_scene(scene, model);
-    // A file with no light of its own but an ambient line (3D Studio writes one) would
-    // render dark: add the renderer's usual key light from over the viewer's shoulder.
-    bool has_key = std::any_of(scene.lights.begin(), scene.lights.end(),
-                               [](const Light& l) { return l.type != LightType::Ambient; });
-    if (!has_key) {
-      bool has_ambient = !scene.lights.empty();
-      if (!has_ambient) scene.lights.push_back(Light::ambient({0.2f, 0.2f, 0.2f}));
-      scene.lights.push_back(Light::directional({0.3f, 0.5f, 1.0f}, {0.8f, 0.8f, 0.8f}));
-    }
+    return scene_from_model(a.model, options, a.cull, aspect);
   }
-  // A three-quarter view from the front right and a little above shows a model's shape.
-  scene.frame_camera(aspect, generated ? Vec3{0, 0, 1} : Vec3{0.6f, 0.45f, 1.0f});
+  Scene scene;
+  ObjectId id = scene.add_object(a.model, generated);
+  scene.object(id).transform.rotation = {radians(20), radians(-30), 0};
+  Material m;
+  m.color = {0.8f, 0.7f, 0.6f};
+  m.shading = Shading::Phong;
+  m.specular = 0.5f;
+  scene.object(id).material = m;
+  scene.frame_camera(aspect, Vec3{0, 0, 1});
   return scene;
 }
 
@@ -184,7 +171,7 @@ int run_render(const RenderArgs& a) {
   write_image(a.out, renderer.color_image());
   // Never silently empty: say why nothing was drawn.
   const bool model_file = !a.model.empty() && a.model != "cube" && a.model != "sphere" && a.model != "torus";
-  if (std::string why = rt::explain_empty_frame(st, o.cull_back_faces && (a.cull || !model_file)); !why.empty())
+  if (std::string why = explain_empty_frame(st, o.cull_back_faces && (a.cull || !model_file)); !why.empty())
     std::fprintf(stderr, "velocity: nothing was drawn: %s\n", why.c_str());
   if (!a.depth_out.empty()) write_image(a.depth_out, renderer.depth_image());
   if (a.verbose) {

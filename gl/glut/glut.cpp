@@ -24,8 +24,8 @@
 #include <thread>
 #include <vector>
 
-#include "rt/input.hpp"
-#include "rt/script.hpp"
+#include "runtime/input.hpp"
+#include "runtime/script.hpp"
 #include "sdl/presenter.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"

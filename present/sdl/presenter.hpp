@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "rt/loop.hpp"
-#include "rt/synth.hpp"
+#include "runtime/loop.hpp"
+#include "runtime/synth.hpp"
 
 namespace velocity::present {
 
@@ -20,7 +20,7 @@ struct WindowOptions {
   bool at_origin = false;  // place the window at (0, 0) (tests read the screen there)
 };
 
-class SdlPresenter : public rt::Frontend {
+class SdlPresenter : public rt::Presenter {
  public:
   // Throws velocity::Error with SDL's reason when no window can be opened (no display).
   explicit SdlPresenter(const WindowOptions& options);

@@ -36,7 +36,8 @@ import distributed
 
 from velocity.batch import LocalPool, run_local
 from velocity.dask_runner import local_cluster, run_dask
-from velocity.jobs import Progress, load_job
+from velocity.jobs import load_job
+from velocity.progress import Progress
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODELS = [os.path.join(ROOT, "tests", "data", "models", m) for m in

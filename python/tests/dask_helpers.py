@@ -2,7 +2,8 @@
 import os
 import signal
 
-from velocity.jobs import atomic_write, run_task
+from velocity.atomic import atomic_write
+from velocity.render_task import run_task
 
 
 def killed_once_marker(job):

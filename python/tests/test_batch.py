@@ -9,7 +9,8 @@ import pytest
 
 from conftest import model
 from velocity.batch import run_local
-from velocity.jobs import Progress, load_job
+from velocity.jobs import load_job
+from velocity.progress import Progress
 from velocity.png import decode_png
 
 

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from conftest import model
-from velocity.jobs import Progress, load_job
+from velocity.jobs import load_job
+from velocity.progress import Progress
 from velocity.png import decode_png
 
 distributed = pytest.importorskip("distributed")  # a Debian dependency: scripts/deps.sh installs it

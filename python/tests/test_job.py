@@ -6,7 +6,9 @@ import numpy as np
 import pytest
 
 from conftest import model
-from velocity.jobs import JobError, load_job, view_setup
+from velocity.jobs import JobError, load_job
+from velocity.tasks import plan_tasks
+from velocity.views import view_poses
 
 
 def job(**kw):
@@ -18,13 +20,13 @@ def job(**kw):
 def test_defaults_and_tasks(tmp_path):
     j = load_job(job(views={"type": "orbit", "count": 8, "elevation_deg": [10, 40]}, chunk=5))
     assert j.view_count() == 16
-    tasks = j.tasks()
+    tasks = plan_tasks(j)
     assert [(t.start, t.stop) for t in tasks] == [(0, 5), (5, 10), (10, 15), (15, 16)]
     assert len({t.hash for t in tasks}) == 4 and tasks[0].id == "duck.000000-000005"
     # A change of any setting changes the hash (so resumed work is redone), a change of
     # the chunking alone changes the ids.
     j2 = load_job(job(views={"type": "orbit", "count": 8, "elevation_deg": [10, 40]}, chunk=5, size=[64, 64]))
-    assert j2.tasks()[0].hash != tasks[0].hash
+    assert plan_tasks(j2)[0].hash != tasks[0].hash
 
 
 def test_job_file_relative_globs_and_name_clashes(tmp_path):
@@ -97,6 +99,6 @@ def test_mutated_jobs_never_crash():
 def test_animation_interpolates_between_keyframes():
     j = load_job(job(views={"type": "animation", "frames": 5, "keyframes": [
         {"frame": 0, "translation": [0, 0, 0]}, {"frame": 4, "translation": [4, 0, 0], "rotation_deg": [0, 180, 0]}]}))
-    _, m2 = view_setup(j, 2, np.zeros(3), 1.0)
+    _, m2 = view_poses(j, 2, np.zeros(3), 1.0)
     assert np.allclose(m2[:3, 3], [2, 0, 0])
     assert np.allclose(m2[:3, :3], [[0, 0, 1], [0, 1, 0], [-1, 0, 0]], atol=1e-12)  # 90 degrees about Y

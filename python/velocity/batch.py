@@ -21,7 +21,10 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
 from typing import Any
 
-from .jobs import Job, JobError, Progress, Run, load_job, run_task
+from .jobs import Job, JobError, load_job
+from .progress import Progress
+from .render_task import run_task
+from .run import Run
 
 
 def _mp_context():
@@ -31,7 +34,7 @@ def _mp_context():
     import multiprocessing
     if "forkserver" in multiprocessing.get_all_start_methods():
         ctx = multiprocessing.get_context("forkserver")
-        ctx.set_forkserver_preload(["numpy", "velocity", "velocity.jobs", "velocity.png"])
+        ctx.set_forkserver_preload(["numpy", "velocity", "velocity.render_task", "velocity.png"])
         return ctx
     return multiprocessing.get_context("spawn")
 

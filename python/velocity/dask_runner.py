@@ -1,7 +1,7 @@
 """The batch job on a Dask cluster (Debian's python3-distributed): one Dask task per
 Velocity task (a model, or a chunk of its views), run by the workers, which write to
 the output folder on storage they all share, with the same atomic writes and task
-records as the local runner (velocity.jobs). Dask schedules; there is no scheduler here.
+records as the local runner (velocity.atomic, velocity.records). Dask schedules; there is no scheduler here.
 
 A worker that dies in the middle of a task loses nothing: the scheduler runs the task
 again on another worker (up to distributed.scheduler.allowed-failures times), the new
@@ -18,7 +18,13 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from .jobs import Job, Progress, Run, Task, read_record, run_task, task_record, write_json
+from .atomic import write_json
+from .jobs import Job
+from .progress import Progress
+from .records import read_record, task_record
+from .render_task import run_task
+from .run import Run
+from .tasks import Task
 
 
 # Dask settings for rendering tasks (each one a few hundred milliseconds or more). Dask's

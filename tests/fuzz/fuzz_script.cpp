@@ -1,4 +1,4 @@
-// Fuzz target: the real-time programs' script reader (present/rt/script.cpp). The input
+// Fuzz target: the real-time programs' script reader (present/runtime/script.cpp). The input
 // is the script's text. Property: it parses or throws velocity::Error; what parses is
 // in time order, with finite non-negative times, and plays back completely.
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "rt/script.hpp"
+#include "runtime/script.hpp"
 #include "velocity/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -12,15 +12,15 @@
 #include <utility>
 #include <vector>
 
-#include "rt/program.hpp"
-#include "rt/script.hpp"
+#include "runtime/program.hpp"
+#include "runtime/script.hpp"
 
 namespace velocity::rt {
 
 // Where frames are shown and events come from: the SDL window (present/sdl), or none.
-class Frontend {
+class Presenter {
  public:
-  virtual ~Frontend() = default;
+  virtual ~Presenter() = default;
   virtual void poll(std::vector<InputEvent>& out) = 0;
   // Shows an RGBA8 frame (top row first, width * 4 bytes a row), scaled to the window
   // keeping its aspect ratio; waits for vertical sync when the display has one.
@@ -61,7 +61,7 @@ struct LoopResult {
 
 inline constexpr double kFixedStep = 1.0 / 60.0;
 
-LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& options);
+LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& options);
 
 // The value below which `fraction` (0..1) of `samples` lie (nearest rank); 0 when empty.
 double percentile(std::vector<double> samples, double fraction);

@@ -1,4 +1,4 @@
-#include "rt/shapes.hpp"
+#include "programs/shapes.hpp"
 
 #include <cmath>
 #include <numbers>

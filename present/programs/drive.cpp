@@ -1,4 +1,4 @@
-#include "rt/drive.hpp"
+#include "programs/drive.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "rt/shapes.hpp"
-#include "rt/synth.hpp"
-#include "rt/viewing.hpp"
+#include "programs/shapes.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/texture.hpp"
@@ -499,7 +498,7 @@ void DriveProgram::place_camera(float dt) {
   }
 }
 
-void DriveProgram::frame(Frame& out) {
+void DriveProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options.ssaa = hq_ ? 3 : 1;
   if (camera_ == CameraMode::Cockpit) {

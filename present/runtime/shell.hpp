@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "rt/program.hpp"
-#include "rt/synth.hpp"
+#include "runtime/program.hpp"
+#include "runtime/synth.hpp"
 
 namespace velocity::rt {
 
@@ -37,7 +37,7 @@ class Shell : public Program {
   void resize(int width, int height) override;
   void event(const InputEvent& e, const InputState& input) override;
   void update(double dt, const InputState& input) override;
-  void frame(Frame& out) override;
+  void frame(FrameDescription& out) override;
   void sound(Synth& synth) override;
   bool finished() const override { return quit_; }
   std::string title() const override { return game_.title(); }

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/shell.hpp"
+#include "runtime/shell.hpp"
 
 namespace velocity::rt {
 
@@ -25,7 +25,7 @@ class FlyProgram : public Game {
   explicit FlyProgram(FlyOptions options = {});
   void event(const InputEvent& e, const InputState& input) override;
   void update(double dt, const InputState& input) override;
-  void frame(Frame& out) override;
+  void frame(FrameDescription& out) override;
   void sound(Synth& synth) override;
   bool finished() const override { return false; }
   std::string title() const override { return "Velocity - flythrough"; }

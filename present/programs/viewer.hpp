@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "rt/program.hpp"
+#include "runtime/program.hpp"
 #include "velocity/load.hpp"
 
 namespace velocity::rt {
@@ -27,7 +27,7 @@ class ViewerProgram : public Program {
   void resize(int width, int height) override;
   void event(const InputEvent& e, const InputState& input) override;
   void update(double dt, const InputState& input) override;
-  void frame(Frame& out) override;
+  void frame(FrameDescription& out) override;
   bool finished() const override { return quit_; }
   std::string title() const override;
 

@@ -1,4 +1,4 @@
-#include "rt/canvas.hpp"
+#include "runtime/canvas.hpp"
 
 #include <stb/stb_easy_font.h>
 

@@ -1,4 +1,4 @@
-#include "commands/realtime.hpp"
+#include "programs/commands/realtime.hpp"
 
 #include <SDL.h>
 
@@ -6,12 +6,12 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "rt/loop.hpp"
-#include "rt/synth.hpp"
+#include "runtime/loop.hpp"
+#include "runtime/synth.hpp"
 #include "sdl/presenter.hpp"
 #include "velocity/error.hpp"
 
-namespace velocity::present {
+namespace velocity::cli {
 
 void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_option("--size", a.size,
@@ -20,7 +20,7 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_flag("--fullscreen", a.fullscreen, "Start fullscreen (F11 or Alt+Enter toggles)");
   cmd->add_option("--frames", a.frames, "Stop after this many frames");
   cmd->add_option("--record", a.record, "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step)");
-  cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/rt/script.hpp)");
+  cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/runtime/script.hpp)");
   cmd->add_flag("--headless", a.headless, "No window (with --frames and/or --record)");
   cmd->add_flag("--mute", a.mute, "No sound");
   cmd->add_flag("--no-overlay", a.no_overlay, "Hide the frame-rate overlay (F3 toggles)");
@@ -37,7 +37,7 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
     lo.follow_window = true;
     lo.width = 800, lo.height = 600;
   } else {
-    cli::parse_size(size, lo.width, lo.height);
+    parse_size(size, lo.width, lo.height);
   }
   if (a.frames < 0) throw Error("--frames must be 0 or more");
   if (a.scale < 0 || a.scale > 16) throw Error("--scale must be 1..16");
@@ -49,9 +49,9 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
   lo.linger = a.linger;
   lo.threads = a.threads;
 
-  std::unique_ptr<SdlPresenter> window;
+  std::unique_ptr<present::SdlPresenter> window;
   if (!a.headless) {
-    WindowOptions w;
+    present::WindowOptions w;
     w.title = program.title();
     // Small modes get a bigger window (the seed's 320x200 is a postage stamp today).
     int scale = a.scale ? a.scale : std::max(1, 800 / std::max(lo.width, 1));
@@ -60,7 +60,7 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
     w.vsync = !a.no_vsync;
     w.at_origin = a.at_origin;
     try {
-      window = std::make_unique<SdlPresenter>(w);
+      window = std::make_unique<present::SdlPresenter>(w);
     } catch (const Error& e) {
       if (a.frames <= 0 && a.record.empty())
         throw Error(std::string(e.what()) + " (without a display, use --headless with --frames N and/or --record DIR)");
@@ -68,8 +68,8 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
     }
   }
   rt::Synth synth;
-  std::unique_ptr<SdlAudio> audio;
-  if (sound && !a.mute) audio = std::make_unique<SdlAudio>(synth);
+  std::unique_ptr<present::SdlAudio> audio;
+  if (sound && !a.mute) audio = std::make_unique<present::SdlAudio>(synth);
   lo.synth = &synth;
   lo.pace_to_clock = audio && audio->active();
   rt::run_loop(program, window.get(), lo);
@@ -79,4 +79,4 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
   return 0;
 }
 
-}  // namespace velocity::present
+}  // namespace velocity::cli

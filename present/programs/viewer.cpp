@@ -1,4 +1,4 @@
-#include "rt/viewer.hpp"
+#include "programs/viewer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <numbers>
 
-#include "rt/viewing.hpp"
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
+#include "velocity/view_setup.hpp"
 
 namespace velocity::rt {
 
@@ -27,7 +27,7 @@ std::string upper(std::string_view s) {
 
 ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
   options_.ssaa = std::clamp(o_.ssaa, 1, 4);
-  options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see viewing.hpp)
+  options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see velocity/view_setup.hpp)
   open(o_.model);
 }
 
@@ -185,7 +185,7 @@ void ViewerProgram::update(double dt, const InputState& input) {
 
 std::string ViewerProgram::title() const { return "Velocity - " + name_; }
 
-void ViewerProgram::frame(Frame& out) {
+void ViewerProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options = options_;
   if (wire_) out.options.shading = Shading::Wireframe;

@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "rt/program.hpp"
+#include "runtime/program.hpp"
 
-namespace velocity::present {
+namespace velocity::cli {
 
 struct RealtimeArgs {
   std::string size;          // "WxH" or "window"; empty: the command's default
@@ -32,4 +32,4 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& args);
 // frame-time statistics at exit. `default_size` when --size is not given.
 int run_realtime(rt::Program& program, const RealtimeArgs& args, const std::string& default_size, bool sound);
 
-}  // namespace velocity::present
+}  // namespace velocity::cli

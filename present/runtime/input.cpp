@@ -1,4 +1,4 @@
-#include "rt/input.hpp"
+#include "runtime/input.hpp"
 
 #include <cctype>
 

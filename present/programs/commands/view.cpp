@@ -1,15 +1,15 @@
-// `velocity view [FILE]`: the orbit viewer (rt/viewer.hpp) in a window.
+// `velocity view [FILE]`: the orbit viewer (programs/viewer.hpp) in a window.
 #include <memory>
 
 #include "commands.hpp"
-#include "commands/realtime.hpp"
-#include "rt/viewer.hpp"
+#include "programs/commands/realtime.hpp"
+#include "programs/viewer.hpp"
 
 namespace velocity::cli {
 
 std::function<int()> add_view_command(CLI::App& app) {
   struct Args {
-    present::RealtimeArgs rt;
+    RealtimeArgs realtime;
     std::string model;
     bool cull = false, swap_yz = true;
     int ssaa = 1;
@@ -22,7 +22,7 @@ std::function<int()> add_view_command(CLI::App& app) {
   cmd->add_flag("!--no-swap-yz", args->swap_yz, "Keep 3D Studio's Z-up coordinates (ASC files)");
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor 1..3 to start with (A cycles)");
   cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
-  present::add_realtime_options(cmd, args->rt);
+  add_realtime_options(cmd, args->realtime);
   return [args] {
     rt::ViewerOptions o;
     o.model = args->model;
@@ -31,7 +31,7 @@ std::function<int()> add_view_command(CLI::App& app) {
     o.ssaa = args->ssaa;
     o.screenshot_prefix = args->shot;
     rt::ViewerProgram viewer(o);
-    return present::run_realtime(viewer, args->rt, "800x600", false);
+    return run_realtime(viewer, args->realtime, "800x600", false);
   };
 }
 

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rt/input.hpp"
+#include "runtime/input.hpp"
 
 namespace velocity::rt {
 

@@ -1,11 +1,11 @@
-// `velocity fly`: seed 001's flythrough (rt/fly.hpp) behind its title screen and menu.
+// `velocity fly`: seed 001's flythrough (programs/fly.hpp) behind its title screen and menu.
 #include <algorithm>
 #include <filesystem>
 #include <memory>
 
 #include "commands.hpp"
-#include "commands/realtime.hpp"
-#include "rt/fly.hpp"
+#include "programs/commands/realtime.hpp"
+#include "programs/fly.hpp"
 #include "velocity/error.hpp"
 
 namespace velocity::cli {
@@ -24,7 +24,7 @@ const char* const kCredits =
 
 std::function<int()> add_fly_command(CLI::App& app) {
   struct Args {
-    present::RealtimeArgs rt;
+    RealtimeArgs realtime;
     std::vector<std::string> models;
     std::string plg_dir;
     int objects = 90;
@@ -38,7 +38,7 @@ std::function<int()> add_fly_command(CLI::App& app) {
   cmd->add_option("--objects", args->objects, "How many objects (1..2000)")->capture_default_str();
   cmd->add_option("--seed", args->seed, "World layout seed")->capture_default_str();
   cmd->add_flag("--skip-menu", args->skip_menu, "Start flying at once (no title screen or menu)");
-  present::add_realtime_options(cmd, args->rt);
+  add_realtime_options(cmd, args->realtime);
   return [args] {
     rt::FlyOptions o;
     o.models = args->models;
@@ -64,7 +64,7 @@ std::function<int()> add_fly_command(CLI::App& app) {
     text.start = "FLY";
     text.credits = kCredits;
     rt::Shell shell(fly, text, args->skip_menu);
-    return present::run_realtime(shell, args->rt, "640x480", true);
+    return run_realtime(shell, args->realtime, "640x480", true);
   };
 }
 

@@ -1,4 +1,4 @@
-#include "rt/loop.hpp"
+#include "runtime/loop.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <future>
 #include <thread>
 
-#include "rt/synth.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
 
@@ -22,7 +22,7 @@ double ms_since(Clock::time_point t) { return std::chrono::duration<double, std:
 
 // The render thread's side: owns the renderer; one frame at a time.
 struct RenderJob {
-  Frame frame;
+  FrameDescription frame;
   int width = 0, height = 0;
   std::string stats_text;  // the overlay's frame-rate line ("" when off)
 };
@@ -37,7 +37,7 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
   auto start = Clock::now();
   Rendered out;
   out.image = Image(job.width, job.height, 0xff000000u);
-  Frame& f = job.frame;
+  FrameDescription& f = job.frame;
   if (renderer.width() != job.width || renderer.height() != job.height) renderer.resize(job.width, job.height);
   int threads = renderer.options.threads;
   renderer.options = f.options;
@@ -82,7 +82,7 @@ std::string summarize(const LoopResult& r) {
   return buf;
 }
 
-LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) {
+LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o) {
   if (!o.record_dir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(o.record_dir, ec);
@@ -93,8 +93,8 @@ LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) 
   if (o.script) script.emplace(*o.script);
 
   int width = o.width, height = o.height;
-  bool follow = o.follow_window && frontend;
-  if (follow) std::tie(width, height) = frontend->window_size();
+  bool follow = o.follow_window && presenter;
+  if (follow) std::tie(width, height) = presenter->window_size();
   program.resize(width, height);
   bool overlay = o.overlay;
   int mode = -1;  // index into kScreenModes once F2 is pressed; 4 = the window's size
@@ -115,7 +115,7 @@ LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) 
   // Shows (and records) a finished frame.
   auto show = [&](Rendered r) {
     result.render_ms.push_back(r.ms);
-    if (frontend) frontend->present(r.image.pixels.data(), r.image.width, r.image.height);
+    if (presenter) presenter->present(r.image.pixels.data(), r.image.width, r.image.height);
     if (!o.record_dir.empty()) {
       char name[64];
       std::snprintf(name, sizeof name, "/frame_%05ld.png", recorded);
@@ -141,17 +141,17 @@ LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) 
 
     // Events: the window's, then the script's due ones.
     events.clear();
-    if (frontend) frontend->poll(events);
+    if (presenter) presenter->poll(events);
     if (script) script->due(sim_time, events);
     for (const InputEvent& e : events) {
       if (e.kind == InputEvent::Quit) quit = true;
-      if (e.kind == InputEvent::KeyDown && e.key == KeyF11 && frontend) frontend->toggle_fullscreen();
+      if (e.kind == InputEvent::KeyDown && e.key == KeyF11 && presenter) presenter->toggle_fullscreen();
       if (e.kind == InputEvent::KeyDown && e.key == KeyF3) overlay = !overlay;
       if (e.kind == InputEvent::KeyDown && e.key == KeyF2) {
         mode = (mode + 1) % 5;
-        follow = mode == 4 && frontend;
+        follow = mode == 4 && presenter;
         if (mode < 4) width = kScreenModes[mode].width, height = kScreenModes[mode].height;
-        else if (frontend) std::tie(width, height) = frontend->window_size();
+        else if (presenter) std::tie(width, height) = presenter->window_size();
         program.resize(width, height);
       }
       if (e.kind == InputEvent::Resize && follow && e.x > 0 && e.y > 0) {
@@ -166,7 +166,7 @@ LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) 
 
     program.update(n > 0 ? dt : 0.0, input);
     if (o.synth) program.sound(*o.synth);
-    if (frontend && program.title() != title) frontend->set_title(title = program.title());
+    if (presenter && program.title() != title) presenter->set_title(title = program.title());
 
     RenderJob job;
     program.frame(job.frame);
@@ -199,16 +199,16 @@ LoopResult run_loop(Program& program, Frontend* frontend, const LoopOptions& o) 
   result.width = width, result.height = height;
 
   // Keep the last frame on screen a while (tests take the window's picture then).
-  if (frontend && o.linger > 0) {
+  if (presenter && o.linger > 0) {
     auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.linger));
     while (Clock::now() < until) {
       events.clear();
-      frontend->poll(events);
+      presenter->poll(events);
       if (std::any_of(events.begin(), events.end(), [](const InputEvent& e) {
             return e.kind == InputEvent::Quit || (e.kind == InputEvent::KeyDown && e.key == KeyEscape);
           }))
         break;
-      if (last_image.width > 0) frontend->present(last_image.pixels.data(), last_image.width, last_image.height);
+      if (last_image.width > 0) presenter->present(last_image.pixels.data(), last_image.width, last_image.height);
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }

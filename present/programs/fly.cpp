@@ -1,4 +1,4 @@
-#include "rt/fly.hpp"
+#include "programs/fly.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "rt/shapes.hpp"
-#include "rt/synth.hpp"
+#include "programs/shapes.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/load.hpp"
 
 namespace velocity::rt {
@@ -208,7 +208,7 @@ void FlyProgram::update(double dt_d, const InputState& in) {
   place_camera();
 }
 
-void FlyProgram::frame(Frame& out) {
+void FlyProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options.depth_mode = DepthMode::ZBuffer;
   out.options.shading = Shading::Flat;  // the seed's look: flat shading

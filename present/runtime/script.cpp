@@ -1,4 +1,4 @@
-#include "rt/script.hpp"
+#include "runtime/script.hpp"
 
 #include <algorithm>
 #include <charconv>

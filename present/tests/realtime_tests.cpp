@@ -1,21 +1,20 @@
 // Tests of the real-time programs without a window: scripts, the 2D layer, the loop,
-// the flythrough's path, the car's wheels and physics, the menus, the synthesiser, and
-// that every model in ../shared/data shows something.
+// the flythrough's path, the car's wheels and physics, the menus, the synthesiser. (The
+// viewer's model policy is the library's: tests/unit/test_view_setup.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 
-#include "rt/canvas.hpp"
-#include "rt/drive.hpp"
-#include "rt/fly.hpp"
-#include "rt/loop.hpp"
-#include "rt/script.hpp"
-#include "rt/shell.hpp"
-#include "rt/synth.hpp"
-#include "rt/viewer.hpp"
-#include "rt/viewing.hpp"
+#include "programs/drive.hpp"
+#include "programs/fly.hpp"
+#include "programs/viewer.hpp"
+#include "runtime/canvas.hpp"
+#include "runtime/loop.hpp"
+#include "runtime/script.hpp"
+#include "runtime/shell.hpp"
+#include "runtime/synth.hpp"
 #include "velocity/error.hpp"
 
 using namespace velocity;
@@ -192,7 +191,7 @@ TEST(Fly, DiveClimbSpeedAndBoundingSpheres) {
   EXPECT_FLOAT_EQ(fly.speed(), FlyProgram::kMinSpeed);
   // Objects out of view are rejected by their bounding spheres, the rest kept.
   fly.resize(320, 200);
-  Frame f;
+  FrameDescription f;
   fly.frame(f);
   EXPECT_GT(fly.rejected(), 0u);
   EXPECT_LT(fly.rejected(), fly.solid_objects());
@@ -275,7 +274,7 @@ TEST(Drive, CamerasAndHighQuality) {
   EXPECT_EQ(drive.camera_mode(), DriveProgram::CameraMode::Cockpit);
   EXPECT_GT(drive.focal_mm(), 18.0f * 1.3f);  // ] lengthens the lens
   EXPECT_TRUE(drive.high_quality());
-  Frame f;
+  FrameDescription f;
   drive.frame(f);
   EXPECT_EQ(f.options.ssaa, 3);
   EXPECT_FALSE(f.scene.object(*f.scene.find("body")).visible);  // the cockpit sees out
@@ -300,7 +299,7 @@ TEST(Menu, ReactsToMouseMoveAndClick) {
   in.apply(move);
   shell.event(move, in);
   EXPECT_EQ(shell.highlighted(), Shell::ButtonCredits);
-  Frame f;
+  FrameDescription f;
   shell.frame(f);
   Image img(640, 400, 0xff000000u);
   Canvas c{img.pixels.data(), 640, 400, 640 * 4};
@@ -359,41 +358,6 @@ TEST(Synth, EngineNoteHasTheRequestedPitch) {
   EXPECT_NE(*std::max_element(buf.begin(), buf.end()), 0);
 }
 
-TEST(Viewing, EmptyFramesAreExplained) {
-  FrameStats s;
-  EXPECT_NE(explain_empty_frame(s, true).find("no triangles"), std::string::npos);
-  s.objects = 1, s.triangles = 10, s.triangles_culled = 10;
-  EXPECT_NE(explain_empty_frame(s, true).find("back faces"), std::string::npos);
-  s.triangles_rasterized = 1;
-  EXPECT_EQ(explain_empty_frame(s, true), "");
-}
-
-// Issue 10, item 7: every model in ../shared/data shows something in the viewer's first
-// frame (open meshes such as bumper.asc, floor.asc and plunger.asc included).
-TEST(Viewing, EverySharedModelIsVisible) {
-  namespace fs = std::filesystem;
-  const fs::path root = VELOCITY_SHARED_DATA;
-  if (!fs::exists(root / "models")) GTEST_SKIP() << "no " << root << " (the shared test data)";
-  int checked = 0;
-  for (const char* sub : {"models/asc", "models/plg"})
-    for (const auto& entry : fs::directory_iterator(root / sub)) {
-      if (!entry.is_regular_file()) continue;
-      const std::string path = entry.path().string();
-      Scene scene;
-      try {
-        scene = scene_from_model(path, {}, false, 4.0f / 3.0f);
-      } catch (const Error&) {
-        continue;  // files the loaders refuse (the invalid sample) have their own tests
-      }
-      Renderer r(96, 72);
-      r.options.threads = 1;
-      const FrameStats& st = r.render(scene);
-      EXPECT_GT(st.triangles_rasterized, 0u) << path << ": " << explain_empty_frame(st, false);
-      ++checked;
-    }
-  EXPECT_GT(checked, 40);
-}
-
 TEST(Viewer, OrbitZoomAndModes) {
   ViewerProgram v({});
   v.resize(320, 240);
@@ -405,7 +369,7 @@ TEST(Viewer, OrbitZoomAndModes) {
   EXPECT_EQ(v.render_options().depth_mode, DepthMode::Painter);
   EXPECT_EQ(v.render_options().ssaa, 2);
   EXPECT_TRUE(v.render_options().affine);
-  Frame f;
+  FrameDescription f;
   v.frame(f);
   EXPECT_EQ(f.options.shading, Shading::Wireframe);
   // A dropped file that cannot be read leaves the scene and says why.

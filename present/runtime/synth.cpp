@@ -1,4 +1,4 @@
-#include "rt/synth.hpp"
+#include "runtime/synth.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "rt/canvas.hpp"
-#include "rt/input.hpp"
+#include "runtime/canvas.hpp"
+#include "runtime/input.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/scene.hpp"
 
@@ -16,7 +16,7 @@ namespace velocity::rt {
 class Synth;
 
 // One frame, as the program wants it drawn. The render thread owns it once handed over.
-struct Frame {
+struct FrameDescription {
   Scene scene;
   bool draw_scene = true;   // false: just the background colour and the 2D layer
   RenderOptions options;
@@ -36,7 +36,7 @@ class Program {
   // Advances the program by `dt` seconds.
   virtual void update(double dt, const InputState& input) = 0;
   // Describes the current state as a frame (called once after each update).
-  virtual void frame(Frame& out) = 0;
+  virtual void frame(FrameDescription& out) = 0;
   // Pushes sound parameters (engine pitch, effects, music) to the synthesiser.
   virtual void sound(Synth&) {}
   virtual bool finished() const = 0;

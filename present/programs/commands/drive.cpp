@@ -1,10 +1,10 @@
-// `velocity drive`: seed 000's driving simulation (rt/drive.hpp) behind a title screen
+// `velocity drive`: seed 000's driving simulation (programs/drive.hpp) behind a title screen
 // and menu.
 #include <memory>
 
 #include "commands.hpp"
-#include "commands/realtime.hpp"
-#include "rt/drive.hpp"
+#include "programs/commands/realtime.hpp"
+#include "programs/drive.hpp"
 
 namespace velocity::cli {
 
@@ -22,7 +22,7 @@ const char* const kCredits =
 
 std::function<int()> add_drive_command(CLI::App& app) {
   struct Args {
-    present::RealtimeArgs rt;
+    RealtimeArgs realtime;
     std::string car;
     float car_yaw = 0;
     bool hq = false, skip_menu = false;
@@ -33,7 +33,7 @@ std::function<int()> add_drive_command(CLI::App& app) {
   cmd->add_option("--car-yaw", args->car_yaw, "Turn the car model by this many degrees (its nose must point forward)");
   cmd->add_flag("--hq", args->hq, "High quality: 3x3 super-sampling (H toggles)");
   cmd->add_flag("--skip-menu", args->skip_menu, "Start driving at once (no title screen or menu)");
-  present::add_realtime_options(cmd, args->rt);
+  add_realtime_options(cmd, args->realtime);
   return [args] {
     rt::DriveOptions o;
     o.car = args->car;
@@ -46,7 +46,7 @@ std::function<int()> add_drive_command(CLI::App& app) {
     text.start = "DRIVE";
     text.credits = kCredits;
     rt::Shell shell(drive, text, args->skip_menu);
-    return present::run_realtime(shell, args->rt, "800x600", true);
+    return run_realtime(shell, args->realtime, "800x600", true);
   };
 }
 

@@ -1,4 +1,4 @@
-#include "rt/shell.hpp"
+#include "runtime/shell.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -138,7 +138,7 @@ void Shell::sound(Synth& synth) {
   game_.sound(synth);
 }
 
-void Shell::frame(Frame& out) {
+void Shell::frame(FrameDescription& out) {
   game_.frame(out);
   DrawList& d = out.overlay;
   const int s = ui_scale(height_);
