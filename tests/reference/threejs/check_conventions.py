@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Checks the oracle against the glTF spec, not against itself: each check writes a small
+glTF file (fixtures.py), renders it with render.py and compares pixels with what the spec
+says. The inputs are asymmetric (four distinct texel colours, a quad off the image centre,
+three distinct channels, a light off every axis) so that a flip, a transpose or a channel
+swap cannot pass.
+
+    check_conventions.py texcoords|srgb|lambert OUT_DIR
+
+  texcoords  an unlit quad textured with a 2x2 image: the image's top-left texel shows at
+             the quad's top-left (uv (0, 0) = the image's top-left), and so on; the quad
+             sits where the camera puts it (+Y up in the image); texels decoded from sRGB
+             and encoded back unchanged.
+  srgb       unlit baseColorFactor 0.5 grey shows 188 (linear 0.5 encoded to sRGB), not
+             128; a second quad with three distinct channels shows each channel encoded.
+  lambert    a rough dielectric (roughness 1, metallic 0) under one directional light at
+             60 degrees from the normal: each sampled pixel equals glTF's BRDF (Appendix B)
+             in closed form, within 2/255.
+
+Exit status 0 pass, 1 fail, 77 Chromium missing (ctest's SKIP_RETURN_CODE).
+"""
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fixtures  # noqa: E402
+import png  # noqa: E402
+from camera import Camera, normalize, srgb_encode  # noqa: E402
+
+RENDER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "render.py")
+SKIP = 77
+# 64x64, looking down -Z from 3 units: the plane z = 0 spans x, y in about +-1.24.
+CAMERA = Camera(eye=[0, 0, 3], target=[0, 0, 0], up=[0, 1, 0], yfov=45, width=64, height=64)
+BACKGROUND = (0.2, 0.4, 0.6)  # sRGB / 255: 51, 102, 153
+
+
+class Failed(Exception):
+    pass
+
+
+def render(gltf_path: str, out_png: str, extra: list[str]) -> tuple[int, int, bytes]:
+    cmd = [sys.executable, RENDER, gltf_path, "--out", out_png, *CAMERA.args(),
+           "--bg", ",".join(map(str, BACKGROUND)), *extra]
+    run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    if run.returncode == SKIP:
+        print(f"SKIP: {run.stderr.strip()}")
+        sys.exit(SKIP)
+    if run.returncode != 0:
+        raise Failed(f"render.py failed: {run.stderr.strip()}")
+    print(run.stdout.strip())
+    w, h, c, pixels = png.read(out_png)
+    assert c == 3
+    return w, h, pixels
+
+
+def pixel(image, x: float, y: float) -> tuple[int, int, int]:
+    w, _, pixels = image
+    i = 3 * (int(y) * w + int(x))
+    return tuple(pixels[i:i + 3])
+
+
+def expect(what: str, got, want, tolerance: float) -> None:
+    worst = max(abs(g - w) for g, w in zip(got, want))
+    verdict = "ok" if worst <= tolerance else "FAIL"
+    print(f"  {what}: got {tuple(got)}, want {tuple(round(w, 2) for w in want)}, "
+          f"off by {worst:.2f} (tolerance {tolerance}) {verdict}")
+    if worst > tolerance:
+        raise Failed(f"{what}: got {tuple(got)}, want {tuple(round(w, 2) for w in want)}")
+
+
+def check_texcoords(out: str) -> None:
+    # Off-centre (x in [-1, 0.6], y in [-0.6, 1]) so that an image written bottom-up or
+    # mirrored moves the quad, not just its texels.
+    texels = {"top-left": (200, 30, 30), "top-right": (30, 200, 30),
+              "bottom-left": (30, 30, 200), "bottom-right": (200, 200, 30)}
+    image = fixtures.image_png(2, 2, [texels["top-left"], texels["top-right"],
+                                      texels["bottom-left"], texels["bottom-right"]])
+    material = {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+                "extensions": {fixtures.UNLIT: {}}}
+    x0, x1, y0, y1 = -1.0, 0.6, -0.6, 1.0
+    path = fixtures.write(os.path.join(out, "texcoords.gltf"), fixtures.gltf([fixtures.Quad(x0, x1, y0, y1, material)], image))
+    img = render(path, os.path.join(out, "texcoords.png"), [])
+    xs, ys = (x0 + (x1 - x0) / 4, x0 + 3 * (x1 - x0) / 4), (y1 - (y1 - y0) / 4, y1 - 3 * (y1 - y0) / 4)
+    for (name, colour), (x, y) in zip(texels.items(), [(xs[0], ys[0]), (xs[1], ys[0]), (xs[0], ys[1]), (xs[1], ys[1])]):
+        expect(f"{name} quadrant at ({x:g}, {y:g})", pixel(img, *CAMERA.project([x, y, 0])), colour, 2)
+    bg = [255 * c for c in BACKGROUND]
+    for name, corner in (("right of the quad", [0.9, 0.2, 0]), ("below the quad", [-0.2, -0.9, 0])):
+        expect(f"background {name}", pixel(img, *CAMERA.project(corner)), bg, 1)
+
+
+def check_srgb(out: str) -> None:
+    grey = {"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}, "extensions": {fixtures.UNLIT: {}}}
+    rgb = (0.8, 0.2, 0.05)
+    colour = {"pbrMetallicRoughness": {"baseColorFactor": [*rgb, 1]}, "extensions": {fixtures.UNLIT: {}}}
+    path = fixtures.write(os.path.join(out, "srgb.gltf"), fixtures.gltf(
+        [fixtures.Quad(-1, -0.1, -1, 1, grey), fixtures.Quad(0.1, 1, -1, 1, colour)]))
+    img = render(path, os.path.join(out, "srgb.png"), ["--tone", "none"])
+    got = pixel(img, *CAMERA.project([-0.55, 0, 0]))
+    expect("unlit baseColorFactor 0.5", got, [255 * srgb_encode(0.5)] * 3, 1)
+    if got[0] <= 130:
+        raise Failed(f"0.5 grey shows {got[0]}: written linear, not sRGB-encoded")
+    expect(f"unlit baseColorFactor {rgb}", pixel(img, *CAMERA.project([0.55, 0, 0])),
+           [255 * srgb_encode(c) for c in rgb], 1)
+
+
+def gltf_brdf(base: float, n, l, v, roughness: float) -> float:
+    """glTF 2.0's metallic-roughness BRDF (spec Appendix B) for a dielectric, metallic 0:
+    fresnel_mix(ior 1.5, diffuse c/pi, GGX specular), times N.L: the outgoing radiance for
+    unit irradiance. V is the spec's separable Smith-GGX visibility, D GGX, alpha = r^2."""
+    h = normalize([l[k] + v[k] for k in range(3)])
+    nl, nv, nh = (sum(a * b for a, b in zip(n, x)) for x in (l, v, h))
+    vh = sum(a * b for a, b in zip(v, h))
+    alpha2 = roughness ** 4
+    fresnel = 0.04 + (1 - 0.04) * (1 - abs(vh)) ** 5
+    d = alpha2 / (math.pi * (nh * nh * (alpha2 - 1) + 1) ** 2)
+    vis = 1 / ((abs(nl) + math.sqrt(alpha2 + (1 - alpha2) * nl * nl)) *
+               (abs(nv) + math.sqrt(alpha2 + (1 - alpha2) * nv * nv)))
+    return nl * ((1 - fresnel) * base / math.pi + fresnel * d * vis)
+
+
+def check_lambert(out: str) -> None:
+    base, intensity = (0.8, 0.5, 0.2), 3.0
+    # Towards the light: 60 degrees from the normal (+Z), in neither the x-z nor the y-z plane.
+    theta, phi = math.radians(60), math.radians(30)
+    to_light = [math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta)]
+    material = {"pbrMetallicRoughness": {"baseColorFactor": [*base, 1], "metallicFactor": 0, "roughnessFactor": 1}}
+    path = fixtures.write(os.path.join(out, "lambert.gltf"), fixtures.gltf([fixtures.Quad(-1, 1, -1, 1, material)]))
+    light = f"directional:{','.join(f'{-c:.9f}' for c in to_light)}:1,1,1:{intensity:g}"
+    img = render(path, os.path.join(out, "lambert.png"), ["--light", light, "--tone", "none"])
+    for i, j in ((32, 32), (16, 20), (47, 12), (20, 50)):
+        p = CAMERA.on_plane_z0(i, j)
+        v = normalize([CAMERA.eye[k] - p[k] for k in range(3)])
+        want = [255 * srgb_encode(intensity * gltf_brdf(c, [0, 0, 1], to_light, v, 1.0)) for c in base]
+        expect(f"pixel ({i}, {j}), N.L = {to_light[2]:.3f}", pixel(img, i, j), want, 2)
+
+
+CHECKS = {"texcoords": check_texcoords, "srgb": check_srgb, "lambert": check_lambert}
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3 or sys.argv[1] not in CHECKS:
+        sys.exit(f"usage: {sys.argv[0]} {'|'.join(CHECKS)} OUT_DIR")
+    os.makedirs(sys.argv[2], exist_ok=True)
+    try:
+        CHECKS[sys.argv[1]](sys.argv[2])
+    except (Failed, subprocess.TimeoutExpired) as e:
+        print(f"FAIL: {e}")
+        sys.exit(1)
+    print(f"PASS: {sys.argv[1]}")
