@@ -93,8 +93,9 @@ class Oracle:
         self.timeout = timeout
 
     def __enter__(self) -> "Oracle":
+        path = chromium.find_chromium()  # first: without Chromium, nothing to install
         three_install.ensure_three()
-        self._browser = chromium.Browser(time.monotonic() + self.timeout).__enter__()
+        self._browser = chromium.Browser(time.monotonic() + self.timeout, path).__enter__()
         try:
             self._browser.open(PAGE)
             if not self._browser.evaluate("typeof window.renderOracle === 'function'"):
