@@ -5,7 +5,7 @@ says. The inputs are asymmetric (four distinct texel colours, a quad off the ima
 three distinct channels, a light off every axis) so that a flip, a transpose or a channel
 swap cannot pass.
 
-    check_conventions.py texcoords|srgb|lambert OUT_DIR
+    check_conventions.py texcoords|srgb|lambert|lights OUT_DIR
 
   texcoords  an unlit quad textured with a 2x2 image: the image's top-left texel shows at
              the quad's top-left (uv (0, 0) = the image's top-left), and so on; the quad
@@ -16,6 +16,12 @@ swap cannot pass.
   lambert    a rough dielectric (roughness 1, metallic 0) under one directional light at
              60 degrees from the normal: each sampled pixel equals glTF's BRDF (Appendix B)
              in closed form, within 2/255.
+  lights     the same surface under a point light with a range, then a spot light:
+             KHR_lights_punctual's inverse-square falloff and range window, within
+             2/255; the spot's cone is 1 inside the inner angle and 0 outside the outer
+             one. Between them three.js uses smoothstep in cos(angle), where the
+             extension's reference uses the square of a linear ramp: checked against
+             three.js's curve, and the difference printed.
 
 Exit status 0 pass, 1 fail, 77 Chromium missing (ctest's SKIP_RETURN_CODE).
 """
@@ -122,13 +128,76 @@ def gltf_brdf(base: float, n, l, v, roughness: float) -> float:
     return nl * ((1 - fresnel) * base / math.pi + fresnel * d * vis)
 
 
+def window(distance: float, range_: float) -> float:
+    """KHR_lights_punctual's recommended range falloff (three.js's too): 1 without a range."""
+    return 1.0 if range_ <= 0 else min(max(1 - (distance / range_) ** 4, 0), 1) ** 2
+
+
+def rough_quad(path: str, base) -> str:
+    """A 2x2 quad of a rough dielectric (roughness 1, metallic 0) written to path."""
+    material = {"pbrMetallicRoughness": {"baseColorFactor": [*base, 1], "metallicFactor": 0, "roughnessFactor": 1}}
+    return fixtures.write(path, fixtures.gltf([fixtures.Quad(-1, 1, -1, 1, material)]))
+
+
+def check_lights(out: str) -> None:
+    base = (0.8, 0.5, 0.2)
+    path = rough_quad(os.path.join(out, "lights.gltf"), base)
+    n = [0, 0, 1]
+
+    def radiance(i, j, light_pos, intensity, range_, cone=lambda to_point: 1.0):
+        p = CAMERA.on_plane_z0(i, j)
+        d = [light_pos[k] - p[k] for k in range(3)]
+        dist = math.sqrt(sum(c * c for c in d))
+        to_light = [c / dist for c in d]
+        v = normalize([CAMERA.eye[k] - p[k] for k in range(3)])
+        e = intensity / dist ** 2 * window(dist, range_) * cone([-c for c in to_light])
+        return [255 * srgb_encode(e * gltf_brdf(c, n, to_light, v, 1.0)) for c in base]
+
+    # Point light off the axis, its range reaching some of the quad but not its far corner.
+    pos, intensity, range_ = [0.3, -0.2, 1.0], 2.0, 2.0
+    img = render(path, os.path.join(out, "point.png"), ["--light", f"point:{','.join(map(str, pos))}:1,1,1:{intensity}:{range_}"])
+    for i, j in ((32, 32), (40, 38), (20, 22), (8, 8)):
+        expect(f"point light, pixel ({i}, {j})", pixel(img, i, j), radiance(i, j, pos, intensity, range_), 2)
+
+    # Spot light 2 units above (0.2, 0.1), pointing straight down; cones 15 and 30 degrees.
+    pos, axis, intensity, inner, outer = [0.2, 0.1, 2.0], [0, 0, -1], 8.0, 15.0, 30.0
+    cos_in, cos_out = math.cos(math.radians(inner)), math.cos(math.radians(outer))
+
+    def ramp(to_point):
+        return min(max((sum(a * b for a, b in zip(to_point, axis)) - cos_out) / (cos_in - cos_out), 0), 1)
+
+    def smoothstep(to_point):
+        t = ramp(to_point)
+        return t * t * (3 - 2 * t)
+
+    img = render(path, os.path.join(out, "spot.png"),
+                 ["--light", f"spot:{','.join(map(str, pos))}:{','.join(map(str, axis))}:1,1,1:{intensity}:{inner}:{outer}"])
+
+    def off_axis(i, j):  # degrees
+        p = CAMERA.on_plane_z0(i, j)
+        return math.degrees(math.atan2(math.hypot(p[0] - pos[0], p[1] - pos[1]), pos[2]))
+
+    for i, j in ((36, 30), (30, 34)):
+        assert off_axis(i, j) < inner
+        expect(f"spot, {off_axis(i, j):.1f} deg off its axis, pixel ({i}, {j})", pixel(img, i, j),
+               radiance(i, j, pos, intensity, 0), 2)
+    i, j = 8, 56
+    assert off_axis(i, j) > outer
+    expect(f"spot, {off_axis(i, j):.1f} deg off its axis, pixel ({i}, {j})", pixel(img, i, j), (0, 0, 0), 0)
+    i, j = 16, 29
+    assert inner < off_axis(i, j) < outer
+    expect(f"spot, {off_axis(i, j):.1f} deg off its axis, pixel ({i}, {j}), three.js's smoothstep", pixel(img, i, j),
+           radiance(i, j, pos, intensity, 0, smoothstep), 2)
+    khr = radiance(i, j, pos, intensity, 0, lambda t: ramp(t) ** 2)
+    print(f"  (the extension's reference falloff, ramp squared, would give {tuple(round(c, 1) for c in khr)})")
+
+
 def check_lambert(out: str) -> None:
     base, intensity = (0.8, 0.5, 0.2), 3.0
     # Towards the light: 60 degrees from the normal (+Z), in neither the x-z nor the y-z plane.
     theta, phi = math.radians(60), math.radians(30)
     to_light = [math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta)]
-    material = {"pbrMetallicRoughness": {"baseColorFactor": [*base, 1], "metallicFactor": 0, "roughnessFactor": 1}}
-    path = fixtures.write(os.path.join(out, "lambert.gltf"), fixtures.gltf([fixtures.Quad(-1, 1, -1, 1, material)]))
+    path = rough_quad(os.path.join(out, "lambert.gltf"), base)
     light = f"directional:{','.join(f'{-c:.9f}' for c in to_light)}:1,1,1:{intensity:g}"
     img = render(path, os.path.join(out, "lambert.png"), ["--light", light, "--tone", "none"])
     for i, j in ((32, 32), (16, 20), (47, 12), (20, 50)):
@@ -138,7 +207,7 @@ def check_lambert(out: str) -> None:
         expect(f"pixel ({i}, {j}), N.L = {to_light[2]:.3f}", pixel(img, i, j), want, 2)
 
 
-CHECKS = {"texcoords": check_texcoords, "srgb": check_srgb, "lambert": check_lambert}
+CHECKS = {"texcoords": check_texcoords, "srgb": check_srgb, "lambert": check_lambert, "lights": check_lights}
 
 if __name__ == "__main__":
     if len(sys.argv) != 3 or sys.argv[1] not in CHECKS:

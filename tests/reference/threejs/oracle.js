@@ -6,7 +6,7 @@
 //   camera       {eye, target, up, yfov (degrees), znear, zfar}, or null: frame the model
 //   lights       [{type: 'directional', direction, color, intensity}
 //                 |{type: 'point', position, color, intensity, range}
-//                 |{type: 'spot', position, direction, color, intensity, inner, outer (degrees)}]
+//                 |{type: 'spot', position, direction, color, intensity, inner, outer (degrees), range}]
 //   ambient      [r, g, b] linear, or null
 //   fileLights   keep the file's KHR_lights_punctual lights (else they are removed)
 //   tone         'none' | 'aces' | 'neutral';  exposure
@@ -28,7 +28,7 @@ function vec(a) { return new THREE.Vector3(a[0], a[1], a[2]); }
 
 // Lights as KHR_lights_punctual defines them and GLTFLoader builds them: intensities in
 // lux (directional) and candela (point, spot), inverse-square falloff (decay 2), colours
-// linear. A directional or spot light shines along `direction`.
+// linear; range 0 is unbounded. A directional or spot light shines along `direction`.
 function makeLight(spec) {
   const color = new THREE.Color().setRGB(...spec.color, THREE.LinearSRGBColorSpace);
   let light;
@@ -43,7 +43,7 @@ function makeLight(spec) {
     const outer = THREE.MathUtils.degToRad(spec.outer);
     const inner = THREE.MathUtils.degToRad(spec.inner);
     // GLTFLoader's mapping of innerConeAngle/outerConeAngle onto angle/penumbra.
-    light = new THREE.SpotLight(color, spec.intensity, 0, outer, 1 - inner / outer, 2);
+    light = new THREE.SpotLight(color, spec.intensity, spec.range, outer, 1 - inner / outer, 2);
     light.position.copy(vec(spec.position));
     light.target.position.copy(vec(spec.position).add(vec(spec.direction)));
   } else {

@@ -14,7 +14,8 @@ Conventions (the same as Velocity's):
            lux, point and spot in candela with inverse-square falloff; colours linear.
              directional:DX,DY,DZ:R,G,B:INTENSITY          shining along D
              point:X,Y,Z:R,G,B:INTENSITY[:RANGE]          RANGE 0 or none: unbounded
-             spot:X,Y,Z:DX,DY,DZ:R,G,B:INTENSITY:INNER:OUTER   cone half-angles in degrees
+             spot:X,Y,Z:DX,DY,DZ:R,G,B:INTENSITY:INNER:OUTER[:RANGE]
+                                                           cone half-angles in degrees
            A Lambertian surface of base colour c facing a directional light of intensity E
            sends c/pi * E (three.js's BRDF_Lambert, no factor of pi in the light), so
            intensity pi shows white as 1.0. --ambient adds a uniform irradiance (linear).
@@ -146,14 +147,15 @@ def _light(text: str) -> dict:
         if kind == "point" and len(f) in (3, 4):
             return {"type": kind, "position": _floats(f[0], (3,), "position"), "color": _floats(f[1], (3,), "colour"),
                     "intensity": float(f[2]), "range": float(f[3]) if len(f) == 4 else 0.0}
-        if kind == "spot" and len(f) == 6:
+        if kind == "spot" and len(f) in (6, 7):
             return {"type": kind, "position": _floats(f[0], (3,), "position"),
                     "direction": _floats(f[1], (3,), "direction"), "color": _floats(f[2], (3,), "colour"),
-                    "intensity": float(f[3]), "inner": float(f[4]), "outer": float(f[5])}
+                    "intensity": float(f[3]), "inner": float(f[4]), "outer": float(f[5]),
+                    "range": float(f[6]) if len(f) == 7 else 0.0}
     except ValueError:
         pass
     raise argparse.ArgumentTypeError(f"--light: expected directional:D:RGB:I, point:P:RGB:I[:RANGE] or "
-                                     f"spot:P:D:RGB:I:INNER:OUTER, got '{text}'")
+                                     f"spot:P:D:RGB:I:INNER:OUTER[:RANGE], got '{text}'")
 
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
