@@ -56,8 +56,9 @@ function makeLight(spec) {
 function frameCamera(object, aspect, yfov) {
   const sphere = new THREE.Box3().setFromObject(object).getBoundingSphere(new THREE.Sphere());
   const r = Math.max(sphere.radius, 1e-6);
-  const fov = THREE.MathUtils.degToRad(Math.min(yfov, yfov * aspect));
-  const distance = 1.1 * r / Math.sin(fov / 2);
+  // The narrower of the vertical and horizontal fields of view must hold the sphere.
+  const half = Math.atan(Math.tan(THREE.MathUtils.degToRad(yfov) / 2) * Math.min(aspect, 1));
+  const distance = 1.1 * r / Math.sin(half);
   const c = sphere.center;
   return { eye: [c.x, c.y, c.z + distance], target: [c.x, c.y, c.z], up: [0, 1, 0],
            yfov, znear: Math.max(distance - 2 * r, distance * 1e-3), zfar: distance + 2 * r };
