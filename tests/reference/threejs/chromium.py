@@ -151,17 +151,21 @@ class Browser:
             raise PageError(" ".join(lines).removeprefix("Error: "))
         return reply["result"].get("value")
 
-    def page_errors(self) -> list[str]:
-        """Uncaught exceptions and console errors seen so far (e.g. a module that failed to load)."""
+    def take_messages(self, levels: tuple[str, ...] = ("error",)) -> list[str]:
+        """Uncaught exceptions, and console messages at these levels ("error", "warning"),
+        since the last call, first lines only: a module that failed to load, GLTFLoader's
+        warnings about what it ignored. Forgets every event seen so far."""
         out = []
         for e in self._events:
-            if e.get("method") == "Runtime.exceptionThrown":
-                d = e["params"]["exceptionDetails"]
+            method, params = e.get("method"), e.get("params", {})
+            if method == "Runtime.exceptionThrown":
+                d = params["exceptionDetails"]
                 out.append(d.get("exception", {}).get("description") or d.get("text", ""))
-            elif e.get("method") == "Runtime.consoleAPICalled" and e["params"]["type"] == "error":
-                out.append(" ".join(str(a.get("value", a.get("description", ""))) for a in e["params"]["args"]))
-            elif e.get("method") == "Log.entryAdded" and e["params"]["entry"]["level"] == "error":
-                out.append(e["params"]["entry"]["text"])
+            elif method == "Runtime.consoleAPICalled" and params["type"] in levels:
+                out.append(" ".join(str(a.get("value", a.get("description", ""))) for a in params["args"]))
+            elif method == "Log.entryAdded" and params["entry"]["level"] in levels:
+                out.append(params["entry"]["text"])
+        self._events.clear()
         return [line.splitlines()[0] for line in out if line]
 
     # --- the protocol: numbered commands, replies matched by id, events kept for later

@@ -59,6 +59,7 @@ class Image:
     rgb: bytes      # width * height * 3 bytes, top row first
     camera: dict    # the camera used (the framed one when none was given)
     info: str       # three.js revision and WebGL renderer
+    warnings: list  # what three.js warned about while loading and drawing (ignored extensions, ...)
 
     def pixel(self, x: int, y: int) -> tuple[int, int, int]:
         i = 3 * (y * self.width + x)
@@ -100,7 +101,7 @@ class Oracle:
         try:
             self._browser.open(PAGE)
             if not self._browser.evaluate("typeof window.renderOracle === 'function'"):
-                errors = self._browser.page_errors()
+                errors = self._browser.take_messages()
                 raise chromium.PageError(f"the oracle page did not start: {errors[0] if errors else 'no message'}")
         except BaseException:
             self._browser.__exit__(None, None, None)
@@ -112,11 +113,14 @@ class Oracle:
 
     def render(self, spec: dict) -> Image:
         self._browser.deadline = time.monotonic() + self.timeout
+        self._browser.take_messages()  # forget the previous render's
         r = self._browser.evaluate(f"window.renderOracle({json.dumps(spec)})")
+        warnings = self._browser.take_messages(("error", "warning"))
         rgba = base64.b64decode(r["rgba"])
         rgb = bytearray(len(rgba) // 4 * 3)  # the canvas is opaque: alpha is 255, dropped
         rgb[0::3], rgb[1::3], rgb[2::3] = rgba[0::4], rgba[1::4], rgba[2::4]
-        return Image(r["width"], r["height"], bytes(rgb), r["camera"], f"three r{r['three']} on {r['renderer']}")
+        return Image(r["width"], r["height"], bytes(rgb), r["camera"], f"three r{r['three']} on {r['renderer']}",
+                     warnings)
 
 
 # --- the command line
@@ -208,6 +212,8 @@ def main(argv: list[str]) -> int:
     print(f"wrote {args.out} {image.width}x{image.height} in {time.monotonic() - started:.1f} s, {image.info}; "
           f"camera eye={','.join(f'{v:g}' for v in cam['eye'])} target={','.join(f'{v:g}' for v in cam['target'])} "
           f"yfov={cam['yfov']:g} znear={cam['znear']:g} zfar={cam['zfar']:g}")
+    for w in image.warnings:
+        print(f"render.py: {args.model}: three.js: {w}", file=sys.stderr)
     return 0
 
 
