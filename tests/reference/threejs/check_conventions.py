@@ -5,7 +5,7 @@ says. The inputs are asymmetric (four distinct texel colours, a quad off the ima
 three distinct channels, a light off every axis) so that a flip, a transpose or a channel
 swap cannot pass.
 
-    check_conventions.py texcoords|srgb|lambert|lights OUT_DIR
+    check_conventions.py texcoords|srgb|lambert|lights|shadows OUT_DIR
 
   texcoords  an unlit quad textured with a 2x2 image: the image's top-left texel shows at
              the quad's top-left (uv (0, 0) = the image's top-left), and so on; the quad
@@ -22,6 +22,11 @@ swap cannot pass.
              one. Between them three.js uses smoothstep in cos(angle), where the
              extension's reference uses the square of a linear ramp: checked against
              three.js's curve, and the difference printed.
+  shadows    (render.py --shadows) a small quad half a unit above the rough quad, one
+             directional light: the shadow is black where geometry puts it (the
+             occluder moved along the light's direction), the ground lit elsewhere,
+             including where a light mirrored in x and y would put it; no acne and no
+             light leaking under the occluder anywhere away from the edges.
 
 Exit status 0 pass, 1 fail, 77 Chromium missing (ctest's SKIP_RETURN_CODE).
 """
@@ -207,7 +212,59 @@ def check_lambert(out: str) -> None:
         expect(f"pixel ({i}, {j}), N.L = {to_light[2]:.3f}", pixel(img, i, j), want, 2)
 
 
-CHECKS = {"texcoords": check_texcoords, "srgb": check_srgb, "lambert": check_lambert, "lights": check_lights}
+def check_shadows(out: str) -> None:
+    base = (0.8, 0.5, 0.2)
+    ground = {"pbrMetallicRoughness": {"baseColorFactor": [*base, 1], "metallicFactor": 0, "roughnessFactor": 1}}
+    blocker = {"pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.1, 0.1, 1]}}
+    x0, x1, y0, y1, height = -0.3, 0.1, -0.2, 0.3, 0.5
+    path = fixtures.write(os.path.join(out, "shadows.gltf"), fixtures.gltf(
+        [fixtures.Quad(-1, 1, -1, 1, ground), fixtures.Quad(x0, x1, y0, y1, blocker, z=height)]))
+    d = [0.6, 0.3, -1.0]  # the light travels along d: the shadow is the blocker moved by (0.3, 0.15)
+    to_light = normalize([-c for c in d])
+    img = render(path, os.path.join(out, "shadows.png"),
+                 ["--light", f"directional:{','.join(map(str, d))}:1,1,1:3", "--shadows"])
+    shift = [d[0] * height / -d[2], d[1] * height / -d[2]]
+
+    def shadowed(x, y):
+        return x0 + shift[0] < x < x1 + shift[0] and y0 + shift[1] < y < y1 + shift[1]
+
+    def lit(i, j):  # the spec's colour of the ground seen through pixel (i, j), in the light
+        p = CAMERA.on_plane_z0(i, j)
+        v = normalize([CAMERA.eye[k] - p[k] for k in range(3)])
+        return [255 * srgb_encode(3 * gltf_brdf(c, [0, 0, 1], to_light, v, 1.0)) for c in base]
+
+    # In the shadow and not hidden behind the blocker (seen from the camera it spans
+    # x up to 0.1 * 3 / 2.5 = 0.12).
+    for x, y in ((0.3, 0.2), (0.35, 0.0)):
+        assert shadowed(x, y)
+        i, j = (int(c) for c in CAMERA.project([x, y, 0]))
+        expect(f"in the shadow at ({x:g}, {y:g}), pixel ({i}, {j})", pixel(img, i, j), (0, 0, 0), 2)
+    # Lit: beside the shadow, and where a mirrored light would have put it.
+    for x, y in ((0.6, -0.5), (-0.5, -0.25), (0.3, 0.6), (-0.7, 0.6)):
+        assert not shadowed(x, y)
+        i, j = (int(c) for c in CAMERA.project([x, y, 0]))
+        expect(f"lit at ({x:g}, {y:g}), pixel ({i}, {j})", pixel(img, i, j), lit(i, j), 2)
+    # Every pixel of ground seen past the blocker, but those within 0.06 (1.5 pixels) of
+    # the shadow's or the ground's edge: no acne in the light, no light leaking under
+    # the blocker (peter-panning).
+    wrong = total = 0
+    for j in range(CAMERA.height):
+        for i in range(CAMERA.width):
+            x, y, _ = CAMERA.on_plane_z0(i, j)
+            bx, by = x * (3 - height) / 3, y * (3 - height) / 3  # where the ray crosses the blocker's plane
+            near_edge = any(shadowed(x + dx, y + dy) != shadowed(x, y) for dx in (-0.06, 0.06) for dy in (-0.06, 0.06))
+            if max(abs(x), abs(y)) > 0.94 or (x0 < bx < x1 and y0 < by < y1) or near_edge:
+                continue
+            want = (0, 0, 0) if shadowed(x, y) else lit(i, j)
+            total += 1
+            wrong += max(abs(g - w) for g, w in zip(pixel(img, i, j), want)) > 2
+    print(f"  ground pixels away from edges: {wrong} of {total} off by more than 2 (acne or light leaks)")
+    if wrong:
+        raise Failed(f"{wrong} of {total} ground pixels away from edges are neither lit nor shadowed as they should be")
+
+
+CHECKS = {"texcoords": check_texcoords, "srgb": check_srgb, "lambert": check_lambert, "lights": check_lights,
+          "shadows": check_shadows}
 
 if __name__ == "__main__":
     if len(sys.argv) != 3 or sys.argv[1] not in CHECKS:

@@ -1,6 +1,6 @@
 """Small self-contained glTF 2.0 files for the convention checks, made here rather than
-stored: axis-aligned quads in the plane z = 0 facing +Z, each with its own material,
-buffers and images embedded as data URIs.
+stored: axis-aligned quads parallel to the plane z = 0, facing +Z, each with its own
+material, buffers and images embedded as data URIs.
 
 Texture coordinates follow the glTF spec: uv (0, 0) is the image's top-left texel, so a
 quad's top-left corner (min x, max y) gets uv (0, 0) and its bottom-right (max x, min y)
@@ -28,6 +28,7 @@ class Quad:
     y0: float
     y1: float
     material: dict  # a glTF material; "baseColorTexture": {"index": 0} names the image
+    z: float = 0.0
 
 
 def _data_uri(mime: str, data: bytes) -> str:
@@ -57,8 +58,8 @@ def gltf(quads: list[Quad], image: bytes | None = None) -> dict:
         # corners: top-left, bottom-left, bottom-right, top-right; counter-clockwise from +Z
         xy = [(q.x0, q.y1), (q.x0, q.y0), (q.x1, q.y0), (q.x1, q.y1)]
         uv = [(0, 0), (0, 1), (1, 1), (1, 0)]
-        pos = add(b"".join(struct.pack("<3f", x, y, 0) for x, y in xy), ARRAY_BUFFER, FLOAT, "VEC3", 4,
-                  ([q.x0, q.y0, 0], [q.x1, q.y1, 0]))
+        pos = add(b"".join(struct.pack("<3f", x, y, q.z) for x, y in xy), ARRAY_BUFFER, FLOAT, "VEC3", 4,
+                  ([q.x0, q.y0, q.z], [q.x1, q.y1, q.z]))
         nrm = add(struct.pack("<3f", 0, 0, 1) * 4, ARRAY_BUFFER, FLOAT, "VEC3", 4)
         tex = add(b"".join(struct.pack("<2f", u, v) for u, v in uv), ARRAY_BUFFER, FLOAT, "VEC2", 4)
         idx = add(struct.pack("<6H", 0, 1, 2, 0, 2, 3), ELEMENT_ARRAY_BUFFER, UINT16, "SCALAR", 6)

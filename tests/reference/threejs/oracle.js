@@ -12,6 +12,8 @@
 //   tone         'none' | 'aces' | 'neutral';  exposure
 //   background   [r, g, b] as the output's sRGB values / 255
 //   antialias    the canvas's MSAA (off by default: every pixel one sample, like Velocity's ssaa 1)
+//   shadows      null, or {mapSize, bias, normalBias}: every mesh casts and receives, every
+//                light of `lights` casts through a PCF-filtered shadow map fitted to the model
 // Returns {width, height, rgba: base64 of the RGBA bytes, top row first, camera, renderer, three}.
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
@@ -64,6 +66,30 @@ function frameCamera(object, aspect, yfov) {
            yfov, znear: Math.max(distance - 2 * r, distance * 1e-3), zfar: distance + 2 * r };
 }
 
+// Shadow maps that see the whole model: three's defaults assume a scene a few units
+// across (a directional light's box is +-5, the near plane of the others 0.5).
+function castShadows(light, sphere, shadows) {
+  light.castShadow = true;
+  light.shadow.mapSize.set(shadows.mapSize, shadows.mapSize);
+  light.shadow.bias = shadows.bias;
+  light.shadow.normalBias = shadows.normalBias;
+  const c = sphere.center;
+  const r = Math.max(sphere.radius, 1e-6);
+  const camera = light.shadow.camera;
+  if (light.isDirectionalLight) {
+    // Same direction, moved back so that the model lies between 1 and 3 radii in front.
+    const towardsLight = light.position.clone().sub(light.target.position).normalize();
+    light.position.copy(c).addScaledVector(towardsLight, 2 * r);
+    light.target.position.copy(c);
+    Object.assign(camera, { left: -r, right: r, top: r, bottom: -r, near: 0.5 * r, far: 3.5 * r });
+  } else {
+    const reach = light.position.distanceTo(c) + r;
+    camera.near = reach * 1e-3;
+    camera.far = reach;
+  }
+  camera.updateProjectionMatrix();
+}
+
 function base64(bytes) {
   let s = '';
   for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
@@ -103,8 +129,22 @@ window.renderOracle = async function (spec) {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color().setRGB(...spec.background, THREE.SRGBColorSpace);
   scene.add(model);
+  const bounds = new THREE.Box3().setFromObject(model).getBoundingSphere(new THREE.Sphere());
+  if (spec.shadows) {
+    renderer.shadowMap.enabled = true;
+    renderer.shadowMap.type = THREE.PCFShadowMap;
+    // Every face blocks light, as in the world: three's default draws only the faces
+    // turned away from the light into the map (less acne on closed meshes), so that an
+    // open one-sided surface, a glTF leaf or quad, would cast no shadow.
+    model.traverse((o) => {
+      if (!o.isMesh) return;
+      o.castShadow = o.receiveShadow = true;
+      for (const m of Array.isArray(o.material) ? o.material : [o.material]) m.shadowSide = THREE.DoubleSide;
+    });
+  }
   for (const l of spec.lights) {
     const light = makeLight(l);
+    if (spec.shadows) castShadows(light, bounds, spec.shadows);
     scene.add(light);
     if (light.target) scene.add(light.target);
   }

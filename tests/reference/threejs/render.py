@@ -5,6 +5,7 @@ and writes it as a PNG: the reference image Velocity's glTF pipeline is compared
     render.py MODEL --out OUT.png [--size WxH] [--camera EYE,TARGET[,UP] --yfov DEG
               --znear N --zfar N] [--light SPEC]... [--ambient R,G,B] [--file-lights]
               [--tone none|aces|neutral] [--exposure E] [--bg R,G,B] [--antialias]
+              [--shadows [--shadow-map N] [--shadow-bias B] [--shadow-normal-bias B]]
 
 Conventions (the same as Velocity's):
   camera   OpenGL's: the camera looks down its -Z axis with +Y up, placed by look_at(eye,
@@ -19,6 +20,8 @@ Conventions (the same as Velocity's):
            A Lambertian surface of base colour c facing a directional light of intensity E
            sends c/pi * E (three.js's BRDF_Lambert, no factor of pi in the light), so
            intensity pi shows white as 1.0. --ambient adds a uniform irradiance (linear).
+           --shadows: each --light casts through an N x N PCF shadow map fitted to the
+           model's bounding sphere (three.js's; its bias and normal bias as given).
            The file's own lights are removed unless --file-lights; there is never an
            environment map.
   colour   the file's materials as three.js's GLTFLoader makes them; output sRGB-encoded;
@@ -71,14 +74,16 @@ class Image:
 
 def make_spec(model: str, width: int, height: int, camera: dict | None = None, lights: list | None = None,
               ambient=None, file_lights=False, tone="none", exposure=1.0, background=(0, 0, 0),
-              antialias=False) -> dict:
-    """The request oracle.js's renderOracle takes (see there); model is a file path."""
+              antialias=False, shadows=None) -> dict:
+    """The request oracle.js's renderOracle takes (see there); model is a file path;
+    shadows None or {"mapSize": N, "bias": B, "normalBias": B}."""
     path = pathlib.Path(model).resolve()
     if not path.is_file():
         raise chromium.PageError("no such file")
     return {"model": path.as_uri(), "width": width, "height": height, "camera": camera,
             "lights": lights or [], "ambient": list(ambient) if ambient else None, "fileLights": file_lights,
-            "tone": tone, "exposure": exposure, "background": list(background), "antialias": antialias}
+            "tone": tone, "exposure": exposure, "background": list(background), "antialias": antialias,
+            "shadows": shadows}
 
 
 class Oracle:
@@ -180,6 +185,12 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--bg", type=lambda t: _floats(t, (3,), "--bg"), default=[0, 0, 0],
                    help="background r,g,b: output sRGB / 255 (default 0,0,0)")
     p.add_argument("--antialias", action="store_true", help="MSAA on the canvas")
+    p.add_argument("--shadows", action="store_true", help="shadow maps for the --light lights")
+    p.add_argument("--shadow-map", type=int, default=2048, help="shadow map size (default 2048)")
+    p.add_argument("--shadow-bias", type=float, default=-0.0005,
+                   help="depth bias, in the shadow map's [0, 1] depth (default -0.0005)")
+    p.add_argument("--shadow-normal-bias", type=float, default=0.0,
+                   help="offset along the normal, in world units (default 0)")
     p.add_argument("--timeout", type=float, default=60.0, help="seconds for the whole render (default 60)")
     return p.parse_args(argv)
 
@@ -195,7 +206,9 @@ def main(argv: list[str]) -> int:
     try:
         spec = make_spec(args.model, *args.size, camera=camera, lights=args.light, ambient=args.ambient,
                          file_lights=args.file_lights, tone=args.tone, exposure=args.exposure,
-                         background=args.bg, antialias=args.antialias)
+                         background=args.bg, antialias=args.antialias,
+                         shadows={"mapSize": args.shadow_map, "bias": args.shadow_bias,
+                                  "normalBias": args.shadow_normal_bias} if args.shadows else None)
         with Oracle(timeout=args.timeout) as oracle:
             image = oracle.render(spec)
         image.save(args.out)
