@@ -4,6 +4,7 @@
 //   model        URL of the .gltf/.glb (file://)
 //   width, height
 //   camera       {eye, target, up, yfov (degrees), znear, zfar}, or null: frame the model
+//   frameYfov    the field of view (degrees) of the framing camera
 //   lights       [{type: 'directional', direction, color, intensity}
 //                 |{type: 'point', position, color, intensity, range}
 //                 |{type: 'spot', position, direction, color, intensity, inner, outer (degrees), range}]
@@ -151,7 +152,7 @@ window.renderOracle = async function (spec) {
   if (spec.ambient) scene.add(new THREE.AmbientLight(new THREE.Color().setRGB(...spec.ambient, THREE.LinearSRGBColorSpace), 1));
 
   const aspect = spec.width / spec.height;
-  const cam = spec.camera || frameCamera(model, aspect, 45);
+  const cam = spec.camera || frameCamera(model, aspect, spec.frameYfov);
   const camera = new THREE.PerspectiveCamera(cam.yfov, aspect, cam.znear, cam.zfar);
   camera.position.copy(vec(cam.eye));
   camera.up.copy(vec(cam.up));

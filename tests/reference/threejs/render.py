@@ -10,7 +10,8 @@ and writes it as a PNG: the reference image Velocity's glTF pipeline is compared
 Conventions (the same as Velocity's):
   camera   OpenGL's: the camera looks down its -Z axis with +Y up, placed by look_at(eye,
            target, up); perspective with a vertical field of view in degrees. Without
-           --camera the model is framed: looking down -Z at its bounding sphere.
+           --camera the model is framed (with --yfov): looking down -Z at its bounding
+           sphere; the camera used is printed.
   lights   KHR_lights_punctual's units, which three.js uses as they are: directional in
            lux, point and spot in candela with inverse-square falloff; colours linear.
              directional:DX,DY,DZ:R,G,B:INTENSITY          shining along D
@@ -74,13 +75,14 @@ class Image:
 
 def make_spec(model: str, width: int, height: int, camera: dict | None = None, lights: list | None = None,
               ambient=None, file_lights=False, tone="none", exposure=1.0, background=(0, 0, 0),
-              antialias=False, shadows=None) -> dict:
+              antialias=False, shadows=None, frame_yfov=45.0) -> dict:
     """The request oracle.js's renderOracle takes (see there); model is a file path;
-    shadows None or {"mapSize": N, "bias": B, "normalBias": B}."""
+    shadows None or {"mapSize": N, "bias": B, "normalBias": B}; frame_yfov the field of view
+    of the camera that frames the model when camera is None."""
     path = pathlib.Path(model).resolve()
     if not path.is_file():
         raise chromium.PageError("no such file")
-    return {"model": path.as_uri(), "width": width, "height": height, "camera": camera,
+    return {"model": path.as_uri(), "width": width, "height": height, "camera": camera, "frameYfov": frame_yfov,
             "lights": lights or [], "ambient": list(ambient) if ambient else None, "fileLights": file_lights,
             "tone": tone, "exposure": exposure, "background": list(background), "antialias": antialias,
             "shadows": shadows}
@@ -206,7 +208,7 @@ def main(argv: list[str]) -> int:
     try:
         spec = make_spec(args.model, *args.size, camera=camera, lights=args.light, ambient=args.ambient,
                          file_lights=args.file_lights, tone=args.tone, exposure=args.exposure,
-                         background=args.bg, antialias=args.antialias,
+                         background=args.bg, antialias=args.antialias, frame_yfov=args.yfov,
                          shadows={"mapSize": args.shadow_map, "bias": args.shadow_bias,
                                   "normalBias": args.shadow_normal_bias} if args.shadows else None)
         with Oracle(timeout=args.timeout) as oracle:
