@@ -164,7 +164,8 @@ class Browser:
             elif method == "Runtime.consoleAPICalled" and params["type"] in levels:
                 out.append(" ".join(str(a.get("value", a.get("description", ""))) for a in params["args"]))
             elif method == "Log.entryAdded" and params["entry"]["level"] in levels:
-                out.append(params["entry"]["text"])
+                entry = params["entry"]
+                out.append(entry["text"] + (f" ({entry['url']})" if entry.get("url") else ""))
         self._events.clear()
         return [line.splitlines()[0] for line in out if line]
 
