@@ -7,7 +7,7 @@ browser for all of them, writes each image to OUT_DIR, and checks them:
     right way up (sky above land);
   - the same box as .glb and as .gltf with data URIs: the same pixels; and as the .gltf
     with a .bin and a PNG, whose sampler assimp changed to MIRRORED_REPEAT in u (the
-    face's u runs over [1, 2]): the same face mirrored left-right;
+    face's u runs over [3, 4]): the same face mirrored left-right;
   - every other model: it loads and covers some of the image.
 
     check_models.py OUT_DIR
