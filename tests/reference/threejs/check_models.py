@@ -3,8 +3,10 @@
 browser for all of them, writes each image to OUT_DIR, and checks them:
 
   - BoxTextured (Khronos's textured unit cube), seen face-on: the front face covers
-    exactly the square the camera puts it in, and the Cesium logo on it is there and the
-    right way up (sky above land);
+    exactly the square the camera puts it in, and the Cesium logo on it is there, the
+    right way up (sky above land) and the right way round (its sun at the right, where
+    CesiumLogoFlat.png has it: u runs from 4 at the left to 3 at the right, which the
+    file's MIRRORED_REPEAT turns into the image's 0 to 1);
   - the same box as .glb and as .gltf with data URIs: the same pixels; and as the .gltf
     with a .bin and a PNG, whose sampler assimp changed to MIRRORED_REPEAT in u (the
     face's u runs over [3, 4]): the same face mirrored left-right;
@@ -63,6 +65,7 @@ def check_box(image: render.Image) -> list[str]:
     margin = 1.5  # pixels: edges are not anti-aliased, but a pixel on an edge may go either way
     covered = stray = 0
     sky, land = [], []  # rows of the logo's blue sky and green land
+    sun = []  # white inside the logo's disc, above its wave: (x, y) as fractions of the face
     for y in range(image.height):
         for x in range(image.width):
             cx, cy = x + 0.5, y + 0.5
@@ -77,11 +80,15 @@ def check_box(image: render.Image) -> list[str]:
                 sky.append(y)
             if inside and p[1] > p[2] + 30 and p[1] > p[0]:
                 land.append(y)
+            fx, fy = (cx - x0) / (x1 - x0), (cy - y0) / (y1 - y0)
+            if (fx - 0.5) ** 2 + (fy - 0.5) ** 2 < 0.42 ** 2 and fy < 0.32 and min(p) > 200:
+                sun.append((fx, fy))
     inside_count = sum(1 for y in range(image.height) for x in range(image.width)
                        if x0 + margin < x + 0.5 < x1 - margin and y0 + margin < y + 0.5 < y1 - margin)
     print(f"  BoxTextured: face x {x0:.1f}..{x1:.1f}, y {y0:.1f}..{y1:.1f}: {covered}/{inside_count} covered, "
           f"{stray} pixels outside; logo: {len(sky)} sky pixels (mean row {sum(sky) / max(len(sky), 1):.1f}), "
-          f"{len(land)} land pixels (mean row {sum(land) / max(len(land), 1):.1f})")
+          f"{len(land)} land pixels (mean row {sum(land) / max(len(land), 1):.1f}), {len(sun)} sun pixels "
+          f"(mean x {sum(x for x, _ in sun) / max(len(sun), 1):.2f} of the face; 0.65 in the image)")
     if covered != inside_count:
         problems.append(f"BoxTextured: {inside_count - covered} pixels of the front face show the background")
     if stray:
@@ -90,6 +97,10 @@ def check_box(image: render.Image) -> list[str]:
         problems.append(f"BoxTextured: the logo is missing ({len(sky)} sky and {len(land)} land pixels of {inside_count})")
     elif sum(sky) / len(sky) >= sum(land) / len(land):
         problems.append("BoxTextured: the logo is upside down (its sky is below its land)")
+    if len(sun) < 10:
+        problems.append(f"BoxTextured: the logo's sun is missing ({len(sun)} pixels)")
+    elif sum(x for x, _ in sun) / len(sun) < 0.5:
+        problems.append("BoxTextured: the logo is mirrored left-right (its sun is on the left)")
     return problems
 
 
