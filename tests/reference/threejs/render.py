@@ -118,8 +118,9 @@ class Oracle:
     def __exit__(self, *exc) -> None:
         self._browser.__exit__(*exc)
 
-    def render(self, spec: dict) -> Image:
-        self._browser.deadline = time.monotonic() + self.timeout
+    def render(self, spec: dict, timeout: float | None = None) -> Image:
+        """One frame; timeout (default: the Oracle's) bounds this render alone."""
+        self._browser.deadline = time.monotonic() + (self.timeout if timeout is None else timeout)
         self._browser.take_messages()  # forget the previous render's
         r = self._browser.evaluate(f"window.renderOracle({json.dumps(spec)})")
         warnings = self._browser.take_messages(("error", "warning"))
@@ -193,7 +194,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                    help="depth bias, in the shadow map's [0, 1] depth (default -0.0005)")
     p.add_argument("--shadow-normal-bias", type=float, default=0.0,
                    help="offset along the normal, in world units (default 0)")
-    p.add_argument("--timeout", type=float, default=60.0, help="seconds for the whole render (default 60)")
+    p.add_argument("--timeout", type=float, default=60.0,
+                   help="seconds for Chromium's start and the render (default 60; npm ci, when needed, has 300 more)")
     return p.parse_args(argv)
 
 
@@ -211,8 +213,8 @@ def main(argv: list[str]) -> int:
                          background=args.bg, antialias=args.antialias, frame_yfov=args.yfov,
                          shadows={"mapSize": args.shadow_map, "bias": args.shadow_bias,
                                   "normalBias": args.shadow_normal_bias} if args.shadows else None)
-        with Oracle(timeout=args.timeout) as oracle:
-            image = oracle.render(spec)
+        with Oracle(timeout=args.timeout) as oracle:  # --timeout bounds the start and the render together
+            image = oracle.render(spec, timeout=args.timeout - (time.monotonic() - started))
         image.save(args.out)
     except chromium.ChromiumMissing as e:
         print(f"render.py: {e}", file=sys.stderr)
