@@ -33,8 +33,8 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using velocity::rt::InputEvent;
-using velocity::rt::Key;
+using velocity::realtime::InputEvent;
+using velocity::realtime::Key;
 
 struct Timer {
   Clock::time_point due;
@@ -73,11 +73,11 @@ struct Glut {
   bool redisplay = true;  // the first turn draws
   bool reshape_pending = true;
   bool leave = false;
-  velocity::rt::InputState input;
+  velocity::realtime::InputState input;
   int modifiers = 0;  // during an input callback (glutGetModifiers)
 
   // Automation (environment variables; see glut.h).
-  std::optional<velocity::rt::ScriptPlayer> script;
+  std::optional<velocity::realtime::ScriptPlayer> script;
   long max_frames = 0;
   std::string record_dir;
   long frames = 0;
@@ -159,30 +159,30 @@ void show_frame(Glut& g) {
 
 // GLUT's special keys for the presenter's, or 0 for none.
 int special_key(int key) {
-  if (key >= velocity::rt::KeyF1 && key <= velocity::rt::KeyF12) return GLUT_KEY_F1 + (key - velocity::rt::KeyF1);
+  if (key >= velocity::realtime::KeyF1 && key <= velocity::realtime::KeyF12) return GLUT_KEY_F1 + (key - velocity::realtime::KeyF1);
   switch (key) {
-    case velocity::rt::KeyLeft: return GLUT_KEY_LEFT;
-    case velocity::rt::KeyRight: return GLUT_KEY_RIGHT;
-    case velocity::rt::KeyUp: return GLUT_KEY_UP;
-    case velocity::rt::KeyDown: return GLUT_KEY_DOWN;
-    case velocity::rt::KeyPageUp: return GLUT_KEY_PAGE_UP;
-    case velocity::rt::KeyPageDown: return GLUT_KEY_PAGE_DOWN;
+    case velocity::realtime::KeyLeft: return GLUT_KEY_LEFT;
+    case velocity::realtime::KeyRight: return GLUT_KEY_RIGHT;
+    case velocity::realtime::KeyUp: return GLUT_KEY_UP;
+    case velocity::realtime::KeyDown: return GLUT_KEY_DOWN;
+    case velocity::realtime::KeyPageUp: return GLUT_KEY_PAGE_UP;
+    case velocity::realtime::KeyPageDown: return GLUT_KEY_PAGE_DOWN;
     default: return 0;
   }
 }
 
-int glut_button(velocity::rt::MouseButton b) {
+int glut_button(velocity::realtime::MouseButton b) {
   switch (b) {
-    case velocity::rt::MouseButton::Middle: return GLUT_MIDDLE_BUTTON;
-    case velocity::rt::MouseButton::Right: return GLUT_RIGHT_BUTTON;
+    case velocity::realtime::MouseButton::Middle: return GLUT_MIDDLE_BUTTON;
+    case velocity::realtime::MouseButton::Right: return GLUT_RIGHT_BUTTON;
     default: return GLUT_LEFT_BUTTON;
   }
 }
 
 void dispatch(Glut& g, const InputEvent& e) {
   g.input.apply(e);
-  g.modifiers = (g.input.held(velocity::rt::KeyShift) ? GLUT_ACTIVE_SHIFT : 0) |
-                (g.input.held(velocity::rt::KeyCtrl) ? GLUT_ACTIVE_CTRL : 0);
+  g.modifiers = (g.input.held(velocity::realtime::KeyShift) ? GLUT_ACTIVE_SHIFT : 0) |
+                (g.input.held(velocity::realtime::KeyCtrl) ? GLUT_ACTIVE_CTRL : 0);
   const int mx = g.input.mouse_x() < 0 ? 0 : g.input.mouse_x(), my = g.input.mouse_y() < 0 ? 0 : g.input.mouse_y();
   switch (e.kind) {
     case InputEvent::KeyDown:
@@ -203,9 +203,9 @@ void dispatch(Glut& g, const InputEvent& e) {
       if (g.mouse) g.mouse(glut_button(e.button), e.kind == InputEvent::MouseDown ? GLUT_DOWN : GLUT_UP, e.x, e.y);
       break;
     case InputEvent::MouseMove: {
-      const bool dragging = g.input.button(velocity::rt::MouseButton::Left) ||
-                            g.input.button(velocity::rt::MouseButton::Middle) ||
-                            g.input.button(velocity::rt::MouseButton::Right);
+      const bool dragging = g.input.button(velocity::realtime::MouseButton::Left) ||
+                            g.input.button(velocity::realtime::MouseButton::Middle) ||
+                            g.input.button(velocity::realtime::MouseButton::Right);
       if (auto f = dragging ? g.motion : g.passive_motion) f(e.x, e.y);
       break;
     }
@@ -254,7 +254,7 @@ void glutInit(int* argcp, char** argv) {
   g.start = Clock::now();
   if (const char* s = std::getenv("VELOCITY_GLUT_SCRIPT"); s && *s) {
     try {
-      g.script.emplace(velocity::rt::load_script(s));
+      g.script.emplace(velocity::realtime::load_script(s));
     } catch (const velocity::Error& e) {
       fail(e.what());
     }

@@ -12,7 +12,7 @@
 #include "velocity/load.hpp"
 #include "velocity/texture.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -527,4 +527,4 @@ void DriveProgram::sound(Synth& synth) {
   for (; pending_crashes_ > 0; --pending_crashes_) synth.play(Effect::Crash);
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

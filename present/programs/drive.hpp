@@ -12,7 +12,7 @@
 
 #include "runtime/shell.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 struct DriveOptions {
   std::string car;         // a model file for the body (ASC, ...); empty: the built-in car
@@ -94,4 +94,4 @@ class DriveProgram : public Game {
   int collisions_ = 0, pending_crashes_ = 0;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

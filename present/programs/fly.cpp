@@ -10,7 +10,7 @@
 #include "runtime/synth.hpp"
 #include "velocity/load.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -249,4 +249,4 @@ void FlyProgram::sound(Synth& synth) {
   for (; pending_crashes_ > 0; --pending_crashes_) synth.play(Effect::Crash);
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

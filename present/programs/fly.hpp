@@ -12,7 +12,7 @@
 
 #include "runtime/shell.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 struct FlyOptions {
   std::vector<std::string> models;  // PLG (or any) files; empty: cubes, pyramids, tori
@@ -78,4 +78,4 @@ class FlyProgram : public Game {
   float clearance_ = 1e30f;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 Mesh make_pyramid() {
   Mesh m;
@@ -75,4 +75,4 @@ Mesh make_cone(int segments) {
   return m;
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

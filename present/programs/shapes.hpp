@@ -3,7 +3,7 @@
 
 #include "velocity/mesh.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 // A square pyramid, base 1 across at y = -0.5, apex at y = +0.5.
 Mesh make_pyramid();
@@ -26,4 +26,4 @@ Mesh make_shaped_box(F&& shape) {
   return m;
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

@@ -10,7 +10,7 @@
 #include "velocity/error.hpp"
 #include "velocity/view_setup.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -218,4 +218,4 @@ void ViewerProgram::frame(FrameDescription& out) {
   }
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

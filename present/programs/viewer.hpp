@@ -10,7 +10,7 @@
 #include "runtime/program.hpp"
 #include "velocity/load.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 struct ViewerOptions {
   std::string model;          // empty: the demo scene
@@ -60,4 +60,4 @@ class ViewerProgram : public Program {
   double message_time_ = 0;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 void fill_rect(Canvas& c, int x, int y, int w, int h, Rgba color) {
   int x0 = std::max(x, 0), y0 = std::max(y, 0);
@@ -93,9 +93,9 @@ void DrawList::draw(Canvas& c) const {
       case DrawOp::Rect: fill_rect(c, op.x, op.y, op.w, op.h, op.color); break;
       case DrawOp::Text: draw_text(c, op.x, op.y, op.text, op.color, op.scale); break;
       case DrawOp::TextShadow: draw_text_shadow(c, op.x, op.y, op.text, op.color, op.scale); break;
-      case DrawOp::Fade: rt::fade(c, op.amount); break;
+      case DrawOp::Fade: realtime::fade(c, op.amount); break;
     }
   }
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

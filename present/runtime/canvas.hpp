@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 struct Rgba {
   uint8_t r = 255, g = 255, b = 255, a = 255;
@@ -68,4 +68,4 @@ class DrawList {
   std::vector<DrawOp> ops_;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

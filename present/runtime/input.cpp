@@ -2,7 +2,7 @@
 
 #include <cctype>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -62,4 +62,4 @@ void InputState::apply(const InputEvent& e) {
   }
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

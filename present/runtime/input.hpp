@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 // Keys: lowercase ASCII letters, digits and punctuation stand for themselves; the others
 // are named below (values above 127).
@@ -64,4 +64,4 @@ class InputState {
   int mx_ = -1, my_ = -1;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

@@ -12,7 +12,7 @@
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -219,4 +219,4 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   return result;
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

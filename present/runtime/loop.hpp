@@ -15,7 +15,7 @@
 #include "runtime/program.hpp"
 #include "runtime/script.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 // Where frames are shown and events come from: the SDL window (present/sdl), or none.
 class Presenter {
@@ -68,4 +68,4 @@ double percentile(std::vector<double> samples, double fraction);
 // "frames=N size=WxH median_ms=... p99_ms=... fps=... render_median_ms=... render_p99_ms=..."
 std::string summarize(const LoopResult& result);
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

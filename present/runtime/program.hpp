@@ -11,7 +11,7 @@
 #include "velocity/renderer.hpp"
 #include "velocity/scene.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 class Synth;
 
@@ -49,4 +49,4 @@ class Program {
   int width_ = 640, height_ = 480;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

@@ -8,7 +8,7 @@
 
 #include "velocity/error.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -159,4 +159,4 @@ void ScriptPlayer::due(double time, std::vector<InputEvent>& out) {
     out.push_back(script_.events[next_++].event);
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

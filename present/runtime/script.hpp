@@ -23,7 +23,7 @@
 
 #include "runtime/input.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 struct TimedEvent {
   double time = 0;
@@ -56,4 +56,4 @@ class ScriptPlayer {
   size_t next_ = 0;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -193,4 +193,4 @@ void Shell::frame(FrameDescription& out) {
   d.fade(fade_);
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

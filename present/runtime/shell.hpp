@@ -10,7 +10,7 @@
 #include "runtime/program.hpp"
 #include "runtime/synth.hpp"
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 // A program that can also play itself behind the menus.
 class Game : public Program {
@@ -69,4 +69,4 @@ class Shell : public Program {
   std::vector<Effect> effects_;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

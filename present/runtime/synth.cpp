@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 namespace {
 
@@ -103,4 +103,4 @@ void Synth::render(int16_t* out, size_t count) {
   }
 }
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

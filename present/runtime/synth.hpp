@@ -9,7 +9,7 @@
 #include <mutex>
 #include <vector>
 
-namespace velocity::rt {
+namespace velocity::realtime {
 
 enum class Effect { Click, Crash, Whoosh };
 
@@ -53,4 +53,4 @@ class Synth {
   uint32_t noise_ = 0x12345678u;
 };
 
-}  // namespace velocity::rt
+}  // namespace velocity::realtime

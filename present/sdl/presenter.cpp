@@ -10,32 +10,32 @@
 
 namespace velocity::present {
 
-using rt::InputEvent;
-using rt::Key;
+using realtime::InputEvent;
+using realtime::Key;
 
 namespace {
 
 Key translate_key(SDL_Keycode k) {
   switch (k) {
-    case SDLK_LEFT: return rt::KeyLeft;
-    case SDLK_RIGHT: return rt::KeyRight;
-    case SDLK_UP: return rt::KeyUp;
-    case SDLK_DOWN: return rt::KeyDown;
+    case SDLK_LEFT: return realtime::KeyLeft;
+    case SDLK_RIGHT: return realtime::KeyRight;
+    case SDLK_UP: return realtime::KeyUp;
+    case SDLK_DOWN: return realtime::KeyDown;
     case SDLK_LCTRL:
-    case SDLK_RCTRL: return rt::KeyCtrl;
+    case SDLK_RCTRL: return realtime::KeyCtrl;
     case SDLK_LSHIFT:
-    case SDLK_RSHIFT: return rt::KeyShift;
-    case SDLK_PAGEUP: return rt::KeyPageUp;
-    case SDLK_PAGEDOWN: return rt::KeyPageDown;
+    case SDLK_RSHIFT: return realtime::KeyShift;
+    case SDLK_PAGEUP: return realtime::KeyPageUp;
+    case SDLK_PAGEDOWN: return realtime::KeyPageDown;
     case SDLK_RETURN:
-    case SDLK_KP_ENTER: return rt::KeyEnter;
+    case SDLK_KP_ENTER: return realtime::KeyEnter;
     case SDLK_KP_PLUS: return Key('+');
     case SDLK_KP_MINUS: return Key('-');
     default: break;
   }
-  if (k >= SDLK_F1 && k <= SDLK_F12) return Key(rt::KeyF1 + (k - SDLK_F1));
+  if (k >= SDLK_F1 && k <= SDLK_F12) return Key(realtime::KeyF1 + (k - SDLK_F1));
   if (k > 0 && k < 127) return Key(k);  // SDL keycodes are ASCII for these (lowercase letters)
-  return rt::KeyNone;
+  return realtime::KeyNone;
 }
 
 }  // namespace
@@ -92,9 +92,9 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
         if (ev.key.repeat) continue;
         e.kind = ev.type == SDL_KEYDOWN ? InputEvent::KeyDown : InputEvent::KeyUp;
         e.key = translate_key(ev.key.keysym.sym);
-        if (e.key == rt::KeyNone) continue;
+        if (e.key == realtime::KeyNone) continue;
         // Alt+Enter toggles fullscreen, as F11 does.
-        if (e.key == rt::KeyEnter && (ev.key.keysym.mod & KMOD_ALT)) e.key = rt::KeyF11;
+        if (e.key == realtime::KeyEnter && (ev.key.keysym.mod & KMOD_ALT)) e.key = realtime::KeyF11;
         break;
       case SDL_MOUSEMOTION:
         // With a logical size set, SDL gives positions in frame pixels.
@@ -104,9 +104,9 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
       case SDL_MOUSEBUTTONDOWN:
       case SDL_MOUSEBUTTONUP:
         e.kind = ev.type == SDL_MOUSEBUTTONDOWN ? InputEvent::MouseDown : InputEvent::MouseUp;
-        e.button = ev.button.button == SDL_BUTTON_RIGHT    ? rt::MouseButton::Right
-                   : ev.button.button == SDL_BUTTON_MIDDLE ? rt::MouseButton::Middle
-                                                           : rt::MouseButton::Left;
+        e.button = ev.button.button == SDL_BUTTON_RIGHT    ? realtime::MouseButton::Right
+                   : ev.button.button == SDL_BUTTON_MIDDLE ? realtime::MouseButton::Middle
+                                                           : realtime::MouseButton::Left;
         e.x = ev.button.x, e.y = ev.button.y;
         break;
       case SDL_MOUSEWHEEL:
@@ -179,7 +179,7 @@ std::string SdlPresenter::driver() const {
 namespace {
 
 void audio_callback(void* user, Uint8* stream, int len) {
-  static_cast<rt::Synth*>(user)->render(reinterpret_cast<int16_t*>(stream), size_t(len) / 2);
+  static_cast<realtime::Synth*>(user)->render(reinterpret_cast<int16_t*>(stream), size_t(len) / 2);
 }
 
 // Whether the machine could have a sound device: a sound card, a sound server, or a
@@ -195,7 +195,7 @@ bool may_have_sound() {
 
 }  // namespace
 
-SdlAudio::SdlAudio(rt::Synth& synth) : synth_(synth) {
+SdlAudio::SdlAudio(realtime::Synth& synth) : synth_(synth) {
   // No audio: silently off.
   if (!may_have_sound() || SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) return;
   SDL_AudioSpec want{}, have{};

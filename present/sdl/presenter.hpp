@@ -1,6 +1,6 @@
 // The SDL2 window: frames go to a streaming texture, scaled to the window with nearest
 // filtering and letterboxed to keep their aspect ratio, presented with vertical sync
-// (no tearing). Translates SDL's events to rt::InputEvent, with mouse positions in
+// (no tearing). Translates SDL's events to realtime::InputEvent, with mouse positions in
 // frame pixels.
 #pragma once
 
@@ -20,7 +20,7 @@ struct WindowOptions {
   bool at_origin = false;  // place the window at (0, 0) (tests read the screen there)
 };
 
-class SdlPresenter : public rt::Presenter {
+class SdlPresenter : public realtime::Presenter {
  public:
   // Throws velocity::Error with SDL's reason when no window can be opened (no display).
   explicit SdlPresenter(const WindowOptions& options);
@@ -28,7 +28,7 @@ class SdlPresenter : public rt::Presenter {
   SdlPresenter(const SdlPresenter&) = delete;
   SdlPresenter& operator=(const SdlPresenter&) = delete;
 
-  void poll(std::vector<rt::InputEvent>& out) override;
+  void poll(std::vector<realtime::InputEvent>& out) override;
   void present(const uint8_t* rgba, int width, int height) override;
   void set_title(const std::string& title) override;
   void toggle_fullscreen() override;
@@ -45,14 +45,14 @@ class SdlPresenter : public rt::Presenter {
 // no driver): `active()` says whether sound is playing.
 class SdlAudio {
  public:
-  explicit SdlAudio(rt::Synth& synth);
+  explicit SdlAudio(realtime::Synth& synth);
   ~SdlAudio();
   SdlAudio(const SdlAudio&) = delete;
   SdlAudio& operator=(const SdlAudio&) = delete;
   bool active() const { return device_ != 0; }
 
  private:
-  rt::Synth& synth_;
+  realtime::Synth& synth_;
   uint32_t device_ = 0;
 };
 

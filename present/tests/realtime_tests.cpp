@@ -18,7 +18,7 @@
 #include "velocity/error.hpp"
 
 using namespace velocity;
-using namespace velocity::rt;
+using namespace velocity::realtime;
 
 namespace {
 

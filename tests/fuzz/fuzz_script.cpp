@@ -12,20 +12,20 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace velocity;
   std::string_view text(reinterpret_cast<const char*>(data), size);
-  rt::Script script;
+  realtime::Script script;
   try {
-    script = rt::parse_script(text, "fuzz.txt");
+    script = realtime::parse_script(text, "fuzz.txt");
   } catch (const Error&) {
     return 0;
   }
-  if (script.events.size() > rt::kMaxScriptEvents) std::abort();
+  if (script.events.size() > realtime::kMaxScriptEvents) std::abort();
   double last = 0;
-  for (const rt::TimedEvent& e : script.events) {
+  for (const realtime::TimedEvent& e : script.events) {
     if (!std::isfinite(e.time) || e.time < 0 || e.time < last) std::abort();
     last = e.time;
   }
-  rt::ScriptPlayer player(script);
-  std::vector<rt::InputEvent> events;
+  realtime::ScriptPlayer player(script);
+  std::vector<realtime::InputEvent> events;
   player.due(2e6, events);
   if (events.size() != script.events.size() || !player.finished()) std::abort();
   return 0;

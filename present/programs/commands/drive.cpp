@@ -35,17 +35,17 @@ std::function<int()> add_drive_command(CLI::App& app) {
   cmd->add_flag("--skip-menu", args->skip_menu, "Start driving at once (no title screen or menu)");
   add_realtime_options(cmd, args->realtime);
   return [args] {
-    rt::DriveOptions o;
+    realtime::DriveOptions o;
     o.car = args->car;
     o.car_yaw = args->car_yaw;
     o.high_quality = args->hq;
-    rt::DriveProgram drive(o);
-    rt::ShellText text;
+    realtime::DriveProgram drive(o);
+    realtime::ShellText text;
     text.title = "VELOCITY DRIVE";
     text.subtitle = "A DRIVING SIMULATION";
     text.start = "DRIVE";
     text.credits = kCredits;
-    rt::Shell shell(drive, text, args->skip_menu);
+    realtime::Shell shell(drive, text, args->skip_menu);
     return run_realtime(shell, args->realtime, "800x600", true);
   };
 }

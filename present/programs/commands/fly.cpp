@@ -40,7 +40,7 @@ std::function<int()> add_fly_command(CLI::App& app) {
   cmd->add_flag("--skip-menu", args->skip_menu, "Start flying at once (no title screen or menu)");
   add_realtime_options(cmd, args->realtime);
   return [args] {
-    rt::FlyOptions o;
+    realtime::FlyOptions o;
     o.models = args->models;
     if (!args->plg_dir.empty()) {
       std::error_code ec;
@@ -57,13 +57,13 @@ std::function<int()> add_fly_command(CLI::App& app) {
     if (args->objects < 1 || args->objects > 2000) throw Error("--objects must be 1..2000");
     o.objects = args->objects;
     o.seed = args->seed;
-    rt::FlyProgram fly(o);
-    rt::ShellText text;
+    realtime::FlyProgram fly(o);
+    realtime::ShellText text;
     text.title = "VELOCITY FLIGHT";
     text.subtitle = "A POLYGON FLYTHROUGH";
     text.start = "FLY";
     text.credits = kCredits;
-    rt::Shell shell(fly, text, args->skip_menu);
+    realtime::Shell shell(fly, text, args->skip_menu);
     return run_realtime(shell, args->realtime, "640x480", true);
   };
 }

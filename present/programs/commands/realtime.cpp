@@ -30,8 +30,8 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_option("--threads", a.threads, "Threads rasterizing tiles (0: every core)");
 }
 
-int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string& default_size, bool sound) {
-  rt::LoopOptions lo;
+int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::string& default_size, bool sound) {
+  realtime::LoopOptions lo;
   std::string size = a.size.empty() ? default_size : a.size;
   if (size == "window") {
     lo.follow_window = true;
@@ -44,7 +44,7 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
   if (a.linger < 0 || a.linger > 3600) throw Error("--linger must be 0..3600 seconds");
   lo.frames = a.frames;
   lo.record_dir = a.record;
-  if (!a.script.empty()) lo.script = rt::load_script(a.script);
+  if (!a.script.empty()) lo.script = realtime::load_script(a.script);
   lo.overlay = !a.no_overlay;
   lo.linger = a.linger;
   lo.threads = a.threads;
@@ -67,12 +67,12 @@ int run_realtime(rt::Program& program, const RealtimeArgs& a, const std::string&
       std::fprintf(stderr, "velocity: %s; running headless\n", e.what());
     }
   }
-  rt::Synth synth;
+  realtime::Synth synth;
   std::unique_ptr<present::SdlAudio> audio;
   if (sound && !a.mute) audio = std::make_unique<present::SdlAudio>(synth);
   lo.synth = &synth;
   lo.pace_to_clock = audio && audio->active();
-  rt::run_loop(program, window.get(), lo);
+  realtime::run_loop(program, window.get(), lo);
   audio.reset();
   window.reset();
   SDL_Quit();

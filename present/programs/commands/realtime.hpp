@@ -30,6 +30,6 @@ struct RealtimeArgs {
 void add_realtime_options(CLI::App* cmd, RealtimeArgs& args);
 // Runs `program` with a window (or headless), sound and the main loop; prints the
 // frame-time statistics at exit. `default_size` when --size is not given.
-int run_realtime(rt::Program& program, const RealtimeArgs& args, const std::string& default_size, bool sound);
+int run_realtime(realtime::Program& program, const RealtimeArgs& args, const std::string& default_size, bool sound);
 
 }  // namespace velocity::cli

@@ -24,13 +24,13 @@ std::function<int()> add_view_command(CLI::App& app) {
   cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
   add_realtime_options(cmd, args->realtime);
   return [args] {
-    rt::ViewerOptions o;
+    realtime::ViewerOptions o;
     o.model = args->model;
     o.load.swap_yz = args->swap_yz;
     o.cull_back_faces = args->cull;
     o.ssaa = args->ssaa;
     o.screenshot_prefix = args->shot;
-    rt::ViewerProgram viewer(o);
+    realtime::ViewerProgram viewer(o);
     return run_realtime(viewer, args->realtime, "800x600", false);
   };
 }
