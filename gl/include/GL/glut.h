@@ -11,7 +11,7 @@
  *
  * For tests and recordings (no person at the keyboard), environment variables:
  *   VELOCITY_GLUT_SCRIPT=FILE   timed key presses and mouse events (the format of
- *                               `velocity view --script`, docs in present/rt/script.hpp)
+ *                               `velocity view --script`, docs in present/runtime/script.hpp)
  *   VELOCITY_GLUT_FRAMES=N      glutMainLoop returns after N frames have been shown
  *   VELOCITY_GLUT_RECORD=DIR    every frame shown is also written as DIR/frame_NNNNN.png
  * With SDL_VIDEODRIVER=dummy no display is needed. */
