@@ -48,7 +48,8 @@ int nearest_power(int v) {
   }
 }
 
-// Box-filter resampling of RGBA8 texels (each output texel averages its footprint).
+// Box-filter resampling of RGBA8 texels (each output texel averages its footprint), to
+// bring level 0 to power-of-two sides.
 std::vector<uint32_t> scale(const std::vector<uint32_t>& in, int w, int h, int nw, int nh) {
   std::vector<uint32_t> out(size_t(nw) * nh);
   const double sx = double(w) / nw, sy = double(h) / nh;
@@ -144,17 +145,18 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
   try {
     auto texels = velocity::gl::unpack_rgba(format, type, width, height, alignment, data);
     if (!texels) return GLU_INVALID_ENUM;
-    std::vector<uint32_t> level = std::move(*texels);
-    int w = std::min(nearest_power(width), velocity::gl::kMaxTextureSize);
-    int h = std::min(nearest_power(height), velocity::gl::kMaxTextureSize);
-    if (w != width || h != height) level = scale(level, width, height, w, h);
+    const int w = std::min(nearest_power(width), velocity::gl::kMaxTextureSize);
+    const int h = std::min(nearest_power(height), velocity::gl::kMaxTextureSize);
+    velocity::Texture::Level level{w, h, std::move(*texels)};
+    if (w != width || h != height) level.texels = scale(level.texels, width, height, w, h);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // Below level 0 the sides are powers of two, each level exactly half the one above:
+    // the box filter over each 2x2 block is the engine's mip-map builder.
     for (int l = 0;; ++l) {
-      glTexImage2D(GL_TEXTURE_2D, l, internalFormat, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, level.data());
-      if (w == 1 && h == 1) break;
-      const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
-      level = scale(level, w, h, nw, nh);
-      w = nw, h = nh;
+      glTexImage2D(GL_TEXTURE_2D, l, internalFormat, level.width, level.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   level.texels.data());
+      if (level.width == 1 && level.height == 1) break;
+      level = velocity::next_mip_level(level);
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
   } catch (const std::exception&) {

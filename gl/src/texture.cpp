@@ -178,30 +178,6 @@ void Context::tex_env(GLenum target, GLenum pname, const float* v) {
   changed();
 }
 
-namespace {
-// The next mip level as a 2x2 box average (a side of 1 repeats its texel), the way
-// Mesa generates mip-maps.
-Texture::Level half(const Texture::Level& up) {
-  const int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2);
-  Texture::Level next{w, h, std::vector<uint32_t>(size_t(w) * h)};
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
-      const int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
-      const uint32_t t[4] = {up.texels[size_t(y0) * up.width + x0], up.texels[size_t(y0) * up.width + x1],
-                             up.texels[size_t(y1) * up.width + x0], up.texels[size_t(y1) * up.width + x1]};
-      uint32_t out = 0;
-      for (int c = 0; c < 4; ++c) {
-        uint32_t sum = 0;
-        for (uint32_t v : t) sum += (v >> (8 * c)) & 0xff;
-        out |= ((sum + 2) / 4) << (8 * c);
-      }
-      next.texels[size_t(y) * w + x] = out;
-    }
-  return next;
-}
-}  // namespace
-
 // The texture the renderer samples for the next draws, or null when texturing is off
 // for it (GL: an incomplete texture disables texturing).
 const Texture* Context::texture_for_draw(TextureObject& t) {
@@ -214,7 +190,7 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
     if (t.generate_mipmap) {
       for (size_t i = 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
-        t.levels[i] = half(t.levels[i - 1]);
+        t.levels[i] = next_mip_level(t.levels[i - 1]);
     }
     std::vector<Texture::Level> levels{base};
     if (mip) {
