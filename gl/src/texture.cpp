@@ -22,9 +22,9 @@ GLenum Context::base_format(GLint internal) {
 }
 
 TextureObject* Context::bound_texture() {
-  if (bound_ == 0) return &default_texture_;
-  auto it = textures_.find(bound_);
-  return it == textures_.end() ? &default_texture_ : it->second.get();
+  if (texture_.bound == 0) return &texture_.default_object;
+  auto it = texture_.objects.find(texture_.bound);
+  return it == texture_.objects.end() ? &texture_.default_object : it->second.get();
 }
 
 void Context::gen_textures(GLsizei n, GLuint* out) {
@@ -32,10 +32,10 @@ void Context::gen_textures(GLsizei n, GLuint* out) {
   if (n < 0) return error(GL_INVALID_VALUE);
   if (!out) return;
   for (GLsizei i = 0; i < n; ++i) {
-    while (next_texture_ == 0 || textures_.count(next_texture_)) ++next_texture_;
-    if (textures_.size() >= 65536) return error(GL_OUT_OF_MEMORY);
-    textures_[next_texture_] = std::make_unique<TextureObject>();
-    out[i] = next_texture_++;
+    while (texture_.next_name == 0 || texture_.objects.count(texture_.next_name)) ++texture_.next_name;
+    if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
+    texture_.objects[texture_.next_name] = std::make_unique<TextureObject>();
+    out[i] = texture_.next_name++;
   }
 }
 
@@ -45,20 +45,20 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
   if (!ids) return;
   for (GLsizei i = 0; i < n; ++i) {
     if (ids[i] == 0) continue;
-    if (ids[i] == bound_) bound_ = 0, changed();
-    textures_.erase(ids[i]);  // draws already recorded keep their built texture
+    if (ids[i] == texture_.bound) texture_.bound = 0, changed();
+    texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }
 
 void Context::bind_texture(GLenum target, GLuint id) {
   if (in_begin_error()) return;
   if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
-  if (id != 0 && !textures_.count(id)) {
-    if (textures_.size() >= 65536) return error(GL_OUT_OF_MEMORY);
-    textures_[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
+  if (id != 0 && !texture_.objects.count(id)) {
+    if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
+    texture_.objects[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
   }
-  if (id != bound_) changed();
-  bound_ = id;
+  if (id != texture_.bound) changed();
+  texture_.bound = id;
 }
 
 namespace {
@@ -169,9 +169,9 @@ void Context::tex_env(GLenum target, GLenum pname, const float* v) {
     const GLenum m = to_enum(v[0]);
     if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != 0x0104 /* GL_ADD */)
       return error(GL_INVALID_ENUM);
-    env_mode_ = m;
+    texture_.env_mode = m;
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    env_color_ = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
+    texture_.env_color = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
   } else {
     return error(GL_INVALID_ENUM);
   }

@@ -1,0 +1,180 @@
+// pGL's state, one struct per GL area as Mesa's gl_context holds it (src/mesa/main/
+// mtypes.h): transform, lighting, raster (per-fragment and rasterization), textures,
+// vertex arrays, display lists. Each area's entry points are in the .cpp of its name
+// (transform.cpp, lighting.cpp, raster_state.cpp, texture.cpp, arrays.cpp, lists.cpp);
+// the vertex stage (vertex.cpp) and the batches (frame.cpp) read them.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "velocity/math.hpp"
+#include "velocity/primitives.hpp"
+#include "velocity/texture.hpp"
+
+namespace velocity::gl {
+
+// A 4x4 matrix as OpenGL stores it: column-major, m[col * 4 + row].
+struct M4 {
+  float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  Vec4 operator*(const Vec4& v) const {
+    return {m[0] * v.x + m[4] * v.y + m[8] * v.z + m[12] * v.w, m[1] * v.x + m[5] * v.y + m[9] * v.z + m[13] * v.w,
+            m[2] * v.x + m[6] * v.y + m[10] * v.z + m[14] * v.w, m[3] * v.x + m[7] * v.y + m[11] * v.z + m[15] * v.w};
+  }
+  M4 operator*(const M4& b) const;
+  bool is_identity() const;
+};
+// The inverse; false (and `out` unchanged) for a singular matrix.
+bool invert(const M4& a, M4& out);
+
+// Implementation limits (what glGet reports).
+constexpr int kMaxLights = 8;
+constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDepth = 10;
+constexpr int kMaxTextureSize = 4096;
+constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
+constexpr int kMaxListNesting = 64;
+constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
+constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
+constexpr size_t kMaxBatchVertices = size_t(1) << 20;     // more: the batch goes to the renderer
+// A strip, fan, loop or polygon longer than this (GL_OUT_OF_MEMORY; the rest is dropped).
+constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
+// Commands one outermost glCallList may run, nested lists included: lists that call each
+// other twice over would otherwise run 2^64 of them (GL_OUT_OF_MEMORY, the rest skipped).
+constexpr uint64_t kMaxListCallCommands = uint64_t(1) << 25;
+constexpr int kMaxViewport = 16384;
+
+// --- transform (transform.cpp): matrix stacks, viewport, depth range ---------------
+struct TransformState {
+  GLenum matrix_mode = GL_MODELVIEW;
+  std::vector<M4> modelview{M4{}}, projection{M4{}}, texture{M4{}};  // the stacks, top last
+  // Derived from the tops when a glBegin needs them (update_derived).
+  M4 mvp;
+  M4 normal_matrix;  // inverse transpose of the modelview (upper 3x3 used)
+  bool derived_dirty = true, texture_identity = true;
+  GLint viewport_x = 0, viewport_y = 0, viewport_width = 0, viewport_height = 0;
+  float depth_near = 0, depth_far = 1;
+  bool normalize = false, rescale_normal = false;
+};
+
+// --- lighting (lighting.cpp): lights, materials, colour material ------------------
+struct Light {
+  Vec4 ambient{0, 0, 0, 1}, diffuse{0, 0, 0, 1}, specular{0, 0, 0, 1};
+  Vec4 position{0, 0, 1, 0};  // eye space (transformed by the modelview at glLight time)
+  Vec3 spot_direction{0, 0, -1};  // eye space
+  float spot_exponent = 0, spot_cutoff = 180;
+  float constant = 1, linear = 0, quadratic = 0;
+  bool enabled = false;
+};
+
+struct Material {
+  Vec4 ambient{0.2f, 0.2f, 0.2f, 1}, diffuse{0.8f, 0.8f, 0.8f, 1}, specular{0, 0, 0, 1}, emission{0, 0, 0, 1};
+  float shininess = 0;
+};
+
+struct LightingState {
+  bool enabled = false;  // GL_LIGHTING
+  Light lights[kMaxLights];
+  Vec4 model_ambient{0.2f, 0.2f, 0.2f, 1};
+  bool two_side = false, local_viewer = false;
+  Material materials[2];  // front, back
+  bool color_material = false;
+  GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+  GLenum shade_model = GL_SMOOTH;
+  LightingState() { lights[0].diffuse = lights[0].specular = {1, 1, 1, 1}; }
+};
+
+// --- raster state (raster_state.cpp): per-fragment tests, blending, fog, clears, ----
+// --- masks, culling, polygon mode and offset, point and line size -----------------
+struct RasterState {
+  bool scissor_test = false;
+  GLint scissor_x = 0, scissor_y = 0, scissor_width = 0, scissor_height = 0;
+  Vec4 clear_color{0, 0, 0, 0};
+  float clear_depth = 1;
+  bool depth_test = false, depth_write = true;
+  GLenum depth_func = GL_LESS;
+  bool color_mask[4] = {true, true, true, true};
+  bool blend = false;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0;
+  bool fog = false;
+  GLenum fog_mode = GL_EXP;
+  float fog_start = 0, fog_end = 1, fog_density = 1;
+  Vec4 fog_color{0, 0, 0, 0};
+  GLenum hints[5] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
+  bool cull = false;
+  GLenum cull_mode = GL_BACK, front_face = GL_CCW;
+  GLenum polygon_mode[2] = {GL_FILL, GL_FILL};  // front, back
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0, offset_units = 0;
+  float point_size = 1, line_width = 1;
+  uint8_t color_mask_bits() const {
+    return uint8_t((color_mask[0] ? 1 : 0) | (color_mask[1] ? 2 : 0) | (color_mask[2] ? 4 : 0) | (color_mask[3] ? 8 : 0));
+  }
+};
+
+// --- textures (texture.cpp) -------------------------------------------------------
+struct TextureObject {
+  // Levels as glTexImage2D gave them (RGBA8 after the internal format was applied);
+  // width 0: the level was never specified.
+  std::array<Texture::Level, kMaxTextureLevels> levels{};
+  TexFormat format = TexFormat::Rgba;
+  GLenum internal_format = GL_RGBA;
+  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
+  Vec4 border{0, 0, 0, 0};
+  bool generate_mipmap = false;
+  // What the renderer samples, built when first drawn after a change (null: not yet,
+  // or incomplete). Draws already recorded keep their own reference.
+  std::shared_ptr<const Texture> built;
+  bool dirty = true, complete = false;
+};
+
+struct TextureState {
+  bool enabled = false;  // GL_TEXTURE_2D
+  std::map<GLuint, std::unique_ptr<TextureObject>> objects;
+  TextureObject default_object;  // name 0
+  GLuint bound = 0;
+  GLuint next_name = 1;
+  GLenum env_mode = GL_MODULATE;
+  Vec4 env_color{0, 0, 0, 0};
+};
+
+// --- vertex arrays (arrays.cpp) ---------------------------------------------------
+// One vertex array (glVertexPointer and the like).
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+  Vec4 fetch(GLint index, Vec4 defaults) const;
+};
+
+struct ArrayState {
+  ClientArray vertex, normal, color, texcoord;
+};
+
+// --- display lists (lists.cpp) ----------------------------------------------------
+class Context;
+using ListCommand = std::function<void(Context&)>;
+
+struct ListState {
+  std::map<GLuint, std::vector<ListCommand>> stored;
+  GLuint compiling = 0;  // the list between glNewList and glEndList, or 0
+  GLenum mode = GL_COMPILE;
+  std::vector<ListCommand> recorded;  // what glNewList has recorded so far
+  bool overflow = false;
+  int depth = 0;        // glCallList nesting now
+  uint64_t budget = 0;  // commands the outermost glCallList may still run
+  GLuint base = 0;      // glListBase
+};
+
+}  // namespace velocity::gl
