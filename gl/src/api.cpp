@@ -21,7 +21,8 @@ using velocity::Vec4;
 using velocity::gl::Context;
 using velocity::gl::current;
 using velocity::gl::ListCommand;
-using velocity::gl::M4;
+using velocity::Mat4;
+using velocity::gl::load_column_major;
 
 namespace {
 
@@ -63,17 +64,6 @@ float i2f(GLint v) { return float((2.0 * v + 1.0) / 4294967295.0); }
 float ub2f(GLubyte v) { return v / 255.0f; }
 float us2f(GLushort v) { return v / 65535.0f; }
 float ui2f(GLuint v) { return float(v / 4294967295.0); }
-
-M4 from_floats(const GLfloat* m) {
-  M4 r;
-  std::memcpy(r.m, m, sizeof r.m);
-  return r;
-}
-M4 from_doubles(const GLdouble* m) {
-  M4 r;
-  for (int i = 0; i < 16; ++i) r.m[i] = float(m[i]);
-  return r;
-}
 
 // How many values a glLight / glMaterial / glFog / glLightModel / glTex* parameter has.
 int param_count(GLenum pname) {
@@ -299,22 +289,22 @@ void glPushMatrix(void) { LIST(c.push_matrix()); }
 void glPopMatrix(void) { LIST(c.pop_matrix()); }
 void glLoadMatrixf(const GLfloat* m) {
   if (!m) return;
-  const M4 x = from_floats(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.load(x));
 }
 void glLoadMatrixd(const GLdouble* m) {
   if (!m) return;
-  const M4 x = from_doubles(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.load(x));
 }
 void glMultMatrixf(const GLfloat* m) {
   if (!m) return;
-  const M4 x = from_floats(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.multiply(x));
 }
 void glMultMatrixd(const GLdouble* m) {
   if (!m) return;
-  const M4 x = from_doubles(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.multiply(x));
 }
 void glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) { LIST(c.rotate(angle, x, y, z)); }

@@ -90,9 +90,9 @@ class Context {
 
   // --- transform (transform.cpp)
   void matrix_mode(GLenum mode);
-  void load_identity() { load(M4{}); }
-  void load(const M4& m);
-  void multiply(const M4& m);
+  void load_identity() { load(Mat4{}); }
+  void load(const Mat4& m);
+  void multiply(const Mat4& m);
   void rotate(float degrees, float x, float y, float z);
   void translate(float x, float y, float z);
   void scale(float x, float y, float z);
@@ -100,8 +100,6 @@ class Context {
   void ortho(double l, double r, double b, double t, double n, double f);
   void push_matrix();
   void pop_matrix();
-  const M4& matrix(GLenum which) const;
-  int stack_depth(GLenum which) const;
   void viewport(GLint x, GLint y, GLsizei w, GLsizei h);
   void depth_range(double n, double f);
 
@@ -222,7 +220,7 @@ class Context {
   bool need_eye_ = false;
 
   void update_derived();  // transform.cpp
-  M4& top();
+  std::vector<Mat4>& stack();  // the one glMatrixMode selects
   void apply_color_material();  // lighting.cpp
   TextureObject* bound_texture();  // texture.cpp
   const Texture* texture_for_draw(TextureObject& t);

@@ -13,12 +13,7 @@ void Context::light(GLenum which, GLenum pname, const float* v) {
     case GL_DIFFUSE: l.diffuse = {v[0], v[1], v[2], v[3]}; break;
     case GL_SPECULAR: l.specular = {v[0], v[1], v[2], v[3]}; break;
     case GL_POSITION: l.position = transform_.modelview.back() * Vec4{v[0], v[1], v[2], v[3]}; break;
-    case GL_SPOT_DIRECTION: {
-      const M4& m = transform_.modelview.back();
-      l.spot_direction = {m.m[0] * v[0] + m.m[4] * v[1] + m.m[8] * v[2], m.m[1] * v[0] + m.m[5] * v[1] + m.m[9] * v[2],
-                          m.m[2] * v[0] + m.m[6] * v[1] + m.m[10] * v[2]};
-      break;
-    }
+    case GL_SPOT_DIRECTION: l.spot_direction = transform_.modelview.back().transform_vector({v[0], v[1], v[2]}); break;
     case GL_SPOT_EXPONENT:
       if (v[0] < 0 || v[0] > 128) return error(GL_INVALID_VALUE);
       l.spot_exponent = v[0];

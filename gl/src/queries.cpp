@@ -8,7 +8,10 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   kind = 0;
   out.clear();
   auto v4 = [&](Vec4 c) { out = {c.x, c.y, c.z, c.w}; };
-  auto matrix_out = [&](const M4& m) { out.assign(m.m, m.m + 16); };
+  auto matrix_out = [&](const Mat4& m) {
+    out.resize(16);
+    store_column_major(m, out.data());
+  };
   const TransformState& t = transform_;
   const RasterState& r = raster_;
   bool known = false;

@@ -20,18 +20,21 @@
 
 namespace velocity::gl {
 
-// A 4x4 matrix as OpenGL stores it: column-major, m[col * 4 + row].
-struct M4 {
-  float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  Vec4 operator*(const Vec4& v) const {
-    return {m[0] * v.x + m[4] * v.y + m[8] * v.z + m[12] * v.w, m[1] * v.x + m[5] * v.y + m[9] * v.z + m[13] * v.w,
-            m[2] * v.x + m[6] * v.y + m[10] * v.z + m[14] * v.w, m[3] * v.x + m[7] * v.y + m[11] * v.z + m[15] * v.w};
-  }
-  M4 operator*(const M4& b) const;
-  bool is_identity() const;
-};
-// The inverse; false (and `out` unchanged) for a singular matrix.
-bool invert(const M4& a, M4& out);
+// OpenGL passes and returns matrices column-major, m[col * 4 + row] (glLoadMatrix,
+// glMultMatrix, glGet(GL_MODELVIEW_MATRIX), GLU's arguments); velocity::Mat4, which
+// pGL keeps, is row-major, m[row][col]. The two conversions:
+template <class T>
+Mat4 load_column_major(const T* m) {
+  Mat4 r;
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row) r.m[row][col] = float(m[col * 4 + row]);
+  return r;
+}
+template <class T>
+void store_column_major(const Mat4& a, T* out) {
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row) out[col * 4 + row] = T(a.m[row][col]);
+}
 
 // Implementation limits (what glGet reports).
 constexpr int kMaxLights = 8;
@@ -52,10 +55,10 @@ constexpr int kMaxViewport = 16384;
 // --- transform (transform.cpp): matrix stacks, viewport, depth range ---------------
 struct TransformState {
   GLenum matrix_mode = GL_MODELVIEW;
-  std::vector<M4> modelview{M4{}}, projection{M4{}}, texture{M4{}};  // the stacks, top last
+  std::vector<Mat4> modelview{Mat4{}}, projection{Mat4{}}, texture{Mat4{}};  // the stacks, top last
   // Derived from the tops when a glBegin needs them (update_derived).
-  M4 mvp;
-  M4 normal_matrix;  // inverse transpose of the modelview (upper 3x3 used)
+  Mat4 mvp;            // projection * modelview, clip-space y negated
+  Mat4 normal_matrix;  // inverse transpose of the modelview's upper 3x3
   bool derived_dirty = true, texture_identity = true;
   GLint viewport_x = 0, viewport_y = 0, viewport_width = 0, viewport_height = 0;
   float depth_near = 0, depth_far = 1;

@@ -119,10 +119,7 @@ void Context::vertex(Vec4 v) {
   if (lighting_.enabled || raster_.fog) {
     const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
     if (lighting_.enabled) {
-      const M4& nm = transform_.normal_matrix;
-      Vec3 n{nm.m[0] * normal_.x + nm.m[4] * normal_.y + nm.m[8] * normal_.z,
-             nm.m[1] * normal_.x + nm.m[5] * normal_.y + nm.m[9] * normal_.z,
-             nm.m[2] * normal_.x + nm.m[6] * normal_.y + nm.m[10] * normal_.z};
+      Vec3 n = transform_.normal_matrix.transform_vector(normal_);
       if (transform_.normalize || transform_.rescale_normal) n = normalized(n);
       out.front = lit(eye, n, false);
       out.back = lighting_.two_side ? lit(eye, n, true) : out.front;
