@@ -23,6 +23,7 @@
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
+#include "shading/lighting.hpp"
 #include "velocity/error.hpp"
 #include "velocity/log.hpp"
 #include "velocity/renderer.hpp"
@@ -40,32 +41,6 @@ using geometry::kTrianglesPerJob;
 // sphere first; larger ones go straight to the vertex stage, whose region codes reject
 // their triangles (a bounding sphere costs a pass over every vertex each frame).
 constexpr size_t kSphereTestMaxVertices = 16384;
-
-// The convention's light when a scene brings none: white, from (0.3, 0.5, 1) in eye
-// space, ambient 0.2, diffuse 0.8.
-//
-// The scene's lights in eye space, into `l` (its vectors keep their storage).
-void eye_lights(const Mat4& view, const std::vector<Light>& lights, geometry::EyeLights& l) {
-  l.ambient = {};
-  l.directional.clear(), l.point.clear();
-  if (lights.empty()) {
-    l.ambient = {0.2f, 0.2f, 0.2f};
-    l.directional.push_back({normalize({0.3f, 0.5f, 1.0f}), {0.8f, 0.8f, 0.8f}});
-    return;
-  }
-  for (const Light& light : lights) {
-    switch (light.type) {
-      case LightType::Ambient: l.ambient += light.color; break;
-      case LightType::Directional:
-        l.directional.push_back({normalize(view.transform_vector(light.direction)), light.color});
-        break;
-      case LightType::Point:
-        l.point.push_back({view.transform_point(light.position), light.color, light.constant, light.linear,
-                           light.quadratic});
-        break;
-    }
-  }
-}
 
 // The six planes of the view volume in world space (Gribb and Hartmann: rows of the
 // view-projection matrix), normalised so that a sphere tests with one dot product.
@@ -407,7 +382,7 @@ void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& light
   r.view_projection = r.projection * view;
   p.viewport = viewport_map(0, 0, w, h, 0.0f, 1.0f);
   p.guard = p.viewport.guard;
-  eye_lights(view, lights, p.lights);
+  shading::eye_lights(view, lights, p.lights);
   p.options = options;
   p.mesh_setup = {};
   p.mesh_setup.x1 = p.mesh_setup.px1 = w - 1;

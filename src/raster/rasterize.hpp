@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/lighting.hpp"
+#include "shading/lighting.hpp"
 #include "raster/bins.hpp"
 #include "raster/raster_types.hpp"
 #include "velocity/primitives.hpp"
@@ -106,7 +106,7 @@ struct SamplerView {
 struct DrawState {
   uint32_t object_id = 0;
   // Mesh kernels.
-  geometry::Specular specular;
+  shading::Specular specular;
   SamplerView texture, env_map;
   float env_mix = 1;
   // The fixed-function kernel (PrimitiveBatch draws).
@@ -120,7 +120,7 @@ struct DrawState {
 struct FrameData {
   const Bins* bins = nullptr;
   const std::vector<DrawState>* draws = nullptr;
-  const geometry::EyeLights* lights = nullptr;
+  const shading::EyeLights* lights = nullptr;
   bool depth_test = true;       // false: painter's mode (meshes: no depth test, no depth write)
   bool clear_color = true, clear_depth = true;
   uint32_t color = 0;           // the clear values
