@@ -132,13 +132,13 @@ struct Renderer::Impl {
   // velocity::Error (and changes nothing) when either is out of range.
   void resize(int w, int h, int k) {
     if (k < 1 || k > 4) throw Error("super-sampling factor " + std::to_string(k) + " is out of range (1..4)");
-    if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
+    if (w < 1 || h < 1 || w > kMaxFramebufferSide || h > kMaxFramebufferSide)
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
-                  std::to_string(raster::kMaxFramebufferSide) + " a side)");
-    if (int64_t(w) * k > raster::kMaxFramebufferSide || int64_t(h) * k > raster::kMaxFramebufferSide)
+                  std::to_string(kMaxFramebufferSide) + " a side)");
+    if (int64_t(w) * k > kMaxFramebufferSide || int64_t(h) * k > kMaxFramebufferSide)
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(k) + "x" +
                   std::to_string(k) + " super-sampling needs a sample buffer over " +
-                  std::to_string(raster::kMaxFramebufferSide) + " a side");
+                  std::to_string(kMaxFramebufferSide) + " a side");
     if (w == width && h == height && k == ssaa && framebuffer.width == w * k) return;
     // Bins first, then the framebuffer, which reuses its buffers when they are large
     // enough (a program switching sizes or super-sampling factors allocates nothing)
@@ -463,10 +463,10 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   // GL_MAX_VIEWPORT_DIMS bounds it).
   const int fw = p.width, fh = p.height;
   const Viewport& v = batch.viewport;
-  const int vw = v.width > 0 ? std::min(v.width, raster::kMaxFramebufferSide) : fw;
-  const int vh = v.height > 0 ? std::min(v.height, raster::kMaxFramebufferSide) : fh;
-  const int vx = v.width > 0 ? std::clamp(v.x, -raster::kMaxFramebufferSide, raster::kMaxFramebufferSide) : 0;
-  const int vy = v.height > 0 ? std::clamp(v.y, -raster::kMaxFramebufferSide, raster::kMaxFramebufferSide) : 0;
+  const int vw = v.width > 0 ? std::min(v.width, kMaxFramebufferSide) : fw;
+  const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
+  const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   d.viewport = viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
   // Triangles stay inside the viewport (the view volume's sides are not clipped, they
   // are this box); points and wide lines may reach past it by half their size.
@@ -534,7 +534,7 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   if (painter) r.painter_sort();
   const Clock::time_point t2 = Clock::now();
 
-  raster::FrameData frame;
+  raster::TileInputs frame;
   frame.bins = &r.bins;
   frame.draws = &r.draw_states;
   frame.lights = &r.plan.lights;

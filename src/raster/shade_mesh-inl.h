@@ -67,7 +67,7 @@ HWY_INLINE VU opaque(VF r, VF g, VF b) { return pack_colors(r, g, b, hn::Set(DF(
 struct FlatShader {
   static constexpr bool kConstant = true;
   uint32_t color;
-  FlatShader(const RecordHeader& r, const DrawState&, const FrameData&) : color(r.flat_color) {}
+  FlatShader(const RecordHeader& r, const DrawState&, const TileInputs&) : color(r.flat_color) {}
   void begin_block(float, float) {}
   HWY_INLINE VU shade(int) const { return hn::Set(DU(), color); }
 };
@@ -75,7 +75,7 @@ struct FlatShader {
 struct SmoothShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothVaryings> in;
-  SmoothShader(const RecordHeader& r, const DrawState&, const FrameData&) { in.load(r); }
+  SmoothShader(const RecordHeader& r, const DrawState&, const TileInputs&) { in.load(r); }
   void begin_block(float fx, float fy) { in.begin(fx, fy); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
@@ -106,7 +106,7 @@ struct FlatTexShader {
   Perspective<kFlatTexVaryings> in;
   UvTexture<kFlatTexVaryings> tex;
   float r, g, b;
-  FlatTexShader(const RecordHeader& rec, const DrawState& d, const FrameData&)
+  FlatTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs&)
       : tex{d.texture ? d.texture : d.env_map, varying::kFlatUv} {
     in.load(rec);
     r = float(rec.flat_color & 0xff) / 255.0f, g = float((rec.flat_color >> 8) & 0xff) / 255.0f;
@@ -126,7 +126,7 @@ struct SmoothTexShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothTexVaryings> in;
   UvTexture<kSmoothTexVaryings> tex;
-  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const FrameData&) : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv} {
+  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs&) : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv} {
     in.load(rec);
   }
   void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
@@ -150,7 +150,7 @@ struct PhongShader {
   UvTexture<N> tex;
   LevelChoice env_level{};
 
-  PhongShader(const RecordHeader& r, const DrawState& d, const FrameData& f)
+  PhongShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
       : draw(d), lights(*f.lights), tex{d.texture, varying::kPhongUv} {
     in.load(r);
   }
