@@ -23,6 +23,7 @@
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
+#include "shading/lighting.hpp"
 #include "velocity/error.hpp"
 #include "velocity/log.hpp"
 #include "velocity/renderer.hpp"
@@ -40,32 +41,6 @@ using geometry::kTrianglesPerJob;
 // sphere first; larger ones go straight to the vertex stage, whose region codes reject
 // their triangles (a bounding sphere costs a pass over every vertex each frame).
 constexpr size_t kSphereTestMaxVertices = 16384;
-
-// The convention's light when a scene brings none: white, from (0.3, 0.5, 1) in eye
-// space, ambient 0.2, diffuse 0.8.
-//
-// The scene's lights in eye space, into `l` (its vectors keep their storage).
-void eye_lights(const Mat4& view, const std::vector<Light>& lights, geometry::EyeLights& l) {
-  l.ambient = {};
-  l.directional.clear(), l.point.clear();
-  if (lights.empty()) {
-    l.ambient = {0.2f, 0.2f, 0.2f};
-    l.directional.push_back({normalize({0.3f, 0.5f, 1.0f}), {0.8f, 0.8f, 0.8f}});
-    return;
-  }
-  for (const Light& light : lights) {
-    switch (light.type) {
-      case LightType::Ambient: l.ambient += light.color; break;
-      case LightType::Directional:
-        l.directional.push_back({normalize(view.transform_vector(light.direction)), light.color});
-        break;
-      case LightType::Point:
-        l.point.push_back({view.transform_point(light.position), light.color, light.constant, light.linear,
-                           light.quadratic});
-        break;
-    }
-  }
-}
 
 // The six planes of the view volume in world space (Gribb and Hartmann: rows of the
 // view-projection matrix), normalised so that a sphere tests with one dot product.
@@ -157,13 +132,13 @@ struct Renderer::Impl {
   // velocity::Error (and changes nothing) when either is out of range.
   void resize(int w, int h, int k) {
     if (k < 1 || k > 4) throw Error("super-sampling factor " + std::to_string(k) + " is out of range (1..4)");
-    if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
+    if (w < 1 || h < 1 || w > kMaxFramebufferSide || h > kMaxFramebufferSide)
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
-                  std::to_string(raster::kMaxFramebufferSide) + " a side)");
-    if (int64_t(w) * k > raster::kMaxFramebufferSide || int64_t(h) * k > raster::kMaxFramebufferSide)
+                  std::to_string(kMaxFramebufferSide) + " a side)");
+    if (int64_t(w) * k > kMaxFramebufferSide || int64_t(h) * k > kMaxFramebufferSide)
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(k) + "x" +
                   std::to_string(k) + " super-sampling needs a sample buffer over " +
-                  std::to_string(raster::kMaxFramebufferSide) + " a side");
+                  std::to_string(kMaxFramebufferSide) + " a side");
     if (w == width && h == height && k == ssaa && framebuffer.width == w * k) return;
     // Bins first, then the framebuffer, which reuses its buffers when they are large
     // enough (a program switching sizes or super-sampling factors allocates nothing)
@@ -407,7 +382,7 @@ void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& light
   r.view_projection = r.projection * view;
   p.viewport = viewport_map(0, 0, w, h, 0.0f, 1.0f);
   p.guard = p.viewport.guard;
-  eye_lights(view, lights, p.lights);
+  shading::eye_lights(view, lights, p.lights);
   p.options = options;
   p.mesh_setup = {};
   p.mesh_setup.x1 = p.mesh_setup.px1 = w - 1;
@@ -488,10 +463,10 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   // GL_MAX_VIEWPORT_DIMS bounds it).
   const int fw = p.width, fh = p.height;
   const Viewport& v = batch.viewport;
-  const int vw = v.width > 0 ? std::min(v.width, raster::kMaxFramebufferSide) : fw;
-  const int vh = v.height > 0 ? std::min(v.height, raster::kMaxFramebufferSide) : fh;
-  const int vx = v.width > 0 ? std::clamp(v.x, -raster::kMaxFramebufferSide, raster::kMaxFramebufferSide) : 0;
-  const int vy = v.height > 0 ? std::clamp(v.y, -raster::kMaxFramebufferSide, raster::kMaxFramebufferSide) : 0;
+  const int vw = v.width > 0 ? std::min(v.width, kMaxFramebufferSide) : fw;
+  const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
+  const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   d.viewport = viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
   // Triangles stay inside the viewport (the view volume's sides are not clipped, they
   // are this box); points and wide lines may reach past it by half their size.
@@ -559,7 +534,7 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   if (painter) r.painter_sort();
   const Clock::time_point t2 = Clock::now();
 
-  raster::FrameData frame;
+  raster::TileInputs frame;
   frame.bins = &r.bins;
   frame.draws = &r.draw_states;
   frame.lights = &r.plan.lights;

@@ -104,8 +104,7 @@ class Renderer {
   const FrameStats& render(const Scene& scene);
 
   // The same, one mesh at a time (for an immediate-mode front end or a game loop).
-  // With no lights, a white light from (0.3, 0.5, 1) in eye space with ambient 0.2 and
-  // diffuse 0.8 is used.
+  // With no lights, kDefaultLight (scene.hpp) is used, in eye space.
   void begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color);
   void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start);
   // `material`, when given, replaces the mesh's own materials and face colours.

@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 #include "velocity/math.hpp"
 
 namespace velocity::geometry {

@@ -43,7 +43,7 @@ void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool rep
   }
 }
 
-bool same_specular(const Specular& a, const Specular& b) { return a.ks == b.ks && a.exponent == b.exponent; }
+bool same_specular(const shading::Specular& a, const shading::Specular& b) { return a.ks == b.ks && a.exponent == b.exponent; }
 
 }  // namespace
 
@@ -65,7 +65,7 @@ void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, Mes
     s.shading = o.shading.value_or(mat.shading);
     s.cull = o.cull_back_faces && !mat.two_sided;
     s.lit = s.shading != Shading::Unlit;
-    s.specular = Specular(mat.specular, mat.shininess);
+    s.specular = shading::Specular(mat.specular, mat.shininess);
     s.line_color = raster::pack_rgba(mat.color.x, mat.color.y, mat.color.z);
     const Texture* tex = o.texture ? o.texture.get() : mat.texture.get();
     const Texture* env = o.env_map ? o.env_map.get() : mat.env_map.get();

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/lighting.hpp"
+#include "shading/lighting.hpp"
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
@@ -30,7 +30,7 @@ struct SlotPlan {
   bool flat = false;        // one colour per face
   bool vertex_light_ok = false;  // the vertex stage's light terms were computed for this material
   bool vertex_color = false;     // ... and its lit colour (MeshDrawPlan::vertex_color)
-  Specular specular;
+  shading::Specular specular;
   uint32_t draw_state = 0;  // index into the frame's DrawStates
   uint32_t line_color = 0;  // RGBA8 for wireframe and points
 };
@@ -52,7 +52,7 @@ struct MeshDrawPlan {
   Vec3 uniform_color;
   bool cull_all = true;   // every material culls back faces
   bool fill_only = true;  // no material draws wireframe or points
-  Specular vertex_specular;                    // what the vertex stage lit with
+  shading::Specular vertex_specular;                   // what the vertex stage lit with
 };
 
 // A Renderer::draw(batch, state) call.
@@ -85,7 +85,7 @@ struct FramePlan {
   int width = 0, height = 0;  // the sample buffer
   GuardBand guard{};
   ViewportMap viewport{};     // the whole framebuffer, for meshes
-  EyeLights lights;
+  shading::EyeLights lights;
   RenderOptions options;
   raster::SetupParams mesh_setup;
   std::vector<MeshDrawPlan> meshes;

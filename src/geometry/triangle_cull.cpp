@@ -11,7 +11,7 @@
 #include <hwy/highway.h>
 
 #include "geometry/clip.hpp"
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();

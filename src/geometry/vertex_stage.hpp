@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "geometry/clip.hpp"
-#include "geometry/lighting.hpp"
+#include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 
 namespace velocity::geometry {
@@ -46,8 +46,8 @@ struct MeshVertexJob {
   size_t begin = 0, end = 0;
   Mat4 mvp, model_view, normal_matrix;
   ViewportMap viewport{};
-  const EyeLights* lights = nullptr;  // set: compute diffuse and specular
-  Specular specular;
+  const shading::EyeLights* lights = nullptr;  // set: compute diffuse and specular
+  shading::Specular specular;
   // With lighting: when set, the lit colour clamp(base * diffuse + specular) goes to
   // out.diffuse and nothing to out.specular (a draw whose faces share one colour).
   const Vec3* base_color = nullptr;

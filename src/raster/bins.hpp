@@ -21,7 +21,7 @@
 #include <mutex>
 #include <vector>
 
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 
 namespace velocity::raster {
 

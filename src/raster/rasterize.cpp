@@ -54,7 +54,7 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
   return fixed[id - uint8_t(KernelId::Fixed)];
 }
 
-void RasterizeTile(const FrameData& frame, int tile, Framebuffer& fb) {
+void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
@@ -138,7 +138,7 @@ float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, 
   return HWY_DYNAMIC_DISPATCH(LevelOfDetailForTest)(view, dudx, dvdx, dudy, dvdy);
 }
 
-void rasterize_tile(const FrameData& frame, int tile, Framebuffer& fb) { HWY_DYNAMIC_DISPATCH(RasterizeTile)(frame, tile, fb); }
+void rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb) { HWY_DYNAMIC_DISPATCH(RasterizeTile)(in, tile, fb); }
 
 void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int tile_w, int tile_h,
                        void (*callback)(void*, int, int, uint32_t), void* user) {

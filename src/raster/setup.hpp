@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "raster/bins.hpp"
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 
 namespace velocity::raster {
 

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 
 namespace velocity::raster {
 

@@ -31,7 +31,7 @@ constexpr int kW = 1920, kH = 1080;
 // The convention's camera and light, and the vertex stage's inputs for a mesh.
 struct Stage {
   Mesh mesh;
-  geometry::EyeLights lights;
+  shading::EyeLights lights;
   geometry::MeshVertexJob job;
   std::vector<geometry::ProjectedVertex> projected;
   std::vector<uint32_t> codes;
@@ -41,8 +41,7 @@ struct Stage {
   explicit Stage(int segments) : mesh(bench::make_mesh("sphere:" + std::to_string(segments))) {
     Camera cam;
     const Mat4 view = cam.view(), proj = cam.projection_matrix(float(kW) / float(kH));
-    lights.ambient = {0.2f, 0.2f, 0.2f};
-    lights.directional.push_back({normalize({0.3f, 0.5f, 1.0f}), {0.8f, 0.8f, 0.8f}});
+    shading::eye_lights(view, {}, lights);  // no lights: the convention's
     const size_t n = mesh.positions.size();
     projected.resize(n), codes.resize(n), color.resize(n);
     job.positions = mesh.positions.data(), job.normals = mesh.normals.data();

@@ -43,9 +43,9 @@ const RecordHeader* setup(TestBins& t, const ScreenVertex& a, const ScreenVertex
 // record, tile by tile as the renderer walks it.
 template <class F>
 void for_each_covered(const RecordHeader& r, F&& f) {
-  for (int ty = 0; ty < H; ty += kTileSize)
-    for (int tx = 0; tx < W; tx += kTileSize)
-      coverage_for_test(r, tx, ty, std::min(kTileSize, W - tx), std::min(kTileSize, H - ty),
+  for (int ty = 0; ty < H; ty += velocity::kTileSize)
+    for (int tx = 0; tx < W; tx += velocity::kTileSize)
+      coverage_for_test(r, tx, ty, std::min(velocity::kTileSize, W - tx), std::min(velocity::kTileSize, H - ty),
                         [](void* user, int x, int y, uint32_t mask) {
                           for (int k = 0; k < 16; ++k)
                             if (mask >> k & 1) (*static_cast<F*>(user))(x + (k & 3), y + (k >> 2));

@@ -1,4 +1,8 @@
-// The lighting model, shared by per-vertex (flat, Gouraud) and per-pixel (Phong) shading:
+// The lighting model, one function in two forms: this scalar one and the SIMD one in
+// lighting-inl.h (N points at a time), which computes the same terms in the same order.
+// The vertex stage lights vertices with it (flat, Gouraud), the pixel kernels light
+// pixels with it (Phong); a change to the model is made to both forms together.
+//
 //
 //   colour = base * (ambient + sum_i diffuse_i * max(N.L_i, 0)) + Ks * sum_i light_i * max(R_i.V, 0)^n
 //
@@ -14,9 +18,11 @@
 #include <vector>
 
 #include "velocity/math.hpp"
+#include "velocity/scene.hpp"
 
-namespace velocity::geometry {
+namespace velocity::shading {
 
+// A frame's lights in eye space, as the model reads them.
 struct EyeLights {
   struct Directional {
     Vec3 to_light;  // unit, eye space
@@ -78,4 +84,8 @@ inline LightTerms light(const EyeLights& lights, Vec3 n, Vec3 p, const Specular&
 
 inline Vec3 apply(const LightTerms& t, Vec3 base) { return base * t.diffuse + t.specular; }
 
-}  // namespace velocity::geometry
+// The scene's lights in eye space (`view`: world to eye), into `out` (its vectors keep
+// their storage). No lights: velocity::kDefaultLight, which is given in eye space.
+void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& out);
+
+}  // namespace velocity::shading
