@@ -209,13 +209,7 @@ class Context {
   void point_vertex(uint32_t a);
   Vec4 lit(const Vec4& eye, Vec3 normal, bool back) const;
   void prepare_lighting();
-  struct LightUse {
-    const Light* light = nullptr;
-    bool positional = false, spot = false;
-    float cos_cutoff = -1;
-    Vec3 direction, half, spot_direction;
-  };
-  LightUse light_use_[kMaxLights];
+  shading::GlLight light_use_[kMaxLights];  // the enabled lights, for this glBegin
   int lights_used_ = 0;
   bool need_eye_ = false;
 

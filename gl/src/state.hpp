@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/texture.hpp"
@@ -75,10 +76,7 @@ struct Light {
   bool enabled = false;
 };
 
-struct Material {
-  Vec4 ambient{0.2f, 0.2f, 0.2f, 1}, diffuse{0.8f, 0.8f, 0.8f, 1}, specular{0, 0, 0, 1}, emission{0, 0, 0, 1};
-  float shininess = 0;
-};
+using Material = shading::GlMaterial;  // (src/shading/lighting.hpp)
 
 struct LightingState {
   bool enabled = false;  // GL_LIGHTING

@@ -7,16 +7,10 @@
 
 #include "context.hpp"
 
-
 namespace velocity::gl {
 
 namespace {
 [[gnu::always_inline]] inline Vec4 clamp_color(Vec4 c) { return {unit(c.x), unit(c.y), unit(c.z), unit(c.w)}; }
-float dot3(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 normalized(Vec3 v) {
-  const float l = std::sqrt(dot3(v, v));
-  return l > 0 ? Vec3{v.x / l, v.y / l, v.z / l} : v;
-}
 // Vertices kept before independent primitives are assembled (a multiple of 3 and 4).
 constexpr size_t kAssembleEvery = 3072;
 }  // namespace
@@ -48,68 +42,27 @@ void Context::prepare_lighting() {
   if (!lighting_.enabled) return;
   for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
-    LightUse& u = light_use_[lights_used_++];
-    u.light = &l;
+    shading::GlLight& u = light_use_[lights_used_++];
+    u.colors = {l.ambient.xyz(), l.diffuse.xyz(), l.specular.xyz()};
     u.positional = l.position.w != 0;
+    if (u.positional) u.position = l.position.xyz() / l.position.w;
+    u.direction = normalize(l.position.xyz());
+    u.half = normalize(u.direction + Vec3{0, 0, 1});  // with the viewer at +z
     u.spot = l.spot_cutoff != 180;
-    u.cos_cutoff = std::cos(l.spot_cutoff * 3.14159265358979f / 180.0f);
-    u.spot_direction = normalized(l.spot_direction);
-    u.direction = normalized(l.position.xyz());
-    u.half = normalized(Vec3{u.direction.x, u.direction.y, u.direction.z + 1});  // with the viewer at +z
+    u.spot_direction = normalize(l.spot_direction);
+    u.cos_cutoff = std::cos(radians(l.spot_cutoff));
+    u.spot_exponent = l.spot_exponent;
+    u.constant = l.constant, u.linear = l.linear, u.quadratic = l.quadratic;
     if (u.positional) need_eye_ = true;
   }
 }
 
-// OpenGL's lighting equation (GL 1.5 section 2.14.1) for one vertex and one side.
-// Inlined into vertex(): returned through registers, the colour would be stored in two
-// halves and reloaded whole, a store-forwarding stall per vertex.
+// OpenGL's lighting equation (shading::light_gl) for one vertex and one side.
 [[gnu::always_inline]] inline Vec4 Context::lit(const Vec4& eye4, Vec3 n, bool back) const {
-  const Material& m = lighting_.materials[back ? 1 : 0];
-  if (back) n = {-n.x, -n.y, -n.z};
-  float r = m.emission.x + m.ambient.x * lighting_.model_ambient.x;
-  float g = m.emission.y + m.ambient.y * lighting_.model_ambient.y;
-  float b = m.emission.z + m.ambient.z * lighting_.model_ambient.z;
-  Vec3 eye{0, 0, 0}, view{0, 0, 1};
-  if (need_eye_) {
-    eye = eye4.w != 0 && eye4.w != 1 ? Vec3{eye4.x / eye4.w, eye4.y / eye4.w, eye4.z / eye4.w} : eye4.xyz();
-    if (lighting_.local_viewer) view = normalized(Vec3{-eye.x, -eye.y, -eye.z});
-  }
-  for (int k = 0; k < lights_used_; ++k) {
-    const LightUse& u = light_use_[k];
-    const Light& l = *u.light;
-    Vec3 to_light = u.direction;
-    float att = 1;
-    if (u.positional) {
-      const Vec3 p{l.position.x / l.position.w - eye.x, l.position.y / l.position.w - eye.y,
-                   l.position.z / l.position.w - eye.z};
-      const float d = std::sqrt(dot3(p, p));
-      to_light = d > 0 ? Vec3{p.x / d, p.y / d, p.z / d} : p;
-      const float kd = l.constant + l.linear * d + l.quadratic * d * d;
-      att = kd > 0 ? 1.0f / kd : 1.0f;
-    }
-    if (u.spot) {
-      const float c = -dot3(to_light, u.spot_direction);
-      if (c < u.cos_cutoff) continue;  // outside the cone: nothing
-      att *= l.spot_exponent != 0 ? std::pow(std::max(c, 0.0f), l.spot_exponent) : 1.0f;
-    }
-    float lr = m.ambient.x * l.ambient.x, lg = m.ambient.y * l.ambient.y, lb = m.ambient.z * l.ambient.z;
-    const float ndotl = dot3(n, to_light);
-    if (ndotl > 0) {
-      lr += ndotl * m.diffuse.x * l.diffuse.x, lg += ndotl * m.diffuse.y * l.diffuse.y,
-          lb += ndotl * m.diffuse.z * l.diffuse.z;
-      const Vec3 h = u.positional || lighting_.local_viewer
-                         ? normalized(Vec3{to_light.x + view.x, to_light.y + view.y, to_light.z + view.z})
-                         : u.half;
-      const float ndoth = dot3(n, h);
-      if (ndoth > 0) {
-        const float sp = m.shininess != 0 ? std::pow(ndoth, m.shininess) : 1.0f;
-        lr += sp * m.specular.x * l.specular.x, lg += sp * m.specular.y * l.specular.y,
-            lb += sp * m.specular.z * l.specular.z;
-      }
-    }
-    r += att * lr, g += att * lg, b += att * lb;
-  }
-  return clamp_color({r, g, b, m.diffuse.w});
+  Vec3 eye{};
+  if (need_eye_) eye = eye4.w != 0 && eye4.w != 1 ? eye4.xyz() / eye4.w : eye4.xyz();
+  return clamp_color(shading::light_gl(light_use_, lights_used_, lighting_.model_ambient.xyz(), lighting_.local_viewer,
+                                       lighting_.materials[back ? 1 : 0], back ? -n : n, eye));
 }
 
 void Context::vertex(Vec4 v) {
@@ -120,7 +73,7 @@ void Context::vertex(Vec4 v) {
     const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
     if (lighting_.enabled) {
       Vec3 n = transform_.normal_matrix.transform_vector(normal_);
-      if (transform_.normalize || transform_.rescale_normal) n = normalized(n);
+      if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
       out.front = lit(eye, n, false);
       out.back = lighting_.two_side ? lit(eye, n, true) : out.front;
     }
