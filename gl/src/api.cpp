@@ -96,27 +96,12 @@ std::array<float, 4> param1(GLfloat v) { return {v, 0, 0, 0}; }
 
 // A vertex array element's values, fetched now for a display list.
 void record_array_element(Context& c, GLint i) {
-  const auto norm = [](Vec4 v, GLenum type, int n) {
-    float s = 1;
-    switch (type) {
-      case GL_BYTE: s = 1.0f / 127; break;
-      case GL_UNSIGNED_BYTE: s = 1.0f / 255; break;
-      case GL_SHORT: s = 1.0f / 32767; break;
-      case GL_UNSIGNED_SHORT: s = 1.0f / 65535; break;
-      case GL_INT: s = 1.0f / 2147483647.0f; break;
-      case GL_UNSIGNED_INT: s = 1.0f / 4294967295.0f; break;
-      default: break;
-    }
-    float* p[4] = {&v.x, &v.y, &v.z, &v.w};
-    for (int k = 0; k < n && k < 4; ++k) *p[k] *= s;
-    return v;
-  };
   if (c.arrays.color.enabled && c.arrays.color.pointer) {
-    const Vec4 col = norm(c.arrays.color.fetch(i, {0, 0, 0, 1}), c.arrays.color.type, c.arrays.color.size);
+    const Vec4 col = c.arrays.color.fetch_normalized(i, {0, 0, 0, 1}, c.arrays.color.size);
     compiled([=](Context& k) { k.set_color(col); });
   }
   if (c.arrays.normal.enabled && c.arrays.normal.pointer) {
-    const Vec3 n = norm(c.arrays.normal.fetch(i, {}), c.arrays.normal.type, 3).xyz();
+    const Vec3 n = c.arrays.normal.fetch_normalized(i, {}, 3).xyz();
     compiled([=](Context& k) { k.set_normal(n); });
   }
   if (c.arrays.texcoord.enabled && c.arrays.texcoord.pointer) {

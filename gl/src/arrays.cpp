@@ -40,9 +40,7 @@ Vec4 ClientArray::fetch(GLint index, Vec4 v) const {
   return v;
 }
 
-namespace {
-// A colour or normal array's integers map to [0, 1] or [-1, 1].
-Vec4 normalize_ints(Vec4 v, GLenum type, int size) {
+Vec4 ClientArray::fetch_normalized(GLint index, Vec4 defaults, int components) const {
   float scale;
   switch (type) {
     case GL_BYTE: scale = 1.0f / 127; break;
@@ -51,13 +49,13 @@ Vec4 normalize_ints(Vec4 v, GLenum type, int size) {
     case GL_UNSIGNED_SHORT: scale = 1.0f / 65535; break;
     case GL_INT: scale = 1.0f / 2147483647.0f; break;
     case GL_UNSIGNED_INT: scale = 1.0f / 4294967295.0f; break;
-    default: return v;
+    default: return fetch(index, defaults);
   }
+  Vec4 v = fetch(index, defaults);
   float* c[4] = {&v.x, &v.y, &v.z, &v.w};
-  for (int k = 0; k < size && k < 4; ++k) *c[k] *= scale;
+  for (int k = 0; k < components && k < 4; ++k) *c[k] *= scale;
   return v;
 }
-}  // namespace
 
 void Context::client_state(GLenum cap, bool on) {
   switch (cap) {
@@ -72,11 +70,8 @@ void Context::client_state(GLenum cap, bool on) {
 void Context::array_element(GLint i) {
   if (i < 0) return error(GL_INVALID_VALUE);
   if (arrays.color.enabled && arrays.color.pointer)
-    set_color(normalize_ints(arrays.color.fetch(i, {0, 0, 0, 1}), arrays.color.type, arrays.color.size));
-  if (arrays.normal.enabled && arrays.normal.pointer) {
-    const Vec4 n = normalize_ints(arrays.normal.fetch(i, {}), arrays.normal.type, 3);
-    normal_ = n.xyz();
-  }
+    set_color(arrays.color.fetch_normalized(i, {0, 0, 0, 1}, arrays.color.size));
+  if (arrays.normal.enabled && arrays.normal.pointer) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
   if (arrays.texcoord.enabled && arrays.texcoord.pointer) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
   if (arrays.vertex.enabled && arrays.vertex.pointer) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
 }

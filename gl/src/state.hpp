@@ -157,6 +157,9 @@ struct ClientArray {
   GLsizei stride = 0;
   const void* pointer = nullptr;
   Vec4 fetch(GLint index, Vec4 defaults) const;
+  // A colour's or a normal's first `components`: integer types map to [0, 1] (unsigned)
+  // or [-1, 1] (signed).
+  Vec4 fetch_normalized(GLint index, Vec4 defaults, int components) const;
 };
 
 struct ArrayState {
