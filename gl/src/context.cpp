@@ -51,7 +51,7 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
   }
   if (first) {
     viewport(0, 0, width, height);
-    raster_.scissor_x = raster_.scissor_y = 0, raster_.scissor_width = width, raster_.scissor_height = height;
+    raster_.scissor = {0, 0, width, height};
   }
   return true;
 }

@@ -68,14 +68,14 @@ void Context::submit_pending() {
   b.vertex_count = uint32_t(kept.position.size());
   b.indices = kept.index.data();
   b.index_count = uint32_t(kept.index.size());
-  b.viewport.x = transform_.viewport_x;
-  b.viewport.y = transform_.viewport_y;  // the framebuffer is kept bottom row first (see update_derived)
-  b.viewport.width = std::max(transform_.viewport_width, 1);
-  b.viewport.height = std::max(transform_.viewport_height, 1);
+  b.viewport.x = transform_.viewport.x;
+  b.viewport.y = transform_.viewport.y;  // the framebuffer is kept bottom row first (see update_derived)
+  b.viewport.width = std::max(transform_.viewport.width, 1);
+  b.viewport.height = std::max(transform_.viewport.height, 1);
   b.viewport.depth_near = transform_.depth_near, b.viewport.depth_far = transform_.depth_far;
   b.point_size = std::max(1.0f, raster_.point_size);
   b.line_width = std::max(1.0f, raster_.line_width);
-  if (transform_.viewport_width == 0 || transform_.viewport_height == 0) return;  // nothing is drawn in an empty viewport
+  if (transform_.viewport.width == 0 || transform_.viewport.height == 0) return;  // nothing is drawn in an empty viewport
   renderer_->draw(b, kept.state);
   frame_vertices_ += kept.index.size();
   if (frame_vertices_ > kMaxVerticesPerFrame) run_frame();  // bounded memory in a frame never flushed
@@ -187,8 +187,8 @@ PixelState Context::pixel_state(bool offset) {
   s.fog_color = raster_.fog_color;
   s.scissor = raster_.scissor_test;
   if (raster_.scissor_test) {
-    s.scissor_x0 = raster_.scissor_x, s.scissor_x1 = raster_.scissor_x + raster_.scissor_width;
-    s.scissor_y0 = raster_.scissor_y, s.scissor_y1 = raster_.scissor_y + raster_.scissor_height;
+    s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
+    s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
   }
   s.alpha_test = raster_.alpha_test;
   s.alpha_func = compare_func(raster_.alpha_func);

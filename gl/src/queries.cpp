@@ -33,11 +33,11 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
     case GL_MAX_VIEWPORT_DIMS: out = {double(kMaxViewport), double(kMaxViewport)}; return true;
     case GL_VIEWPORT:
-      out = {double(t.viewport_x), double(t.viewport_y), double(t.viewport_width), double(t.viewport_height)};
+      out = {double(t.viewport.x), double(t.viewport.y), double(t.viewport.width), double(t.viewport.height)};
       return true;
     case GL_DEPTH_RANGE: out = {transform_.depth_near, transform_.depth_far}; return true;
     case GL_SCISSOR_BOX:
-      out = {double(r.scissor_x), double(r.scissor_y), double(r.scissor_width), double(r.scissor_height)};
+      out = {double(r.scissor.x), double(r.scissor.y), double(r.scissor.width), double(r.scissor.height)};
       return true;
     case GL_COLOR_CLEAR_VALUE: v4(raster_.clear_color), kind = 1; return true;
     case GL_DEPTH_CLEAR_VALUE: out = {raster_.clear_depth}, kind = 1; return true;

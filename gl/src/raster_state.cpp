@@ -54,10 +54,7 @@ void Context::enable(GLenum cap, bool on) {
 void Context::scissor(GLint x, GLint y, GLsizei w, GLsizei h) {
   if (in_begin_error()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  // Kept within reach of the framebuffer's limits, so that x + width cannot overflow.
-  RasterState& r = raster_;
-  r.scissor_x = std::clamp(x, -kMaxViewport, kMaxViewport), r.scissor_y = std::clamp(y, -kMaxViewport, kMaxViewport);
-  r.scissor_width = std::min(w, kMaxViewport), r.scissor_height = std::min(h, kMaxViewport);
+  raster_.scissor = within_reach(x, y, w, h);
   changed();
 }
 
@@ -89,7 +86,7 @@ void Context::clear(GLbitfield mask) {
   q.depth_write = r.depth_write;
   q.scissor = r.scissor_test;
   if (r.scissor_test)
-    q.x0 = r.scissor_x, q.x1 = r.scissor_x + r.scissor_width, q.y0 = r.scissor_y, q.y1 = r.scissor_y + r.scissor_height;
+    q.x0 = r.scissor.x, q.x1 = r.scissor.x + r.scissor.width, q.y0 = r.scissor.y, q.y1 = r.scissor.y + r.scissor.height;
   if (q.color || q.depth) renderer_->clear(q);
 }
 

@@ -7,6 +7,7 @@
 
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -53,6 +54,17 @@ constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
 constexpr uint64_t kMaxListCallCommands = uint64_t(1) << 25;
 constexpr int kMaxViewport = 16384;
 
+// A viewport or a scissor box (window coordinates, GL's bottom row 0).
+struct Box {
+  GLint x = 0, y = 0, width = 0, height = 0;
+};
+// The box glViewport or glScissor gives, kept within reach of the framebuffer's limits,
+// so that x + width cannot overflow.
+inline Box within_reach(GLint x, GLint y, GLsizei w, GLsizei h) {
+  return {std::clamp(x, -kMaxViewport, kMaxViewport), std::clamp(y, -kMaxViewport, kMaxViewport),
+          std::min(w, kMaxViewport), std::min(h, kMaxViewport)};
+}
+
 // --- transform (transform.cpp): matrix stacks, viewport, depth range ---------------
 struct TransformState {
   GLenum matrix_mode = GL_MODELVIEW;
@@ -61,7 +73,7 @@ struct TransformState {
   Mat4 mvp;            // projection * modelview, clip-space y negated
   Mat4 normal_matrix;  // inverse transpose of the modelview's upper 3x3
   bool derived_dirty = true, texture_identity = true;
-  GLint viewport_x = 0, viewport_y = 0, viewport_width = 0, viewport_height = 0;
+  Box viewport;
   float depth_near = 0, depth_far = 1;
   bool normalize = false, rescale_normal = false;
 };
@@ -94,7 +106,7 @@ struct LightingState {
 // --- masks, culling, polygon mode and offset, point and line size -----------------
 struct RasterState {
   bool scissor_test = false;
-  GLint scissor_x = 0, scissor_y = 0, scissor_width = 0, scissor_height = 0;
+  Box scissor;
   Vec4 clear_color{0, 0, 0, 0};
   float clear_depth = 1;
   bool depth_test = false, depth_write = true;

@@ -105,9 +105,7 @@ void Context::update_derived() {
 void Context::viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
   if (in_begin_error()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  TransformState& t = transform_;
-  t.viewport_x = std::clamp(x, -kMaxViewport, kMaxViewport), t.viewport_y = std::clamp(y, -kMaxViewport, kMaxViewport);
-  t.viewport_width = std::min(w, kMaxViewport), t.viewport_height = std::min(h, kMaxViewport);
+  transform_.viewport = within_reach(x, y, w, h);
   changed();
 }
 
