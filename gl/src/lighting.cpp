@@ -1,8 +1,14 @@
 // Lighting state: glLight, glLightModel, glMaterial, glColorMaterial, glShadeModel and
-// their queries. The lighting equation itself runs in the vertex stage (vertex.cpp).
+// their queries. The lighting equation is shading::light_gl (src/shading/lighting.hpp),
+// which the vertex stage runs (vertex.cpp).
 #include "context.hpp"
 
 namespace velocity::gl {
+
+namespace {
+// A colour or position as glGetLightfv and glGetMaterialfv return it.
+void put(float* v, Vec4 c) { v[0] = c.x, v[1] = c.y, v[2] = c.z, v[3] = c.w; }
+}  // namespace
 
 void Context::light(GLenum which, GLenum pname, const float* v) {
   if (in_begin_error()) return;
@@ -35,12 +41,11 @@ void Context::light(GLenum which, GLenum pname, const float* v) {
 bool Context::get_light(GLenum which, GLenum pname, float* v) {
   if (which < GL_LIGHT0 || which >= GL_LIGHT0 + kMaxLights) return false;
   const Light& l = lighting_.lights[which - GL_LIGHT0];
-  auto put = [&](Vec4 c) { v[0] = c.x, v[1] = c.y, v[2] = c.z, v[3] = c.w; };
   switch (pname) {
-    case GL_AMBIENT: put(l.ambient); return true;
-    case GL_DIFFUSE: put(l.diffuse); return true;
-    case GL_SPECULAR: put(l.specular); return true;
-    case GL_POSITION: put(l.position); return true;
+    case GL_AMBIENT: put(v, l.ambient); return true;
+    case GL_DIFFUSE: put(v, l.diffuse); return true;
+    case GL_SPECULAR: put(v, l.specular); return true;
+    case GL_POSITION: put(v, l.position); return true;
     case GL_SPOT_DIRECTION: v[0] = l.spot_direction.x, v[1] = l.spot_direction.y, v[2] = l.spot_direction.z; return true;
     case GL_SPOT_EXPONENT: v[0] = l.spot_exponent; return true;
     case GL_SPOT_CUTOFF: v[0] = l.spot_cutoff; return true;
@@ -86,12 +91,11 @@ void Context::material(GLenum face, GLenum pname, const float* v) {
 bool Context::get_material(GLenum face, GLenum pname, float* v) {
   if (face != GL_FRONT && face != GL_BACK) return false;
   const Material& m = lighting_.materials[face == GL_BACK ? 1 : 0];
-  auto put = [&](Vec4 c) { v[0] = c.x, v[1] = c.y, v[2] = c.z, v[3] = c.w; };
   switch (pname) {
-    case GL_AMBIENT: put(m.ambient); return true;
-    case GL_DIFFUSE: put(m.diffuse); return true;
-    case GL_SPECULAR: put(m.specular); return true;
-    case GL_EMISSION: put(m.emission); return true;
+    case GL_AMBIENT: put(v, m.ambient); return true;
+    case GL_DIFFUSE: put(v, m.diffuse); return true;
+    case GL_SPECULAR: put(v, m.specular); return true;
+    case GL_EMISSION: put(v, m.emission); return true;
     case GL_SHININESS: v[0] = m.shininess; return true;
     default: return false;
   }
