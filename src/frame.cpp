@@ -108,13 +108,6 @@ struct Renderer::Impl {
 
   // Per worker, reused across frames.
   std::vector<FrameStats> worker_stats;
-  struct Sorted {
-    float key;
-    uint32_t order;  // submission order, for ties
-    uint32_t ref;
-    const raster::RecordHeader* record;
-  };
-  std::vector<Sorted> painter;  // painter's mode: every record of the frame
   std::vector<std::vector<uint32_t>> survivors;  // per worker: the triangle stage's scratch
   std::vector<std::vector<uint8_t>> marks;       // per worker: vertices drawn as points
   std::unordered_set<const Mesh*> warned_meshes;  // meshes already warned about
@@ -228,7 +221,7 @@ struct Renderer::Impl {
 
   // The triangle stage, on every core: each worker sets up and bins into its own bins.
   void triangle_stage(ThreadPool& pool, bool painter_mode) {
-    bins.clear();
+    bins.clear(painter_mode);
     const int workers = pool.size();
     worker_stats.assign(size_t(workers), FrameStats{});
     survivors.resize(size_t(workers));
@@ -244,9 +237,8 @@ struct Renderer::Impl {
     const int width = framebuffer.width, height = framebuffer.height;
     pool.run(int(jobs.size()), [&](int i, int worker) {
       geometry::Job& job = jobs[size_t(i)];
-      geometry::StageContext cx{bins.worker(worker), worker_stats[size_t(worker)], bins.tiles_x()};
+      geometry::StageContext cx{bins.worker(worker), worker_stats[size_t(worker)]};
       cx.job = uint32_t(i);
-      cx.painter = painter_mode;
       cx.direct = survivors[size_t(worker)].data();
       cx.info = cx.direct + kTrianglesPerJob, cx.clipped = cx.info + kTrianglesPerJob;
       cx.marks = &marks[size_t(worker)];
@@ -260,24 +252,6 @@ struct Renderer::Impl {
   }
 
   const FrameStats& run_frame(bool painter);
-
-  // Painter's mode: every record far to near by mean depth (seed 004's sort), stable so
-  // that equal depths keep their submission order; then binned in that order.
-  void painter_sort() {
-    painter.clear();
-    bins.for_each_deferred([&](const raster::RecordHeader& r, uint32_t ref) {
-      painter.push_back({r.sort_key, uint32_t(painter.size()), ref, &r});
-    });
-    // Stable by the order as a second key (std::stable_sort would allocate every frame).
-    std::sort(painter.begin(), painter.end(), [](const Sorted& a, const Sorted& b) {
-      return a.key != b.key ? a.key > b.key : a.order < b.order;
-    });
-    raster::WorkerBins& into = bins.worker(0);  // serial now: one worker's lists hold them all
-    for (size_t rank = 0; rank < painter.size(); ++rank) {
-      const raster::RecordHeader& r = *painter[rank].record;
-      into.bin(uint32_t(rank), painter[rank].ref, r.min_x, r.min_y, r.max_x, r.max_y, bins.tiles_x());
-    }
-  }
 };
 
 const char* simd_target() { return raster::simd_target(); }
@@ -531,7 +505,7 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   r.vertex_stage(pool);
   const Clock::time_point t1 = Clock::now();
   r.triangle_stage(pool, painter);
-  if (painter) r.painter_sort();
+  if (painter) r.bins.bin_deferred();
   const Clock::time_point t2 = Clock::now();
 
   raster::TileInputs frame;

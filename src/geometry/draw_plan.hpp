@@ -110,24 +110,16 @@ struct Job {
 struct StageContext {
   raster::WorkerBins& bins;
   FrameStats& stats;
-  int tiles_x;
   uint32_t job = 0;
   size_t nonfinite = 0;  // triangles of this job dropped for NaN/Inf
-  bool painter = false;  // painter's mode: defer binning until every record is sorted
   // The worker's scratch for the first pass's survivors (kTrianglesPerJob each).
   uint32_t* direct = nullptr;
   uint32_t* info = nullptr;
   uint32_t* clipped = nullptr;
   std::vector<uint8_t>* marks = nullptr;  // points: which vertices this job drew
 
-  void emit(raster::RecordHeader& r, uint32_t ref, float sort_key) {
-    if (painter) {
-      r.sort_key = sort_key;
-      bins.defer(job, ref);
-      return;
-    }
-    bins.bin(job, ref, r.min_x, r.min_y, r.max_x, r.max_y, tiles_x);
-  }
+  // The record goes to the tiles (raster/bins.hpp decides when).
+  void emit(raster::RecordHeader& r, uint32_t ref, float sort_key) { bins.emit(job, r, ref, sort_key); }
 };
 
 // Fills d's slots (one per material, with its kernel and DrawState) and decides which

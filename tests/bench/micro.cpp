@@ -115,7 +115,7 @@ void SetUpAndBin(benchmark::State& state, bool bin) {
               ? raster::setup_small_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, info[i] & 0xffff,
                                              {}, p, ref)
               : raster::setup_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, {}, p, ref);
-      if (r && bin) w.bin(0, ref, r->min_x, r->min_y, r->max_x, r->max_y, bins.tiles_x());
+      if (r && bin) w.emit(0, *r, ref, 0);
     }
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(nd));

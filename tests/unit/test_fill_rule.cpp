@@ -27,7 +27,7 @@ struct TestBins {
   WorkerBins bins;
   TestBins() {
     bins.attach(&pool);
-    bins.resize(1);
+    bins.resize(1, 1);
   }
 };
 
