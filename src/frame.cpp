@@ -19,11 +19,11 @@
 #include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/resolve.hpp"
-#include "geometry/draw_plan.hpp"
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
 #include "shading/lighting.hpp"
+#include "triangle/stage.hpp"
 #include "velocity/error.hpp"
 #include "velocity/log.hpp"
 #include "velocity/renderer.hpp"
@@ -36,7 +36,7 @@ namespace {
 // gets a share of one large mesh. Fixed, so that the jobs (and hence the image) do not
 // depend on the thread count.
 constexpr uint32_t kVerticesPerJob = 8192;
-using geometry::kTrianglesPerJob;
+using triangle::kTrianglesPerJob;
 // Meshes up to this many vertices are tested against the view volume by their bounding
 // sphere first; larger ones go straight to the vertex stage, whose region codes reject
 // their triangles (a bounding sphere costs a pass over every vertex each frame).
@@ -69,17 +69,6 @@ Sphere world_sphere(const Mesh& mesh, const Mat4& world) {
   return {world.transform_point(s.center), s.radius * stretch};
 }
 
-// clip -> window for a viewport (x, y, width, height) in framebuffer pixels, row 0 at
-// the top, with depth range [n, f].
-geometry::ViewportMap viewport_map(int x, int y, int w, int h, float n, float f) {
-  geometry::ViewportMap m;
-  m.scale_x = float(w) * 0.5f, m.offset_x = float(x);
-  m.scale_y = float(h) * 0.5f, m.offset_y = float(y + h);
-  m.scale_z = (f - n) * 0.5f, m.offset_z = (f + n) * 0.5f;
-  m.guard = geometry::GuardBand::for_viewport(w, h);
-  return m;
-}
-
 template <class T>
 void grow(std::vector<T>& v, size_t n) {
   if (v.size() < n) v.resize(n);
@@ -95,9 +84,9 @@ struct Renderer::Impl {
   std::unique_ptr<ThreadPool> pool;
 
   // The frame being recorded.
-  geometry::FramePlan plan;
+  triangle::DrawList plan;
   std::vector<raster::DrawState> draw_states;
-  std::vector<geometry::Job> jobs;
+  std::vector<triangle::Job> jobs;
   std::deque<std::vector<Vec3>> averaged_normals;  // for meshes that bring none, reused (stable addresses)
   size_t averaged_used = 0;
   Material default_material;
@@ -149,7 +138,7 @@ struct Renderer::Impl {
 
   // The vertex stage's outputs for every draw, in one set of arrays.
   void allocate_vertices() {
-    geometry::FramePlan& p = plan;
+    triangle::DrawList& p = plan;
     size_t total = 0;
     bool light = false, specular = false, normal = false, eye = false;
     for (auto& d : p.meshes) {
@@ -157,7 +146,7 @@ struct Renderer::Impl {
       light |= d.light, specular |= d.vertex_specular_terms, normal |= d.normal, eye |= d.eye;
     }
     for (auto& b : p.batches) b.vertex_base = total, total += b.batch.vertex_count;
-    geometry::VertexArrays& v = p.vertices;
+    triangle::VertexArrays& v = p.vertices;
     try {
       grow(v.projected, total), grow(v.codes, total);
       if (light) grow(v.diffuse, total);
@@ -188,18 +177,18 @@ struct Renderer::Impl {
     for (uint32_t i = 0; i < plan.batches.size(); ++i)
       for (size_t b = 0, n = plan.batches[i].batch.vertex_count; b < n; b += kVerticesPerJob)
         work.push_back({true, i, b, std::min<size_t>(b + kVerticesPerJob, n)});
-    geometry::VertexArrays& va = plan.vertices;
+    triangle::VertexArrays& va = plan.vertices;
     pool.run(int(work.size()), [&](int i) {
       const VertexJob& w = work[size_t(i)];
       if (w.batch) {
-        const geometry::BatchDrawPlan& b = plan.batches[w.draw];
+        const triangle::BatchDrawPlan& b = plan.batches[w.draw];
         geometry::ClipVertexJob job;
         job.positions = b.batch.position, job.begin = w.begin, job.end = w.end, job.viewport = b.viewport;
         job.out.projected = va.projected.data() + b.vertex_base, job.out.codes = va.codes.data() + b.vertex_base;
         geometry::project_clip_vertices(job);
         return;
       }
-      const geometry::MeshDrawPlan& d = plan.meshes[w.draw];
+      const triangle::MeshDrawPlan& d = plan.meshes[w.draw];
       geometry::MeshVertexJob job;
       job.positions = d.mesh->positions.data(), job.normals = d.normals->data();
       job.begin = w.begin, job.end = w.end;
@@ -236,16 +225,16 @@ struct Renderer::Impl {
       if (m.size() < most) m.resize(most);
     const int width = framebuffer.width, height = framebuffer.height;
     pool.run(int(jobs.size()), [&](int i, int worker) {
-      geometry::Job& job = jobs[size_t(i)];
-      geometry::StageContext cx{bins.worker(worker), worker_stats[size_t(worker)]};
+      triangle::Job& job = jobs[size_t(i)];
+      triangle::StageContext cx{bins.worker(worker), worker_stats[size_t(worker)]};
       cx.job = uint32_t(i);
       cx.direct = survivors[size_t(worker)].data();
       cx.info = cx.direct + kTrianglesPerJob, cx.clipped = cx.info + kTrianglesPerJob;
       cx.marks = &marks[size_t(worker)];
       switch (job.kind) {
-        case geometry::Job::Kind::Mesh: run_mesh_job(plan, plan.meshes[job.draw], job.begin, job.end, cx); break;
-        case geometry::Job::Kind::Batch: run_batch_job(plan, plan.batches[job.draw], job.begin, job.end, cx); break;
-        case geometry::Job::Kind::Clear: run_clear_job(plan.clears[job.draw], width, height, cx); break;
+        case triangle::Job::Kind::Mesh: run_mesh_job(plan, plan.meshes[job.draw], job.begin, job.end, cx); break;
+        case triangle::Job::Kind::Batch: run_batch_job(plan, plan.batches[job.draw], job.begin, job.end, cx); break;
+        case triangle::Job::Kind::Clear: run_clear_job(plan.clears[job.draw], width, height, cx); break;
       }
       job.nonfinite = cx.nonfinite;
     });
@@ -348,13 +337,13 @@ void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& light
   r.resize(r.width, r.height, options.ssaa);  // follows a change of options.ssaa
   r.framebuffer.keep_ids(options.object_ids);
   const int w = r.framebuffer.width, h = r.framebuffer.height;
-  geometry::FramePlan& p = r.plan;
+  triangle::DrawList& p = r.plan;
   p.width = w, p.height = h;
   const Mat4 view = camera.view();
   r.view = view;
   r.projection = camera.projection_matrix(float(w) / float(h));
   r.view_projection = r.projection * view;
-  p.viewport = viewport_map(0, 0, w, h, 0.0f, 1.0f);
+  p.viewport = geometry::viewport_map(0, 0, w, h, 0.0f, 1.0f);
   p.guard = p.viewport.guard;
   shading::eye_lights(view, lights, p.lights);
   p.options = options;
@@ -380,8 +369,8 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   // volume costs one test instead of a pass over every vertex.
   if (mesh.positions.size() <= kSphereTestMaxVertices && Frustum(r.view_projection).outside(world_sphere(mesh, world)))
     return void(r.stats.objects_culled++);
-  geometry::FramePlan& p = r.plan;
-  geometry::MeshDrawPlan d;
+  triangle::DrawList& p = r.plan;
+  triangle::MeshDrawPlan d;
   d.mesh = &mesh;
   d.override_material = material;
   d.object_id = object_id;
@@ -403,12 +392,12 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
     }
     d.normals = &n;  // normalised when transformed to eye space
   }
-  geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
+  triangle::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
   const uint32_t index = uint32_t(p.meshes.size());
   p.meshes.push_back(d);
   const size_t nt = mesh.triangles.size();
   for (size_t b = 0; b < nt; b += kTrianglesPerJob)
-    r.jobs.push_back({geometry::Job::Kind::Mesh, index, uint32_t(b), uint32_t(std::min(b + kTrianglesPerJob, nt))});
+    r.jobs.push_back({triangle::Job::Kind::Mesh, index, uint32_t(b), uint32_t(std::min(b + kTrianglesPerJob, nt))});
 } catch (const std::bad_alloc&) {
   throw Error("Renderer::draw: out of memory recording mesh '" + mesh.name + "'");
 }
@@ -424,8 +413,8 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   const uint32_t primitives = batch.indices ? batch.index_count / k : batch.vertex_count / k;
   r.stats.objects++;
   if (primitives == 0) return;
-  geometry::FramePlan& p = r.plan;
-  geometry::BatchDrawPlan d;
+  triangle::DrawList& p = r.plan;
+  triangle::BatchDrawPlan d;
   d.batch = batch;
   d.primitive_count = primitives;
   d.textured = state.texture.texture != nullptr;
@@ -441,10 +430,10 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
   const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
-  d.viewport = viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+  d.viewport = geometry::viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
   // Triangles stay inside the viewport (the view volume's sides are not clipped, they
   // are this box); points and wide lines may reach past it by half their size.
-  raster::SetupParams& s = d.setup;
+  triangle::SetupParams& s = d.setup;
   int sx0 = 0, sy0 = 0, sx1 = fw - 1, sy1 = fh - 1;
   if (state.scissor) {
     sx0 = std::max(sx0, state.scissor_x0), sy0 = std::max(sy0, state.scissor_y0);
@@ -465,7 +454,7 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   const uint32_t index = uint32_t(p.batches.size());
   p.batches.push_back(d);
   for (uint32_t b = 0; b < primitives; b += kTrianglesPerJob)
-    r.jobs.push_back({geometry::Job::Kind::Batch, index, b, std::min(b + kTrianglesPerJob, primitives)});
+    r.jobs.push_back({triangle::Job::Kind::Batch, index, b, std::min(b + kTrianglesPerJob, primitives)});
 } catch (const std::bad_alloc&) {
   throw Error("Renderer::draw: out of memory recording a primitive batch");
 }
@@ -473,14 +462,14 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
 void Renderer::clear(const ClearRequest& request) {
   Impl& r = *impl_;
   if (!r.in_frame) throw Error("Renderer::clear called outside begin_frame/end_frame");
-  geometry::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
+  triangle::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
   if (request.scissor) {
     c.x0 = std::max(c.x0, request.x0), c.y0 = std::max(c.y0, request.y0);
     c.x1 = std::min(c.x1, request.x1 - 1), c.y1 = std::min(c.y1, request.y1 - 1);
   }
   const uint32_t index = uint32_t(r.plan.clears.size());
   r.plan.clears.push_back(c);
-  r.jobs.push_back({geometry::Job::Kind::Clear, index, 0, 1});
+  r.jobs.push_back({triangle::Job::Kind::Clear, index, 0, 1});
 }
 
 const FrameStats& Renderer::end_frame() {
@@ -534,8 +523,8 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   }
   std::vector<size_t>& bad = r.nonfinite;
   bad.assign(r.plan.meshes.size(), 0);
-  for (const geometry::Job& j : r.jobs)
-    if (j.kind == geometry::Job::Kind::Mesh) bad[j.draw] += j.nonfinite;
+  for (const triangle::Job& j : r.jobs)
+    if (j.kind == triangle::Job::Kind::Mesh) bad[j.draw] += j.nonfinite;
   for (size_t i = 0; i < bad.size(); ++i) {
     if (!bad[i]) continue;
     const Mesh* mesh = r.plan.meshes[i].mesh;

@@ -5,10 +5,11 @@
 #include <vector>
 
 #include "raster/rasterize.hpp"
-#include "raster/setup.hpp"
-#include "geometry/triangle_cull.hpp"
+#include "triangle/setup.hpp"
+#include "triangle/cull.hpp"
 
 using namespace velocity::raster;
+using namespace velocity::triangle;
 
 namespace {
 

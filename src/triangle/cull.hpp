@@ -9,15 +9,15 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/vertex_stage.hpp"
+#include "geometry/viewport.hpp"
 #include "velocity/mesh.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 struct CullJob {
   const Triangle* triangles = nullptr;
   uint32_t begin = 0, end = 0;
-  const ProjectedVertex* projected = nullptr;
+  const geometry::ProjectedVertex* projected = nullptr;
   const uint32_t* codes = nullptr;
   bool cull_back = true;   // drop back faces (else they go on, for the caller to decide)
   bool drop_empty = true;  // drop front faces that cover no pixel centre (not for lines or points)
@@ -40,4 +40,4 @@ inline constexpr uint32_t kCullBack = 1u << 18;   // surely back-facing
 void cull_triangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t& direct_count, uint32_t* clip,
                     size_t& clip_count, CullCounts& counts);
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle

@@ -1,11 +1,11 @@
 // Planning a draw: everything decided once per draw, before any vertex is touched.
-#include "geometry/draw_plan.hpp"
+#include "triangle/draw_plan.hpp"
 
 #include <algorithm>
 
 #include "velocity/error.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 namespace {
 
@@ -47,7 +47,7 @@ bool same_specular(const shading::Specular& a, const shading::Specular& b) { ret
 
 }  // namespace
 
-void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
+void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
                     const Material& default_material) {
   const Mesh& mesh = *d.mesh;
   const RenderOptions& o = plan.options;
@@ -104,4 +104,4 @@ void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, Mes
   d.vertex_specular_terms = d.light && !d.vertex_color && d.vertex_specular.ks > 0;
 }
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle
