@@ -14,18 +14,19 @@
 #include <chrono>
 #include <deque>
 #include <new>
-#include <unordered_set>
 
 #include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
+#include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
+#include "geometry/normals.hpp"
+#include "geometry/object_cull.hpp"
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
 #include "shading/lighting.hpp"
 #include "triangle/stage.hpp"
 #include "velocity/error.hpp"
-#include "velocity/log.hpp"
 #include "velocity/renderer.hpp"
 
 namespace velocity {
@@ -37,38 +38,6 @@ namespace {
 // depend on the thread count.
 constexpr uint32_t kVerticesPerJob = 8192;
 using triangle::kTrianglesPerJob;
-// Meshes up to this many vertices are tested against the view volume by their bounding
-// sphere first; larger ones go straight to the vertex stage, whose region codes reject
-// their triangles (a bounding sphere costs a pass over every vertex each frame).
-constexpr size_t kSphereTestMaxVertices = 16384;
-
-// The six planes of the view volume in world space (Gribb and Hartmann: rows of the
-// view-projection matrix), normalised so that a sphere tests with one dot product.
-struct Frustum {
-  Vec4 planes[6];
-  explicit Frustum(const Mat4& vp) {
-    auto row = [&](int r) { return Vec4{vp.m[r][0], vp.m[r][1], vp.m[r][2], vp.m[r][3]}; };
-    Vec4 r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
-    Vec4 p[6] = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r3 + r2, r3 - r2};
-    for (int i = 0; i < 6; ++i) {
-      float len = length(p[i].xyz());
-      planes[i] = len > 0 ? p[i] * (1.0f / len) : p[i];
-    }
-  }
-  bool outside(const Sphere& s) const {
-    for (const Vec4& p : planes)
-      if (dot(p.xyz(), s.center) + p.w < -s.radius) return true;
-    return false;
-  }
-};
-
-Sphere world_sphere(const Mesh& mesh, const Mat4& world) {
-  Sphere s = mesh.bounding_sphere();
-  float stretch = 0;
-  for (int c = 0; c < 3; ++c) stretch = std::max(stretch, length({world.m[0][c], world.m[1][c], world.m[2][c]}));
-  return {world.transform_point(s.center), s.radius * stretch};
-}
-
 template <class T>
 void grow(std::vector<T>& v, size_t n) {
   if (v.size() < n) v.resize(n);
@@ -95,11 +64,7 @@ struct Renderer::Impl {
   FrameStats stats;
   bool in_frame = false;
 
-  // Per worker, reused across frames.
-  std::vector<FrameStats> worker_stats;
-  std::vector<std::vector<uint32_t>> survivors;  // per worker: the triangle stage's scratch
-  std::vector<std::vector<uint8_t>> marks;       // per worker: vertices drawn as points
-  std::unordered_set<const Mesh*> warned_meshes;  // meshes already warned about
+  triangle::TriangleStage triangle_stage;  // its workers' scratch, reused across frames
 
   ThreadPool& pool_for(int threads) {
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -208,38 +173,6 @@ struct Renderer::Impl {
     });
   }
 
-  // The triangle stage, on every core: each worker sets up and bins into its own bins.
-  void triangle_stage(ThreadPool& pool, bool painter_mode) {
-    bins.clear(painter_mode);
-    const int workers = pool.size();
-    worker_stats.assign(size_t(workers), FrameStats{});
-    survivors.resize(size_t(workers));
-    for (auto& s : survivors) s.resize(3 * kTrianglesPerJob);
-    marks.resize(size_t(workers));
-    // Points mark the vertices they drew: room for the largest such mesh on every worker,
-    // whichever worker its jobs fall on.
-    size_t most = 0;
-    for (const auto& d : plan.meshes)
-      if (!d.fill_only) most = std::max(most, d.mesh->positions.size());
-    for (auto& m : marks)
-      if (m.size() < most) m.resize(most);
-    const int width = framebuffer.width, height = framebuffer.height;
-    pool.run(int(jobs.size()), [&](int i, int worker) {
-      triangle::Job& job = jobs[size_t(i)];
-      triangle::StageContext cx{bins.worker(worker), worker_stats[size_t(worker)]};
-      cx.job = uint32_t(i);
-      cx.direct = survivors[size_t(worker)].data();
-      cx.info = cx.direct + kTrianglesPerJob, cx.clipped = cx.info + kTrianglesPerJob;
-      cx.marks = &marks[size_t(worker)];
-      switch (job.kind) {
-        case triangle::Job::Kind::Mesh: run_mesh_job(plan, plan.meshes[job.draw], job.begin, job.end, cx); break;
-        case triangle::Job::Kind::Batch: run_batch_job(plan, plan.batches[job.draw], job.begin, job.end, cx); break;
-        case triangle::Job::Kind::Clear: run_clear_job(plan.clears[job.draw], width, height, cx); break;
-      }
-      job.nonfinite = cx.nonfinite;
-    });
-  }
-
   const FrameStats& run_frame(bool painter);
 };
 
@@ -260,31 +193,9 @@ size_t Renderer::framebuffer_bytes() const {
   const Framebuffer& fb = impl_->framebuffer;
   return fb.color.size() * sizeof(uint32_t) + fb.depth.size() * sizeof(float) + fb.ids.size() * sizeof(uint32_t);
 }
-namespace {
-
-// Calls rows(y0, y1) for bands of an image's `height` rows, on `pool` when there is one
-// (the read-back is memory-bound: both cores' bandwidth). Bands of 64 rows, a tile row
-// of samples without super-sampling.
-template <class Rows>
-void for_row_bands(ThreadPool* pool, int height, Rows&& rows) {
-  constexpr int kBand = 64;
-  const int bands = (height + kBand - 1) / kBand;
-  auto band = [&](int b) { rows(b * kBand, std::min(height, (b + 1) * kBand)); };
-  if (pool) {
-    pool->run(bands, band);
-  } else {
-    for (int b = 0; b < bands; ++b) band(b);
-  }
-}
-
-}  // namespace
-
 void Renderer::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
   if (channels != 3 && channels != 4) throw Error("Renderer::read_color: channels must be 3 or 4, not " + std::to_string(channels));
-  const Impl& r = *impl_;
-  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) {
-    resolve_color_rows(r.framebuffer, r.ssaa, rgba, row_bytes, channels, y0, y1);
-  });
+  velocity::read_color(impl_->framebuffer, impl_->ssaa, impl_->pool.get(), rgba, row_bytes, channels);
 }
 
 std::vector<float> Renderer::window_depth() const {
@@ -294,8 +205,7 @@ std::vector<float> Renderer::window_depth() const {
 }
 
 void Renderer::read_window_depth(float* out) const {
-  const Impl& r = *impl_;
-  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) { resolve_window_depth_rows(r.framebuffer, r.ssaa, out, y0, y1); });
+  velocity::read_window_depth(impl_->framebuffer, impl_->ssaa, impl_->pool.get(), out);
 }
 
 std::vector<uint32_t> Renderer::object_ids() const { return resolve_object_ids(impl_->framebuffer, impl_->ssaa); }
@@ -307,23 +217,7 @@ std::vector<float> Renderer::view_depth() const {
 }
 
 void Renderer::read_view_depth(float* out) const {
-  // Window depth d = 0.5 z_ndc + 0.5 with z_ndc = (P22 z + P23) / (P32 z + P33) for the
-  // eye-space z: solved for z, in double (the projection's own inverse, so it is exact
-  // for perspective and orthographic cameras alike up to float depth).
-  const Impl& r = *impl_;
-  const Mat4& p = r.projection;
-  const double p22 = p.m[2][2], p23 = p.m[2][3], p32 = p.m[3][2], p33 = p.m[3][3];
-  const size_t w = size_t(r.width);
-  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) {
-    resolve_window_depth_rows(r.framebuffer, r.ssaa, out, y0, y1);
-    float* d = out + size_t(y0) * w;
-    const size_t n = size_t(y1 - y0) * w;
-    for (size_t i = 0; i < n; ++i) {  // no branch: the compiler vectorises it
-      const double ndc = 2.0 * double(d[i]) - 1.0;
-      const float z = float((ndc * p33 - p23) / (ndc * p32 - p22));
-      d[i] = d[i] < 1.0f ? z : 0.0f;
-    }
-  });
+  velocity::read_view_depth(impl_->framebuffer, impl_->ssaa, impl_->pool.get(), impl_->projection, out);
 }
 
 void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color) {
@@ -365,10 +259,7 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   if (!r.in_frame) throw Error("Renderer::draw called outside begin_frame/end_frame");
   r.stats.objects++;
   if (mesh.triangles.empty()) return;
-  // Whole-object rejection: a bounding sphere entirely outside one plane of the view
-  // volume costs one test instead of a pass over every vertex.
-  if (mesh.positions.size() <= kSphereTestMaxVertices && Frustum(r.view_projection).outside(world_sphere(mesh, world)))
-    return void(r.stats.objects_culled++);
+  if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats.objects_culled++);
   triangle::DrawList& p = r.plan;
   triangle::MeshDrawPlan d;
   d.mesh = &mesh;
@@ -380,16 +271,9 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   if (!mesh.normals.empty()) {
     d.normals = &mesh.normals;
   } else {
-    // Normals averaged over the faces sharing each vertex (area-weighted), for meshes
-    // built by hand; loaders compute normals once (compute_normals, smoothing groups).
     if (r.averaged_used == r.averaged_normals.size()) r.averaged_normals.emplace_back();
     std::vector<Vec3>& n = r.averaged_normals[r.averaged_used++];
-    n.assign(mesh.positions.size(), Vec3{});
-    for (const Triangle& t : mesh.triangles) {
-      Vec3 a = mesh.positions[t.v[0]], b = mesh.positions[t.v[1]], c = mesh.positions[t.v[2]];
-      Vec3 fn = cross(b - a, c - a);
-      for (uint32_t v : t.v) n[v] += fn;
-    }
+    geometry::average_normals(mesh, n);
     d.normals = &n;  // normalised when transformed to eye space
   }
   triangle::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
@@ -414,43 +298,7 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   r.stats.objects++;
   if (primitives == 0) return;
   triangle::DrawList& p = r.plan;
-  triangle::BatchDrawPlan d;
-  d.batch = batch;
-  d.primitive_count = primitives;
-  d.textured = state.texture.texture != nullptr;
-  d.fog = state.fog;
-  d.kernel = raster::fixed_kernel(d.textured, d.fog);
-  d.num_varyings = raster::fixed_varyings(d.textured, d.fog);
-
-  // The viewport, within the guard band's reach of the framebuffer (as OpenGL's
-  // GL_MAX_VIEWPORT_DIMS bounds it).
-  const int fw = p.width, fh = p.height;
-  const Viewport& v = batch.viewport;
-  const int vw = v.width > 0 ? std::min(v.width, kMaxFramebufferSide) : fw;
-  const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
-  const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
-  const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
-  d.viewport = geometry::viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
-  // Triangles stay inside the viewport (the view volume's sides are not clipped, they
-  // are this box); points and wide lines may reach past it by half their size.
-  triangle::SetupParams& s = d.setup;
-  int sx0 = 0, sy0 = 0, sx1 = fw - 1, sy1 = fh - 1;
-  if (state.scissor) {
-    sx0 = std::max(sx0, state.scissor_x0), sy0 = std::max(sy0, state.scissor_y0);
-    sx1 = std::min(sx1, state.scissor_x1 - 1), sy1 = std::min(sy1, state.scissor_y1 - 1);
-  }
-  s.x0 = std::max(sx0, vx), s.y0 = std::max(sy0, vy), s.x1 = std::min(sx1, vx + vw - 1), s.y1 = std::min(sy1, vy + vh - 1);
-  const int reach = int(std::max(batch.point_size, batch.line_width) * 0.5f) + 1;
-  s.px0 = std::max(sx0, vx - reach), s.py0 = std::max(sy0, vy - reach);
-  s.px1 = std::min(sx1, vx + vw - 1 + reach), s.py1 = std::min(sy1, vy + vh - 1 + reach);
-  s.offset = state.polygon_offset;
-  s.offset_factor = state.offset_factor, s.offset_units = state.offset_units;
-
-  raster::DrawState st;
-  st.pixel = state;
-  if (d.textured) st.texture = raster::SamplerView(*state.texture.texture, state.texture.sampler);
-  d.draw_state = uint32_t(r.draw_states.size());
-  r.draw_states.push_back(st);
+  const triangle::BatchDrawPlan d = triangle::plan_batch_draw(p, r.draw_states, batch, state, primitives);
   const uint32_t index = uint32_t(p.batches.size());
   p.batches.push_back(d);
   for (uint32_t b = 0; b < primitives; b += kTrianglesPerJob)
@@ -493,45 +341,26 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   r.allocate_vertices();
   r.vertex_stage(pool);
   const Clock::time_point t1 = Clock::now();
-  r.triangle_stage(pool, painter);
+  r.triangle_stage.run(pool, r.bins, r.plan, r.jobs, r.framebuffer.width, r.framebuffer.height, painter);
   if (painter) r.bins.bin_deferred();
   const Clock::time_point t2 = Clock::now();
 
-  raster::TileInputs frame;
-  frame.bins = &r.bins;
-  frame.draws = &r.draw_states;
-  frame.lights = &r.plan.lights;
-  frame.depth_test = !painter;
-  frame.clear_color = r.start.clear_color, frame.clear_depth = r.start.clear_depth;
-  frame.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
-  frame.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
-  r.framebuffer.expect_clear(frame.color, frame.depth);
-  pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(frame, tile, r.framebuffer); });
+  raster::TileInputs tiles;
+  tiles.bins = &r.bins;
+  tiles.draws = &r.draw_states;
+  tiles.lights = &r.plan.lights;
+  tiles.depth_test = !painter;
+  tiles.clear_color = r.start.clear_color, tiles.clear_depth = r.start.clear_depth;
+  tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
+  tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
+  r.framebuffer.expect_clear(tiles.color, tiles.depth);
+  pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(tiles, tile, r.framebuffer); });
   const Clock::time_point t3 = Clock::now();
   r.stats.vertex_ms = ms(t0, t1), r.stats.triangle_ms = ms(t1, t2), r.stats.tile_ms = ms(t2, t3);
 
-  // The frame's statistics, and one warning per mesh with non-finite vertices (not one
-  // per frame, nor per triangle). The set only grows with distinct bad meshes; a
-  // long-running program that makes new ones forever forgets them now and then (and
-  // may warn again) rather than grow.
-  for (const FrameStats& w : r.worker_stats) {
-    FrameStats& s = r.stats;
-    s.objects_culled += w.objects_culled, s.triangles += w.triangles, s.triangles_rejected += w.triangles_rejected;
-    s.triangles_nonfinite += w.triangles_nonfinite, s.triangles_clipped += w.triangles_clipped;
-    s.triangles_culled += w.triangles_culled, s.triangles_rasterized += w.triangles_rasterized;
-    s.lines += w.lines, s.points += w.points;
-  }
-  std::vector<size_t>& bad = r.nonfinite;
-  bad.assign(r.plan.meshes.size(), 0);
-  for (const triangle::Job& j : r.jobs)
-    if (j.kind == triangle::Job::Kind::Mesh) bad[j.draw] += j.nonfinite;
-  for (size_t i = 0; i < bad.size(); ++i) {
-    if (!bad[i]) continue;
-    const Mesh* mesh = r.plan.meshes[i].mesh;
-    if (r.warned_meshes.size() >= 4096) r.warned_meshes.clear();
-    if (r.warned_meshes.insert(mesh).second)
-      warn("mesh '" + mesh->name + "': " + std::to_string(bad[i]) + " triangles with NaN or infinite coordinates were dropped");
-  }
+  // The frame's statistics, and a warning for each mesh that lost triangles to NaN.
+  r.triangle_stage.add_stats(r.stats);
+  r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
   return r.stats;
 }
 

@@ -100,4 +100,10 @@ struct DrawList {
 void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
                     const Material& default_material);
 
+// Plans a Renderer::draw(batch, state) of `primitives` primitives: its kernel, its
+// viewport (within the guard band's reach of the framebuffer), the pixels set-up may
+// touch (viewport and scissor) and its DrawState, appended to `states`.
+BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawState>& states, const PrimitiveBatch& batch,
+                              const PixelState& state, uint32_t primitives);
+
 }  // namespace velocity::triangle
