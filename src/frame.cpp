@@ -1,5 +1,5 @@
-// The frame, top to bottom. Renderer::draw only records and plans a draw; end_frame
-// runs the pipeline on every core:
+// The CPU backend (velocity/backend.hpp) and its frame, top to bottom. draw only
+// records and plans a draw; end_frame runs the pipeline on every core:
 //
 //   vertex stage    chunks of vertices: transform, project, snap, light   (all cores)
 //   triangle stage  chunks of triangles: reject, cull, clip, set up, bin  (all cores,
@@ -26,8 +26,8 @@
 #include "raster/rasterize.hpp"
 #include "shading/lighting.hpp"
 #include "triangle/stage.hpp"
+#include "velocity/backend.hpp"
 #include "velocity/error.hpp"
-#include "velocity/renderer.hpp"
 
 namespace velocity {
 
@@ -45,8 +45,38 @@ void grow(std::vector<T>& v, size_t n) {
 
 }  // namespace
 
-struct Renderer::Impl {
-  int width = 0, height = 0;  // the output size
+class CpuBackend final : public Backend {
+ public:
+  CpuBackend(int width, int height) { resize(width, height, 1); }
+
+  void resize(int w, int h) override { resize(w, h, ssaa); }
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                   const RenderOptions& options) override;
+  void draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) override;
+  void draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) override;
+  void clear(const ClearRequest& request) override;
+  const FrameStats& end_frame() override;
+  const FrameStats& stats() const override { return stats_; }
+
+  Image color_image() const override { return resolve_color(framebuffer, ssaa); }
+  Image depth_image() const override { return resolve_depth(framebuffer, ssaa); }
+  void read_color(uint8_t* rgba, size_t row_bytes, int channels) const override {
+    velocity::read_color(framebuffer, ssaa, pool.get(), rgba, row_bytes, channels);
+  }
+  void read_view_depth(float* out) const override {
+    velocity::read_view_depth(framebuffer, ssaa, pool.get(), projection, out);
+  }
+  void read_window_depth(float* out) const override { velocity::read_window_depth(framebuffer, ssaa, pool.get(), out); }
+  std::vector<uint32_t> object_ids() const override { return resolve_object_ids(framebuffer, ssaa); }
+  size_t framebuffer_bytes() const override {
+    return framebuffer.color.size() * sizeof(uint32_t) + framebuffer.depth.size() * sizeof(float) +
+           framebuffer.ids.size() * sizeof(uint32_t);
+  }
+
+ private:
+  int width_ = 0, height_ = 0;  // the output size
   int ssaa = 1;               // samples per output pixel, per side
   Framebuffer framebuffer;    // the samples: width * ssaa x height * ssaa
   raster::Bins bins;
@@ -61,8 +91,7 @@ struct Renderer::Impl {
   Material default_material;
   Mat4 view, projection, view_projection;
   FrameStart start;
-  FrameStats stats;
-  bool in_frame = false;
+  FrameStats stats_;
 
   triangle::TriangleStage triangle_stage;  // its workers' scratch, reused across frames
 
@@ -86,7 +115,7 @@ struct Renderer::Impl {
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(k) + "x" +
                   std::to_string(k) + " super-sampling needs a sample buffer over " +
                   std::to_string(kMaxFramebufferSide) + " a side");
-    if (w == width && h == height && k == ssaa && framebuffer.width == w * k) return;
+    if (w == width_ && h == height_ && k == ssaa && framebuffer.width == w * k) return;
     // Bins first, then the framebuffer, which reuses its buffers when they are large
     // enough (a program switching sizes or super-sampling factors allocates nothing)
     // and otherwise allocates new ones before it lets go of the old: when memory runs
@@ -98,7 +127,7 @@ struct Renderer::Impl {
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + ": out of memory for the tile bins");
     }
     framebuffer.resize(w * k, h * k);
-    width = w, height = h, ssaa = k;
+    width_ = w, height_ = h, ssaa = k;
   }
 
   // The vertex stage's outputs for every draw, in one set of arrays.
@@ -131,7 +160,6 @@ struct Renderer::Impl {
   };
   std::vector<VertexJob> vertex_jobs;  // reused across frames
   std::vector<size_t> nonfinite;       // per mesh draw, reused
-  std::vector<Mat4> world;             // render(scene)'s matrices, reused
 
   void vertex_stage(ThreadPool& pool) {
     std::vector<VertexJob>& work = vertex_jobs;
@@ -178,57 +206,12 @@ struct Renderer::Impl {
 
 const char* simd_target() { return raster::simd_target(); }
 
-Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) { impl_->resize(width, height, 1); }
-Renderer::~Renderer() = default;
-Renderer::Renderer(Renderer&&) noexcept = default;
-Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+std::unique_ptr<Backend> make_cpu_backend(int width, int height) { return std::make_unique<CpuBackend>(width, height); }
 
-void Renderer::resize(int width, int height) { impl_->resize(width, height, impl_->ssaa); }
-int Renderer::width() const { return impl_->width; }
-int Renderer::height() const { return impl_->height; }
-const FrameStats& Renderer::stats() const { return impl_->stats; }
-Image Renderer::color_image() const { return resolve_color(impl_->framebuffer, impl_->ssaa); }
-Image Renderer::depth_image() const { return resolve_depth(impl_->framebuffer, impl_->ssaa); }
-size_t Renderer::framebuffer_bytes() const {
-  const Framebuffer& fb = impl_->framebuffer;
-  return fb.color.size() * sizeof(uint32_t) + fb.depth.size() * sizeof(float) + fb.ids.size() * sizeof(uint32_t);
-}
-void Renderer::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
-  if (channels != 3 && channels != 4) throw Error("Renderer::read_color: channels must be 3 or 4, not " + std::to_string(channels));
-  velocity::read_color(impl_->framebuffer, impl_->ssaa, impl_->pool.get(), rgba, row_bytes, channels);
-}
-
-std::vector<float> Renderer::window_depth() const {
-  std::vector<float> d(size_t(impl_->width) * size_t(impl_->height));
-  read_window_depth(d.data());
-  return d;
-}
-
-void Renderer::read_window_depth(float* out) const {
-  velocity::read_window_depth(impl_->framebuffer, impl_->ssaa, impl_->pool.get(), out);
-}
-
-std::vector<uint32_t> Renderer::object_ids() const { return resolve_object_ids(impl_->framebuffer, impl_->ssaa); }
-
-std::vector<float> Renderer::view_depth() const {
-  std::vector<float> d(size_t(impl_->width) * size_t(impl_->height));
-  read_view_depth(d.data());
-  return d;
-}
-
-void Renderer::read_view_depth(float* out) const {
-  velocity::read_view_depth(impl_->framebuffer, impl_->ssaa, impl_->pool.get(), impl_->projection, out);
-}
-
-void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color) {
-  FrameStart start;
-  start.color = {clear_color.x, clear_color.y, clear_color.z, 1.0f};
-  begin_frame(camera, lights, start);
-}
-
-void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start) {
-  Impl& r = *impl_;
-  r.resize(r.width, r.height, options.ssaa);  // follows a change of options.ssaa
+void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                             const RenderOptions& options) {
+  CpuBackend& r = *this;
+  r.resize(r.width_, r.height_, options.ssaa);  // follows a change of options.ssaa
   r.framebuffer.keep_ids(options.object_ids);
   const int w = r.framebuffer.width, h = r.framebuffer.height;
   triangle::DrawList& p = r.plan;
@@ -250,16 +233,14 @@ void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& light
   r.jobs.clear();
   r.averaged_used = 0;
   r.start = start;
-  r.stats = {};
-  r.in_frame = true;
+  r.stats_ = {};
 }
 
-void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) try {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::draw called outside begin_frame/end_frame");
-  r.stats.objects++;
+void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) try {
+  CpuBackend& r = *this;
+  r.stats_.objects++;
   if (mesh.triangles.empty()) return;
-  if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats.objects_culled++);
+  if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats_.objects_culled++);
   triangle::DrawList& p = r.plan;
   triangle::MeshDrawPlan d;
   d.mesh = &mesh;
@@ -286,16 +267,9 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   throw Error("Renderer::draw: out of memory recording mesh '" + mesh.name + "'");
 }
 
-void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::draw called outside begin_frame/end_frame");
-  const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
-  if (batch.vertex_count && !batch.position) throw Error("Renderer::draw: a primitive batch needs positions");
-  if (batch.indices && batch.index_count % k)
-    throw Error("Renderer::draw: " + std::to_string(batch.index_count) + " indices do not make whole primitives of " +
-                std::to_string(k) + " vertices");
-  const uint32_t primitives = batch.indices ? batch.index_count / k : batch.vertex_count / k;
-  r.stats.objects++;
+void CpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) try {
+  CpuBackend& r = *this;
+  r.stats_.objects++;
   if (primitives == 0) return;
   triangle::DrawList& p = r.plan;
   const triangle::BatchDrawPlan d = triangle::plan_batch_draw(p, r.draw_states, batch, state, primitives);
@@ -307,9 +281,8 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
   throw Error("Renderer::draw: out of memory recording a primitive batch");
 }
 
-void Renderer::clear(const ClearRequest& request) {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::clear called outside begin_frame/end_frame");
+void CpuBackend::clear(const ClearRequest& request) {
+  CpuBackend& r = *this;
   triangle::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
   if (request.scissor) {
     c.x0 = std::max(c.x0, request.x0), c.y0 = std::max(c.y0, request.y0);
@@ -320,19 +293,16 @@ void Renderer::clear(const ClearRequest& request) {
   r.jobs.push_back({triangle::Job::Kind::Clear, index, 0, 1});
 }
 
-const FrameStats& Renderer::end_frame() {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::end_frame called without begin_frame");
-  r.in_frame = false;
+const FrameStats& CpuBackend::end_frame() {
   try {
-    return r.run_frame(options.depth_mode == DepthMode::Painter);
+    return run_frame(plan.options.depth_mode == DepthMode::Painter);
   } catch (const std::bad_alloc&) {
     throw Error("Renderer::end_frame: out of memory");
   }
 }
 
-const FrameStats& Renderer::Impl::run_frame(bool painter) {
-  Impl& r = *this;
+const FrameStats& CpuBackend::run_frame(bool painter) {
+  CpuBackend& r = *this;
   ThreadPool& pool = r.pool_for(r.plan.options.threads);
 
   using Clock = std::chrono::steady_clock;
@@ -356,25 +326,12 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   r.framebuffer.expect_clear(tiles.color, tiles.depth);
   pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(tiles, tile, r.framebuffer); });
   const Clock::time_point t3 = Clock::now();
-  r.stats.vertex_ms = ms(t0, t1), r.stats.triangle_ms = ms(t1, t2), r.stats.tile_ms = ms(t2, t3);
+  r.stats_.vertex_ms = ms(t0, t1), r.stats_.triangle_ms = ms(t1, t2), r.stats_.tile_ms = ms(t2, t3);
 
   // The frame's statistics, and a warning for each mesh that lost triangles to NaN.
-  r.triangle_stage.add_stats(r.stats);
+  r.triangle_stage.add_stats(r.stats_);
   r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
-  return r.stats;
-}
-
-const FrameStats& Renderer::render(const Scene& scene) {
-  begin_frame(scene.camera, scene.lights, scene.background);
-  std::vector<Mat4>& world = impl_->world;
-  scene.world_matrices(world);
-  const auto& objects = scene.objects();
-  for (size_t i = 0; i < objects.size(); ++i) {
-    const Object& o = objects[i];
-    if (!o.visible || !o.mesh) continue;
-    draw(*o.mesh, world[i], o.material ? &*o.material : nullptr, uint32_t(i + 1));
-  }
-  return end_frame();
+  return r.stats_;
 }
 
 }  // namespace velocity

@@ -23,6 +23,8 @@
 
 namespace velocity {
 
+class Backend;
+
 enum class DepthMode {
   ZBuffer,  // per-pixel depth test (LESS) and write
   Painter,  // no depth buffer: primitives sorted by mean depth, drawn far to near (seeds 001, 004)
@@ -152,8 +154,10 @@ class Renderer {
   size_t framebuffer_bytes() const;
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  // What draws (velocity/backend.hpp): the CPU pipeline.
+  std::unique_ptr<Backend> backend_;
+  bool in_frame_ = false;
+  std::vector<Mat4> world_;  // render()'s matrices, reused
 };
 
 }  // namespace velocity
