@@ -93,7 +93,7 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
     auto culled = hn::And(open, hn::FirstN(du, 0));
     if (job.cull_back) culled = hn::And(open, back);
 
-    VU learnt = hn::Or(hn::IfThenElseZero(front, hn::Set(du, kCullFront)), hn::IfThenElseZero(back, hn::Set(du, kCullBack)));
+    VU learnt = hn::Or(hn::IfThenElseZero(front, hn::Set(du, kKnownFront)), hn::IfThenElseZero(back, hn::Set(du, kKnownBack)));
     if (job.drop_empty) {
       // The box of pixel centres inside the triangle's box, within the drawable box.
       const VI minx = hn::Min(hn::Min(X[0], X[1]), X[2]), maxx = hn::Max(hn::Max(X[0], X[1]), X[2]);
@@ -145,7 +145,7 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
           }
         const auto none = hn::Eq(mask, hn::Zero(du));
         culled = hn::Or(culled, hn::And(none, candidates));
-        learnt = hn::Or(learnt, hn::IfThenElseZero(candidates, hn::Or(mask, hn::Set(du, kCullSmall))));
+        learnt = hn::Or(learnt, hn::IfThenElseZero(candidates, hn::Or(mask, hn::Set(du, kKnownSmall))));
       }
     }
     open = hn::AndNot(culled, open);

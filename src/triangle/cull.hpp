@@ -29,9 +29,9 @@ struct CullCounts {
 };
 
 // What the first pass learnt of a triangle it let through (`info` below).
-inline constexpr uint32_t kCullSmall = 1u << 16;  // bits 0-15: its pixels in the 4x4 box at its first centre
-inline constexpr uint32_t kCullFront = 1u << 17;  // surely front-facing
-inline constexpr uint32_t kCullBack = 1u << 18;   // surely back-facing
+inline constexpr uint32_t kKnownSmall = 1u << 16;  // bits 0-15: its pixels in the 4x4 box at its first centre
+inline constexpr uint32_t kKnownFront = 1u << 17;  // surely front-facing
+inline constexpr uint32_t kKnownBack = 1u << 18;   // surely back-facing
 
 // Writes the indices of the triangles that go on: unclipped ones to `direct` with what
 // was learnt of them in `info`, those needing clipping to `clip` (each room for

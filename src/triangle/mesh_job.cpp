@@ -184,8 +184,8 @@ class MeshTriangles {
     const uint32_t any = codes_[i0] | codes_[i1] | codes_[i2];
     const SlotPlan& s = slot_of(f);
     bool front;
-    if (learnt & (kCullFront | kCullBack)) {
-      front = learnt & kCullFront;
+    if (learnt & (kKnownFront | kKnownBack)) {
+      front = learnt & kKnownFront;
     } else if (!must_clip) {
       Facing fc = facing(screen(i0), screen(i1), screen(i2));
       if (fc == Facing::Degenerate) return void(stats_.triangles_culled++);
@@ -209,7 +209,7 @@ class MeshTriangles {
     }
     if (!must_clip) {
       const ScreenVertex a = screen(i0), b = screen(i1), c = screen(i2);
-      if (learnt & kCullSmall) return emit_small(info, a, b, c, poly[0].var, poly[1].var, poly[2].var, nvar, learnt & 0xffff);
+      if (learnt & kKnownSmall) return emit_small(info, a, b, c, poly[0].var, poly[1].var, poly[2].var, nvar, learnt & 0xffff);
       emit(info, a, b, c, poly[0].var, poly[1].var, poly[2].var, nvar);
       return;
     }

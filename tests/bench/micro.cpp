@@ -108,7 +108,7 @@ void SetUpAndBin(benchmark::State& state, bool bin) {
       const float* c[3] = {&s.color[t.v[0]].x, &s.color[t.v[1]].x, &s.color[t.v[2]].x};
       uint32_t ref;
       raster::RecordHeader* r =
-          info[i] & triangle::kCullSmall
+          info[i] & triangle::kKnownSmall
               ? triangle::setup_small_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, info[i] & 0xffff,
                                              {}, p, ref)
               : triangle::setup_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, {}, p, ref);
