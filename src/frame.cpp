@@ -320,7 +320,7 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   tiles.draws = &r.draw_states;
   tiles.lights = &r.plan.lights;
   tiles.depth_test = !painter;
-  tiles.clear_color = r.start.clear_color, tiles.clear_depth = r.start.clear_depth;
+  tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
   tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
   tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
   r.framebuffer.expect_clear(tiles.color, tiles.depth);

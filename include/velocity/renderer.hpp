@@ -57,9 +57,9 @@ struct RenderOptions {
 // frame left (an OpenGL context keeps its framebuffer between flushes).
 struct FrameStart {
   FrameStart() {}  // not an aggregate: begin_frame(camera, lights, {r, g, b}) stays the Vec3 one
-  bool clear_color = true;
+  bool clear_color_buffer = true;  // false: the colour buffer starts as the last frame left it
   Vec4 color{0.1f, 0.1f, 0.15f, 1.0f};
-  bool clear_depth = true;
+  bool clear_depth_buffer = true;  // the same for the depth buffer
   float depth = 1.0f;
 };
 
