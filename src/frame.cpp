@@ -1,12 +1,13 @@
 // The CPU backend (velocity/backend.hpp) and its frame, top to bottom. draw only
 // records and plans a draw; end_frame runs the pipeline on every core:
 //
-//   vertex stage    chunks of vertices: transform, project, snap, light   (all cores)
+//   vertex stage    chunks of vertices: transform, project, snap, light   (all cores,
+//                   geometry/, shading/)
 //   triangle stage  chunks of triangles: reject, cull, clip, set up, bin  (all cores,
-//                   each worker into its own arena and tile lists)
-//   (painter's mode: sort every record far to near, then bin)
+//                   triangle/; each worker into its own arena and tile lists)
+//   (painter's mode: sort every record far to near, then bin: raster/bins)
 //   tiles           clear, then each record in submission order: coverage, shading
-//                   kernel, depth, colour                                  (all cores)
+//                   kernel, depth, colour                     (all cores, raster/)
 //
 // Jobs are numbered in submission order and tiles merge the workers' lists by job, so
 // the image is the same for any number of threads.

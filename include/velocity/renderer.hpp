@@ -6,7 +6,7 @@
 //
 // A frame goes load -> scene -> transform (vertex lighting) -> cull and clip -> set-up
 // -> bin to 64x64 tiles -> rasterize and shade each tile -> framebuffer. See
-// docs/pipeline.md.
+// docs/pipeline.md. What draws is a backend (velocity/backend.hpp): the CPU pipeline.
 #pragma once
 
 #include <cstddef>

@@ -13,7 +13,7 @@ namespace velocity::triangle {
 // Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
 inline int64_t snap(float v) { return int64_t(std::lrint(v * float(raster::kSubpixelOne))); }
 
-// The geometry stage keeps vertices within the guard band (16384 pixels around the
+// The triangle stage keeps vertices within the guard band (16384 pixels around the
 // framebuffer, or around a viewport that lies within 16384 pixels of it), but a
 // degenerate projection can still hand over NaN or huge coordinates. Set-up refuses
 // anything outside +-2^20 pixels: snapped values then stay below 2^28 (they fit int32).
