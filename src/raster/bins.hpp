@@ -1,8 +1,9 @@
 // Binning: each primitive's record goes to the list of every 64x64 tile its bounding box
 // touches. The policy is here and only here: a record is emitted once (WorkerBins::emit)
 // and binned at once, or in painter's mode deferred, sorted far to near with the whole
-// frame's records and binned in that order (Bins::bin_deferred). Tiles are then rasterised independently, each reading only its own lists,
-// which is what lets them run on separate cores.
+// frame's records and binned in that order (Bins::bin_deferred). Tiles are then
+// rasterised independently, each reading only its own lists, which is what lets them
+// run on separate cores.
 //
 // The front end runs on every core too: the frame's work is cut into jobs (a range of
 // one draw's triangles, a clear, ...) numbered in submission order, and each worker

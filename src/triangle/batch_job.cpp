@@ -113,8 +113,8 @@ class BatchPrimitives {
       sa = to_screen(pa), sb = to_screen(pb);
     }
     uint32_t offset;
-    RecordHeader* r = setup_line(cx_.bins, sa, sb, va, vb, d_.num_varyings, int(b_.line_width + 0.5f), info_,
-                                         d_.setup, offset);
+    RecordHeader* r =
+        setup_line(cx_.bins, sa, sb, va, vb, d_.num_varyings, int(b_.line_width + 0.5f), info_, d_.setup, offset);
     if (!r) return;
     cx_.emit(*r, offset, (sa.z + sb.z) / 2);
     stats_.lines++;
@@ -127,8 +127,8 @@ class BatchPrimitives {
     varyings(v, var);
     const ScreenVertex p = screen(v);
     uint32_t offset;
-    RecordHeader* r = setup_point(cx_.bins, p, var, d_.num_varyings, int(b_.point_size + 0.5f), info_, d_.setup,
-                                          offset);
+    RecordHeader* r =
+        setup_point(cx_.bins, p, var, d_.num_varyings, int(b_.point_size + 0.5f), info_, d_.setup, offset);
     if (!r) return;
     cx_.emit(*r, offset, p.z);
     stats_.points++;

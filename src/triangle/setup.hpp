@@ -74,9 +74,10 @@ struct RecordInfo {
 // in `offset`, or nullptr when the triangle covers no pixel centre inside the box
 // (degenerate, too small, or outside). Either winding is accepted; culling is the
 // caller's decision, made with facing().
-raster::RecordHeader* setup_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                             const float* var0, const float* var1, const float* var2, int num_varyings,
-                             const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+raster::RecordHeader* setup_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
+                                     const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
+                                     int num_varyings, const RecordInfo& info, const SetupParams& params,
+                                     uint32_t& offset);
 
 // Sets up a small triangle whose covered pixel centres are already known: `mask`, the
 // centres in the 4x4 box at its first centre (bit y * 4 + x), from the triangle
@@ -84,17 +85,17 @@ raster::RecordHeader* setup_triangle(raster::WorkerBins& bins, const ScreenVerte
 // (setup_triangle itself turns triangles whose centres lie within 8x8 into the same
 // kind of record, finding their pixels with the edge functions.)
 raster::RecordHeader* setup_small_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
-                                   const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
-                                   int num_varyings, uint32_t mask, const RecordInfo& info, const SetupParams& params,
-                                   uint32_t& offset);
+                                           const ScreenVertex& v2, const float* var0, const float* var1,
+                                           const float* var2, int num_varyings, uint32_t mask, const RecordInfo& info,
+                                           const SetupParams& params, uint32_t& offset);
 
 // A line `width` pixels wide from a to b, varyings interpolated along it.
-raster::RecordHeader* setup_line(raster::WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b, const float* var_a,
-                         const float* var_b, int num_varyings, int width, const RecordInfo& info,
-                         const SetupParams& params, uint32_t& offset);
+raster::RecordHeader* setup_line(raster::WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b,
+                                 const float* var_a, const float* var_b, int num_varyings, int width,
+                                 const RecordInfo& info, const SetupParams& params, uint32_t& offset);
 
 // A point: the size x size square of pixels centred on p, with p's varyings.
-raster::RecordHeader* setup_point(raster::WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings, int size,
-                          const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+raster::RecordHeader* setup_point(raster::WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings,
+                                  int size, const RecordInfo& info, const SetupParams& params, uint32_t& offset);
 
 }  // namespace velocity::triangle
