@@ -2,11 +2,47 @@
 // forwarded to the one that draws (velocity/backend.hpp).
 #include <string>
 
+#include "geometry/normals.hpp"
 #include "velocity/backend.hpp"
 #include "velocity/error.hpp"
 #include "velocity/renderer.hpp"
 
 namespace velocity {
+
+// The normals output: the frame's mesh draws, recorded, and drawn again by end_frame with
+// their normals as colours, by a backend of their own (the frame's buffers stay as
+// they are).
+struct Renderer::NormalsPass {
+  bool active = false;  // the frame (being) drawn keeps normals
+  Camera camera;
+  std::vector<Light> lights;
+  RenderOptions options;
+  struct Draw {
+    const Mesh* mesh;
+    Mat4 world;
+  };
+  std::vector<Draw> draws;
+  std::vector<Mesh> meshes;  // the draws' meshes with normals as colours
+  std::unique_ptr<Backend> backend;
+
+  void run(int width, int height) {
+    if (!backend) backend = make_cpu_backend(width, height);
+    backend->resize(width, height);
+    RenderOptions o = options;
+    o.object_ids = false;
+    o.shading = Shading::Unlit;
+    FrameStart start;
+    start.color = {0.5f, 0.5f, 0.5f, 1.0f};  // the colour of a zero normal
+    backend->begin_frame(camera, lights, start, o);
+    meshes.resize(draws.size());
+    const Mat4 view = camera.view();
+    for (size_t i = 0; i < draws.size(); ++i) {
+      geometry::normals_as_colors(*draws[i].mesh, view * draws[i].world, options.shading == Shading::Flat, meshes[i]);
+      backend->draw(meshes[i], draws[i].world, nullptr, 0);
+    }
+    backend->end_frame();
+  }
+};
 
 Renderer::Renderer(int width, int height) : backend_(make_cpu_backend(width, height)) {}
 Renderer::~Renderer() = default;
@@ -27,11 +63,18 @@ void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& light
 void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start) {
   backend_->begin_frame(camera, lights, start, options);
   in_frame_ = true;
+  if (options.normals) {
+    if (!normals_) normals_ = std::make_unique<NormalsPass>();
+    normals_->camera = camera, normals_->lights = lights, normals_->options = options;
+    normals_->draws.clear();
+  }
+  if (normals_) normals_->active = options.normals;
 }
 
 void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) {
   if (!in_frame_) throw Error("Renderer::draw called outside begin_frame/end_frame");
   backend_->draw(mesh, world, material, object_id);
+  if (normals_ && normals_->active) normals_->draws.push_back({&mesh, world});
 }
 
 void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) {
@@ -52,7 +95,9 @@ void Renderer::clear(const ClearRequest& request) {
 const FrameStats& Renderer::end_frame() {
   if (!in_frame_) throw Error("Renderer::end_frame called without begin_frame");
   in_frame_ = false;
-  return backend_->end_frame();
+  const FrameStats& stats = backend_->end_frame();
+  if (normals_ && normals_->active) normals_->run(width(), height());
+  return stats;
 }
 
 const FrameStats& Renderer::render(const Scene& scene) {
@@ -91,5 +136,18 @@ std::vector<float> Renderer::window_depth() const {
 void Renderer::read_window_depth(float* out) const { backend_->read_window_depth(out); }
 
 std::vector<uint32_t> Renderer::object_ids() const { return backend_->object_ids(); }
+
+void Renderer::read_normals(float* out) const {
+  if (!normals_ || !normals_->active) throw Error("Renderer::read_normals: the frame was not drawn with options.normals");
+  const size_t pixels = size_t(width()) * size_t(height());
+  std::vector<uint8_t> rgba(pixels * 4);
+  normals_->backend->read_color(rgba.data(), size_t(width()) * 4, 4);
+  std::vector<float> depth(pixels);
+  backend_->read_view_depth(depth.data());
+  for (size_t i = 0; i < pixels; ++i) {
+    const Vec3 n = depth[i] == 0 ? Vec3{} : geometry::normal_from_color(&rgba[i * 4]);
+    out[i * 3] = n.x, out[i * 3 + 1] = n.y, out[i * 3 + 2] = n.z;
+  }
+}
 
 }  // namespace velocity

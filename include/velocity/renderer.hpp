@@ -51,6 +51,10 @@ struct RenderOptions {
   // Keep an object-id buffer: every sample remembers the id of the draw that last
   // wrote its colour (0 where nothing was drawn). Read it with object_ids().
   bool object_ids = false;
+  // Also keep the eye-space normals of the frame's mesh draws: end_frame draws them a
+  // second time, unlit, with their normals as colours (8 bits a component), into buffers
+  // of their own. Read them with read_normals().
+  bool normals = false;
 };
 
 // How begin_frame starts the frame: cleared (the default), or from what the previous
@@ -150,6 +154,11 @@ class Renderer {
   // options.object_ids was set for the frame; otherwise empty. With super-sampling,
   // the id of the nearest sample, never a mix.
   std::vector<uint32_t> object_ids() const;
+  // Per output pixel (top row first), x, y, z of the unit eye-space normal of the mesh
+  // drawn there (0, 0, 0 where nothing was drawn; 8 bits a component), into `out`
+  // (width * height * 3 floats). Throws velocity::Error unless options.normals was set
+  // for the frame.
+  void read_normals(float* out) const;
   // Bytes held by the sample buffers (colour and depth) at the current size and ssaa.
   size_t framebuffer_bytes() const;
 
@@ -158,6 +167,8 @@ class Renderer {
   std::unique_ptr<Backend> backend_;
   bool in_frame_ = false;
   std::vector<Mat4> world_;  // render()'s matrices, reused
+  struct NormalsPass;        // options.normals: the second pass and its buffers
+  std::unique_ptr<NormalsPass> normals_;
 };
 
 }  // namespace velocity

@@ -40,43 +40,6 @@ Vec3 scaled_color(const LightBase& l) {
   return l.color * k;
 }
 
-// Normals as colours: n in [-1, 1] -> 0.5 + 0.5 n, read back as 8-bit and decoded.
-Vec3 encode(Vec3 n) { return n * 0.5f + Vec3{0.5f, 0.5f, 0.5f}; }
-
-// The frame's meshes with their eye-space normals as unlit colours: per vertex for
-// smooth shading, per face for flat.
-std::vector<Mesh> normal_meshes(const Frame& frame, bool flat) {
-  std::vector<Mesh> out;
-  out.reserve(frame.items.size());
-  Mat4 view = frame.camera.view();
-  for (const Frame::Item& item : frame.items) {
-    const Mesh& src = *item.mesh;
-    Mesh m;
-    m.name = src.name;
-    m.positions = src.positions;
-    // Unlit shading never reads them, but a mesh without normals makes the renderer
-    // average some for every draw: carrying them costs less.
-    m.normals = src.normals;
-    m.triangles = src.triangles;
-    m.face_materials = src.face_materials;
-    m.materials = src.materials;
-    for (Material& mat : m.materials) mat.texture.reset(), mat.env_map.reset();
-    Mat4 nm = normal_matrix(view * item.world);
-    bool faces = flat;
-    for (const Material& mat : src.materials) faces |= mat.shading == Shading::Flat;
-    if (faces || src.normals.empty()) {
-      m.face_colors.resize(src.triangles.size());
-      for (size_t f = 0; f < src.triangles.size(); ++f)
-        m.face_colors[f] = encode(normalize(nm.transform_vector(face_normal(src, src.triangles[f]))));
-    } else {
-      m.colors.resize(src.normals.size());
-      for (size_t v = 0; v < src.normals.size(); ++v) m.colors[v] = encode(normalize(nm.transform_vector(src.normals[v])));
-    }
-    out.push_back(std::move(m));
-  }
-  return out;
-}
-
 }  // namespace
 
 std::shared_ptr<const MeshData> make_mesh_data(std::string name, std::vector<std::shared_ptr<const Mesh>> parts,
@@ -216,6 +179,7 @@ RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& 
   r.options.object_ids = req.mask;
   r.options.shading = req.shading;
   r.options.cull_back_faces = req.cull_back_faces;
+  r.options.normals = req.normals;
   RenderOutput out;
   try {
     r.begin_frame(frame.camera, frame.lights, frame.start);
@@ -230,24 +194,8 @@ RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& 
     r.read_view_depth(depth);
     if (req.mask) out.mask = r.object_ids();
     if (req.normals) {
-      // A second pass: the eye-space normals as unlit colours (8 bits a component),
-      // with the same geometry, so the same pixels are covered.
-      std::vector<Mesh> meshes = normal_meshes(frame, req.shading == Shading::Flat);
-      r.options.object_ids = false;
-      r.options.shading = Shading::Unlit;
-      FrameStart start;
-      start.color = {0.5f, 0.5f, 0.5f, 1.0f};
-      r.begin_frame(frame.camera, frame.lights, start);
-      for (size_t i = 0; i < meshes.size(); ++i) r.draw(meshes[i], frame.items[i].world);
-      r.end_frame();
-      std::vector<uint8_t> rgba(pixels * 4);
-      r.read_color(rgba.data(), size_t(w) * 4);
-      out.normals.assign(pixels * 3, 0.0f);
-      for (size_t i = 0; i < pixels; ++i) {
-        if (depth[i] == 0) continue;
-        Vec3 n = normalize({rgba[i * 4] / 127.5f - 1, rgba[i * 4 + 1] / 127.5f - 1, rgba[i * 4 + 2] / 127.5f - 1});
-        out.normals[i * 3] = n.x, out.normals[i * 3 + 1] = n.y, out.normals[i * 3 + 2] = n.z;
-      }
+      out.normals.resize(pixels * 3);
+      r.read_normals(out.normals.data());
     }
   } catch (...) {
     r.options = saved;
