@@ -127,11 +127,11 @@ std::vector<std::array<double, 16>> SceneData::world_poses() const {
   return world;
 }
 
-Frame build_frame(const SceneData& scene, int width, int height) {
+SceneCopy copy_scene(const SceneData& scene, int width, int height) {
   if (scene.main_camera < 0 || scene.nodes[size_t(scene.main_camera)].removed)
     throw Error("the scene has no camera: add one with scene.add(camera, pose=...)");
   std::vector<std::array<double, 16>> world = scene.world_poses();
-  Frame f;
+  SceneCopy f;
   for (size_t i = 0; i < scene.nodes.size(); ++i) {
     const NodeData& n = scene.nodes[i];
     if (n.removed) continue;
@@ -160,7 +160,7 @@ Frame build_frame(const SceneData& scene, int width, int height) {
     // keeps depth precise. Along the view axis, so it holds for any direction.
     Mat4 view = f.camera.view();
     float far = 0;
-    for (const Frame::Item& item : f.items) {
+    for (const SceneCopy::Item& item : f.items) {
       Sphere s = world_sphere(item.mesh->bounding_sphere(), item.world);
       far = std::max(far, -view.transform_point(s.center).z + s.radius);
     }
@@ -172,7 +172,7 @@ Frame build_frame(const SceneData& scene, int width, int height) {
   return f;
 }
 
-RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& req) {
+RenderOutput render_frame(Renderer& r, const SceneCopy& frame, const RenderRequest& req) {
   const int w = r.width(), h = r.height();
   const size_t pixels = size_t(w) * size_t(h);
   RenderOptions saved = r.options;
@@ -183,7 +183,7 @@ RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& 
   RenderOutput out;
   try {
     r.begin_frame(frame.camera, frame.lights, frame.start);
-    for (const Frame::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
+    for (const SceneCopy::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
     r.end_frame();
     if (req.color) r.read_color(req.color_buffer, size_t(w) * (req.alpha ? 4 : 3), req.alpha ? 4 : 3);
     float* depth = req.depth_buffer;
