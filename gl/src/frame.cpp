@@ -33,14 +33,14 @@ BlendFactor blend_factor(GLenum f) {
 void Context::ensure_frame() {
   if (in_frame_ || !renderer_) return;
   FrameStart start;
-  start.clear_color = start.clear_depth = first_frame_;
+  start.clear_color_buffer = start.clear_depth_buffer = first_frame_;
   start.color = {0, 0, 0, 0};
   start.depth = 1;
   if (start_clear_) {
     // A whole-framebuffer glClear before anything else in the frame: the frame starts
     // cleared, which lets the renderer skip tiles that stay empty and clean.
-    start.clear_color = start_clear_color_ || first_frame_;
-    start.clear_depth = start_clear_depth_ || first_frame_;
+    start.clear_color_buffer = start_clear_color_ || first_frame_;
+    start.clear_depth_buffer = start_clear_depth_ || first_frame_;
     if (start_clear_color_) start.color = start_color_;
     if (start_clear_depth_) start.depth = start_depth_;
     start_clear_ = start_clear_color_ = start_clear_depth_ = false;

@@ -8,27 +8,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/clip.hpp"
+#include "geometry/viewport.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 
 namespace velocity::geometry {
-
-// What the triangle stage reads per vertex. fx, fy are meaningful only when the code
-// has no kMustClipPlanes, kOutNonFinite or kOutUnsnapped bit.
-struct ProjectedVertex {
-  int32_t fx, fy;  // screen position, 24.8 fixed point, y down
-  float z;         // window depth
-  float inv_w;     // 1 / w_clip
-};
-
-// clip -> window: x = (x/w + 1) * scale_x + offset_x, y = offset_y - (y/w + 1) * scale_y,
-// z = z/w * scale_z + offset_z (OpenGL's viewport transform in its order of operations,
-// so that snapped positions agree with Mesa's; y flipped so that row 0 is the top).
-struct ViewportMap {
-  float scale_x, offset_x, scale_y, offset_y, scale_z, offset_z;
-  GuardBand guard;
-};
 
 struct VertexOutputs {
   ProjectedVertex* projected = nullptr;

@@ -254,7 +254,7 @@ struct TileInputs {
   const std::vector<DrawState>* draws = nullptr;
   const shading::EyeLights* lights = nullptr;
   bool depth_test = true;       // false: painter's mode (meshes: no depth test, no depth write)
-  bool clear_color = true, clear_depth = true;
+  bool clear_color_buffer = true, clear_depth_buffer = true;
   uint32_t color = 0;           // the clear values
   float depth = 1.0f;
 };

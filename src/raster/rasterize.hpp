@@ -5,7 +5,7 @@
 // Kernels are chosen once per draw (a KernelId in each record), never per pixel. They
 // run on 4x4-pixel blocks, written once against Google Highway and compiled for
 // AVX-512, AVX2, SSE4 and plain C++; the best the processor has is picked at run time
-// (raster/rasterize.cpp, simd/simd.hpp).
+// (raster/rasterize.cpp, simd/simd-inl.h).
 #pragma once
 
 #include <cstdint>

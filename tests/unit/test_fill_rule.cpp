@@ -5,10 +5,11 @@
 #include <vector>
 
 #include "raster/rasterize.hpp"
-#include "raster/setup.hpp"
-#include "geometry/triangle_cull.hpp"
+#include "triangle/setup.hpp"
+#include "triangle/cull.hpp"
 
 using namespace velocity::raster;
+using namespace velocity::triangle;
 
 namespace {
 
@@ -27,7 +28,7 @@ struct TestBins {
   WorkerBins bins;
   TestBins() {
     bins.attach(&pool);
-    bins.resize(1);
+    bins.resize(1, 1);
   }
 };
 
@@ -270,9 +271,9 @@ TEST(FillRule, FirstPassIsExact) {
       continue;
     }
     const uint32_t l = learnt[size_t(t)];
-    if (!(l & kCullSmall)) continue;  // handed on whole: set-up decides
+    if (!(l & kKnownSmall)) continue;  // handed on whole: set-up decides
     ++small;
-    ASSERT_TRUE(l & kCullFront) << t;
+    ASSERT_TRUE(l & kKnownFront) << t;
     // The mask is relative to the first centre of the triangle's box.
     int64_t minx = std::min({v[0].fx, v[1].fx, v[2].fx}), miny = std::min({v[0].fy, v[1].fy, v[2].fy});
     const int bx0 = std::max(0, int((minx + 127) >> 8)), by0 = std::max(0, int((miny + 127) >> 8));

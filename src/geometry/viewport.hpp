@@ -1,25 +1,17 @@
-// Region codes and clipping in homogeneous clip space.
+// From clip space to the window: the region codes a vertex gets in clip space, the
+// guard band, and the viewport transform with the snap to 24.8 fixed point.
 //
 // A vertex is inside the view volume when -w <= x, y, z <= w. Region codes (Cohen-
-// Sutherland outcodes) have one bit per plane a vertex is outside of. Triangles whose
-// three codes share a bit are rejected whole; triangles with no code bit set are
-// accepted whole. Only the near and far planes, and the guard-band planes far outside
-// the screen, ever cut a triangle: left/right/top/bottom are otherwise handled by the
-// rasterizer's scissored bounding box, which is cheaper than making new vertices.
+// Sutherland outcodes) have one bit per plane a vertex is outside of.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "raster/contract.hpp"
 #include "velocity/math.hpp"
 
 namespace velocity::geometry {
-
-struct ClipVertex {
-  Vec4 pos;                            // clip space
-  float var[raster::kMaxVaryings];     // varyings, interpolated linearly in clip space
-  int src = -1;                        // the input vertex it is a copy of, or -1 for a new one
-};
 
 enum Outcode : uint32_t {
   kOutLeft = 1u << 0,  // x < -w
@@ -64,18 +56,41 @@ inline uint32_t outcode(const Vec4& p, GuardBand g) {
   return c;
 }
 
-// Most vertices a triangle can have after clipping against the six must-clip planes.
-inline constexpr int kMaxClippedVertices = 3 + 6;
+// What the triangle stage reads per vertex. fx, fy are meaningful only when the code
+// has no kMustClipPlanes, kOutNonFinite or kOutUnsnapped bit.
+struct ProjectedVertex {
+  int32_t fx, fy;  // screen position, 24.8 fixed point, y down
+  float z;         // window depth
+  float inv_w;     // 1 / w_clip
+};
 
-// Clips the convex polygon `poly` (n vertices, n <= kMaxClippedVertices - planes cut so
-// far) against each plane in `planes` (a set of kMustClipPlanes bits), interpolating
-// `num_varyings` varyings. Sutherland-Hodgman, one plane at a time. Returns the new
-// vertex count (0 when nothing is left); the result is in `poly`.
-int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int num_varyings);
+// clip -> window: x = (x/w + 1) * scale_x + offset_x, y = offset_y - (y/w + 1) * scale_y,
+// z = z/w * scale_z + offset_z (OpenGL's viewport transform in its order of operations,
+// so that snapped positions agree with Mesa's; y flipped so that row 0 is the top).
+// The one clip -> window projection of the engine: the vertex stage runs its SIMD form
+// on every vertex (geometry/vertex_stage.cpp), the triangle stage this scalar form on
+// the vertices clipping makes.
+struct ViewportMap {
+  float scale_x, offset_x, scale_y, offset_y, scale_z, offset_z;
+  GuardBand guard;
 
-// Clips the segment a-b against the must-clip planes in `planes` (parametric, Liang-
-// Barsky style). Returns false when nothing is left; else the new ends, which lie at
-// t0 and t1 of the old segment (for interpolating varyings).
-bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard, float* t0 = nullptr, float* t1 = nullptr);
+  // Window x, y, z and 1 / w of clip-space position c.
+  Vec4 window(const Vec4& c) const {
+    const float inv_w = 1.0f / c.w;
+    return {(c.x * inv_w + 1.0f) * scale_x + offset_x, offset_y - (c.y * inv_w + 1.0f) * scale_y,
+            (c.z * inv_w) * scale_z + offset_z, inv_w};
+  }
+};
+
+// clip -> window for a viewport (x, y, width, height) in framebuffer pixels, row 0 at
+// the top, with depth range [n, f].
+inline ViewportMap viewport_map(int x, int y, int w, int h, float n, float f) {
+  ViewportMap m;
+  m.scale_x = float(w) * 0.5f, m.offset_x = float(x);
+  m.scale_y = float(h) * 0.5f, m.offset_y = float(y + h);
+  m.scale_z = (f - n) * 0.5f, m.offset_z = (f + n) * 0.5f;
+  m.guard = GuardBand::for_viewport(w, h);
+  return m;
+}
 
 }  // namespace velocity::geometry
