@@ -1,12 +1,13 @@
-// The frame, top to bottom. Renderer::draw only records and plans a draw; end_frame
-// runs the pipeline on every core:
+// The CPU backend (velocity/backend.hpp) and its frame, top to bottom. draw only
+// records and plans a draw; end_frame runs the pipeline on every core:
 //
-//   vertex stage    chunks of vertices: transform, project, snap, light   (all cores)
+//   vertex stage    chunks of vertices: transform, project, snap, light   (all cores,
+//                   geometry/, shading/)
 //   triangle stage  chunks of triangles: reject, cull, clip, set up, bin  (all cores,
-//                   each worker into its own arena and tile lists)
-//   (painter's mode: sort every record far to near, then bin)
+//                   triangle/; each worker into its own arena and tile lists)
+//   (painter's mode: sort every record far to near, then bin: raster/bins)
 //   tiles           clear, then each record in submission order: coverage, shading
-//                   kernel, depth, colour                                  (all cores)
+//                   kernel, depth, colour                     (all cores, raster/)
 //
 // Jobs are numbered in submission order and tiles merge the workers' lists by job, so
 // the image is the same for any number of threads.
@@ -14,19 +15,21 @@
 #include <chrono>
 #include <deque>
 #include <new>
-#include <unordered_set>
 
 #include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
+#include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
-#include "geometry/draw_plan.hpp"
+#include "geometry/normals.hpp"
+#include "geometry/object_cull.hpp"
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
+#include "shading/lighting.hpp"
 #include "simd/targets.hpp"
+#include "triangle/stage.hpp"
+#include "velocity/backend.hpp"
 #include "velocity/error.hpp"
-#include "velocity/log.hpp"
-#include "velocity/renderer.hpp"
 
 namespace velocity {
 
@@ -36,76 +39,7 @@ namespace {
 // gets a share of one large mesh. Fixed, so that the jobs (and hence the image) do not
 // depend on the thread count.
 constexpr uint32_t kVerticesPerJob = 8192;
-using geometry::kTrianglesPerJob;
-// Meshes up to this many vertices are tested against the view volume by their bounding
-// sphere first; larger ones go straight to the vertex stage, whose region codes reject
-// their triangles (a bounding sphere costs a pass over every vertex each frame).
-constexpr size_t kSphereTestMaxVertices = 16384;
-
-// The convention's light when a scene brings none: white, from (0.3, 0.5, 1) in eye
-// space, ambient 0.2, diffuse 0.8.
-//
-// The scene's lights in eye space, into `l` (its vectors keep their storage).
-void eye_lights(const Mat4& view, const std::vector<Light>& lights, geometry::EyeLights& l) {
-  l.ambient = {};
-  l.directional.clear(), l.point.clear();
-  if (lights.empty()) {
-    l.ambient = {0.2f, 0.2f, 0.2f};
-    l.directional.push_back({normalize({0.3f, 0.5f, 1.0f}), {0.8f, 0.8f, 0.8f}});
-    return;
-  }
-  for (const Light& light : lights) {
-    switch (light.type) {
-      case LightType::Ambient: l.ambient += light.color; break;
-      case LightType::Directional:
-        l.directional.push_back({normalize(view.transform_vector(light.direction)), light.color});
-        break;
-      case LightType::Point:
-        l.point.push_back({view.transform_point(light.position), light.color, light.constant, light.linear,
-                           light.quadratic});
-        break;
-    }
-  }
-}
-
-// The six planes of the view volume in world space (Gribb and Hartmann: rows of the
-// view-projection matrix), normalised so that a sphere tests with one dot product.
-struct Frustum {
-  Vec4 planes[6];
-  explicit Frustum(const Mat4& vp) {
-    auto row = [&](int r) { return Vec4{vp.m[r][0], vp.m[r][1], vp.m[r][2], vp.m[r][3]}; };
-    Vec4 r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
-    Vec4 p[6] = {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r3 + r2, r3 - r2};
-    for (int i = 0; i < 6; ++i) {
-      float len = length(p[i].xyz());
-      planes[i] = len > 0 ? p[i] * (1.0f / len) : p[i];
-    }
-  }
-  bool outside(const Sphere& s) const {
-    for (const Vec4& p : planes)
-      if (dot(p.xyz(), s.center) + p.w < -s.radius) return true;
-    return false;
-  }
-};
-
-Sphere world_sphere(const Mesh& mesh, const Mat4& world) {
-  Sphere s = mesh.bounding_sphere();
-  float stretch = 0;
-  for (int c = 0; c < 3; ++c) stretch = std::max(stretch, length({world.m[0][c], world.m[1][c], world.m[2][c]}));
-  return {world.transform_point(s.center), s.radius * stretch};
-}
-
-// clip -> window for a viewport (x, y, width, height) in framebuffer pixels, row 0 at
-// the top, with depth range [n, f].
-geometry::ViewportMap viewport_map(int x, int y, int w, int h, float n, float f) {
-  geometry::ViewportMap m;
-  m.scale_x = float(w) * 0.5f, m.offset_x = float(x);
-  m.scale_y = float(h) * 0.5f, m.offset_y = float(y + h);
-  m.scale_z = (f - n) * 0.5f, m.offset_z = (f + n) * 0.5f;
-  m.guard = geometry::GuardBand::for_viewport(w, h);
-  return m;
-}
-
+using triangle::kTrianglesPerJob;
 template <class T>
 void grow(std::vector<T>& v, size_t n) {
   if (v.size() < n) v.resize(n);
@@ -113,37 +47,55 @@ void grow(std::vector<T>& v, size_t n) {
 
 }  // namespace
 
-struct Renderer::Impl {
-  int width = 0, height = 0;  // the output size
+class CpuBackend final : public Backend {
+ public:
+  CpuBackend(int width, int height) { resize(width, height, 1); }
+
+  void resize(int w, int h) override { resize(w, h, ssaa); }
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                   const RenderOptions& options) override;
+  void draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) override;
+  void draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) override;
+  void clear(const ClearRequest& request) override;
+  const FrameStats& end_frame() override;
+  const FrameStats& stats() const override { return stats_; }
+
+  Image color_image() const override { return resolve_color(framebuffer, ssaa); }
+  Image depth_image() const override { return resolve_depth(framebuffer, ssaa); }
+  void read_color(uint8_t* rgba, size_t row_bytes, int channels) const override {
+    velocity::read_color(framebuffer, ssaa, pool.get(), rgba, row_bytes, channels);
+  }
+  void read_view_depth(float* out) const override {
+    velocity::read_view_depth(framebuffer, ssaa, pool.get(), projection, out);
+  }
+  void read_window_depth(float* out) const override { velocity::read_window_depth(framebuffer, ssaa, pool.get(), out); }
+  std::vector<uint32_t> object_ids() const override { return resolve_object_ids(framebuffer, ssaa); }
+  size_t framebuffer_bytes() const override {
+    return framebuffer.color.size() * sizeof(uint32_t) + framebuffer.depth.size() * sizeof(float) +
+           framebuffer.ids.size() * sizeof(uint32_t);
+  }
+
+ private:
+  int width_ = 0, height_ = 0;  // the output size
   int ssaa = 1;               // samples per output pixel, per side
   Framebuffer framebuffer;    // the samples: width * ssaa x height * ssaa
   raster::Bins bins;
   std::unique_ptr<ThreadPool> pool;
 
   // The frame being recorded.
-  geometry::FramePlan plan;
+  triangle::DrawList plan;
   std::vector<raster::DrawState> draw_states;
-  std::vector<geometry::Job> jobs;
+  std::vector<triangle::Job> jobs;
   std::deque<std::vector<Vec3>> averaged_normals;  // for meshes that bring none, reused (stable addresses)
   size_t averaged_used = 0;
   Material default_material;
   Mat4 view, projection, view_projection;
   FrameStart start;
-  FrameStats stats;
-  bool in_frame = false;
+  FrameStats stats_;
 
-  // Per worker, reused across frames.
-  std::vector<FrameStats> worker_stats;
-  struct Sorted {
-    float key;
-    uint32_t order;  // submission order, for ties
-    uint32_t ref;
-    const raster::RecordHeader* record;
-  };
-  std::vector<Sorted> painter;  // painter's mode: every record of the frame
-  std::vector<std::vector<uint32_t>> survivors;  // per worker: the triangle stage's scratch
-  std::vector<std::vector<uint8_t>> marks;       // per worker: vertices drawn as points
-  std::unordered_set<const Mesh*> warned_meshes;  // meshes already warned about
+  triangle::TriangleStage triangle_stage;  // its workers' scratch, reused across frames
 
   ThreadPool& pool_for(int threads) {
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -158,14 +110,14 @@ struct Renderer::Impl {
   // velocity::Error (and changes nothing) when either is out of range.
   void resize(int w, int h, int k) {
     if (k < 1 || k > 4) throw Error("super-sampling factor " + std::to_string(k) + " is out of range (1..4)");
-    if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
+    if (w < 1 || h < 1 || w > kMaxFramebufferSide || h > kMaxFramebufferSide)
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
-                  std::to_string(raster::kMaxFramebufferSide) + " a side)");
-    if (int64_t(w) * k > raster::kMaxFramebufferSide || int64_t(h) * k > raster::kMaxFramebufferSide)
+                  std::to_string(kMaxFramebufferSide) + " a side)");
+    if (int64_t(w) * k > kMaxFramebufferSide || int64_t(h) * k > kMaxFramebufferSide)
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(k) + "x" +
                   std::to_string(k) + " super-sampling needs a sample buffer over " +
-                  std::to_string(raster::kMaxFramebufferSide) + " a side");
-    if (w == width && h == height && k == ssaa && framebuffer.width == w * k) return;
+                  std::to_string(kMaxFramebufferSide) + " a side");
+    if (w == width_ && h == height_ && k == ssaa && framebuffer.width == w * k) return;
     // Bins first, then the framebuffer, which reuses its buffers when they are large
     // enough (a program switching sizes or super-sampling factors allocates nothing)
     // and otherwise allocates new ones before it lets go of the old: when memory runs
@@ -177,12 +129,12 @@ struct Renderer::Impl {
       throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + ": out of memory for the tile bins");
     }
     framebuffer.resize(w * k, h * k);
-    width = w, height = h, ssaa = k;
+    width_ = w, height_ = h, ssaa = k;
   }
 
   // The vertex stage's outputs for every draw, in one set of arrays.
   void allocate_vertices() {
-    geometry::FramePlan& p = plan;
+    triangle::DrawList& p = plan;
     size_t total = 0;
     bool light = false, specular = false, normal = false, eye = false;
     for (auto& d : p.meshes) {
@@ -190,7 +142,7 @@ struct Renderer::Impl {
       light |= d.light, specular |= d.vertex_specular_terms, normal |= d.normal, eye |= d.eye;
     }
     for (auto& b : p.batches) b.vertex_base = total, total += b.batch.vertex_count;
-    geometry::VertexArrays& v = p.vertices;
+    triangle::VertexArrays& v = p.vertices;
     try {
       grow(v.projected, total), grow(v.codes, total);
       if (light) grow(v.diffuse, total);
@@ -210,7 +162,6 @@ struct Renderer::Impl {
   };
   std::vector<VertexJob> vertex_jobs;  // reused across frames
   std::vector<size_t> nonfinite;       // per mesh draw, reused
-  std::vector<Mat4> world;             // render(scene)'s matrices, reused
 
   void vertex_stage(ThreadPool& pool) {
     std::vector<VertexJob>& work = vertex_jobs;
@@ -221,18 +172,18 @@ struct Renderer::Impl {
     for (uint32_t i = 0; i < plan.batches.size(); ++i)
       for (size_t b = 0, n = plan.batches[i].batch.vertex_count; b < n; b += kVerticesPerJob)
         work.push_back({true, i, b, std::min<size_t>(b + kVerticesPerJob, n)});
-    geometry::VertexArrays& va = plan.vertices;
+    triangle::VertexArrays& va = plan.vertices;
     pool.run(int(work.size()), [&](int i) {
       const VertexJob& w = work[size_t(i)];
       if (w.batch) {
-        const geometry::BatchDrawPlan& b = plan.batches[w.draw];
+        const triangle::BatchDrawPlan& b = plan.batches[w.draw];
         geometry::ClipVertexJob job;
         job.positions = b.batch.position, job.begin = w.begin, job.end = w.end, job.viewport = b.viewport;
         job.out.projected = va.projected.data() + b.vertex_base, job.out.codes = va.codes.data() + b.vertex_base;
         geometry::project_clip_vertices(job);
         return;
       }
-      const geometry::MeshDrawPlan& d = plan.meshes[w.draw];
+      const triangle::MeshDrawPlan& d = plan.meshes[w.draw];
       geometry::MeshVertexJob job;
       job.positions = d.mesh->positions.data(), job.normals = d.normals->data();
       job.begin = w.begin, job.end = w.end;
@@ -252,166 +203,32 @@ struct Renderer::Impl {
     });
   }
 
-  // The triangle stage, on every core: each worker sets up and bins into its own bins.
-  void triangle_stage(ThreadPool& pool, bool painter_mode) {
-    bins.clear();
-    const int workers = pool.size();
-    worker_stats.assign(size_t(workers), FrameStats{});
-    survivors.resize(size_t(workers));
-    for (auto& s : survivors) s.resize(3 * kTrianglesPerJob);
-    marks.resize(size_t(workers));
-    // Points mark the vertices they drew: room for the largest such mesh on every worker,
-    // whichever worker its jobs fall on.
-    size_t most = 0;
-    for (const auto& d : plan.meshes)
-      if (!d.fill_only) most = std::max(most, d.mesh->positions.size());
-    for (auto& m : marks)
-      if (m.size() < most) m.resize(most);
-    const int width = framebuffer.width, height = framebuffer.height;
-    pool.run(int(jobs.size()), [&](int i, int worker) {
-      geometry::Job& job = jobs[size_t(i)];
-      geometry::StageContext cx{bins.worker(worker), worker_stats[size_t(worker)], bins.tiles_x()};
-      cx.job = uint32_t(i);
-      cx.painter = painter_mode;
-      cx.direct = survivors[size_t(worker)].data();
-      cx.info = cx.direct + kTrianglesPerJob, cx.clipped = cx.info + kTrianglesPerJob;
-      cx.marks = &marks[size_t(worker)];
-      switch (job.kind) {
-        case geometry::Job::Kind::Mesh: run_mesh_job(plan, plan.meshes[job.draw], job.begin, job.end, cx); break;
-        case geometry::Job::Kind::Batch: run_batch_job(plan, plan.batches[job.draw], job.begin, job.end, cx); break;
-        case geometry::Job::Kind::Clear: run_clear_job(plan.clears[job.draw], width, height, cx); break;
-      }
-      job.nonfinite = cx.nonfinite;
-    });
-  }
-
   const FrameStats& run_frame(bool painter);
-
-  // Painter's mode: every record far to near by mean depth (seed 004's sort), stable so
-  // that equal depths keep their submission order; then binned in that order.
-  void painter_sort() {
-    painter.clear();
-    bins.for_each_deferred([&](const raster::RecordHeader& r, uint32_t ref) {
-      painter.push_back({r.sort_key, uint32_t(painter.size()), ref, &r});
-    });
-    // Stable by the order as a second key (std::stable_sort would allocate every frame).
-    std::sort(painter.begin(), painter.end(), [](const Sorted& a, const Sorted& b) {
-      return a.key != b.key ? a.key > b.key : a.order < b.order;
-    });
-    raster::WorkerBins& into = bins.worker(0);  // serial now: one worker's lists hold them all
-    for (size_t rank = 0; rank < painter.size(); ++rank) {
-      const raster::RecordHeader& r = *painter[rank].record;
-      into.bin(uint32_t(rank), painter[rank].ref, r.min_x, r.min_y, r.max_x, r.max_y, bins.tiles_x());
-    }
-  }
 };
 
 const char* simd_target() { return raster::simd_target(); }
 
-Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>()) {
+std::unique_ptr<Backend> make_cpu_backend(int width, int height) {
+  // VELOCITY_SIMD_TARGET, when set, names the kernels' instruction set (for tests).
   if (const std::string& error = simd::apply_target_request(); !error.empty()) throw Error(error);
-  impl_->resize(width, height, 1);
-}
-Renderer::~Renderer() = default;
-Renderer::Renderer(Renderer&&) noexcept = default;
-Renderer& Renderer::operator=(Renderer&&) noexcept = default;
-
-void Renderer::resize(int width, int height) { impl_->resize(width, height, impl_->ssaa); }
-int Renderer::width() const { return impl_->width; }
-int Renderer::height() const { return impl_->height; }
-const FrameStats& Renderer::stats() const { return impl_->stats; }
-Image Renderer::color_image() const { return resolve_color(impl_->framebuffer, impl_->ssaa); }
-Image Renderer::depth_image() const { return resolve_depth(impl_->framebuffer, impl_->ssaa); }
-size_t Renderer::framebuffer_bytes() const {
-  const Framebuffer& fb = impl_->framebuffer;
-  return fb.color.size() * sizeof(uint32_t) + fb.depth.size() * sizeof(float) + fb.ids.size() * sizeof(uint32_t);
-}
-namespace {
-
-// Calls rows(y0, y1) for bands of an image's `height` rows, on `pool` when there is one
-// (the read-back is memory-bound: both cores' bandwidth). Bands of 64 rows, a tile row
-// of samples without super-sampling.
-template <class Rows>
-void for_row_bands(ThreadPool* pool, int height, Rows&& rows) {
-  constexpr int kBand = 64;
-  const int bands = (height + kBand - 1) / kBand;
-  auto band = [&](int b) { rows(b * kBand, std::min(height, (b + 1) * kBand)); };
-  if (pool) {
-    pool->run(bands, band);
-  } else {
-    for (int b = 0; b < bands; ++b) band(b);
-  }
+  return std::make_unique<CpuBackend>(width, height);
 }
 
-}  // namespace
-
-void Renderer::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
-  if (channels != 3 && channels != 4) throw Error("Renderer::read_color: channels must be 3 or 4, not " + std::to_string(channels));
-  const Impl& r = *impl_;
-  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) {
-    resolve_color_rows(r.framebuffer, r.ssaa, rgba, row_bytes, channels, y0, y1);
-  });
-}
-
-std::vector<float> Renderer::window_depth() const {
-  std::vector<float> d(size_t(impl_->width) * size_t(impl_->height));
-  read_window_depth(d.data());
-  return d;
-}
-
-void Renderer::read_window_depth(float* out) const {
-  const Impl& r = *impl_;
-  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) { resolve_window_depth_rows(r.framebuffer, r.ssaa, out, y0, y1); });
-}
-
-std::vector<uint32_t> Renderer::object_ids() const { return resolve_object_ids(impl_->framebuffer, impl_->ssaa); }
-
-std::vector<float> Renderer::view_depth() const {
-  std::vector<float> d(size_t(impl_->width) * size_t(impl_->height));
-  read_view_depth(d.data());
-  return d;
-}
-
-void Renderer::read_view_depth(float* out) const {
-  // Window depth d = 0.5 z_ndc + 0.5 with z_ndc = (P22 z + P23) / (P32 z + P33) for the
-  // eye-space z: solved for z, in double (the projection's own inverse, so it is exact
-  // for perspective and orthographic cameras alike up to float depth).
-  const Impl& r = *impl_;
-  const Mat4& p = r.projection;
-  const double p22 = p.m[2][2], p23 = p.m[2][3], p32 = p.m[3][2], p33 = p.m[3][3];
-  const size_t w = size_t(r.width);
-  for_row_bands(r.pool.get(), r.height, [&](int y0, int y1) {
-    resolve_window_depth_rows(r.framebuffer, r.ssaa, out, y0, y1);
-    float* d = out + size_t(y0) * w;
-    const size_t n = size_t(y1 - y0) * w;
-    for (size_t i = 0; i < n; ++i) {  // no branch: the compiler vectorises it
-      const double ndc = 2.0 * double(d[i]) - 1.0;
-      const float z = float((ndc * p33 - p23) / (ndc * p32 - p22));
-      d[i] = d[i] < 1.0f ? z : 0.0f;
-    }
-  });
-}
-
-void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color) {
-  FrameStart start;
-  start.color = {clear_color.x, clear_color.y, clear_color.z, 1.0f};
-  begin_frame(camera, lights, start);
-}
-
-void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start) {
-  Impl& r = *impl_;
-  r.resize(r.width, r.height, options.ssaa);  // follows a change of options.ssaa
+void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                             const RenderOptions& options) {
+  CpuBackend& r = *this;
+  r.resize(r.width_, r.height_, options.ssaa);  // follows a change of options.ssaa
   r.framebuffer.keep_ids(options.object_ids);
   const int w = r.framebuffer.width, h = r.framebuffer.height;
-  geometry::FramePlan& p = r.plan;
+  triangle::DrawList& p = r.plan;
   p.width = w, p.height = h;
   const Mat4 view = camera.view();
   r.view = view;
   r.projection = camera.projection_matrix(float(w) / float(h));
   r.view_projection = r.projection * view;
-  p.viewport = viewport_map(0, 0, w, h, 0.0f, 1.0f);
+  p.viewport = geometry::viewport_map(0, 0, w, h, 0.0f, 1.0f);
   p.guard = p.viewport.guard;
-  eye_lights(view, lights, p.lights);
+  shading::eye_lights(view, lights, p.lights);
   p.options = options;
   p.mesh_setup = {};
   p.mesh_setup.x1 = p.mesh_setup.px1 = w - 1;
@@ -422,21 +239,16 @@ void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& light
   r.jobs.clear();
   r.averaged_used = 0;
   r.start = start;
-  r.stats = {};
-  r.in_frame = true;
+  r.stats_ = {};
 }
 
-void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) try {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::draw called outside begin_frame/end_frame");
-  r.stats.objects++;
+void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) try {
+  CpuBackend& r = *this;
+  r.stats_.objects++;
   if (mesh.triangles.empty()) return;
-  // Whole-object rejection: a bounding sphere entirely outside one plane of the view
-  // volume costs one test instead of a pass over every vertex.
-  if (mesh.positions.size() <= kSphereTestMaxVertices && Frustum(r.view_projection).outside(world_sphere(mesh, world)))
-    return void(r.stats.objects_culled++);
-  geometry::FramePlan& p = r.plan;
-  geometry::MeshDrawPlan d;
+  if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats_.objects_culled++);
+  triangle::DrawList& p = r.plan;
+  triangle::MeshDrawPlan d;
   d.mesh = &mesh;
   d.override_material = material;
   d.object_id = object_id;
@@ -446,111 +258,57 @@ void Renderer::draw(const Mesh& mesh, const Mat4& world, const Material* materia
   if (!mesh.normals.empty()) {
     d.normals = &mesh.normals;
   } else {
-    // Normals averaged over the faces sharing each vertex (area-weighted), for meshes
-    // built by hand; loaders compute normals once (compute_normals, smoothing groups).
     if (r.averaged_used == r.averaged_normals.size()) r.averaged_normals.emplace_back();
     std::vector<Vec3>& n = r.averaged_normals[r.averaged_used++];
-    n.assign(mesh.positions.size(), Vec3{});
-    for (const Triangle& t : mesh.triangles) {
-      Vec3 a = mesh.positions[t.v[0]], b = mesh.positions[t.v[1]], c = mesh.positions[t.v[2]];
-      Vec3 fn = cross(b - a, c - a);
-      for (uint32_t v : t.v) n[v] += fn;
-    }
+    geometry::average_normals(mesh, n);
     d.normals = &n;  // normalised when transformed to eye space
   }
-  geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
+  triangle::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
   const uint32_t index = uint32_t(p.meshes.size());
   p.meshes.push_back(d);
   const size_t nt = mesh.triangles.size();
   for (size_t b = 0; b < nt; b += kTrianglesPerJob)
-    r.jobs.push_back({geometry::Job::Kind::Mesh, index, uint32_t(b), uint32_t(std::min(b + kTrianglesPerJob, nt))});
+    r.jobs.push_back({triangle::Job::Kind::Mesh, index, uint32_t(b), uint32_t(std::min(b + kTrianglesPerJob, nt))});
 } catch (const std::bad_alloc&) {
   throw Error("Renderer::draw: out of memory recording mesh '" + mesh.name + "'");
 }
 
-void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) try {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::draw called outside begin_frame/end_frame");
-  const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
-  if (batch.vertex_count && !batch.position) throw Error("Renderer::draw: a primitive batch needs positions");
-  if (batch.indices && batch.index_count % k)
-    throw Error("Renderer::draw: " + std::to_string(batch.index_count) + " indices do not make whole primitives of " +
-                std::to_string(k) + " vertices");
-  const uint32_t primitives = batch.indices ? batch.index_count / k : batch.vertex_count / k;
-  r.stats.objects++;
+void CpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) try {
+  CpuBackend& r = *this;
+  r.stats_.objects++;
   if (primitives == 0) return;
-  geometry::FramePlan& p = r.plan;
-  geometry::BatchDrawPlan d;
-  d.batch = batch;
-  d.primitive_count = primitives;
-  d.textured = state.texture.texture != nullptr;
-  d.fog = state.fog;
-  d.kernel = raster::fixed_kernel(d.textured, d.fog);
-  d.num_varyings = raster::fixed_varyings(d.textured, d.fog);
-
-  // The viewport, within the guard band's reach of the framebuffer (as OpenGL's
-  // GL_MAX_VIEWPORT_DIMS bounds it).
-  const int fw = p.width, fh = p.height;
-  const Viewport& v = batch.viewport;
-  const int vw = v.width > 0 ? std::min(v.width, raster::kMaxFramebufferSide) : fw;
-  const int vh = v.height > 0 ? std::min(v.height, raster::kMaxFramebufferSide) : fh;
-  const int vx = v.width > 0 ? std::clamp(v.x, -raster::kMaxFramebufferSide, raster::kMaxFramebufferSide) : 0;
-  const int vy = v.height > 0 ? std::clamp(v.y, -raster::kMaxFramebufferSide, raster::kMaxFramebufferSide) : 0;
-  d.viewport = viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
-  // Triangles stay inside the viewport (the view volume's sides are not clipped, they
-  // are this box); points and wide lines may reach past it by half their size.
-  raster::SetupParams& s = d.setup;
-  int sx0 = 0, sy0 = 0, sx1 = fw - 1, sy1 = fh - 1;
-  if (state.scissor) {
-    sx0 = std::max(sx0, state.scissor_x0), sy0 = std::max(sy0, state.scissor_y0);
-    sx1 = std::min(sx1, state.scissor_x1 - 1), sy1 = std::min(sy1, state.scissor_y1 - 1);
-  }
-  s.x0 = std::max(sx0, vx), s.y0 = std::max(sy0, vy), s.x1 = std::min(sx1, vx + vw - 1), s.y1 = std::min(sy1, vy + vh - 1);
-  const int reach = int(std::max(batch.point_size, batch.line_width) * 0.5f) + 1;
-  s.px0 = std::max(sx0, vx - reach), s.py0 = std::max(sy0, vy - reach);
-  s.px1 = std::min(sx1, vx + vw - 1 + reach), s.py1 = std::min(sy1, vy + vh - 1 + reach);
-  s.offset = state.polygon_offset;
-  s.offset_factor = state.offset_factor, s.offset_units = state.offset_units;
-
-  raster::DrawState st;
-  st.pixel = state;
-  if (d.textured) st.texture = raster::SamplerView(*state.texture.texture, state.texture.sampler);
-  d.draw_state = uint32_t(r.draw_states.size());
-  r.draw_states.push_back(st);
+  triangle::DrawList& p = r.plan;
+  const triangle::BatchDrawPlan d = triangle::plan_batch_draw(p, r.draw_states, batch, state, primitives);
   const uint32_t index = uint32_t(p.batches.size());
   p.batches.push_back(d);
   for (uint32_t b = 0; b < primitives; b += kTrianglesPerJob)
-    r.jobs.push_back({geometry::Job::Kind::Batch, index, b, std::min(b + kTrianglesPerJob, primitives)});
+    r.jobs.push_back({triangle::Job::Kind::Batch, index, b, std::min(b + kTrianglesPerJob, primitives)});
 } catch (const std::bad_alloc&) {
   throw Error("Renderer::draw: out of memory recording a primitive batch");
 }
 
-void Renderer::clear(const ClearRequest& request) {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::clear called outside begin_frame/end_frame");
-  geometry::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
+void CpuBackend::clear(const ClearRequest& request) {
+  CpuBackend& r = *this;
+  triangle::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
   if (request.scissor) {
     c.x0 = std::max(c.x0, request.x0), c.y0 = std::max(c.y0, request.y0);
     c.x1 = std::min(c.x1, request.x1 - 1), c.y1 = std::min(c.y1, request.y1 - 1);
   }
   const uint32_t index = uint32_t(r.plan.clears.size());
   r.plan.clears.push_back(c);
-  r.jobs.push_back({geometry::Job::Kind::Clear, index, 0, 1});
+  r.jobs.push_back({triangle::Job::Kind::Clear, index, 0, 1});
 }
 
-const FrameStats& Renderer::end_frame() {
-  Impl& r = *impl_;
-  if (!r.in_frame) throw Error("Renderer::end_frame called without begin_frame");
-  r.in_frame = false;
+const FrameStats& CpuBackend::end_frame() {
   try {
-    return r.run_frame(options.depth_mode == DepthMode::Painter);
+    return run_frame(plan.options.depth_mode == DepthMode::Painter);
   } catch (const std::bad_alloc&) {
     throw Error("Renderer::end_frame: out of memory");
   }
 }
 
-const FrameStats& Renderer::Impl::run_frame(bool painter) {
-  Impl& r = *this;
+const FrameStats& CpuBackend::run_frame(bool painter) {
+  CpuBackend& r = *this;
   ThreadPool& pool = r.pool_for(r.plan.options.threads);
 
   using Clock = std::chrono::steady_clock;
@@ -559,59 +317,27 @@ const FrameStats& Renderer::Impl::run_frame(bool painter) {
   r.allocate_vertices();
   r.vertex_stage(pool);
   const Clock::time_point t1 = Clock::now();
-  r.triangle_stage(pool, painter);
-  if (painter) r.painter_sort();
+  r.triangle_stage.run(pool, r.bins, r.plan, r.jobs, r.framebuffer.width, r.framebuffer.height, painter);
+  if (painter) r.bins.bin_deferred();
   const Clock::time_point t2 = Clock::now();
 
-  raster::FrameData frame;
-  frame.bins = &r.bins;
-  frame.draws = &r.draw_states;
-  frame.lights = &r.plan.lights;
-  frame.depth_test = !painter;
-  frame.clear_color = r.start.clear_color, frame.clear_depth = r.start.clear_depth;
-  frame.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
-  frame.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
-  r.framebuffer.expect_clear(frame.color, frame.depth);
-  pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(frame, tile, r.framebuffer); });
+  raster::TileInputs tiles;
+  tiles.bins = &r.bins;
+  tiles.draws = &r.draw_states;
+  tiles.lights = &r.plan.lights;
+  tiles.depth_test = !painter;
+  tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
+  tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
+  tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
+  r.framebuffer.expect_clear(tiles.color, tiles.depth);
+  pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(tiles, tile, r.framebuffer); });
   const Clock::time_point t3 = Clock::now();
-  r.stats.vertex_ms = ms(t0, t1), r.stats.triangle_ms = ms(t1, t2), r.stats.tile_ms = ms(t2, t3);
+  r.stats_.vertex_ms = ms(t0, t1), r.stats_.triangle_ms = ms(t1, t2), r.stats_.tile_ms = ms(t2, t3);
 
-  // The frame's statistics, and one warning per mesh with non-finite vertices (not one
-  // per frame, nor per triangle). The set only grows with distinct bad meshes; a
-  // long-running program that makes new ones forever forgets them now and then (and
-  // may warn again) rather than grow.
-  for (const FrameStats& w : r.worker_stats) {
-    FrameStats& s = r.stats;
-    s.objects_culled += w.objects_culled, s.triangles += w.triangles, s.triangles_rejected += w.triangles_rejected;
-    s.triangles_nonfinite += w.triangles_nonfinite, s.triangles_clipped += w.triangles_clipped;
-    s.triangles_culled += w.triangles_culled, s.triangles_rasterized += w.triangles_rasterized;
-    s.lines += w.lines, s.points += w.points;
-  }
-  std::vector<size_t>& bad = r.nonfinite;
-  bad.assign(r.plan.meshes.size(), 0);
-  for (const geometry::Job& j : r.jobs)
-    if (j.kind == geometry::Job::Kind::Mesh) bad[j.draw] += j.nonfinite;
-  for (size_t i = 0; i < bad.size(); ++i) {
-    if (!bad[i]) continue;
-    const Mesh* mesh = r.plan.meshes[i].mesh;
-    if (r.warned_meshes.size() >= 4096) r.warned_meshes.clear();
-    if (r.warned_meshes.insert(mesh).second)
-      warn("mesh '" + mesh->name + "': " + std::to_string(bad[i]) + " triangles with NaN or infinite coordinates were dropped");
-  }
-  return r.stats;
-}
-
-const FrameStats& Renderer::render(const Scene& scene) {
-  begin_frame(scene.camera, scene.lights, scene.background);
-  std::vector<Mat4>& world = impl_->world;
-  scene.world_matrices(world);
-  const auto& objects = scene.objects();
-  for (size_t i = 0; i < objects.size(); ++i) {
-    const Object& o = objects[i];
-    if (!o.visible || !o.mesh) continue;
-    draw(*o.mesh, world[i], o.material ? &*o.material : nullptr, uint32_t(i + 1));
-  }
-  return end_frame();
+  // The frame's statistics, and a warning for each mesh that lost triangles to NaN.
+  r.triangle_stage.add_stats(r.stats_);
+  r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
+  return r.stats_;
 }
 
 }  // namespace velocity

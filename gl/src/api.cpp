@@ -21,7 +21,8 @@ using velocity::Vec4;
 using velocity::gl::Context;
 using velocity::gl::current;
 using velocity::gl::ListCommand;
-using velocity::gl::M4;
+using velocity::Mat4;
+using velocity::gl::load_column_major;
 
 namespace {
 
@@ -64,59 +65,6 @@ float ub2f(GLubyte v) { return v / 255.0f; }
 float us2f(GLushort v) { return v / 65535.0f; }
 float ui2f(GLuint v) { return float(v / 4294967295.0); }
 
-M4 from_floats(const GLfloat* m) {
-  M4 r;
-  std::memcpy(r.m, m, sizeof r.m);
-  return r;
-}
-M4 from_doubles(const GLdouble* m) {
-  M4 r;
-  for (int i = 0; i < 16; ++i) r.m[i] = float(m[i]);
-  return r;
-}
-
-M4 translation(float x, float y, float z) {
-  M4 r;
-  r.m[12] = x, r.m[13] = y, r.m[14] = z;
-  return r;
-}
-M4 scaling(float x, float y, float z) {
-  M4 r;
-  r.m[0] = x, r.m[5] = y, r.m[10] = z;
-  return r;
-}
-// glRotate's matrix (the axis normalised); a zero axis leaves the matrix alone (as Mesa).
-bool rotation(float angle, float x, float y, float z, M4& r) {
-  const float len = std::sqrt(x * x + y * y + z * z);
-  if (!(len > 1e-4f)) return false;
-  x /= len, y /= len, z /= len;
-  const float a = angle * 3.14159265358979323846f / 180.0f;
-  const float c = std::cos(a), s = std::sin(a), t = 1 - c;
-  r.m[0] = x * x * t + c, r.m[4] = x * y * t - z * s, r.m[8] = x * z * t + y * s;
-  r.m[1] = y * x * t + z * s, r.m[5] = y * y * t + c, r.m[9] = y * z * t - x * s;
-  r.m[2] = x * z * t - y * s, r.m[6] = y * z * t + x * s, r.m[10] = z * z * t + c;
-  return true;
-}
-
-void ortho(Context& c, double l, double r, double b, double t, double n, double f) {
-  if (c.in_begin_error()) return;
-  if (l == r || b == t || n == f) return c.error(GL_INVALID_VALUE);
-  M4 m;
-  m.m[0] = float(2 / (r - l)), m.m[5] = float(2 / (t - b)), m.m[10] = float(-2 / (f - n));
-  m.m[12] = float(-(r + l) / (r - l)), m.m[13] = float(-(t + b) / (t - b)), m.m[14] = float(-(f + n) / (f - n));
-  c.multiply(m);
-}
-
-void frustum(Context& c, double l, double r, double b, double t, double n, double f) {
-  if (c.in_begin_error()) return;
-  if (n <= 0 || f <= 0 || l == r || b == t || n == f) return c.error(GL_INVALID_VALUE);
-  M4 m;
-  m.m[0] = float(2 * n / (r - l)), m.m[5] = float(2 * n / (t - b));
-  m.m[8] = float((r + l) / (r - l)), m.m[9] = float((t + b) / (t - b)), m.m[10] = float(-(f + n) / (f - n));
-  m.m[11] = -1, m.m[14] = float(-2 * f * n / (f - n)), m.m[15] = 0;
-  c.multiply(m);
-}
-
 // How many values a glLight / glMaterial / glFog / glLightModel / glTex* parameter has.
 int param_count(GLenum pname) {
   switch (pname) {
@@ -148,35 +96,20 @@ std::array<float, 4> param1(GLfloat v) { return {v, 0, 0, 0}; }
 
 // A vertex array element's values, fetched now for a display list.
 void record_array_element(Context& c, GLint i) {
-  const auto norm = [](Vec4 v, GLenum type, int n) {
-    float s = 1;
-    switch (type) {
-      case GL_BYTE: s = 1.0f / 127; break;
-      case GL_UNSIGNED_BYTE: s = 1.0f / 255; break;
-      case GL_SHORT: s = 1.0f / 32767; break;
-      case GL_UNSIGNED_SHORT: s = 1.0f / 65535; break;
-      case GL_INT: s = 1.0f / 2147483647.0f; break;
-      case GL_UNSIGNED_INT: s = 1.0f / 4294967295.0f; break;
-      default: break;
-    }
-    float* p[4] = {&v.x, &v.y, &v.z, &v.w};
-    for (int k = 0; k < n && k < 4; ++k) *p[k] *= s;
-    return v;
-  };
-  if (c.color_array.enabled && c.color_array.pointer) {
-    const Vec4 col = norm(c.color_array.fetch(i, {0, 0, 0, 1}), c.color_array.type, c.color_array.size);
+  if (c.arrays.color.enabled && c.arrays.color.pointer) {
+    const Vec4 col = c.arrays.color.fetch_normalized(i, {0, 0, 0, 1}, c.arrays.color.size);
     compiled([=](Context& k) { k.set_color(col); });
   }
-  if (c.normal_array.enabled && c.normal_array.pointer) {
-    const Vec3 n = norm(c.normal_array.fetch(i, {}), c.normal_array.type, 3).xyz();
+  if (c.arrays.normal.enabled && c.arrays.normal.pointer) {
+    const Vec3 n = c.arrays.normal.fetch_normalized(i, {}, 3).xyz();
     compiled([=](Context& k) { k.set_normal(n); });
   }
-  if (c.texcoord_array.enabled && c.texcoord_array.pointer) {
-    const Vec4 t = c.texcoord_array.fetch(i, {0, 0, 0, 1});
+  if (c.arrays.texcoord.enabled && c.arrays.texcoord.pointer) {
+    const Vec4 t = c.arrays.texcoord.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.set_texcoord(t); });
   }
-  if (c.vertex_array.enabled && c.vertex_array.pointer) {
-    const Vec4 v = c.vertex_array.fetch(i, {0, 0, 0, 1});
+  if (c.arrays.vertex.enabled && c.arrays.vertex.pointer) {
+    const Vec4 v = c.arrays.vertex.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.vertex(v); });
   }
 }
@@ -341,35 +274,33 @@ void glPushMatrix(void) { LIST(c.push_matrix()); }
 void glPopMatrix(void) { LIST(c.pop_matrix()); }
 void glLoadMatrixf(const GLfloat* m) {
   if (!m) return;
-  const M4 x = from_floats(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.load(x));
 }
 void glLoadMatrixd(const GLdouble* m) {
   if (!m) return;
-  const M4 x = from_doubles(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.load(x));
 }
 void glMultMatrixf(const GLfloat* m) {
   if (!m) return;
-  const M4 x = from_floats(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.multiply(x));
 }
 void glMultMatrixd(const GLdouble* m) {
   if (!m) return;
-  const M4 x = from_doubles(m);
+  const Mat4 x = load_column_major(m);
   LIST(c.multiply(x));
 }
-void glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) {
-  LIST(M4 r; if (rotation(angle, x, y, z, r)) c.multiply(r); else c.in_begin_error());
-}
+void glRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) { LIST(c.rotate(angle, x, y, z)); }
 void glRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z) { glRotatef(float(angle), float(x), float(y), float(z)); }
-void glScalef(GLfloat x, GLfloat y, GLfloat z) { LIST(c.multiply(scaling(x, y, z))); }
+void glScalef(GLfloat x, GLfloat y, GLfloat z) { LIST(c.scale(x, y, z)); }
 void glScaled(GLdouble x, GLdouble y, GLdouble z) { glScalef(float(x), float(y), float(z)); }
-void glTranslatef(GLfloat x, GLfloat y, GLfloat z) { LIST(c.multiply(translation(x, y, z))); }
+void glTranslatef(GLfloat x, GLfloat y, GLfloat z) { LIST(c.translate(x, y, z)); }
 void glTranslated(GLdouble x, GLdouble y, GLdouble z) { glTranslatef(float(x), float(y), float(z)); }
-void glOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { LIST(ortho(c, l, r, b, t, n, f)); }
+void glOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { LIST(c.ortho(l, r, b, t, n, f)); }
 void glFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  LIST(frustum(c, l, r, b, t, n, f));
+  LIST(c.frustum(l, r, b, t, n, f));
 }
 
 // --- viewport, buffers, per-fragment state ---------------------------------------
@@ -552,21 +483,21 @@ void glPixelStorei(GLenum pname, GLint v) {
 void glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (size < 2 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, false, false)) return c.error(GL_INVALID_ENUM);
-      set_array(c.vertex_array, size, type, stride, p));
+      set_array(c.arrays.vertex, size, type, stride, p));
 }
 void glNormalPointer(GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (stride < 0) return c.error(GL_INVALID_VALUE); if (!valid_array_type(type, true, false)) return c.error(GL_INVALID_ENUM);
-      set_array(c.normal_array, 3, type, stride, p));
+      set_array(c.arrays.normal, 3, type, stride, p));
 }
 void glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (size < 3 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, true, true)) return c.error(GL_INVALID_ENUM);
-      set_array(c.color_array, size, type, stride, p));
+      set_array(c.arrays.color, size, type, stride, p));
 }
 void glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (size < 1 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, false, false)) return c.error(GL_INVALID_ENUM);
-      set_array(c.texcoord_array, size, type, stride, p));
+      set_array(c.arrays.texcoord, size, type, stride, p));
 }
 void glEnableClientState(GLenum cap) { NOW(c.client_state(cap, true)); }
 void glDisableClientState(GLenum cap) { NOW(c.client_state(cap, false)); }
@@ -646,7 +577,7 @@ void glCallLists(GLsizei n, GLenum type, const GLvoid* lists) {
         }
         // The list base is added when the call runs (GL), so glListBase may follow.
         const GLuint offset = GLuint(uint64_t(id));
-        compiled([=](Context& x) { x.call_list(x.list_base + offset); });
+        compiled([=](Context& x) { x.call_list(x.list_base() + offset); });
       });
 }
 void glDeleteLists(GLuint list, GLsizei range) { NOW(c.delete_lists(list, range)); }
@@ -655,7 +586,7 @@ GLboolean glIsList(GLuint list) {
   NOW(if (c.in_begin_error()) return; r = c.is_list(list) ? GL_TRUE : GL_FALSE);
   return r;
 }
-void glListBase(GLuint base) { LIST(if (!c.in_begin_error()) c.list_base = base); }
+void glListBase(GLuint base) { LIST(if (!c.in_begin_error()) c.set_list_base(base)); }
 
 // --- queries, read-back, synchronisation ------------------------------------------
 

@@ -9,82 +9,35 @@
 // The renderer keeps a frame open until something needs the pixels (glFinish,
 // glFlush, glReadPixels, OSMesaMakeCurrent, OSMesaGetDepthBuffer): then the frame runs
 // on every core and the colour lands in the caller's buffer.
+//
+// The state is one struct per GL area (state.hpp); the methods are grouped by area
+// below, each group in the file named beside it, as Mesa's src/mesa/main/ is:
+//   context.cpp       OSMesa binding, errors, the current context
+//   frame.cpp         batches to the renderer, frames, colour and depth out
+//   vertex.cpp        glBegin/glEnd: transform, GL lighting, primitive assembly
+//   transform.cpp     matrix stacks, viewport, depth range
+//   lighting.cpp      lights, materials, colour material, shade model
+//   raster_state.cpp  enables, depth, blend, alpha test, fog, scissor, masks, clears,
+//                     culling, polygon mode and offset, point size, line width
+//   texture.cpp       texture objects, images, parameters, environment
+//   arrays.cpp        vertex arrays, glArrayElement, glDrawArrays, glDrawElements
+//   lists.cpp         display lists
+//   queries.cpp       glGet*, glIsEnabled
+//   read_pixels.cpp   glReadPixels
 #pragma once
 
 #include <GL/gl.h>
 
-#include <array>
 #include <cstdint>
-#include <functional>
-#include <map>
 #include <memory>
-#include <string>
 #include <vector>
 
+#include "state.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/texture.hpp"
 
 namespace velocity::gl {
-
-// A 4x4 matrix as OpenGL stores it: column-major, m[col * 4 + row].
-struct M4 {
-  float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  Vec4 operator*(const Vec4& v) const {
-    return {m[0] * v.x + m[4] * v.y + m[8] * v.z + m[12] * v.w, m[1] * v.x + m[5] * v.y + m[9] * v.z + m[13] * v.w,
-            m[2] * v.x + m[6] * v.y + m[10] * v.z + m[14] * v.w, m[3] * v.x + m[7] * v.y + m[11] * v.z + m[15] * v.w};
-  }
-  M4 operator*(const M4& b) const;
-  bool is_identity() const;
-};
-// The inverse; false (and `out` unchanged) for a singular matrix.
-bool invert(const M4& a, M4& out);
-
-// Implementation limits (what glGet reports).
-constexpr int kMaxLights = 8;
-constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDepth = 10;
-constexpr int kMaxTextureSize = 4096;
-constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
-constexpr int kMaxListNesting = 64;
-constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
-constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
-constexpr size_t kMaxBatchVertices = size_t(1) << 20;     // more: the batch goes to the renderer
-// A strip, fan, loop or polygon longer than this (GL_OUT_OF_MEMORY; the rest is dropped).
-constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
-// Commands one outermost glCallList may run, nested lists included: lists that call each
-// other twice over would otherwise run 2^64 of them (GL_OUT_OF_MEMORY, the rest skipped).
-constexpr uint64_t kMaxListCallCommands = uint64_t(1) << 25;
-constexpr int kMaxViewport = 16384;
-
-struct Light {
-  Vec4 ambient{0, 0, 0, 1}, diffuse{0, 0, 0, 1}, specular{0, 0, 0, 1};
-  Vec4 position{0, 0, 1, 0};  // eye space (transformed by the modelview at glLight time)
-  Vec3 spot_direction{0, 0, -1};  // eye space
-  float spot_exponent = 0, spot_cutoff = 180;
-  float constant = 1, linear = 0, quadratic = 0;
-  bool enabled = false;
-};
-
-struct Material {
-  Vec4 ambient{0.2f, 0.2f, 0.2f, 1}, diffuse{0.8f, 0.8f, 0.8f, 1}, specular{0, 0, 0, 1}, emission{0, 0, 0, 1};
-  float shininess = 0;
-};
-
-struct TextureObject {
-  // Levels as glTexImage2D gave them (RGBA8 after the internal format was applied);
-  // width 0: the level was never specified.
-  std::array<Texture::Level, kMaxTextureLevels> levels{};
-  TexFormat format = TexFormat::Rgba;
-  GLenum internal_format = GL_RGBA;
-  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
-  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
-  Vec4 border{0, 0, 0, 0};
-  bool generate_mipmap = false;
-  // What the renderer samples, built when first drawn after a change (null: not yet,
-  // or incomplete). Draws already recorded keep their own reference.
-  std::shared_ptr<const Texture> built;
-  bool dirty = true, complete = false;
-};
 
 // A vertex after the vertex stage.
 struct Vertex {
@@ -94,25 +47,12 @@ struct Vertex {
   float fog = 0;
 };
 
-class Context;
-using ListCommand = std::function<void(Context&)>;
-
-// One vertex array (glVertexPointer and the like).
-struct ClientArray {
-  bool enabled = false;
-  GLint size = 4;
-  GLenum type = GL_FLOAT;
-  GLsizei stride = 0;
-  const void* pointer = nullptr;
-  Vec4 fetch(GLint index, Vec4 defaults) const;
-};
-
 class Context {
  public:
   Context(GLenum format, int depth_bits);
   ~Context();
 
-  // --- OSMesa
+  // --- OSMesa (context.cpp)
   bool make_current(void* buffer, GLenum type, int width, int height);
   void release();  // no longer current: run what is pending
   bool depth_buffer(GLint* width, GLint* height, GLint* bytes_per_value, void** buffer);
@@ -139,33 +79,35 @@ class Context {
   }
   bool in_begin() const { return in_begin_; }
 
-  // --- primitives
+  // --- primitives (vertex.cpp)
   void begin(GLenum mode);
   void end();
   void vertex(Vec4 v);
-  void set_color(Vec4 c);
+  void set_color(Vec4 c);  // (lighting.cpp: it feeds GL_COLOR_MATERIAL)
   void set_normal(Vec3 n) { normal_ = n; }
   void set_texcoord(Vec4 t) { texcoord_ = t; }
   void rect(float x1, float y1, float x2, float y2);
 
-  // --- matrices
+  // --- transform (transform.cpp)
   void matrix_mode(GLenum mode);
-  void load_identity() { load(M4{}); }
-  void load(const M4& m);
-  void multiply(const M4& m);
+  void load_identity() { load(Mat4{}); }
+  void load(const Mat4& m);
+  void multiply(const Mat4& m);
+  void rotate(float degrees, float x, float y, float z);
+  void translate(float x, float y, float z);
+  void scale(float x, float y, float z);
+  void frustum(double l, double r, double b, double t, double n, double f);
+  void ortho(double l, double r, double b, double t, double n, double f);
   void push_matrix();
   void pop_matrix();
-  const M4& matrix(GLenum which) const;
-  int stack_depth(GLenum which) const;
-
-  // --- per-fragment and rasterization state
-  void enable(GLenum cap, bool on);
-  bool is_enabled(GLenum cap, bool* known) const;
   void viewport(GLint x, GLint y, GLsizei w, GLsizei h);
   void depth_range(double n, double f);
+
+  // --- raster state (raster_state.cpp)
+  void enable(GLenum cap, bool on);
   void scissor(GLint x, GLint y, GLsizei w, GLsizei h);
   void clear(GLbitfield mask);
-  void clear_color(Vec4 c) { clear_color_ = c; }
+  void clear_color(Vec4 c) { raster_.clear_color = c; }
   void clear_depth(double d);
   void depth_func(GLenum f);
   void depth_mask(bool on);
@@ -180,21 +122,21 @@ class Context {
   void polygon_offset(float factor, float units);
   void point_size(float s);
   void line_width(float w);
-  void shade_model(GLenum m);
 
-  // --- lighting
+  // --- lighting (lighting.cpp)
   void light(GLenum light, GLenum pname, const float* v);
   bool get_light(GLenum light, GLenum pname, float* v);
   void light_model(GLenum pname, const float* v);
   void material(GLenum face, GLenum pname, const float* v);
   bool get_material(GLenum face, GLenum pname, float* v);
   void color_material(GLenum face, GLenum mode);
+  void shade_model(GLenum m);
 
-  // --- textures
+  // --- textures (texture.cpp)
   void gen_textures(GLsizei n, GLuint* out);
   void delete_textures(GLsizei n, const GLuint* ids);
   void bind_texture(GLenum target, GLuint id);
-  bool is_texture(GLuint id) const { return textures_.count(id) != 0; }
+  bool is_texture(GLuint id) const { return texture_.objects.count(id) != 0; }
   // `rgba` holds width * height texels already converted (see api.cpp); null for a
   // level with undefined contents.
   void tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
@@ -205,35 +147,40 @@ class Context {
   void tex_env(GLenum target, GLenum pname, const float* v);
   // The internal format glTexImage2D's argument names, or 0 if none.
   static GLenum base_format(GLint internal);
-  GLint unpack_alignment = 4, pack_alignment = 4;
+  GLint unpack_alignment = 4, pack_alignment = 4;  // glPixelStorei
 
-  // --- vertex arrays
-  ClientArray vertex_array, normal_array, color_array, texcoord_array;
+  // --- vertex arrays (arrays.cpp)
+  ArrayState arrays;
   void client_state(GLenum cap, bool on);
   void array_element(GLint i);
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
 
-  // --- display lists
+  // --- display lists (lists.cpp)
   GLuint gen_lists(GLsizei range);
   void new_list(GLuint list, GLenum mode);
   void end_list();
   void call_list(GLuint list);
   void delete_lists(GLuint list, GLsizei range);
-  bool is_list(GLuint list) const { return lists_.count(list) != 0; }
-  bool compiling() const { return compiling_ != 0; }
-  bool compile_and_execute() const { return compile_mode_ == GL_COMPILE_AND_EXECUTE; }
+  bool is_list(GLuint list) const { return lists_.stored.count(list) != 0; }
+  bool compiling() const { return lists_.compiling != 0; }
+  bool compile_and_execute() const { return lists_.mode == GL_COMPILE_AND_EXECUTE; }
   void record(ListCommand cmd);
-  GLuint list_base = 0;
+  GLuint list_base() const { return lists_.base; }
+  void set_list_base(GLuint base) { lists_.base = base; }
 
-  // --- queries, read-back
+  // --- queries (queries.cpp)
   // glGet: the values of `pname` as doubles, with `kind` saying how glGetIntegerv maps
   // them (0: round; 1: a colour, mapped to the full integer range). False: unknown name.
   bool get(GLenum pname, std::vector<double>& out, int& kind);
+  bool is_enabled(GLenum cap, bool* known) const;
+
+  // --- read-back (read_pixels.cpp, frame.cpp)
   void read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels);
   void finish();  // glFinish and glFlush: run the frame, colour to the caller's buffer
 
  private:
+  // --- frames and batches (frame.cpp)
   struct Pending {
     PrimitiveKind kind = PrimitiveKind::Triangles;
     bool offset = false;
@@ -243,7 +190,6 @@ class Context {
     std::vector<uint32_t> index;
     void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), index.clear(); }
   };
-
   void ensure_frame();
   void submit_pending();
   void run_frame();  // end the frame, copy colour (and depth) out
@@ -252,30 +198,28 @@ class Context {
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
   void emit_vertex(uint32_t i, const Vec4& color, bool shared);
-  void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
   Pending& target(PrimitiveKind kind, bool offset);
+  void changed() { pixel_dirty_ = true; }
+
+  // --- the vertex stage (vertex.cpp)
+  void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
   void assemble(bool final);
   void polygon(const uint32_t* idx, int n, int provoking);
   void line_segment(uint32_t a, uint32_t b, uint32_t provoking);
   void point_vertex(uint32_t a);
   Vec4 lit(const Vec4& eye, Vec3 normal, bool back) const;
   void prepare_lighting();
-  struct LightUse {
-    const Light* light = nullptr;
-    bool positional = false, spot = false;
-    float cos_cutoff = -1;
-    Vec3 direction, half, spot_direction;
-  };
-  LightUse light_use_[kMaxLights];
+  shading::GlLight light_use_[kMaxLights];  // the enabled lights, for this glBegin
   int lights_used_ = 0;
   bool need_eye_ = false;
-  void update_derived();
-  TextureObject* bound_texture();
-  const Texture* texture_for_draw(TextureObject& t);
-  void changed() { pixel_dirty_ = true; }
-  M4& top();
-  void execute_list(GLuint list, int depth);
 
+  void update_derived();  // transform.cpp
+  std::vector<Mat4>& stack();  // the one glMatrixMode selects
+  void apply_color_material();  // lighting.cpp
+  TextureObject* bound_texture();  // texture.cpp
+  const Texture* texture_for_draw(TextureObject& t);
+
+  // The framebuffer and its frames.
   GLenum format_;
   int depth_bits_;
   void* buffer_ = nullptr;
@@ -294,7 +238,18 @@ class Context {
 
   GLenum error_ = GL_NO_ERROR;
 
-  // primitives
+  // The state, by area (state.hpp).
+  TransformState transform_;
+  LightingState lighting_;
+  RasterState raster_;
+  TextureState texture_;
+  ListState lists_;
+
+  // The current vertex attributes.
+  Vec4 color_{1, 1, 1, 1}, texcoord_{0, 0, 0, 1};
+  Vec3 normal_{0, 0, 1};
+
+  // The primitive being assembled.
   bool in_begin_ = false;
   GLenum mode_ = GL_POINTS;
   std::vector<Vertex> prim_;       // the processed vertices of this glBegin/glEnd
@@ -309,83 +264,14 @@ class Context {
   // glDrawElements: array index -> prim_ index + 1, so that each element is processed once.
   std::vector<uint32_t> element_cache_;
   bool caching_ = false;
-  Vec4 color_{1, 1, 1, 1}, texcoord_{0, 0, 0, 1};
-  Vec3 normal_{0, 0, 1};
 
-  // batches
+  // Batches.
   Pending pending_;
   bool have_pending_ = false, pixel_dirty_ = true;
-  PixelState base_state_;
   std::vector<Pending> submitted_;  // kept alive until the frame ends; reused
   size_t submitted_used_ = 0;
   std::vector<std::shared_ptr<const Texture>> frame_textures_;
   size_t frame_vertices_ = 0;
-
-  // matrices
-  GLenum matrix_mode_ = GL_MODELVIEW;
-  std::vector<M4> modelview_{M4{}}, projection_{M4{}}, texture_matrix_{M4{}};
-  M4 mvp_;
-  M4 normal_matrix_;  // inverse transpose of the modelview (upper 3x3 used)
-  bool derived_dirty_ = true, texture_identity_ = true;
-
-  // state
-  GLint vp_x_ = 0, vp_y_ = 0, vp_w_ = 0, vp_h_ = 0;
-  float depth_near_ = 0, depth_far_ = 1;
-  GLint sc_x_ = 0, sc_y_ = 0, sc_w_ = 0, sc_h_ = 0;
-  bool scissor_test_ = false;
-  Vec4 clear_color_{0, 0, 0, 0};
-  float clear_depth_ = 1;
-  bool depth_test_ = false, depth_write_ = true;
-  GLenum depth_func_ = GL_LESS;
-  bool mask_[4] = {true, true, true, true};
-  bool blend_ = false;
-  GLenum blend_src_ = GL_ONE, blend_dst_ = GL_ZERO;
-  bool alpha_test_ = false;
-  GLenum alpha_func_ = GL_ALWAYS;
-  float alpha_ref_ = 0;
-  bool fog_ = false;
-  GLenum fog_mode_ = GL_EXP;
-  float fog_start_ = 0, fog_end_ = 1, fog_density_ = 1;
-  Vec4 fog_color_{0, 0, 0, 0};
-  GLenum hints_[5] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
-  bool cull_ = false;
-  GLenum cull_mode_ = GL_BACK, front_face_ = GL_CCW;
-  GLenum polygon_mode_[2] = {GL_FILL, GL_FILL};  // front, back
-  bool offset_fill_ = false, offset_line_ = false, offset_point_ = false;
-  float offset_factor_ = 0, offset_units_ = 0;
-  float point_size_ = 1, line_width_ = 1;
-  GLenum shade_model_ = GL_SMOOTH;
-  bool normalize_ = false, rescale_normal_ = false;
-
-  // lighting
-  bool lighting_ = false;
-  Light lights_[kMaxLights];
-  Vec4 model_ambient_{0.2f, 0.2f, 0.2f, 1};
-  bool two_side_ = false, local_viewer_ = false;
-  Material materials_[2];  // front, back
-  bool color_material_ = false;
-  GLenum color_material_face_ = GL_FRONT_AND_BACK, color_material_mode_ = GL_AMBIENT_AND_DIFFUSE;
-  void apply_color_material();
-
-  // textures
-  bool texture_2d_ = false;
-  std::map<GLuint, std::unique_ptr<TextureObject>> textures_;
-  TextureObject default_texture_;
-  GLuint bound_ = 0;
-  GLuint next_texture_ = 1;
-  GLenum env_mode_ = GL_MODULATE;
-  Vec4 env_color_{0, 0, 0, 0};
-
-  // display lists
-  std::map<GLuint, std::vector<ListCommand>> lists_;
-  GLuint compiling_ = 0;
-  GLenum compile_mode_ = GL_COMPILE;
-  std::vector<ListCommand> compiling_commands_;
-  bool list_overflow_ = false;
-  int list_depth_ = 0;
-  uint64_t list_budget_ = 0;
-
-  friend struct ContextAccess;
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

@@ -12,7 +12,9 @@
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-void multiply(const double* a, const double* b, double* r) {  // r = a * b, column-major
+// GLU works in double (its arguments and results), column-major: the product and the
+// transform of gluProject and gluUnProject.
+void multiply(const double* a, const double* b, double* r) {  // r = a * b
   for (int c = 0; c < 4; ++c)
     for (int row = 0; row < 4; ++row) {
       double s = 0;
@@ -24,13 +26,13 @@ void transform(const double* m, const double* in, double* out) {
   for (int row = 0; row < 4; ++row)
     out[row] = m[row] * in[0] + m[4 + row] * in[1] + m[8 + row] * in[2] + m[12 + row] * in[3];
 }
+// The engine's inverse (velocity::invert: false for a singular matrix, as GLU's), refined
+// once in double, which GLU's arguments and results are.
 bool invert(const double* m, double* out) {
-  velocity::gl::M4 a, inv;
-  for (int i = 0; i < 16; ++i) a.m[i] = float(m[i]);
-  // Double precision where it matters: solve with the float inverse, then refine once.
-  if (!velocity::gl::invert(a, inv)) return false;
+  velocity::Mat4 inv;
+  if (!velocity::invert(velocity::gl::load_column_major(m), inv)) return false;
   double x[16], ax[16], r[16];
-  for (int i = 0; i < 16; ++i) x[i] = inv.m[i];
+  velocity::gl::store_column_major(inv, x);
   multiply(m, x, ax);
   for (int i = 0; i < 16; ++i) r[i] = (i % 5 == 0 ? 2.0 : 0.0) - ax[i];  // 2I - A X
   multiply(x, r, out);
@@ -48,7 +50,8 @@ int nearest_power(int v) {
   }
 }
 
-// Box-filter resampling of RGBA8 texels (each output texel averages its footprint).
+// Box-filter resampling of RGBA8 texels (each output texel averages its footprint), to
+// bring level 0 to power-of-two sides.
 std::vector<uint32_t> scale(const std::vector<uint32_t>& in, int w, int h, int nw, int nh) {
   std::vector<uint32_t> out(size_t(nw) * nh);
   const double sx = double(w) / nw, sy = double(h) / nh;
@@ -76,12 +79,14 @@ std::vector<uint32_t> scale(const std::vector<uint32_t>& in, int w, int h, int n
 
 extern "C" {
 
+// The matrices of gluPerspective and gluLookAt are the engine's (velocity::perspective,
+// velocity::look_at: the same formulas, in float).
 void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar) {
-  const double r = fovy / 2 * kPi / 180, dz = zFar - zNear, s = std::sin(r);
-  if (dz == 0 || s == 0 || aspect == 0) return;
-  const double cot = std::cos(r) / s;
-  GLdouble m[16] = {cot / aspect, 0, 0, 0, 0, cot, 0, 0, 0, 0, -(zFar + zNear) / dz, -1, 0, 0, -2 * zNear * zFar / dz, 0};
-  glMultMatrixd(m);
+  if (zFar == zNear || std::sin(fovy / 2 * kPi / 180) == 0 || aspect == 0) return;  // GLU: the matrix unchanged
+  GLfloat m[16];
+  velocity::gl::store_column_major(
+      velocity::perspective(float(fovy * kPi / 180), float(aspect), float(zNear), float(zFar)), m);
+  glMultMatrixf(m);
 }
 
 void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top) {
@@ -90,19 +95,11 @@ void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top) {
 
 void gluLookAt(GLdouble ex, GLdouble ey, GLdouble ez, GLdouble cx, GLdouble cy, GLdouble cz, GLdouble ux,
                GLdouble uy, GLdouble uz) {
-  auto norm = [](double* v) {
-    const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (l != 0) v[0] /= l, v[1] /= l, v[2] /= l;
-  };
-  double f[3] = {cx - ex, cy - ey, cz - ez}, up[3] = {ux, uy, uz};
-  norm(f);
-  double s[3] = {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2], f[0] * up[1] - f[1] * up[0]};
-  norm(s);
-  const double u[3] = {s[1] * f[2] - s[2] * f[1], s[2] * f[0] - s[0] * f[2], s[0] * f[1] - s[1] * f[0]};
-  GLfloat m[16] = {float(s[0]), float(u[0]), float(-f[0]), 0, float(s[1]), float(u[1]), float(-f[1]), 0,
-                   float(s[2]), float(u[2]), float(-f[2]), 0, 0, 0, 0, 1};
+  GLfloat m[16];
+  velocity::gl::store_column_major(velocity::look_at({float(ex), float(ey), float(ez)}, {float(cx), float(cy), float(cz)},
+                                                     {float(ux), float(uy), float(uz)}),
+                                   m);
   glMultMatrixf(m);
-  glTranslated(-ex, -ey, -ez);
 }
 
 GLint gluProject(GLdouble ox, GLdouble oy, GLdouble oz, const GLdouble* model, const GLdouble* proj, const GLint* view,
@@ -144,17 +141,18 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
   try {
     auto texels = velocity::gl::unpack_rgba(format, type, width, height, alignment, data);
     if (!texels) return GLU_INVALID_ENUM;
-    std::vector<uint32_t> level = std::move(*texels);
-    int w = std::min(nearest_power(width), velocity::gl::kMaxTextureSize);
-    int h = std::min(nearest_power(height), velocity::gl::kMaxTextureSize);
-    if (w != width || h != height) level = scale(level, width, height, w, h);
+    const int w = std::min(nearest_power(width), velocity::gl::kMaxTextureSize);
+    const int h = std::min(nearest_power(height), velocity::gl::kMaxTextureSize);
+    velocity::Texture::Level level{w, h, std::move(*texels)};
+    if (w != width || h != height) level.texels = scale(level.texels, width, height, w, h);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // Below level 0 the sides are powers of two, each level exactly half the one above:
+    // the box filter over each 2x2 block is the engine's mip-map builder.
     for (int l = 0;; ++l) {
-      glTexImage2D(GL_TEXTURE_2D, l, internalFormat, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, level.data());
-      if (w == 1 && h == 1) break;
-      const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
-      level = scale(level, w, h, nw, nh);
-      w = nw, h = nh;
+      glTexImage2D(GL_TEXTURE_2D, l, internalFormat, level.width, level.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   level.texels.data());
+      if (level.width == 1 && level.height == 1) break;
+      level = velocity::next_mip_level(level);
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
   } catch (const std::exception&) {

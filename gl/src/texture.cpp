@@ -22,9 +22,9 @@ GLenum Context::base_format(GLint internal) {
 }
 
 TextureObject* Context::bound_texture() {
-  if (bound_ == 0) return &default_texture_;
-  auto it = textures_.find(bound_);
-  return it == textures_.end() ? &default_texture_ : it->second.get();
+  if (texture_.bound == 0) return &texture_.default_object;
+  auto it = texture_.objects.find(texture_.bound);
+  return it == texture_.objects.end() ? &texture_.default_object : it->second.get();
 }
 
 void Context::gen_textures(GLsizei n, GLuint* out) {
@@ -32,10 +32,10 @@ void Context::gen_textures(GLsizei n, GLuint* out) {
   if (n < 0) return error(GL_INVALID_VALUE);
   if (!out) return;
   for (GLsizei i = 0; i < n; ++i) {
-    while (next_texture_ == 0 || textures_.count(next_texture_)) ++next_texture_;
-    if (textures_.size() >= 65536) return error(GL_OUT_OF_MEMORY);
-    textures_[next_texture_] = std::make_unique<TextureObject>();
-    out[i] = next_texture_++;
+    while (texture_.next_name == 0 || texture_.objects.count(texture_.next_name)) ++texture_.next_name;
+    if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
+    texture_.objects[texture_.next_name] = std::make_unique<TextureObject>();
+    out[i] = texture_.next_name++;
   }
 }
 
@@ -45,20 +45,20 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
   if (!ids) return;
   for (GLsizei i = 0; i < n; ++i) {
     if (ids[i] == 0) continue;
-    if (ids[i] == bound_) bound_ = 0, changed();
-    textures_.erase(ids[i]);  // draws already recorded keep their built texture
+    if (ids[i] == texture_.bound) texture_.bound = 0, changed();
+    texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }
 
 void Context::bind_texture(GLenum target, GLuint id) {
   if (in_begin_error()) return;
   if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
-  if (id != 0 && !textures_.count(id)) {
-    if (textures_.size() >= 65536) return error(GL_OUT_OF_MEMORY);
-    textures_[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
+  if (id != 0 && !texture_.objects.count(id)) {
+    if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
+    texture_.objects[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
   }
-  if (id != bound_) changed();
-  bound_ = id;
+  if (id != texture_.bound) changed();
+  texture_.bound = id;
 }
 
 namespace {
@@ -169,38 +169,14 @@ void Context::tex_env(GLenum target, GLenum pname, const float* v) {
     const GLenum m = to_enum(v[0]);
     if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != 0x0104 /* GL_ADD */)
       return error(GL_INVALID_ENUM);
-    env_mode_ = m;
+    texture_.env_mode = m;
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    env_color_ = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
+    texture_.env_color = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
   } else {
     return error(GL_INVALID_ENUM);
   }
   changed();
 }
-
-namespace {
-// The next mip level as a 2x2 box average (a side of 1 repeats its texel), the way
-// Mesa generates mip-maps.
-Texture::Level half(const Texture::Level& up) {
-  const int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2);
-  Texture::Level next{w, h, std::vector<uint32_t>(size_t(w) * h)};
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
-      const int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
-      const uint32_t t[4] = {up.texels[size_t(y0) * up.width + x0], up.texels[size_t(y0) * up.width + x1],
-                             up.texels[size_t(y1) * up.width + x0], up.texels[size_t(y1) * up.width + x1]};
-      uint32_t out = 0;
-      for (int c = 0; c < 4; ++c) {
-        uint32_t sum = 0;
-        for (uint32_t v : t) sum += (v >> (8 * c)) & 0xff;
-        out |= ((sum + 2) / 4) << (8 * c);
-      }
-      next.texels[size_t(y) * w + x] = out;
-    }
-  return next;
-}
-}  // namespace
 
 // The texture the renderer samples for the next draws, or null when texturing is off
 // for it (GL: an incomplete texture disables texturing).
@@ -214,7 +190,7 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
     if (t.generate_mipmap) {
       for (size_t i = 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
-        t.levels[i] = half(t.levels[i - 1]);
+        t.levels[i] = next_mip_level(t.levels[i - 1]);
     }
     std::vector<Texture::Level> levels{base};
     if (mip) {

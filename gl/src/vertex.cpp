@@ -1,6 +1,5 @@
 // The vertex stage: glBegin/glEnd, transform, GL lighting, primitive assembly for the
-// ten modes (with GL's provoking vertices), face culling and polygon modes; and the
-// vertex arrays, which feed the same stage.
+// ten modes (with GL's provoking vertices), face culling and polygon modes.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -12,11 +11,6 @@ namespace velocity::gl {
 
 namespace {
 [[gnu::always_inline]] inline Vec4 clamp_color(Vec4 c) { return {unit(c.x), unit(c.y), unit(c.z), unit(c.w)}; }
-float dot3(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 normalized(Vec3 v) {
-  const float l = std::sqrt(dot3(v, v));
-  return l > 0 ? Vec3{v.x / l, v.y / l, v.z / l} : v;
-}
 // Vertices kept before independent primitives are assembled (a multiple of 3 and 4).
 constexpr size_t kAssembleEvery = 3072;
 }  // namespace
@@ -44,93 +38,49 @@ void Context::end() {
 // and the light model cannot change inside it; materials can).
 void Context::prepare_lighting() {
   lights_used_ = 0;
-  need_eye_ = fog_ || (lighting_ && local_viewer_);
-  if (!lighting_) return;
-  for (const Light& l : lights_) {
+  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer);
+  if (!lighting_.enabled) return;
+  for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
-    LightUse& u = light_use_[lights_used_++];
-    u.light = &l;
+    shading::GlLight& u = light_use_[lights_used_++];
+    u.colors = {l.ambient.xyz(), l.diffuse.xyz(), l.specular.xyz()};
     u.positional = l.position.w != 0;
+    if (u.positional) u.position = l.position.xyz() / l.position.w;
+    u.direction = normalize(l.position.xyz());
+    u.half = normalize(u.direction + Vec3{0, 0, 1});  // with the viewer at +z
     u.spot = l.spot_cutoff != 180;
-    u.cos_cutoff = std::cos(l.spot_cutoff * 3.14159265358979f / 180.0f);
-    u.spot_direction = normalized(l.spot_direction);
-    u.direction = normalized(l.position.xyz());
-    u.half = normalized(Vec3{u.direction.x, u.direction.y, u.direction.z + 1});  // with the viewer at +z
+    u.spot_direction = normalize(l.spot_direction);
+    u.cos_cutoff = std::cos(radians(l.spot_cutoff));
+    u.spot_exponent = l.spot_exponent;
+    u.constant = l.constant, u.linear = l.linear, u.quadratic = l.quadratic;
     if (u.positional) need_eye_ = true;
   }
 }
 
-// OpenGL's lighting equation (GL 1.5 section 2.14.1) for one vertex and one side.
-// Inlined into vertex(): returned through registers, the colour would be stored in two
-// halves and reloaded whole, a store-forwarding stall per vertex.
+// OpenGL's lighting equation (shading::light_gl) for one vertex and one side.
 [[gnu::always_inline]] inline Vec4 Context::lit(const Vec4& eye4, Vec3 n, bool back) const {
-  const Material& m = materials_[back ? 1 : 0];
-  if (back) n = {-n.x, -n.y, -n.z};
-  float r = m.emission.x + m.ambient.x * model_ambient_.x;
-  float g = m.emission.y + m.ambient.y * model_ambient_.y;
-  float b = m.emission.z + m.ambient.z * model_ambient_.z;
-  Vec3 eye{0, 0, 0}, view{0, 0, 1};
-  if (need_eye_) {
-    eye = eye4.w != 0 && eye4.w != 1 ? Vec3{eye4.x / eye4.w, eye4.y / eye4.w, eye4.z / eye4.w} : eye4.xyz();
-    if (local_viewer_) view = normalized(Vec3{-eye.x, -eye.y, -eye.z});
-  }
-  for (int k = 0; k < lights_used_; ++k) {
-    const LightUse& u = light_use_[k];
-    const Light& l = *u.light;
-    Vec3 to_light = u.direction;
-    float att = 1;
-    if (u.positional) {
-      const Vec3 p{l.position.x / l.position.w - eye.x, l.position.y / l.position.w - eye.y,
-                   l.position.z / l.position.w - eye.z};
-      const float d = std::sqrt(dot3(p, p));
-      to_light = d > 0 ? Vec3{p.x / d, p.y / d, p.z / d} : p;
-      const float kd = l.constant + l.linear * d + l.quadratic * d * d;
-      att = kd > 0 ? 1.0f / kd : 1.0f;
-    }
-    if (u.spot) {
-      const float c = -dot3(to_light, u.spot_direction);
-      if (c < u.cos_cutoff) continue;  // outside the cone: nothing
-      att *= l.spot_exponent != 0 ? std::pow(std::max(c, 0.0f), l.spot_exponent) : 1.0f;
-    }
-    float lr = m.ambient.x * l.ambient.x, lg = m.ambient.y * l.ambient.y, lb = m.ambient.z * l.ambient.z;
-    const float ndotl = dot3(n, to_light);
-    if (ndotl > 0) {
-      lr += ndotl * m.diffuse.x * l.diffuse.x, lg += ndotl * m.diffuse.y * l.diffuse.y,
-          lb += ndotl * m.diffuse.z * l.diffuse.z;
-      const Vec3 h = u.positional || local_viewer_
-                         ? normalized(Vec3{to_light.x + view.x, to_light.y + view.y, to_light.z + view.z})
-                         : u.half;
-      const float ndoth = dot3(n, h);
-      if (ndoth > 0) {
-        const float sp = m.shininess != 0 ? std::pow(ndoth, m.shininess) : 1.0f;
-        lr += sp * m.specular.x * l.specular.x, lg += sp * m.specular.y * l.specular.y,
-            lb += sp * m.specular.z * l.specular.z;
-      }
-    }
-    r += att * lr, g += att * lg, b += att * lb;
-  }
-  return clamp_color({r, g, b, m.diffuse.w});
+  Vec3 eye{};
+  if (need_eye_) eye = eye4.w != 0 && eye4.w != 1 ? eye4.xyz() / eye4.w : eye4.xyz();
+  return clamp_color(shading::light_gl(light_use_, lights_used_, lighting_.model_ambient.xyz(), lighting_.local_viewer,
+                                       lighting_.materials[back ? 1 : 0], back ? -n : n, eye));
 }
 
 void Context::vertex(Vec4 v) {
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
   Vertex out;
-  out.clip = mvp_ * v;
-  if (lighting_ || fog_) {
-    const Vec4 eye = need_eye_ ? modelview_.back() * v : Vec4{};
-    if (lighting_) {
-      const M4& nm = normal_matrix_;
-      Vec3 n{nm.m[0] * normal_.x + nm.m[4] * normal_.y + nm.m[8] * normal_.z,
-             nm.m[1] * normal_.x + nm.m[5] * normal_.y + nm.m[9] * normal_.z,
-             nm.m[2] * normal_.x + nm.m[6] * normal_.y + nm.m[10] * normal_.z};
-      if (normalize_ || rescale_normal_) n = normalized(n);
+  out.clip = transform_.mvp * v;
+  if (lighting_.enabled || raster_.fog) {
+    const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
+    if (lighting_.enabled) {
+      Vec3 n = transform_.normal_matrix.transform_vector(normal_);
+      if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
       out.front = lit(eye, n, false);
-      out.back = two_side_ ? lit(eye, n, true) : out.front;
+      out.back = lighting_.two_side ? lit(eye, n, true) : out.front;
     }
     out.fog = std::fabs(eye.z);
   }
-  if (!lighting_) out.front = out.back = clamp_color(color_);
-  if (texture_2d_) out.tex = texture_identity_ ? texcoord_ : texture_matrix_.back() * texcoord_;
+  if (!lighting_.enabled) out.front = out.back = clamp_color(color_);
+  if (texture_.enabled) out.tex = transform_.texture_identity ? texcoord_ : transform_.texture.back() * texcoord_;
   push_vertex(out);
 }
 
@@ -231,36 +181,36 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
            double(c.x) * (double(a.y) * b.w - double(b.y) * a.w);
   }
   // (Clip-space y is negated for the renderer: GL's counter-clockwise is clockwise here.)
-  const bool front = (area <= 0) == (front_face_ == GL_CCW);
-  if (cull_ && (cull_mode_ == GL_FRONT_AND_BACK || (cull_mode_ == GL_FRONT) == front)) return;
-  const bool back_colors = lighting_ && two_side_ && !front;
-  const bool flat = shade_model_ == GL_FLAT;
+  const bool front = (area <= 0) == (raster_.front_face == GL_CCW);
+  if (raster_.cull && (raster_.cull_mode == GL_FRONT_AND_BACK || (raster_.cull_mode == GL_FRONT) == front)) return;
+  const bool back_colors = lighting_.enabled && lighting_.two_side && !front;
+  const bool flat = lighting_.shade_model == GL_FLAT;
   const Vertex& pv = prim_[idx[provoking]];
   const Vec4 flat_color = back_colors ? pv.back : pv.front;
   auto color = [&](uint32_t i) -> const Vec4& { return flat ? flat_color : back_colors ? prim_[i].back : prim_[i].front; };
   const bool shared = !flat && !back_colors;
-  const GLenum mode = polygon_mode_[front ? 0 : 1];
+  const GLenum mode = raster_.polygon_mode[front ? 0 : 1];
   if (mode == GL_FILL) {
-    target(PrimitiveKind::Triangles, offset_fill_);
+    target(PrimitiveKind::Triangles, raster_.offset_fill);
     auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
       emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared), emit_vertex(c, color(c), shared);
     };
     for (int k = 1; k + 1 < n; ++k) tri(idx[0], idx[k], idx[k + 1]);  // a fan from the first vertex
   } else if (mode == GL_LINE) {
-    target(PrimitiveKind::Lines, offset_line_);
+    target(PrimitiveKind::Lines, raster_.offset_line);
     for (int k = 0; k < n; ++k) {
       const uint32_t a = idx[k], b = idx[(k + 1) % n];
       emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
     }
   } else {
-    target(PrimitiveKind::Points, offset_point_);
+    target(PrimitiveKind::Points, raster_.offset_point);
     for (int k = 0; k < n; ++k) emit_vertex(idx[k], color(idx[k]), shared);
   }
 }
 
 void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
   target(PrimitiveKind::Lines, false);
-  const bool flat = shade_model_ == GL_FLAT;
+  const bool flat = lighting_.shade_model == GL_FLAT;
   emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat);
   emit_vertex(b, flat ? prim_[provoking].front : prim_[b].front, !flat);
 }
@@ -274,133 +224,6 @@ void Context::rect(float x1, float y1, float x2, float y2) {
   if (in_begin_error()) return;
   begin(GL_POLYGON);
   vertex({x1, y1, 0, 1}), vertex({x2, y1, 0, 1}), vertex({x2, y2, 0, 1}), vertex({x1, y2, 0, 1});
-  end();
-}
-
-// --- vertex arrays --------------------------------------------------------------
-
-namespace {
-size_t type_size(GLenum t) {
-  switch (t) {
-    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
-    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
-    case GL_DOUBLE: return 8;
-    default: return 4;
-  }
-}
-}  // namespace
-
-Vec4 ClientArray::fetch(GLint index, Vec4 v) const {
-  const size_t step = stride ? size_t(stride) : size_t(size) * type_size(type);
-  const unsigned char* p = static_cast<const unsigned char*>(pointer) + size_t(index) * step;
-  float* out[4] = {&v.x, &v.y, &v.z, &v.w};
-  for (int k = 0; k < size && k < 4; ++k) {
-    float f;
-    switch (type) {
-      case GL_FLOAT: { float x; std::memcpy(&x, p + 4 * k, 4); f = x; break; }
-      case GL_DOUBLE: { double x; std::memcpy(&x, p + 8 * k, 8); f = float(x); break; }
-      case GL_INT: { int32_t x; std::memcpy(&x, p + 4 * k, 4); f = float(x); break; }
-      case GL_UNSIGNED_INT: { uint32_t x; std::memcpy(&x, p + 4 * k, 4); f = float(x); break; }
-      case GL_SHORT: { int16_t x; std::memcpy(&x, p + 2 * k, 2); f = float(x); break; }
-      case GL_UNSIGNED_SHORT: { uint16_t x; std::memcpy(&x, p + 2 * k, 2); f = float(x); break; }
-      case GL_BYTE: f = float(int8_t(p[k])); break;
-      default: f = float(p[k]); break;
-    }
-    *out[k] = f;
-  }
-  return v;
-}
-
-namespace {
-// A colour or normal array's integers map to [0, 1] or [-1, 1].
-Vec4 normalize_ints(Vec4 v, GLenum type, int size) {
-  float scale;
-  switch (type) {
-    case GL_BYTE: scale = 1.0f / 127; break;
-    case GL_UNSIGNED_BYTE: scale = 1.0f / 255; break;
-    case GL_SHORT: scale = 1.0f / 32767; break;
-    case GL_UNSIGNED_SHORT: scale = 1.0f / 65535; break;
-    case GL_INT: scale = 1.0f / 2147483647.0f; break;
-    case GL_UNSIGNED_INT: scale = 1.0f / 4294967295.0f; break;
-    default: return v;
-  }
-  float* c[4] = {&v.x, &v.y, &v.z, &v.w};
-  for (int k = 0; k < size && k < 4; ++k) *c[k] *= scale;
-  return v;
-}
-}  // namespace
-
-void Context::client_state(GLenum cap, bool on) {
-  switch (cap) {
-    case GL_VERTEX_ARRAY: vertex_array.enabled = on; break;
-    case GL_NORMAL_ARRAY: normal_array.enabled = on; break;
-    case GL_COLOR_ARRAY: color_array.enabled = on; break;
-    case GL_TEXTURE_COORD_ARRAY: texcoord_array.enabled = on; break;
-    default: error(GL_INVALID_ENUM);
-  }
-}
-
-void Context::array_element(GLint i) {
-  if (i < 0) return error(GL_INVALID_VALUE);
-  if (color_array.enabled && color_array.pointer)
-    set_color(normalize_ints(color_array.fetch(i, {0, 0, 0, 1}), color_array.type, color_array.size));
-  if (normal_array.enabled && normal_array.pointer) {
-    const Vec4 n = normalize_ints(normal_array.fetch(i, {}), normal_array.type, 3);
-    normal_ = n.xyz();
-  }
-  if (texcoord_array.enabled && texcoord_array.pointer) texcoord_ = texcoord_array.fetch(i, {0, 0, 0, 1});
-  if (vertex_array.enabled && vertex_array.pointer) vertex(vertex_array.fetch(i, {0, 0, 0, 1}));
-}
-
-void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
-  if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
-  if (count < 0 || first < 0) return error(GL_INVALID_VALUE);
-  if (in_begin_error()) return;
-  if (!vertex_array.enabled || !vertex_array.pointer) return;
-  begin(mode);
-  for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) array_element(GLint(i));
-  end();
-}
-
-void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
-  if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
-  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
-  if (count < 0) return error(GL_INVALID_VALUE);
-  if (in_begin_error()) return;
-  if (!vertex_array.enabled || !vertex_array.pointer || !indices) return;
-  const auto* bytes = static_cast<const uint8_t*>(indices);
-  auto index_at = [&](GLsizei k) -> uint32_t {
-    if (type == GL_UNSIGNED_BYTE) return bytes[k];
-    if (type == GL_UNSIGNED_SHORT) {
-      uint16_t s;
-      std::memcpy(&s, bytes + 2 * size_t(k), 2);
-      return s;
-    }
-    uint32_t i;
-    std::memcpy(&i, bytes + 4 * size_t(k), 4);
-    return i;
-  };
-  // Each element is processed once however often it is referenced (the vertex stage is
-  // a function of the element: the arrays cannot change during the call). The cache
-  // covers the indices up to the largest one, bounded by a multiple of the count.
-  uint32_t largest = 0;
-  for (GLsizei k = 0; k < count; ++k) largest = std::max(largest, index_at(k));
-  const size_t cache_size = std::min(size_t(largest) + 1, size_t(count) * 4 + 1024);
-  element_cache_.assign(cache_size, 0);
-  begin(mode);
-  caching_ = true;
-  for (GLsizei k = 0; k < count; ++k) {
-    const uint32_t i = index_at(k);
-    if (i > 0x7fffffffu) continue;
-    if (i < cache_size && element_cache_[i]) {
-      if (order_.size() < kMaxPrimitiveVertices) order_.push_back(element_cache_[i] - 1);
-      continue;
-    }
-    const size_t before = prim_.size();
-    array_element(GLint(i));
-    if (i < cache_size && prim_.size() > before) element_cache_[i] = uint32_t(prim_.size());
-  }
-  caching_ = false;
   end();
 }
 

@@ -6,7 +6,7 @@
 //
 // A frame goes load -> scene -> transform (vertex lighting) -> cull and clip -> set-up
 // -> bin to 64x64 tiles -> rasterize and shade each tile -> framebuffer. See
-// docs/pipeline.md.
+// docs/pipeline.md. What draws is a backend (velocity/backend.hpp): the CPU pipeline.
 #pragma once
 
 #include <cstddef>
@@ -22,6 +22,8 @@
 #include "velocity/scene.hpp"
 
 namespace velocity {
+
+class Backend;
 
 enum class DepthMode {
   ZBuffer,  // per-pixel depth test (LESS) and write
@@ -49,15 +51,19 @@ struct RenderOptions {
   // Keep an object-id buffer: every sample remembers the id of the draw that last
   // wrote its colour (0 where nothing was drawn). Read it with object_ids().
   bool object_ids = false;
+  // Also keep the eye-space normals of the frame's mesh draws: end_frame draws them a
+  // second time, unlit, with their normals as colours (8 bits a component), into buffers
+  // of their own. Read them with read_normals().
+  bool normals = false;
 };
 
 // How begin_frame starts the frame: cleared (the default), or from what the previous
 // frame left (an OpenGL context keeps its framebuffer between flushes).
 struct FrameStart {
   FrameStart() {}  // not an aggregate: begin_frame(camera, lights, {r, g, b}) stays the Vec3 one
-  bool clear_color = true;
+  bool clear_color_buffer = true;  // false: the colour buffer starts as the last frame left it
   Vec4 color{0.1f, 0.1f, 0.15f, 1.0f};
-  bool clear_depth = true;
+  bool clear_depth_buffer = true;  // the same for the depth buffer
   float depth = 1.0f;
 };
 
@@ -104,8 +110,7 @@ class Renderer {
   const FrameStats& render(const Scene& scene);
 
   // The same, one mesh at a time (for an immediate-mode front end or a game loop).
-  // With no lights, a white light from (0.3, 0.5, 1) in eye space with ambient 0.2 and
-  // diffuse 0.8 is used.
+  // With no lights, kDefaultLight (scene.hpp) is used, in eye space.
   void begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color);
   void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start);
   // `material`, when given, replaces the mesh's own materials and face colours.
@@ -149,12 +154,21 @@ class Renderer {
   // options.object_ids was set for the frame; otherwise empty. With super-sampling,
   // the id of the nearest sample, never a mix.
   std::vector<uint32_t> object_ids() const;
+  // Per output pixel (top row first), x, y, z of the unit eye-space normal of the mesh
+  // drawn there (0, 0, 0 where nothing was drawn; 8 bits a component), into `out`
+  // (width * height * 3 floats). Throws velocity::Error unless options.normals was set
+  // for the frame.
+  void read_normals(float* out) const;
   // Bytes held by the sample buffers (colour and depth) at the current size and ssaa.
   size_t framebuffer_bytes() const;
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  // What draws (velocity/backend.hpp): the CPU pipeline.
+  std::unique_ptr<Backend> backend_;
+  bool in_frame_ = false;
+  std::vector<Mat4> world_;  // render()'s matrices, reused
+  struct NormalsPass;        // options.normals: the second pass and its buffers
+  std::unique_ptr<NormalsPass> normals_;
 };
 
 }  // namespace velocity

@@ -124,6 +124,16 @@ struct Light {
   }
 };
 
+// The convention's light, defined here once: white from `towards` (unit length after
+// normalising) with ambient 0.2 and diffuse 0.8. The renderer lights a frame that brings
+// no lights with it in eye space; a viewer adds it to a scene that has no key light
+// (Light::ambient(kDefaultLight.ambient), Light::directional(kDefaultLight.towards,
+// kDefaultLight.diffuse)).
+struct DefaultLight {
+  Vec3 towards, ambient, diffuse;
+};
+inline constexpr DefaultLight kDefaultLight{{0.3f, 0.5f, 1.0f}, {0.2f, 0.2f, 0.2f}, {0.8f, 0.8f, 0.8f}};
+
 class Scene {
  public:
   // Adds an object. A parent must already exist, so objects are always stored parents

@@ -52,6 +52,12 @@ class Texture {
   std::vector<Level> levels_;
 };
 
+// The mip level below `above`: max(1, size / 2) on each side, each texel the rounded
+// average of the 2x2 block above it, per channel ((sum + 2) / 4); a side of 1 repeats
+// its texel. OpenGL's box filter (Mesa's glGenerateMipmap): the one mip-map builder of
+// Texture(const Image&), pGL's GL_GENERATE_MIPMAP and gluBuild2DMipmaps.
+Texture::Level next_mip_level(const Texture::Level& above);
+
 // Reads an image file as a texture: PCX by the extension, everything else through
 // stb_image (PNG, JPEG, TGA, BMP, GIF). Throws velocity::Error naming the file.
 std::shared_ptr<const Texture> load_texture(const std::string& path);

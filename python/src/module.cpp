@@ -2,7 +2,7 @@
 // re-exports these and adds RenderFlags, pose helpers and the batch runners.
 //
 // Threads: every call that renders or loads releases the GIL for its C++ part. A render
-// first copies what it needs out of the scene (build_frame, meshes shared, not copied)
+// first copies what it needs out of the scene (copy_scene, meshes shared, not copied)
 // while it holds the GIL, so Python may change the scene meanwhile. One
 // OffscreenRenderer renders one frame at a time (a mutex); many renderers render at
 // once.
@@ -340,7 +340,7 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
       lock.lock();  // without the GIL: another thread may be rendering with this renderer
     }
     w = self.renderer.width(), h = self.renderer.height();
-    Frame frame = build_frame(*scene.data, w, h);  // with the GIL: the scene is Python's
+    SceneCopy frame = copy_scene(*scene.data, w, h);  // with the GIL: the scene is Python's
     py::gil_scoped_release release;
     if (req.color) {
       color_bytes = size_t(w) * size_t(h) * 4;

@@ -40,43 +40,6 @@ Vec3 scaled_color(const LightBase& l) {
   return l.color * k;
 }
 
-// Normals as colours: n in [-1, 1] -> 0.5 + 0.5 n, read back as 8-bit and decoded.
-Vec3 encode(Vec3 n) { return n * 0.5f + Vec3{0.5f, 0.5f, 0.5f}; }
-
-// The frame's meshes with their eye-space normals as unlit colours: per vertex for
-// smooth shading, per face for flat.
-std::vector<Mesh> normal_meshes(const Frame& frame, bool flat) {
-  std::vector<Mesh> out;
-  out.reserve(frame.items.size());
-  Mat4 view = frame.camera.view();
-  for (const Frame::Item& item : frame.items) {
-    const Mesh& src = *item.mesh;
-    Mesh m;
-    m.name = src.name;
-    m.positions = src.positions;
-    // Unlit shading never reads them, but a mesh without normals makes the renderer
-    // average some for every draw: carrying them costs less.
-    m.normals = src.normals;
-    m.triangles = src.triangles;
-    m.face_materials = src.face_materials;
-    m.materials = src.materials;
-    for (Material& mat : m.materials) mat.texture.reset(), mat.env_map.reset();
-    Mat4 nm = normal_matrix(view * item.world);
-    bool faces = flat;
-    for (const Material& mat : src.materials) faces |= mat.shading == Shading::Flat;
-    if (faces || src.normals.empty()) {
-      m.face_colors.resize(src.triangles.size());
-      for (size_t f = 0; f < src.triangles.size(); ++f)
-        m.face_colors[f] = encode(normalize(nm.transform_vector(face_normal(src, src.triangles[f]))));
-    } else {
-      m.colors.resize(src.normals.size());
-      for (size_t v = 0; v < src.normals.size(); ++v) m.colors[v] = encode(normalize(nm.transform_vector(src.normals[v])));
-    }
-    out.push_back(std::move(m));
-  }
-  return out;
-}
-
 }  // namespace
 
 std::shared_ptr<const MeshData> make_mesh_data(std::string name, std::vector<std::shared_ptr<const Mesh>> parts,
@@ -164,11 +127,11 @@ std::vector<std::array<double, 16>> SceneData::world_poses() const {
   return world;
 }
 
-Frame build_frame(const SceneData& scene, int width, int height) {
+SceneCopy copy_scene(const SceneData& scene, int width, int height) {
   if (scene.main_camera < 0 || scene.nodes[size_t(scene.main_camera)].removed)
     throw Error("the scene has no camera: add one with scene.add(camera, pose=...)");
   std::vector<std::array<double, 16>> world = scene.world_poses();
-  Frame f;
+  SceneCopy f;
   for (size_t i = 0; i < scene.nodes.size(); ++i) {
     const NodeData& n = scene.nodes[i];
     if (n.removed) continue;
@@ -197,7 +160,7 @@ Frame build_frame(const SceneData& scene, int width, int height) {
     // keeps depth precise. Along the view axis, so it holds for any direction.
     Mat4 view = f.camera.view();
     float far = 0;
-    for (const Frame::Item& item : f.items) {
+    for (const SceneCopy::Item& item : f.items) {
       Sphere s = world_sphere(item.mesh->bounding_sphere(), item.world);
       far = std::max(far, -view.transform_point(s.center).z + s.radius);
     }
@@ -209,17 +172,18 @@ Frame build_frame(const SceneData& scene, int width, int height) {
   return f;
 }
 
-RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& req) {
+RenderOutput render_frame(Renderer& r, const SceneCopy& frame, const RenderRequest& req) {
   const int w = r.width(), h = r.height();
   const size_t pixels = size_t(w) * size_t(h);
   RenderOptions saved = r.options;
   r.options.object_ids = req.mask;
   r.options.shading = req.shading;
   r.options.cull_back_faces = req.cull_back_faces;
+  r.options.normals = req.normals;
   RenderOutput out;
   try {
     r.begin_frame(frame.camera, frame.lights, frame.start);
-    for (const Frame::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
+    for (const SceneCopy::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
     r.end_frame();
     if (req.color) r.read_color(req.color_buffer, size_t(w) * (req.alpha ? 4 : 3), req.alpha ? 4 : 3);
     float* depth = req.depth_buffer;
@@ -230,24 +194,8 @@ RenderOutput render_frame(Renderer& r, const Frame& frame, const RenderRequest& 
     r.read_view_depth(depth);
     if (req.mask) out.mask = r.object_ids();
     if (req.normals) {
-      // A second pass: the eye-space normals as unlit colours (8 bits a component),
-      // with the same geometry, so the same pixels are covered.
-      std::vector<Mesh> meshes = normal_meshes(frame, req.shading == Shading::Flat);
-      r.options.object_ids = false;
-      r.options.shading = Shading::Unlit;
-      FrameStart start;
-      start.color = {0.5f, 0.5f, 0.5f, 1.0f};
-      r.begin_frame(frame.camera, frame.lights, start);
-      for (size_t i = 0; i < meshes.size(); ++i) r.draw(meshes[i], frame.items[i].world);
-      r.end_frame();
-      std::vector<uint8_t> rgba(pixels * 4);
-      r.read_color(rgba.data(), size_t(w) * 4);
-      out.normals.assign(pixels * 3, 0.0f);
-      for (size_t i = 0; i < pixels; ++i) {
-        if (depth[i] == 0) continue;
-        Vec3 n = normalize({rgba[i * 4] / 127.5f - 1, rgba[i * 4 + 1] / 127.5f - 1, rgba[i * 4 + 2] / 127.5f - 1});
-        out.normals[i * 3] = n.x, out.normals[i * 3 + 1] = n.y, out.normals[i * 3 + 2] = n.z;
-      }
+      out.normals.resize(pixels * 3);
+      r.read_normals(out.normals.data());
     }
   } catch (...) {
     r.options = saved;

@@ -1,7 +1,7 @@
 // The Python module's scene: pyrender's model of nodes (a mesh, a camera or a light, a
 // pose, a parent), cameras and lights as pyrender defines them, and the frame built
 // from it for the core Renderer. No Python here: module.cpp binds these types and
-// builds a Frame while holding the GIL, then renders it without.
+// builds a SceneCopy while holding the GIL, then renders it without.
 #pragma once
 
 #include <array>
@@ -95,7 +95,7 @@ struct SceneData {
 
 // What one render needs, copied out of a scene (meshes shared, not copied), so that the
 // render runs without the GIL while Python goes on, even changing the scene.
-struct Frame {
+struct SceneCopy {
   Camera camera;
   std::vector<Light> lights;
   FrameStart start;
@@ -107,9 +107,9 @@ struct Frame {
   std::vector<Item> items;
 };
 
-// Builds the frame for a width x height image from the scene's main camera. Throws
-// velocity::Error when there is no camera or a pose is not usable.
-Frame build_frame(const SceneData& scene, int width, int height);
+// Copies what a width x height image of the scene needs, seen from its main camera.
+// Throws velocity::Error when there is no camera or a pose is not usable.
+SceneCopy copy_scene(const SceneData& scene, int width, int height);
 
 // Outputs of one render, top row first.
 struct RenderOutput {
@@ -127,7 +127,7 @@ struct RenderRequest {
   std::optional<Shading> shading;
   bool cull_back_faces = true;
 };
-RenderOutput render_frame(Renderer& renderer, const Frame& frame, const RenderRequest& request);
+RenderOutput render_frame(Renderer& renderer, const SceneCopy& frame, const RenderRequest& request);
 
 // Colour buffers for a renderer's frames, handed back when numpy frees the array, so
 // that a steady stream of frames allocates (and page-faults) nothing new. Thread-safe.

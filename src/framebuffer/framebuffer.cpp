@@ -9,10 +9,10 @@
 namespace velocity {
 
 void Framebuffer::resize(int w, int h) {
-  if (w < 1 || h < 1 || w > raster::kMaxFramebufferSide || h > raster::kMaxFramebufferSide)
+  if (w < 1 || h < 1 || w > kMaxFramebufferSide || h > kMaxFramebufferSide)
     throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
-                std::to_string(raster::kMaxFramebufferSide) + " a side)");
-  const int tx = (w + raster::kTileSize - 1) / raster::kTileSize, ty = (h + raster::kTileSize - 1) / raster::kTileSize;
+                std::to_string(kMaxFramebufferSide) + " a side)");
+  const int tx = (w + kTileSize - 1) / kTileSize, ty = (h + kTileSize - 1) / kTileSize;
   const size_t n = size_t(tx) * size_t(ty) * kTilePixels;
   if (n <= color.capacity() && (ids.empty() || n <= ids.capacity())) {
     // Within the buffers' capacity (a program that switches between sizes, or

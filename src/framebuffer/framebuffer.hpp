@@ -22,10 +22,18 @@
 #include <vector>
 #include <algorithm>
 
-#include "raster/raster_types.hpp"
 #include "velocity/image.hpp"
 
 namespace velocity {
+
+// The largest framebuffer side, in samples (the guard band and the 24.8 fixed-point
+// coordinates of raster/contract.hpp are sized for it).
+inline constexpr int kMaxFramebufferSide = 16384;
+
+inline constexpr int kTileSizeLog2 = 6;
+inline constexpr int kTileSize = 1 << kTileSizeLog2;  // 64x64 pixel tiles
+inline constexpr int kBlockSize = 4;                  // 4x4 pixel blocks: one SIMD block
+inline constexpr int kBlocksPerTileSide = kTileSize / kBlockSize;  // 16
 
 // A std::vector allocator aligned to the 64-byte blocks the kernels load and store.
 template <class T>
@@ -65,7 +73,7 @@ struct Framebuffer {
     clean_color = color, clean_depth = depth;
   }
 
-  static constexpr int kTilePixels = raster::kTileSize * raster::kTileSize;  // 4096
+  static constexpr int kTilePixels = kTileSize * kTileSize;  // 4096
 
   // Where pixel (x, y) is stored (0 <= x < tiles_x * 64, 0 <= y < tiles_y * 64).
   size_t index(int x, int y) const {

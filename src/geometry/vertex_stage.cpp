@@ -10,6 +10,7 @@
 
 #include <hwy/highway.h>
 
+#include "shading/lighting-inl.h"
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -18,10 +19,7 @@ namespace HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
-
-struct V3 {
-  VF x, y, z;
-};
+namespace lit = velocity::shading::HWY_NAMESPACE;
 
 HWY_INLINE V3 transform_point(const Mat4& m, const V3& p) {
   const DF d;
@@ -39,8 +37,6 @@ HWY_INLINE V3 transform_vector(const Mat4& m, const V3& p) {
   };
   return {row(0), row(1), row(2)};
 }
-
-HWY_INLINE VF dot(const V3& a, const V3& b) { return hn::MulAdd(a.x, b.x, hn::MulAdd(a.y, b.y, hn::Mul(a.z, b.z))); }
 
 // Region code bits (clip.hpp) of N clip-space positions.
 HWY_INLINE VU outcodes(VF x, VF y, VF z, VF w, const GuardBand& g) {
@@ -117,50 +113,6 @@ HWY_INLINE V3 load3(const Vec3* in, size_t count) {
   return v;
 }
 
-// lighting.hpp's model for N vertices: n unit normals, p eye positions.
-HWY_INLINE void light(const EyeLights& lights, const Specular& s, const V3& n, const V3& p, V3& diffuse, V3& spec) {
-  const DF d;
-  diffuse = {hn::Set(d, lights.ambient.x), hn::Set(d, lights.ambient.y), hn::Set(d, lights.ambient.z)};
-  spec = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-  V3 to_eye{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-  if (s.ks > 0) {
-    const VF il = rsqrt(dot(p, p));
-    to_eye = {hn::Neg(hn::Mul(p.x, il)), hn::Neg(hn::Mul(p.y, il)), hn::Neg(hn::Mul(p.z, il))};
-  }
-  auto add = [&](const V3& l, VF cr, VF cg, VF cb) {
-    const VF nl = dot(n, l);
-    const VF k = hn::ZeroIfNegative(nl);
-    diffuse = {hn::MulAdd(cr, k, diffuse.x), hn::MulAdd(cg, k, diffuse.y), hn::MulAdd(cb, k, diffuse.z)};
-    if (s.ks > 0) {
-      const VF two = hn::Add(nl, nl);
-      const V3 r{hn::MulSub(two, n.x, l.x), hn::MulSub(two, n.y, l.y), hn::MulSub(two, n.z, l.z)};
-      const VF rv = dot(r, to_eye);
-      const MF lit = hn::Gt(rv, hn::Set(d, s.cutoff));
-      if (!hn::AllFalse(d, lit)) {
-        const VF base = hn::Min(hn::IfThenElse(lit, rv, hn::Set(d, 1.0f)), hn::Set(d, 1.0f));
-        const VF e = hn::Mul(hn::Set(d, s.ks), hn::IfThenElseZero(lit, pow01(base, hn::Set(d, s.exponent))));
-        spec = {hn::MulAdd(cr, e, spec.x), hn::MulAdd(cg, e, spec.y), hn::MulAdd(cb, e, spec.z)};
-      }
-    }
-  };
-  for (const auto& l : lights.directional)
-    add({hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)}, hn::Set(d, l.color.x),
-        hn::Set(d, l.color.y), hn::Set(d, l.color.z));
-  for (const auto& l : lights.point) {
-    V3 v{hn::Sub(hn::Set(d, l.position.x), p.x), hn::Sub(hn::Set(d, l.position.y), p.y),
-         hn::Sub(hn::Set(d, l.position.z), p.z)};
-    const VF d2 = dot(v, v);
-    const VF il = rsqrt(d2);
-    const VF dist = hn::Mul(d2, il);
-    VF att = hn::MulAdd(hn::MulAdd(hn::Set(d, l.quadratic), dist, hn::Set(d, l.linear)), dist, hn::Set(d, l.constant));
-    att = hn::Div(hn::Set(d, 1.0f), hn::Max(att, hn::Set(d, 1e-6f)));
-    const MF here = hn::Eq(d2, hn::Zero(d));
-    const V3 dir{hn::IfThenElse(here, n.x, hn::Mul(v.x, il)), hn::IfThenElse(here, n.y, hn::Mul(v.y, il)),
-                 hn::IfThenElse(here, n.z, hn::Mul(v.z, il))};
-    add(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att), hn::Mul(hn::Set(d, l.color.z), att));
-  }
-}
-
 void TransformMeshVertices(const MeshVertexJob& job) {
   const DF d;
   constexpr size_t N = kLanes;
@@ -182,16 +134,14 @@ void TransformMeshVertices(const MeshVertexJob& job) {
     if (job.out.normal) store3(n, job.out.normal + i, count);
     if (job.out.eye) store3(e, job.out.eye + i, count);
     if (job.lights) {
-      V3 diffuse, spec;
-      light(*job.lights, job.specular, n, e, diffuse, spec);
+      const lit::LightTermsN t = lit::light(*job.lights, n, e, job.specular);
       if (job.base_color) {
         const Vec3 b = *job.base_color;
-        const V3 c{saturate(hn::MulAdd(hn::Set(d, b.x), diffuse.x, spec.x)), saturate(hn::MulAdd(hn::Set(d, b.y), diffuse.y, spec.y)),
-                   saturate(hn::MulAdd(hn::Set(d, b.z), diffuse.z, spec.z))};
-        store3(c, job.out.diffuse + i, count);
+        const V3 c = lit::apply(t, {hn::Set(d, b.x), hn::Set(d, b.y), hn::Set(d, b.z)});
+        store3({saturate(c.x), saturate(c.y), saturate(c.z)}, job.out.diffuse + i, count);
       } else {
-        store3(diffuse, job.out.diffuse + i, count);
-        if (job.out.specular) store3(spec, job.out.specular + i, count);
+        store3(t.diffuse, job.out.diffuse + i, count);
+        if (job.out.specular) store3(t.specular, job.out.specular + i, count);
       }
     }
   }

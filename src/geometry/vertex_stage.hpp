@@ -8,27 +8,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/clip.hpp"
-#include "geometry/lighting.hpp"
+#include "geometry/viewport.hpp"
+#include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 
 namespace velocity::geometry {
-
-// What the triangle stage reads per vertex. fx, fy are meaningful only when the code
-// has no kMustClipPlanes, kOutNonFinite or kOutUnsnapped bit.
-struct ProjectedVertex {
-  int32_t fx, fy;  // screen position, 24.8 fixed point, y down
-  float z;         // window depth
-  float inv_w;     // 1 / w_clip
-};
-
-// clip -> window: x = (x/w + 1) * scale_x + offset_x, y = offset_y - (y/w + 1) * scale_y,
-// z = z/w * scale_z + offset_z (OpenGL's viewport transform in its order of operations,
-// so that snapped positions agree with Mesa's; y flipped so that row 0 is the top).
-struct ViewportMap {
-  float scale_x, offset_x, scale_y, offset_y, scale_z, offset_z;
-  GuardBand guard;
-};
 
 struct VertexOutputs {
   ProjectedVertex* projected = nullptr;
@@ -46,8 +30,8 @@ struct MeshVertexJob {
   size_t begin = 0, end = 0;
   Mat4 mvp, model_view, normal_matrix;
   ViewportMap viewport{};
-  const EyeLights* lights = nullptr;  // set: compute diffuse and specular
-  Specular specular;
+  const shading::EyeLights* lights = nullptr;  // set: compute diffuse and specular
+  shading::Specular specular;
   // With lighting: when set, the lit colour clamp(base * diffuse + specular) goes to
   // out.diffuse and nothing to out.specular (a draw whose faces share one colour).
   const Vec3* base_color = nullptr;

@@ -48,16 +48,19 @@ uint32_t BlockPool::reset(uint32_t want) {
   return taken;
 }
 
-void WorkerBins::resize(int tile_count) {
+void WorkerBins::resize(int tiles_x, int tiles_y) {
+  const int tile_count = tiles_x * tiles_y;
   // Never shrunk: switching sizes allocates nothing. If this throws, nothing changed.
   if (heads_.size() < size_t(tile_count)) {
     std::vector<uint32_t> h(static_cast<size_t>(tile_count)), t(static_cast<size_t>(tile_count));
     heads_.swap(h), tails_.swap(t);
   }
+  tiles_x_ = tiles_x;
   clear();
 }
 
-void WorkerBins::clear() {
+void WorkerBins::clear(bool painter) {
+  painter_ = painter;
   std::fill(heads_.begin(), heads_.end(), ListChunk::kNone);
   std::fill(tails_.begin(), tails_.end(), ListChunk::kNone);
   painter_head_ = painter_tail_ = ListChunk::kNone;
@@ -102,19 +105,30 @@ void Bins::resize(int width, int height, int workers) {
     workers_.back()->attach(&pool_);
   }
   workers_.resize(size_t(std::max(workers, 1)));
-  for (auto& w : workers_) w->resize(tiles_x * tiles_y);
+  for (auto& w : workers_) w->resize(tiles_x, tiles_y);
   width_ = width, height_ = height;
   tiles_x_ = tiles_x, tiles_y_ = tiles_y;
 }
 
-void Bins::clear() {
+void Bins::clear(bool painter) {
   // As many blocks as the largest frame took, and room for what the schedule can add
   // to that (which jobs fall on which worker changes the part-filled blocks and list
   // chunks each leaves): one block per worker and a quarter more. So frames like the
   // ones before allocate nothing, however their jobs fall on the workers.
   const uint32_t nw = uint32_t(workers_.size());
   most_taken_ = std::max(most_taken_, pool_.reset(most_taken_ + most_taken_ / 4 + nw + 1));
-  for (auto& w : workers_) w->clear();
+  for (auto& w : workers_) w->clear(painter);
+}
+
+void Bins::bin_deferred() {
+  painter_.clear();
+  merge([&](int w) { return workers_[size_t(w)]->deferred(); },
+        [&](const RecordHeader& r, uint32_t ref) { painter_.push_back({r.sort_key, uint32_t(painter_.size()), ref, &r}); });
+  // Stable by the order as a second key (std::stable_sort would allocate every frame).
+  std::sort(painter_.begin(), painter_.end(),
+            [](const Sorted& a, const Sorted& b) { return a.key != b.key ? a.key > b.key : a.order < b.order; });
+  WorkerBins& into = *workers_[0];  // one worker's lists hold them all
+  for (size_t rank = 0; rank < painter_.size(); ++rank) into.bin(uint32_t(rank), painter_[rank].ref, *painter_[rank].record);
 }
 
 }  // namespace velocity::raster

@@ -1,6 +1,9 @@
 // Binning: each primitive's record goes to the list of every 64x64 tile its bounding box
-// touches. Tiles are then rasterised independently, each reading only its own lists,
-// which is what lets them run on separate cores.
+// touches. The policy is here and only here: a record is emitted once (WorkerBins::emit)
+// and binned at once, or in painter's mode deferred, sorted far to near with the whole
+// frame's records and binned in that order (Bins::bin_deferred). Tiles are then
+// rasterised independently, each reading only its own lists, which is what lets them
+// run on separate cores.
 //
 // The front end runs on every core too: the frame's work is cut into jobs (a range of
 // one draw's triangles, a clear, ...) numbered in submission order, and each worker
@@ -21,7 +24,7 @@
 #include <mutex>
 #include <vector>
 
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 
 namespace velocity::raster {
 
@@ -78,24 +81,32 @@ class WorkerBins {
  public:
   void attach(BlockPool* pool) { pool_ = pool; }
   // Sizes the tile grid (keeps the storage of a larger one).
-  void resize(int tile_count);
-  // Forgets the frame's records and lists (the pool is reset by the owner).
-  void clear();
+  void resize(int tiles_x, int tiles_y);
+  // Forgets the frame's records and lists (the pool is reset by the owner). `painter`:
+  // the frame's records are deferred, not binned, when emitted.
+  void clear(bool painter = false);
 
   // Space for a record of `bytes` (a multiple of 8, at most a few hundred). Returns
   // nullptr when the pool is exhausted (the primitive is then dropped).
   RecordHeader* allocate(size_t bytes, uint32_t& ref);
-  // Adds the record to every tile its inclusive pixel box touches.
-  void bin(uint32_t job, uint32_t ref, int min_x, int min_y, int max_x, int max_y, int tiles_x) {
-    const int tx0 = min_x >> kTileSizeLog2, tx1 = max_x >> kTileSizeLog2;
-    const int ty0 = min_y >> kTileSizeLog2, ty1 = max_y >> kTileSizeLog2;
-    for (int ty = ty0; ty <= ty1; ++ty)
-      for (int tx = tx0; tx <= tx1; ++tx) append(ty * tiles_x + tx, {job, ref});
+  // Hands a finished record (at `ref`) of job `job` to the tiles: binned now, or in
+  // painter's mode kept with its sort key (mean window depth) until the frame's records
+  // are sorted.
+  void emit(uint32_t job, RecordHeader& r, uint32_t ref, float sort_key) {
+    if (painter_) {
+      r.sort_key = sort_key;
+      append(painter_head_, painter_tail_, {job, ref});
+      return;
+    }
+    bin(job, ref, r);
   }
-
-  // Painter's mode: the records of this worker in the order it made them, to be sorted
-  // before they are binned.
-  void defer(uint32_t job, uint32_t ref) { append(painter_head_, painter_tail_, {job, ref}); }
+  // Adds the record to every tile its inclusive pixel box touches.
+  void bin(uint32_t job, uint32_t ref, const RecordHeader& r) {
+    const int tx0 = r.min_x >> kTileSizeLog2, tx1 = r.max_x >> kTileSizeLog2;
+    const int ty0 = r.min_y >> kTileSizeLog2, ty1 = r.max_y >> kTileSizeLog2;
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) append(ty * tiles_x_ + tx, {job, ref});
+  }
 
   // The first chunk of a tile's list (ListChunk::kNone when empty).
   uint32_t list(int tile) const { return heads_[size_t(tile)]; }
@@ -109,6 +120,9 @@ class WorkerBins {
   uint32_t block_ = UINT32_MAX;  // the block being filled
   size_t used_ = BlockPool::kBlockBytes;
   std::vector<uint32_t> heads_, tails_;  // per tile: first and last chunk, or kNone
+  int tiles_x_ = 0;
+  bool painter_ = false;
+  // Painter's mode: the records of this worker in the order it made them.
   uint32_t painter_head_ = ListChunk::kNone, painter_tail_ = ListChunk::kNone;
 };
 
@@ -118,8 +132,13 @@ class Bins {
   // Sizes for a width x height framebuffer and `workers` threads. If it throws
   // (std::bad_alloc) the bins are left unusable until a resize succeeds.
   void resize(int width, int height, int workers);
-  // A new frame: every list empty, every block free.
-  void clear();
+  // A new frame: every list empty, every block free. `painter`: records are deferred
+  // when emitted, and binned by bin_deferred once every one is made.
+  void clear(bool painter = false);
+  // Painter's mode: every deferred record far to near by its sort key (seed 004's sort),
+  // stable so that equal keys keep their submission order; binned in that order, each
+  // record its own job (serial: between the triangle stage and the tiles).
+  void bin_deferred();
 
   int tiles_x() const { return tiles_x_; }
   int tiles_y() const { return tiles_y_; }
@@ -139,9 +158,6 @@ class Bins {
   // Calls f(record) for every record binned to `tile`, in job order.
   template <class F>
   void for_each_in_order(int tile, F&& f) const { merge([&](int w) { return workers_[size_t(w)]->list(tile); }, f); }
-  // Calls f(record, reference) for every deferred record (painter's mode), in job order.
-  template <class F>
-  void for_each_deferred(F&& f) const { merge([&](int w) { return workers_[size_t(w)]->deferred(); }, f); }
 
  private:
   // Calls f(record, reference) for the entries of the lists head(w) of every worker w,
@@ -152,6 +168,13 @@ class Bins {
   int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
   uint32_t most_taken_ = 0;  // the most blocks a frame took
   BlockPool pool_;
+  struct Sorted {
+    float key;
+    uint32_t order;  // submission order, for ties
+    uint32_t ref;
+    const RecordHeader* record;
+  };
+  std::vector<Sorted> painter_;  // painter's mode: every record of the frame, reused
   std::vector<std::unique_ptr<WorkerBins>> workers_;
 };
 

@@ -4,7 +4,7 @@
 // 4x4 blocks of partly covered 16x16 blocks test their pixels, 16 at a time.
 //
 // Exactness: a pixel is covered when all three edge functions are >= 0 at its centre,
-// E = a * px + b * py + c in 24.8 fixed point (raster_types.hpp). One pixel step adds
+// E = a * px + b * py + c in 24.8 fixed point (contract.hpp). One pixel step adds
 // 256 * a, so for a block whose first centre has E0, E at pixel (i, j) of the block is
 // E0 + 256 * (a * i + b * j), and E >= 0 exactly when q + a * i + b * j >= 0 with
 // q = floor(E0 / 256). With |a|, |b| < 2^24 and q taken only where the block is neither
@@ -20,7 +20,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();

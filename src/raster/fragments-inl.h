@@ -81,7 +81,7 @@ class Fragments {
   bool empty() const { return n_ == 0; }
 
   // Depth-tests and shades the batch into the tile, then empties it.
-  HWY_INLINE void draw(const FrameData& frame, uint32_t* color, float* depth, uint32_t* ids) {
+  HWY_INLINE void draw(const TileInputs& frame, uint32_t* color, float* depth, uint32_t* ids) {
     if (!n_) return;
     const DF d;
     const DU du;

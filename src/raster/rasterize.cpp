@@ -54,7 +54,7 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
   return fixed[id - uint8_t(KernelId::Fixed)];
 }
 
-void RasterizeTile(const FrameData& frame, int tile, Framebuffer& fb) {
+void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
@@ -63,16 +63,16 @@ void RasterizeTile(const FrameData& frame, int tile, Framebuffer& fb) {
   constexpr int kPixels = Framebuffer::kTilePixels;
   // A tile with nothing to draw that already holds exactly the clear values (it was
   // cleared and left empty last frame too: the background of most frames) is done.
-  const bool full_clear = frame.clear_color && frame.clear_depth;
+  const bool full_clear = frame.clear_color_buffer && frame.clear_depth_buffer;
   const bool nothing = bins.empty(tile);
   uint8_t& clean = fb.tile_clean[size_t(tile)];
   if (full_clear && nothing && clean) return;
   clean = full_clear && nothing;
-  if (frame.clear_color) {
+  if (frame.clear_color_buffer) {
     std::fill_n(target.color, kPixels, frame.color);
     if (target.ids) std::fill_n(target.ids, kPixels, 0u);
   }
-  if (frame.clear_depth) std::fill_n(target.depth, kPixels, frame.depth);
+  if (frame.clear_depth_buffer) std::fill_n(target.depth, kPixels, frame.depth);
   Block blocks[kMaxBlocks];
   Fragments fragments;  // small triangles' pixels, shaded 16 at a time (fragments-inl.h)
   auto flush = [&] { fragments.draw(frame, target.color, target.depth, target.ids); };
@@ -138,7 +138,7 @@ float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, 
   return HWY_DYNAMIC_DISPATCH(LevelOfDetailForTest)(view, dudx, dvdx, dudy, dvdy);
 }
 
-void rasterize_tile(const FrameData& frame, int tile, Framebuffer& fb) { HWY_DYNAMIC_DISPATCH(RasterizeTile)(frame, tile, fb); }
+void rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb) { HWY_DYNAMIC_DISPATCH(RasterizeTile)(in, tile, fb); }
 
 void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int tile_w, int tile_h,
                        void (*callback)(void*, int, int, uint32_t), void* user) {

@@ -9,9 +9,9 @@
 #define VELOCITY_RASTER_SHADE_MESH_INL_H_
 #endif
 
-#include "geometry/lighting.hpp"
 #include "raster/rasterize.hpp"
 #include "raster/sampler-inl.h"
+#include "shading/lighting-inl.h"
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -20,6 +20,7 @@ namespace HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
+namespace lit = velocity::shading::HWY_NAMESPACE;
 
 // N planes evaluated at a block: value = base + dx * column + dy * row.
 template <int N>
@@ -66,7 +67,7 @@ HWY_INLINE VU opaque(VF r, VF g, VF b) { return pack_colors(r, g, b, hn::Set(DF(
 struct FlatShader {
   static constexpr bool kConstant = true;
   uint32_t color;
-  FlatShader(const RecordHeader& r, const DrawState&, const FrameData&) : color(r.flat_color) {}
+  FlatShader(const RecordHeader& r, const DrawState&, const TileInputs&) : color(r.flat_color) {}
   void begin_block(float, float) {}
   HWY_INLINE VU shade(int) const { return hn::Set(DU(), color); }
 };
@@ -74,7 +75,7 @@ struct FlatShader {
 struct SmoothShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothVaryings> in;
-  SmoothShader(const RecordHeader& r, const DrawState&, const FrameData&) { in.load(r); }
+  SmoothShader(const RecordHeader& r, const DrawState&, const TileInputs&) { in.load(r); }
   void begin_block(float fx, float fy) { in.begin(fx, fy); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
@@ -105,7 +106,7 @@ struct FlatTexShader {
   Perspective<kFlatTexVaryings> in;
   UvTexture<kFlatTexVaryings> tex;
   float r, g, b;
-  FlatTexShader(const RecordHeader& rec, const DrawState& d, const FrameData&)
+  FlatTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs&)
       : tex{d.texture ? d.texture : d.env_map, varying::kFlatUv} {
     in.load(rec);
     r = float(rec.flat_color & 0xff) / 255.0f, g = float((rec.flat_color >> 8) & 0xff) / 255.0f;
@@ -125,7 +126,7 @@ struct SmoothTexShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothTexVaryings> in;
   UvTexture<kSmoothTexVaryings> tex;
-  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const FrameData&) : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv} {
+  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs&) : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv} {
     in.load(rec);
   }
   void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
@@ -137,7 +138,7 @@ struct SmoothTexShader {
   }
 };
 
-// Per-pixel lighting (lighting.hpp's model); optionally a base texture (uv) and a
+// Per-pixel lighting (shading/lighting-inl.h); optionally a base texture (uv) and a
 // sphere environment map addressed by the normal: u = 0.5 + 0.5 Nx, v = 0.5 + 0.5 Ny.
 template <bool kTex, bool kEnv>
 struct PhongShader {
@@ -145,11 +146,11 @@ struct PhongShader {
   static constexpr int N = (kTex || kEnv) ? kPhongTexVaryings : kPhongVaryings;
   Perspective<N> in;
   const DrawState& draw;
-  const geometry::EyeLights& lights;
+  const shading::EyeLights& lights;
   UvTexture<N> tex;
   LevelChoice env_level{};
 
-  PhongShader(const RecordHeader& r, const DrawState& d, const FrameData& f)
+  PhongShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
       : draw(d), lights(*f.lights), tex{d.texture, varying::kPhongUv} {
     in.load(r);
   }
@@ -192,53 +193,12 @@ struct PhongShader {
       br = hn::MulAdd(hn::Sub(e.r, br), mix, br), bg = hn::MulAdd(hn::Sub(e.g, bg), mix, bg);
       bb = hn::MulAdd(hn::Sub(e.b, bb), mix, bb);
     }
-    // Diffuse: ambient + sum of lights; specular: Ks * sum of lights * max(R.V, 0)^n.
-    VF dr = hn::Set(d, lights.ambient.x), dg = hn::Set(d, lights.ambient.y), db = hn::Set(d, lights.ambient.z);
-    VF sr = hn::Zero(d), sg = sr, sb = sr;
-    const geometry::Specular& s = draw.specular;
-    VF ex = hn::Zero(d), ey = ex, ez = ex;  // unit vector to the eye
-    VF px = ex, py = ex, pz = ex;
-    if (s.ks > 0 || !lights.point.empty()) px = in(varying::kEye, v), py = in(varying::kEye + 1, v), pz = in(varying::kEye + 2, v);
-    if (s.ks > 0) {
-      const VF il = rsqrt(hn::MulAdd(px, px, hn::MulAdd(py, py, hn::Mul(pz, pz))));
-      ex = hn::Neg(hn::Mul(px, il)), ey = hn::Neg(hn::Mul(py, il)), ez = hn::Neg(hn::Mul(pz, il));
-    }
-    auto add_light = [&](VF lx, VF ly, VF lz, VF cr, VF cg, VF cb) {
-      const VF nl = hn::MulAdd(nx, lx, hn::MulAdd(ny, ly, hn::Mul(nz, lz)));
-      const VF diffuse = hn::ZeroIfNegative(nl);
-      dr = hn::MulAdd(cr, diffuse, dr), dg = hn::MulAdd(cg, diffuse, dg), db = hn::MulAdd(cb, diffuse, db);
-      if (s.ks > 0) {
-        // R = 2 (N.L) N - L; as the reference computes it, not gated on N.L.
-        const VF two_nl = hn::Add(nl, nl);
-        const VF rx = hn::MulSub(two_nl, nx, lx), ry = hn::MulSub(two_nl, ny, ly), rz = hn::MulSub(two_nl, nz, lz);
-        const VF rv = hn::MulAdd(rx, ex, hn::MulAdd(ry, ey, hn::Mul(rz, ez)));
-        const MF lit = hn::Gt(rv, hn::Set(d, s.cutoff));
-        if (!hn::AllFalse(d, lit)) {
-          const VF p = hn::IfThenElseZero(lit, pow01(hn::Min(hn::IfThenElse(lit, rv, hn::Set(d, 1.0f)), hn::Set(d, 1.0f)),
-                                                     hn::Set(d, s.exponent)));
-          const VF k = hn::Mul(hn::Set(d, s.ks), p);
-          sr = hn::MulAdd(cr, k, sr), sg = hn::MulAdd(cg, k, sg), sb = hn::MulAdd(cb, k, sb);
-        }
-      }
-    };
-    for (const auto& l : lights.directional)
-      add_light(hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z), hn::Set(d, l.color.x),
-                hn::Set(d, l.color.y), hn::Set(d, l.color.z));
-    for (const auto& l : lights.point) {
-      const VF vx = hn::Sub(hn::Set(d, l.position.x), px), vy = hn::Sub(hn::Set(d, l.position.y), py);
-      const VF vz = hn::Sub(hn::Set(d, l.position.z), pz);
-      const VF d2 = hn::MulAdd(vx, vx, hn::MulAdd(vy, vy, hn::Mul(vz, vz)));
-      const VF il = rsqrt(d2);
-      const VF dist = hn::Mul(d2, il);
-      VF att = hn::MulAdd(hn::MulAdd(hn::Set(d, l.quadratic), dist, hn::Set(d, l.linear)), dist, hn::Set(d, l.constant));
-      att = hn::Div(hn::Set(d, 1.0f), hn::Max(att, hn::Set(d, 1e-6f)));
-      // A light at the surface point lights it along the normal (as lighting.hpp does).
-      const MF here = hn::Eq(d2, hn::Zero(d));
-      add_light(hn::IfThenElse(here, nx, hn::Mul(vx, il)), hn::IfThenElse(here, ny, hn::Mul(vy, il)),
-                hn::IfThenElse(here, nz, hn::Mul(vz, il)), hn::Mul(hn::Set(d, l.color.x), att),
-                hn::Mul(hn::Set(d, l.color.y), att), hn::Mul(hn::Set(d, l.color.z), att));
-    }
-    return opaque(hn::MulAdd(br, dr, sr), hn::MulAdd(bg, dg, sg), hn::MulAdd(bb, db, sb));
+    const shading::Specular& s = draw.specular;
+    // The eye-space position: only the highlight and point lights read it.
+    V3 p{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+    if (s.ks > 0 || !lights.point.empty()) p = {in(varying::kEye, v), in(varying::kEye + 1, v), in(varying::kEye + 2, v)};
+    const V3 c = lit::apply(lit::light(lights, {nx, ny, nz}, p, s), {br, bg, bb});
+    return opaque(c.x, c.y, c.z);
   }
 };
 

@@ -20,7 +20,7 @@ namespace HWY_NAMESPACE {
 
 // Where a tile's pixels are, and what the frame asks of it.
 struct TileTarget {
-  const FrameData& frame;
+  const TileInputs& frame;
   uint32_t* color;  // the tile's first pixel (tiled layout, framebuffer.hpp)
   float* depth;
   uint32_t* ids;  // null when the frame keeps no object ids

@@ -22,27 +22,28 @@ Texture::Texture(const Image& image) {
   Level base{image.width, image.height, std::vector<uint32_t>(size_t(image.width) * image.height)};
   std::memcpy(base.texels.data(), image.pixels.data(), image.pixels.size());
   levels_.push_back(std::move(base));
-  while (levels_.back().width > 1 || levels_.back().height > 1) {
-    const Level& up = levels_.back();
-    int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2);
-    Level next{w, h, std::vector<uint32_t>(size_t(w) * h)};
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        // The 2x2 block above (a 1-texel-wide side repeats its one texel).
-        int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
-        int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
-        uint32_t t[4] = {up.texels[size_t(y0) * up.width + x0], up.texels[size_t(y0) * up.width + x1],
-                         up.texels[size_t(y1) * up.width + x0], up.texels[size_t(y1) * up.width + x1]};
-        uint32_t out = 0;
-        for (int c = 0; c < 4; ++c) {
-          uint32_t sum = 0;
-          for (uint32_t v : t) sum += (v >> (8 * c)) & 0xff;
-          out |= ((sum + 2) / 4) << (8 * c);
-        }
-        next.texels[size_t(y) * w + x] = out;
+  while (levels_.back().width > 1 || levels_.back().height > 1) levels_.push_back(next_mip_level(levels_.back()));
+}
+
+Texture::Level next_mip_level(const Texture::Level& up) {
+  const int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2);
+  Texture::Level next{w, h, std::vector<uint32_t>(size_t(w) * h)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      // The 2x2 block above (a 1-texel-wide side repeats its one texel).
+      const int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
+      const int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
+      const uint32_t t[4] = {up.texels[size_t(y0) * up.width + x0], up.texels[size_t(y0) * up.width + x1],
+                             up.texels[size_t(y1) * up.width + x0], up.texels[size_t(y1) * up.width + x1]};
+      uint32_t out = 0;
+      for (int c = 0; c < 4; ++c) {
+        uint32_t sum = 0;
+        for (uint32_t v : t) sum += (v >> (8 * c)) & 0xff;
+        out |= ((sum + 2) / 4) << (8 * c);
       }
-    levels_.push_back(std::move(next));
-  }
+      next.texels[size_t(y) * w + x] = out;
+    }
+  return next;
 }
 
 Texture::Texture(std::vector<Level> levels) : levels_(std::move(levels)) {

@@ -73,6 +73,13 @@ HWY_INLINE uint32_t lane_bits(D d, hn::Mask<D> m) {
 // The bits of `m` as a 16-bit mask in lane order (for vector v of a block).
 HWY_INLINE uint32_t mask_bits(MF m, int v) { return lane_bits(DF(), m) << (v * int(kLanes)); }
 
+// Three vectors as one: N 3D points or directions, a lane each.
+struct V3 {
+  VF x, y, z;
+};
+
+HWY_INLINE VF dot(const V3& a, const V3& b) { return hn::MulAdd(a.x, b.x, hn::MulAdd(a.y, b.y, hn::Mul(a.z, b.z))); }
+
 // x clamped to [0, 1]; NaN becomes 0 (comparisons with NaN are false).
 HWY_INLINE VF saturate(VF x) {
   const DF d;

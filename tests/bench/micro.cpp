@@ -15,10 +15,10 @@
 
 #include <vector>
 
-#include "geometry/triangle_cull.hpp"
+#include "triangle/cull.hpp"
 #include "geometry/vertex_stage.hpp"
 #include "raster/bins.hpp"
-#include "raster/setup.hpp"
+#include "triangle/setup.hpp"
 #include "velocity/bench_scene.hpp"
 #include "velocity/renderer.hpp"
 
@@ -31,7 +31,7 @@ constexpr int kW = 1920, kH = 1080;
 // The convention's camera and light, and the vertex stage's inputs for a mesh.
 struct Stage {
   Mesh mesh;
-  geometry::EyeLights lights;
+  shading::EyeLights lights;
   geometry::MeshVertexJob job;
   std::vector<geometry::ProjectedVertex> projected;
   std::vector<uint32_t> codes;
@@ -41,8 +41,7 @@ struct Stage {
   explicit Stage(int segments) : mesh(bench::make_mesh("sphere:" + std::to_string(segments))) {
     Camera cam;
     const Mat4 view = cam.view(), proj = cam.projection_matrix(float(kW) / float(kH));
-    lights.ambient = {0.2f, 0.2f, 0.2f};
-    lights.directional.push_back({normalize({0.3f, 0.5f, 1.0f}), {0.8f, 0.8f, 0.8f}});
+    shading::eye_lights(view, {}, lights);  // no lights: the convention's
     const size_t n = mesh.positions.size();
     projected.resize(n), codes.resize(n), color.resize(n);
     job.positions = mesh.positions.data(), job.normals = mesh.normals.data();
@@ -64,8 +63,8 @@ void VertexStage(benchmark::State& state) {
 }
 BENCHMARK(VertexStage)->Arg(256)->Arg(1024);
 
-geometry::CullJob cull_job(const Stage& s) {
-  geometry::CullJob job;
+triangle::CullJob cull_job(const Stage& s) {
+  triangle::CullJob job;
   job.triangles = s.mesh.triangles.data(), job.begin = 0, job.end = uint32_t(s.mesh.triangles.size());
   job.projected = s.projected.data(), job.codes = s.codes.data();
   job.x1 = kW - 1, job.y1 = kH - 1;
@@ -75,12 +74,12 @@ geometry::CullJob cull_job(const Stage& s) {
 void TriangleFirstPass(benchmark::State& state) {
   Stage s(int(state.range(0)));
   geometry::transform_mesh_vertices(s.job);
-  const geometry::CullJob job = cull_job(s);
+  const triangle::CullJob job = cull_job(s);
   std::vector<uint32_t> direct(job.end), info(job.end), clip(job.end);
   for (auto _ : state) {
     size_t nd, nc;
-    geometry::CullCounts counts;
-    geometry::cull_triangles(job, direct.data(), info.data(), nd, clip.data(), nc, counts);
+    triangle::CullCounts counts;
+    triangle::cull_triangles(job, direct.data(), info.data(), nd, clip.data(), nc, counts);
     benchmark::DoNotOptimize(nd);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(job.end));
@@ -91,19 +90,16 @@ BENCHMARK(TriangleFirstPass)->Arg(256)->Arg(1024);
 void SetUpAndBin(benchmark::State& state, bool bin) {
   Stage s(int(state.range(0)));
   geometry::transform_mesh_vertices(s.job);
-  const geometry::CullJob job = cull_job(s);
+  const triangle::CullJob job = cull_job(s);
   std::vector<uint32_t> direct(job.end), info(job.end), clip(job.end);
   size_t nd, nc;
-  geometry::CullCounts counts;
-  geometry::cull_triangles(job, direct.data(), info.data(), nd, clip.data(), nc, counts);
+  triangle::CullCounts counts;
+  triangle::cull_triangles(job, direct.data(), info.data(), nd, clip.data(), nc, counts);
   raster::Bins bins;
   bins.resize(kW, kH, 1);
-  raster::SetupParams p;
+  triangle::SetupParams p;
   p.x1 = p.px1 = kW - 1, p.y1 = p.py1 = kH - 1;
-  auto sv = [&](uint32_t v) {
-    const geometry::ProjectedVertex& q = s.projected[v];
-    return raster::ScreenVertex{float(q.fx) / 256, float(q.fy) / 256, q.z, q.inv_w, q.fx, q.fy, true};
-  };
+  auto sv = [&](uint32_t v) { return triangle::ScreenVertex::projected(s.projected[v], 0); };
   for (auto _ : state) {
     bins.clear();
     raster::WorkerBins& w = bins.worker(0);
@@ -112,11 +108,11 @@ void SetUpAndBin(benchmark::State& state, bool bin) {
       const float* c[3] = {&s.color[t.v[0]].x, &s.color[t.v[1]].x, &s.color[t.v[2]].x};
       uint32_t ref;
       raster::RecordHeader* r =
-          info[i] & geometry::kCullSmall
-              ? raster::setup_small_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, info[i] & 0xffff,
+          info[i] & triangle::kKnownSmall
+              ? triangle::setup_small_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, info[i] & 0xffff,
                                              {}, p, ref)
-              : raster::setup_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, {}, p, ref);
-      if (r && bin) w.bin(0, ref, r->min_x, r->min_y, r->max_x, r->max_y, bins.tiles_x());
+              : triangle::setup_triangle(w, sv(t.v[0]), sv(t.v[1]), sv(t.v[2]), c[0], c[1], c[2], 3, {}, p, ref);
+      if (r && bin) w.emit(0, *r, ref, 0);
     }
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(nd));

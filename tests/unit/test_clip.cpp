@@ -4,10 +4,11 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/clip.hpp"
+#include "triangle/clip.hpp"
 
 using namespace velocity;
 using namespace velocity::geometry;
+using namespace velocity::triangle;
 
 namespace {
 

@@ -5,10 +5,11 @@
 #include <vector>
 
 #include "raster/rasterize.hpp"
-#include "raster/setup.hpp"
-#include "geometry/triangle_cull.hpp"
+#include "triangle/setup.hpp"
+#include "triangle/cull.hpp"
 
 using namespace velocity::raster;
+using namespace velocity::triangle;
 
 namespace {
 
@@ -27,7 +28,7 @@ struct TestBins {
   WorkerBins bins;
   TestBins() {
     bins.attach(&pool);
-    bins.resize(1);
+    bins.resize(1, 1);
   }
 };
 
@@ -43,9 +44,9 @@ const RecordHeader* setup(TestBins& t, const ScreenVertex& a, const ScreenVertex
 // record, tile by tile as the renderer walks it.
 template <class F>
 void for_each_covered(const RecordHeader& r, F&& f) {
-  for (int ty = 0; ty < H; ty += kTileSize)
-    for (int tx = 0; tx < W; tx += kTileSize)
-      coverage_for_test(r, tx, ty, std::min(kTileSize, W - tx), std::min(kTileSize, H - ty),
+  for (int ty = 0; ty < H; ty += velocity::kTileSize)
+    for (int tx = 0; tx < W; tx += velocity::kTileSize)
+      coverage_for_test(r, tx, ty, std::min(velocity::kTileSize, W - tx), std::min(velocity::kTileSize, H - ty),
                         [](void* user, int x, int y, uint32_t mask) {
                           for (int k = 0; k < 16; ++k)
                             if (mask >> k & 1) (*static_cast<F*>(user))(x + (k & 3), y + (k >> 2));
@@ -270,9 +271,9 @@ TEST(FillRule, FirstPassIsExact) {
       continue;
     }
     const uint32_t l = learnt[size_t(t)];
-    if (!(l & kCullSmall)) continue;  // handed on whole: set-up decides
+    if (!(l & kKnownSmall)) continue;  // handed on whole: set-up decides
     ++small;
-    ASSERT_TRUE(l & kCullFront) << t;
+    ASSERT_TRUE(l & kKnownFront) << t;
     // The mask is relative to the first centre of the triangle's box.
     int64_t minx = std::min({v[0].fx, v[1].fx, v[2].fx}), miny = std::min({v[0].fy, v[1].fy, v[2].fy});
     const int bx0 = std::max(0, int((minx + 127) >> 8)), by0 = std::max(0, int((miny + 127) >> 8));

@@ -3,18 +3,18 @@
 // lighting were the front end's work.
 #include <algorithm>
 
-#include "geometry/draw_plan.hpp"
+#include "triangle/clip.hpp"
+#include "triangle/stage.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 namespace {
 
 using raster::RecordHeader;
-using raster::ScreenVertex;
 
 class BatchPrimitives {
  public:
-  BatchPrimitives(const FramePlan& plan, const BatchDrawPlan& draw, StageContext& cx)
+  BatchPrimitives(const DrawList& plan, const BatchDrawPlan& draw, StageContext& cx)
       : plan_(plan), d_(draw), b_(draw.batch), cx_(cx), stats_(cx.stats) {
     projected_ = plan.vertices.projected.data() + draw.vertex_base;
     codes_ = plan.vertices.codes.data() + draw.vertex_base;
@@ -41,19 +41,9 @@ class BatchPrimitives {
   }
 
  private:
-  ScreenVertex screen(uint32_t v) const {
-    const ProjectedVertex& p = projected_[v];
-    return {float(p.fx) * (1.0f / 256), float(p.fy) * (1.0f / 256), p.z, p.inv_w, p.fx, p.fy,
-            !(codes_[v] & (kMustClipPlanes | kOutNonFinite | kOutUnsnapped))};
-  }
+  ScreenVertex screen(uint32_t v) const { return ScreenVertex::projected(projected_[v], codes_[v]); }
 
-  ScreenVertex to_screen(const Vec4& c) const {
-    const ViewportMap& vp = d_.viewport;
-    const float inv_w = 1.0f / c.w;
-    const float x = (c.x * inv_w + 1.0f) * vp.scale_x + vp.offset_x;
-    const float y = vp.offset_y - (c.y * inv_w + 1.0f) * vp.scale_y;
-    return ScreenVertex::make(x, y, (c.z * inv_w) * vp.scale_z + vp.offset_z, inv_w);
-  }
+  ScreenVertex to_screen(const Vec4& c) const { return ScreenVertex::window(d_.viewport, c); }
 
   // Varyings of vertex v: RGBA, then s, t, q, then the fog coordinate.
   void varyings(uint32_t v, float* out) const {
@@ -72,24 +62,24 @@ class BatchPrimitives {
     const uint32_t c0 = codes_[i0], c1 = codes_[i1], c2 = codes_[i2];
     const uint32_t any = c0 | c1 | c2;
     stats_.triangles++;
-    if (any & kOutNonFinite) {
+    if (any & geometry::kOutNonFinite) {
       stats_.triangles_nonfinite++;
       cx_.nonfinite++;
       return;
     }
-    if (c0 & c1 & c2 & kViewPlanes) return void(stats_.triangles_rejected++);
+    if (c0 & c1 & c2 & geometry::kViewPlanes) return void(stats_.triangles_rejected++);
     const int nvar = d_.num_varyings;
     ClipVertex poly[kMaxClippedVertices];
     const uint32_t corners[3] = {i0, i1, i2};
     for (int k = 0; k < 3; ++k) poly[k].src = k, varyings(corners[k], poly[k].var);
-    if (!(any & kMustClipPlanes)) return emit(screen(i0), screen(i1), screen(i2), poly[0].var, poly[1].var, poly[2].var);
+    if (!(any & geometry::kMustClipPlanes)) return emit(screen(i0), screen(i1), screen(i2), poly[0].var, poly[1].var, poly[2].var);
     stats_.triangles_clipped++;
     for (int k = 0; k < 3; ++k) poly[k].pos = b_.position[corners[k]];
     const int n = clip_polygon(poly, 3, any, d_.viewport.guard, nvar);
     if (n < 3) return void(stats_.triangles_culled++);
     ScreenVertex sv[kMaxClippedVertices];
     for (int k = 0; k < n; ++k)
-      sv[k] = poly[k].src >= 0 && !(codes_[corners[poly[k].src]] & kMustClipPlanes) ? screen(corners[poly[k].src])
+      sv[k] = poly[k].src >= 0 && !(codes_[corners[poly[k].src]] & geometry::kMustClipPlanes) ? screen(corners[poly[k].src])
                                                                                    : to_screen(poly[k].pos);
     for (int k = 1; k + 1 < n; ++k) emit(sv[0], sv[k], sv[k + 1], poly[0].var, poly[k].var, poly[k + 1].var);
   }
@@ -97,7 +87,7 @@ class BatchPrimitives {
   void emit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const float* va, const float* vb,
             const float* vc) {
     uint32_t offset;
-    RecordHeader* r = raster::setup_triangle(cx_.bins, a, b, c, va, vb, vc, d_.num_varyings, info_, d_.setup, offset);
+    RecordHeader* r = setup_triangle(cx_.bins, a, b, c, va, vb, vc, d_.num_varyings, info_, d_.setup, offset);
     if (!r) return void(stats_.triangles_culled++);
     cx_.emit(*r, offset, (a.z + b.z + c.z) / 3.0f);
     stats_.triangles_rasterized++;
@@ -105,12 +95,12 @@ class BatchPrimitives {
 
   void line(uint32_t a, uint32_t b) {
     const uint32_t ca = codes_[a], cb = codes_[b];
-    if ((ca | cb) & kOutNonFinite) return;
-    if (ca & cb & kViewPlanes) return;
+    if ((ca | cb) & geometry::kOutNonFinite) return;
+    if (ca & cb & geometry::kViewPlanes) return;
     float va[raster::kMaxVaryings], vb[raster::kMaxVaryings];
     varyings(a, va), varyings(b, vb);
     ScreenVertex sa, sb;
-    if (!((ca | cb) & kMustClipPlanes)) {
+    if (!((ca | cb) & geometry::kMustClipPlanes)) {
       sa = screen(a), sb = screen(b);
     } else {
       Vec4 pa = b_.position[a], pb = b_.position[b];
@@ -123,8 +113,8 @@ class BatchPrimitives {
       sa = to_screen(pa), sb = to_screen(pb);
     }
     uint32_t offset;
-    RecordHeader* r = raster::setup_line(cx_.bins, sa, sb, va, vb, d_.num_varyings, int(b_.line_width + 0.5f), info_,
-                                         d_.setup, offset);
+    RecordHeader* r =
+        setup_line(cx_.bins, sa, sb, va, vb, d_.num_varyings, int(b_.line_width + 0.5f), info_, d_.setup, offset);
     if (!r) return;
     cx_.emit(*r, offset, (sa.z + sb.z) / 2);
     stats_.lines++;
@@ -132,31 +122,31 @@ class BatchPrimitives {
 
   void point(uint32_t v) {
     // A point whose centre is outside the view volume is dropped whole (OpenGL).
-    if (codes_[v] & (kViewPlanes | kOutNonFinite | kOutUnsnapped)) return;
+    if (codes_[v] & (geometry::kViewPlanes | geometry::kOutNonFinite | geometry::kOutUnsnapped)) return;
     float var[raster::kMaxVaryings];
     varyings(v, var);
     const ScreenVertex p = screen(v);
     uint32_t offset;
-    RecordHeader* r = raster::setup_point(cx_.bins, p, var, d_.num_varyings, int(b_.point_size + 0.5f), info_, d_.setup,
-                                          offset);
+    RecordHeader* r =
+        setup_point(cx_.bins, p, var, d_.num_varyings, int(b_.point_size + 0.5f), info_, d_.setup, offset);
     if (!r) return;
     cx_.emit(*r, offset, p.z);
     stats_.points++;
   }
 
-  const FramePlan& plan_;
+  const DrawList& plan_;
   const BatchDrawPlan& d_;
   const PrimitiveBatch& b_;
   StageContext& cx_;
   FrameStats& stats_;
-  const ProjectedVertex* projected_;
+  const geometry::ProjectedVertex* projected_;
   const uint32_t* codes_;
-  raster::RecordInfo info_;
+  RecordInfo info_;
 };
 
 }  // namespace
 
-void run_batch_job(const FramePlan& plan, const BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+void run_batch_job(const DrawList& plan, const BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
   BatchPrimitives(plan, draw, cx).run(begin, end);
 }
 
@@ -181,4 +171,4 @@ void run_clear_job(const ClearPlan& c, int width, int height, StageContext& cx) 
   cx.emit(*r, offset, 2.0f);  // painter's mode: a clear sorts before everything
 }
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle

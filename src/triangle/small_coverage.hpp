@@ -1,11 +1,11 @@
-// The pixel centres a small triangle covers (set-up's fast path, raster/setup.cpp).
+// The pixel centres a small triangle covers (set-up's fast path, setup.cpp).
 #pragma once
 
 #include <cstdint>
 
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 
-namespace velocity::raster {
+namespace velocity::triangle {
 
 // The three edge functions of a triangle at the first centre of its box, and their
 // steps one centre right and one centre down; every value over the box fits int32.
@@ -17,4 +17,4 @@ struct SmallEdges {
 // y < rows <= 8) has all three edge functions >= 0.
 uint64_t small_coverage(const SmallEdges& edges, int columns, int rows);
 
-}  // namespace velocity::raster
+}  // namespace velocity::triangle

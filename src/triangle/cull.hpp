@@ -9,15 +9,15 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/vertex_stage.hpp"
+#include "geometry/viewport.hpp"
 #include "velocity/mesh.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 struct CullJob {
   const Triangle* triangles = nullptr;
   uint32_t begin = 0, end = 0;
-  const ProjectedVertex* projected = nullptr;
+  const geometry::ProjectedVertex* projected = nullptr;
   const uint32_t* codes = nullptr;
   bool cull_back = true;   // drop back faces (else they go on, for the caller to decide)
   bool drop_empty = true;  // drop front faces that cover no pixel centre (not for lines or points)
@@ -29,9 +29,9 @@ struct CullCounts {
 };
 
 // What the first pass learnt of a triangle it let through (`info` below).
-inline constexpr uint32_t kCullSmall = 1u << 16;  // bits 0-15: its pixels in the 4x4 box at its first centre
-inline constexpr uint32_t kCullFront = 1u << 17;  // surely front-facing
-inline constexpr uint32_t kCullBack = 1u << 18;   // surely back-facing
+inline constexpr uint32_t kKnownSmall = 1u << 16;  // bits 0-15: its pixels in the 4x4 box at its first centre
+inline constexpr uint32_t kKnownFront = 1u << 17;  // surely front-facing
+inline constexpr uint32_t kKnownBack = 1u << 18;   // surely back-facing
 
 // Writes the indices of the triangles that go on: unclipped ones to `direct` with what
 // was learnt of them in `info`, those needing clipping to `clip` (each room for
@@ -40,4 +40,4 @@ inline constexpr uint32_t kCullBack = 1u << 18;   // surely back-facing
 void cull_triangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t& direct_count, uint32_t* clip,
                     size_t& clip_count, CullCounts& counts);
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle

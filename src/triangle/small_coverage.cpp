@@ -1,9 +1,9 @@
 // The pixel centres a small triangle covers, a vector of centres at a time (set-up's
 // small-triangle path). Compiled once per instruction set.
-#include "raster/small_coverage.hpp"
+#include "triangle/small_coverage.hpp"
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "raster/small_coverage.cpp"
+#define HWY_TARGET_INCLUDE "triangle/small_coverage.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include <hwy/highway.h>
@@ -11,7 +11,7 @@
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
-namespace velocity::raster {
+namespace velocity::triangle {
 namespace HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
@@ -23,11 +23,11 @@ using namespace velocity::simd::HWY_NAMESPACE;
 uint64_t SmallCoverage(const SmallEdges& e, int columns, int rows) {
   const DI di;
   constexpr int N = int(kLanes);
-  const VI zero = hn::Zero(di), seven = hn::Set(di, kSmallSide - 1);
+  const VI zero = hn::Zero(di), seven = hn::Set(di, raster::kSmallSide - 1);
   const VI cols = hn::Set(di, columns), last_rows = hn::Set(di, rows);
   const VI lanes = hn::Iota(di, 0);  // once: Highway 1.0 builds it through memory
   uint64_t mask = 0;
-  for (int p = 0; p < rows * kSmallSide; p += N) {
+  for (int p = 0; p < rows * raster::kSmallSide; p += N) {
     const VI index = hn::Add(lanes, hn::Set(di, p));
     const VI x = hn::And(index, seven), y = hn::ShiftRight<3>(index);
     // The three edge functions at these centres; any negative one has its sign bit set,
@@ -46,11 +46,11 @@ uint64_t SmallCoverage(const SmallEdges& e, int columns, int rows) {
 }
 
 }  // namespace HWY_NAMESPACE
-}  // namespace velocity::raster
+}  // namespace velocity::triangle
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
-namespace velocity::raster {
+namespace velocity::triangle {
 
 HWY_EXPORT(SmallCoverage);
 
@@ -58,5 +58,5 @@ uint64_t small_coverage(const SmallEdges& edges, int columns, int rows) {
   return HWY_DYNAMIC_DISPATCH(SmallCoverage)(edges, columns, rows);
 }
 
-}  // namespace velocity::raster
+}  // namespace velocity::triangle
 #endif  // HWY_ONCE

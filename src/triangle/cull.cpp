@@ -1,21 +1,21 @@
 // The triangle stage's first pass, compiled once per instruction set.
-#include "geometry/triangle_cull.hpp"
+#include "triangle/cull.hpp"
 
 #include <algorithm>
 #include <cstring>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "geometry/triangle_cull.cpp"
+#define HWY_TARGET_INCLUDE "triangle/cull.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 
 #include <hwy/highway.h>
 
-#include "geometry/clip.hpp"
-#include "raster/raster_types.hpp"
+#include "triangle/clip.hpp"
+#include "raster/contract.hpp"
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
-namespace velocity::geometry {
+namespace velocity::triangle {
 namespace HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
@@ -43,8 +43,8 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
   const DU du;
   constexpr size_t N = kLanes;
   const int32_t* proj = reinterpret_cast<const int32_t*>(job.projected);
-  const VU view_planes = hn::Set(du, kViewPlanes), must_clip = hn::Set(du, kMustClipPlanes);
-  const VU nonfinite_bit = hn::Set(du, kOutNonFinite), unsnapped_bit = hn::Set(du, kOutUnsnapped);
+  const VU view_planes = hn::Set(du, geometry::kViewPlanes), must_clip = hn::Set(du, geometry::kMustClipPlanes);
+  const VU nonfinite_bit = hn::Set(du, geometry::kOutNonFinite), unsnapped_bit = hn::Set(du, geometry::kOutUnsnapped);
   const VI zero = hn::Zero(di), half = hn::Set(di, raster::kSubpixelHalf), one_px = hn::Set(di, raster::kSubpixelOne);
   const VI box_x0 = hn::Set(di, job.x0), box_y0 = hn::Set(di, job.y0), box_x1 = hn::Set(di, job.x1), box_y1 = hn::Set(di, job.y1);
   direct_count = clip_count = 0;
@@ -66,7 +66,7 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
     for (int k = 0; k < 3; ++k) {
       const VI vi = hn::BitCast(di, idx[k]);
       code[k] = hn::BitCast(du, hn::GatherIndex(di, reinterpret_cast<const int32_t*>(job.codes), vi));
-      const VI at = hn::ShiftLeft<2>(vi);  // ProjectedVertex is four 32-bit words
+      const VI at = hn::ShiftLeft<2>(vi);  // geometry::ProjectedVertex is four 32-bit words
       X[k] = hn::GatherIndex(di, proj, at);
       Y[k] = hn::GatherIndex(di, proj + 1, at);
     }
@@ -93,7 +93,7 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
     auto culled = hn::And(open, hn::FirstN(du, 0));
     if (job.cull_back) culled = hn::And(open, back);
 
-    VU learnt = hn::Or(hn::IfThenElseZero(front, hn::Set(du, kCullFront)), hn::IfThenElseZero(back, hn::Set(du, kCullBack)));
+    VU learnt = hn::Or(hn::IfThenElseZero(front, hn::Set(du, kKnownFront)), hn::IfThenElseZero(back, hn::Set(du, kKnownBack)));
     if (job.drop_empty) {
       // The box of pixel centres inside the triangle's box, within the drawable box.
       const VI minx = hn::Min(hn::Min(X[0], X[1]), X[2]), maxx = hn::Max(hn::Max(X[0], X[1]), X[2]);
@@ -145,7 +145,7 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
           }
         const auto none = hn::Eq(mask, hn::Zero(du));
         culled = hn::Or(culled, hn::And(none, candidates));
-        learnt = hn::Or(learnt, hn::IfThenElseZero(candidates, hn::Or(mask, hn::Set(du, kCullSmall))));
+        learnt = hn::Or(learnt, hn::IfThenElseZero(candidates, hn::Or(mask, hn::Set(du, kKnownSmall))));
       }
     }
     open = hn::AndNot(culled, open);
@@ -167,11 +167,11 @@ void CullTriangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t&
 }
 
 }  // namespace HWY_NAMESPACE
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 HWY_EXPORT(CullTriangles);
 
@@ -180,5 +180,5 @@ void cull_triangles(const CullJob& job, uint32_t* direct, uint32_t* info, size_t
   HWY_DYNAMIC_DISPATCH(CullTriangles)(job, direct, info, direct_count, clip, clip_count, counts);
 }
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle
 #endif  // HWY_ONCE

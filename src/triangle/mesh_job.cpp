@@ -2,15 +2,15 @@
 // what survives (the varyings its material's kernel needs) and bin it.
 #include <algorithm>
 
-#include "geometry/draw_plan.hpp"
-#include "geometry/triangle_cull.hpp"
+#include "triangle/clip.hpp"
+#include "triangle/cull.hpp"
+#include "triangle/stage.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 namespace {
 
 using raster::RecordHeader;
-using raster::ScreenVertex;
 
 // Orientation of a triangle in homogeneous clip space: the sign of det[x y w] is the
 // sign of its window-space area even when vertices lie behind the eye, so clipped
@@ -26,7 +26,7 @@ Vec3 clamp01(Vec3 c) { return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f
 
 class MeshTriangles {
  public:
-  MeshTriangles(const FramePlan& plan, const MeshDrawPlan& draw, StageContext& cx)
+  MeshTriangles(const DrawList& plan, const MeshDrawPlan& draw, StageContext& cx)
       : plan_(plan), d_(draw), mesh_(*draw.mesh), cx_(cx), stats_(cx.stats) {
     const VertexArrays& va = plan.vertices;
     projected_ = va.projected.data() + draw.vertex_base;
@@ -42,14 +42,14 @@ class MeshTriangles {
     for (uint32_t f = begin; f < end; ++f) triangle(f);
   }
 
-  // The first pass drops most triangles N at a time (triangle_cull.hpp); the rest are
+  // The first pass drops most triangles N at a time (cull.hpp); the rest are
   // set up here, in their order.
   void run_culled(uint32_t begin, uint32_t end) {
     CullJob job;
     job.triangles = mesh_.triangles.data(), job.begin = begin, job.end = end;
     job.projected = projected_, job.codes = codes_;
     job.cull_back = d_.cull_all, job.drop_empty = true;
-    const raster::SetupParams& box = plan_.mesh_setup;
+    const SetupParams& box = plan_.mesh_setup;
     job.x0 = box.x0, job.y0 = box.y0, job.x1 = box.x1, job.y1 = box.y1;
     size_t nd = 0, nc = 0;
     CullCounts counts;
@@ -74,11 +74,7 @@ class MeshTriangles {
     return plan_.slots[d_.slot_begin + local];
   }
 
-  ScreenVertex screen(uint32_t v) const {
-    const ProjectedVertex& p = projected_[v];
-    return {float(p.fx) * (1.0f / 256), float(p.fy) * (1.0f / 256), p.z, p.inv_w, p.fx, p.fy,
-            !(codes_[v] & (kMustClipPlanes | kOutNonFinite | kOutUnsnapped))};
-  }
+  ScreenVertex screen(uint32_t v) const { return ScreenVertex::projected(projected_[v], codes_[v]); }
 
   // Eye-space values: from the vertex stage when it produced them, else computed here.
   Vec3 eye_normal(uint32_t v) const {
@@ -171,29 +167,29 @@ class MeshTriangles {
     const uint32_t c0 = codes_[i0], c1 = codes_[i1], c2 = codes_[i2];
     const uint32_t any = c0 | c1 | c2;
     stats_.triangles++;
-    if (any & kOutNonFinite) {
+    if (any & geometry::kOutNonFinite) {
       stats_.triangles_nonfinite++;
       cx_.nonfinite++;
       return;
     }
-    if (c0 & c1 & c2 & kViewPlanes) return void(stats_.triangles_rejected++);
-    accepted(f, any & kMustClipPlanes, 0);
+    if (c0 & c1 & c2 & geometry::kViewPlanes) return void(stats_.triangles_rejected++);
+    accepted(f, any & geometry::kMustClipPlanes, 0);
   }
 
   // A triangle with finite corners, not outside one view plane; `learnt` is what the
-  // first pass found out (triangle_cull.hpp), or 0.
+  // first pass found out (cull.hpp), or 0.
   void accepted(uint32_t f, bool must_clip, uint32_t learnt) {
     const Triangle& tri = mesh_.triangles[f];
     const uint32_t i0 = tri.v[0], i1 = tri.v[1], i2 = tri.v[2];
     const uint32_t any = codes_[i0] | codes_[i1] | codes_[i2];
     const SlotPlan& s = slot_of(f);
     bool front;
-    if (learnt & (kCullFront | kCullBack)) {
-      front = learnt & kCullFront;
+    if (learnt & (kKnownFront | kKnownBack)) {
+      front = learnt & kKnownFront;
     } else if (!must_clip) {
-      raster::Facing fc = raster::facing(screen(i0), screen(i1), screen(i2));
-      if (fc == raster::Facing::Degenerate) return void(stats_.triangles_culled++);
-      front = fc == raster::Facing::Front;
+      Facing fc = facing(screen(i0), screen(i1), screen(i2));
+      if (fc == Facing::Degenerate) return void(stats_.triangles_culled++);
+      front = fc == Facing::Front;
     } else {
       front = front_facing_homogeneous(clip_position(i0), clip_position(i1), clip_position(i2));
     }
@@ -202,7 +198,7 @@ class MeshTriangles {
     if (s.shading == Shading::Points) return points(tri, s);
 
     const bool flip = !front && s.material->two_sided;
-    raster::RecordInfo info{s.kernel, s.draw_state, 0};
+    RecordInfo info{s.kernel, s.draw_state, 0};
     if (s.flat) info.flat_color = flat_color(f, s, flip);
     const int nvar = s.num_varyings;
     ClipVertex poly[kMaxClippedVertices];
@@ -213,7 +209,7 @@ class MeshTriangles {
     }
     if (!must_clip) {
       const ScreenVertex a = screen(i0), b = screen(i1), c = screen(i2);
-      if (learnt & kCullSmall) return emit_small(info, a, b, c, poly[0].var, poly[1].var, poly[2].var, nvar, learnt & 0xffff);
+      if (learnt & kKnownSmall) return emit_small(info, a, b, c, poly[0].var, poly[1].var, poly[2].var, nvar, learnt & 0xffff);
       emit(info, a, b, c, poly[0].var, poly[1].var, poly[2].var, nvar);
       return;
     }
@@ -223,47 +219,40 @@ class MeshTriangles {
     if (n < 3) return void(stats_.triangles_culled++);
     ScreenVertex sv[kMaxClippedVertices];
     for (int k = 0; k < n; ++k)
-      sv[k] = poly[k].src >= 0 && !(codes_[corners[poly[k].src]] & kMustClipPlanes) ? screen(corners[poly[k].src])
+      sv[k] = poly[k].src >= 0 && !(codes_[corners[poly[k].src]] & geometry::kMustClipPlanes) ? screen(corners[poly[k].src])
                                                                                    : to_screen(poly[k].pos);
     for (int k = 1; k + 1 < n; ++k)  // the clipped polygon is convex: a fan
       emit(info, sv[0], sv[k], sv[k + 1], poly[0].var, poly[k].var, poly[k + 1].var, nvar);
   }
 
-  // The vertex stage's projection for a vertex made by clipping (the same arithmetic).
-  ScreenVertex to_screen(const Vec4& c) const {
-    const ViewportMap& vp = plan_.viewport;
-    const float inv_w = 1.0f / c.w;
-    const float x = (c.x * inv_w + 1.0f) * vp.scale_x + vp.offset_x;
-    const float y = vp.offset_y - (c.y * inv_w + 1.0f) * vp.scale_y;
-    return ScreenVertex::make(x, y, (c.z * inv_w) * vp.scale_z + vp.offset_z, inv_w);
-  }
+  ScreenVertex to_screen(const Vec4& c) const { return ScreenVertex::window(plan_.viewport, c); }
 
-  void emit(const raster::RecordInfo& info, const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+  void emit(const RecordInfo& info, const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
             const float* va, const float* vb, const float* vc, int nvar) {
     uint32_t offset;
-    RecordHeader* r = raster::setup_triangle(cx_.bins, a, b, c, va, vb, vc, nvar, info, plan_.mesh_setup, offset);
+    RecordHeader* r = setup_triangle(cx_.bins, a, b, c, va, vb, vc, nvar, info, plan_.mesh_setup, offset);
     if (!r) return void(stats_.triangles_culled++);
     cx_.emit(*r, offset, (a.z + b.z + c.z) / 3.0f);
     stats_.triangles_rasterized++;
   }
 
-  void emit_small(const raster::RecordInfo& info, const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+  void emit_small(const RecordInfo& info, const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                   const float* va, const float* vb, const float* vc, int nvar, uint32_t mask) {
     uint32_t offset;
-    RecordHeader* r = raster::setup_small_triangle(cx_.bins, a, b, c, va, vb, vc, nvar, mask, info, plan_.mesh_setup, offset);
+    RecordHeader* r = setup_small_triangle(cx_.bins, a, b, c, va, vb, vc, nvar, mask, info, plan_.mesh_setup, offset);
     if (!r) return void(stats_.triangles_culled++);
     cx_.emit(*r, offset, (a.z + b.z + c.z) / 3.0f);
     stats_.triangles_rasterized++;
   }
 
   void edges(const Triangle& tri, const SlotPlan& s) {
-    const raster::RecordInfo info{uint8_t(raster::KernelId::Flat), s.draw_state, s.line_color};
+    const RecordInfo info{uint8_t(raster::KernelId::Flat), s.draw_state, s.line_color};
     for (int k = 0; k < 3; ++k) {
       const uint32_t a = tri.v[k], b = tri.v[(k + 1) % 3];
       const uint32_t ca = codes_[a], cb = codes_[b];
-      if (ca & cb & kViewPlanes) continue;
+      if (ca & cb & geometry::kViewPlanes) continue;
       ScreenVertex sa, sb;
-      if (!((ca | cb) & kMustClipPlanes)) {
+      if (!((ca | cb) & geometry::kMustClipPlanes)) {
         sa = screen(a), sb = screen(b);
       } else {
         Vec4 pa = clip_position(a), pb = clip_position(b);
@@ -271,7 +260,7 @@ class MeshTriangles {
         sa = to_screen(pa), sb = to_screen(pb);
       }
       uint32_t offset;
-      RecordHeader* r = raster::setup_line(cx_.bins, sa, sb, nullptr, nullptr, 0, 1, info, plan_.mesh_setup, offset);
+      RecordHeader* r = setup_line(cx_.bins, sa, sb, nullptr, nullptr, 0, 1, info, plan_.mesh_setup, offset);
       if (!r) continue;
       cx_.emit(*r, offset, (sa.z + sb.z) / 2);
       stats_.lines++;
@@ -281,27 +270,27 @@ class MeshTriangles {
   void points(const Triangle& tri, const SlotPlan& s) {
     // Each vertex once per job (a fixed range of faces, whatever the thread count),
     // however many of its faces share it.
-    const raster::RecordInfo info{uint8_t(raster::KernelId::Flat), s.draw_state, s.line_color};
+    const RecordInfo info{uint8_t(raster::KernelId::Flat), s.draw_state, s.line_color};
     std::vector<uint8_t>& drawn = *cx_.marks;
     if (!marks_ready_) std::fill_n(drawn.begin(), mesh_.positions.size(), 0), marks_ready_ = true;
     for (uint32_t v : tri.v) {
-      if (drawn[v] || (codes_[v] & (kViewPlanes | kOutNonFinite))) continue;
+      if (drawn[v] || (codes_[v] & (geometry::kViewPlanes | geometry::kOutNonFinite))) continue;
       drawn[v] = 1;
       uint32_t offset;
       const ScreenVertex p = screen(v);
-      RecordHeader* r = raster::setup_point(cx_.bins, p, nullptr, 0, 1, info, plan_.mesh_setup, offset);
+      RecordHeader* r = setup_point(cx_.bins, p, nullptr, 0, 1, info, plan_.mesh_setup, offset);
       if (!r) continue;
       cx_.emit(*r, offset, p.z);
       stats_.points++;
     }
   }
 
-  const FramePlan& plan_;
+  const DrawList& plan_;
   const MeshDrawPlan& d_;
   const Mesh& mesh_;
   StageContext& cx_;
   FrameStats& stats_;
-  const ProjectedVertex* projected_ = nullptr;
+  const geometry::ProjectedVertex* projected_ = nullptr;
   const uint32_t* codes_ = nullptr;
   const Vec3 *diffuse_ = nullptr, *specular_ = nullptr, *normal_ = nullptr, *eye_ = nullptr;
   bool marks_ready_ = false;  // cx_.marks cleared for this job
@@ -309,8 +298,8 @@ class MeshTriangles {
 
 }  // namespace
 
-void run_mesh_job(const FramePlan& plan, const MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+void run_mesh_job(const DrawList& plan, const MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
   MeshTriangles(plan, draw, cx).run(begin, end);
 }
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle

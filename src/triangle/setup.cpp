@@ -1,11 +1,13 @@
-#include "raster/setup.hpp"
+#include "triangle/setup.hpp"
 
-#include "raster/small_coverage.hpp"
+#include "triangle/small_coverage.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace velocity::raster {
+namespace velocity::triangle {
+
+using namespace velocity::raster;  // set-up writes the contract's records
 
 namespace {
 
@@ -237,4 +239,4 @@ RecordHeader* setup_point(WorkerBins& bins, const ScreenVertex& pt, const float*
   return r;
 }
 
-}  // namespace velocity::raster
+}  // namespace velocity::triangle

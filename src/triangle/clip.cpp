@@ -1,21 +1,21 @@
-#include "geometry/clip.hpp"
+#include "triangle/clip.hpp"
 
 #include <algorithm>
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 namespace {
 
 // Signed distance of a clip-space point to a plane, >= 0 inside.
-double distance(const Vec4& p, uint32_t plane, GuardBand g) {
+double distance(const Vec4& p, uint32_t plane, geometry::GuardBand g) {
   const double x = p.x, y = p.y, z = p.z, w = p.w;
   switch (plane) {
-    case kOutNear: return z + w;
-    case kOutFar: return w - z;
-    case kOutGuardLeft: return x + g.x * w;
-    case kOutGuardRight: return g.x * w - x;
-    case kOutGuardBottom: return y + g.y * w;
-    case kOutGuardTop: return g.y * w - y;
+    case geometry::kOutNear: return z + w;
+    case geometry::kOutFar: return w - z;
+    case geometry::kOutGuardLeft: return x + g.x * w;
+    case geometry::kOutGuardRight: return g.x * w - x;
+    case geometry::kOutGuardBottom: return y + g.y * w;
+    case geometry::kOutGuardTop: return g.y * w - y;
   }
   return 0;
 }
@@ -33,10 +33,10 @@ ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t, int nvar) {
 
 }  // namespace
 
-int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int nvar) {
+int clip_polygon(ClipVertex* poly, int n, uint32_t planes, geometry::GuardBand guard, int nvar) {
   ClipVertex scratch[kMaxClippedVertices];
-  for (uint32_t plane = 1; plane <= kOutGuardTop && n > 0; plane <<= 1) {
-    if (!(planes & plane & kMustClipPlanes)) continue;
+  for (uint32_t plane = 1; plane <= geometry::kOutGuardTop && n > 0; plane <<= 1) {
+    if (!(planes & plane & geometry::kMustClipPlanes)) continue;
     int m = 0;
     // Convex input gains at most one vertex per plane; the bound only guards against
     // degenerate input (it can never write past `scratch`).
@@ -61,10 +61,10 @@ int clip_polygon(ClipVertex* poly, int n, uint32_t planes, GuardBand guard, int 
   return n;
 }
 
-bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard, float* t0_out, float* t1_out) {
+bool clip_line(Vec4& a, Vec4& b, uint32_t planes, geometry::GuardBand guard, float* t0_out, float* t1_out) {
   float t0 = 0, t1 = 1;
-  for (uint32_t plane = 1; plane <= kOutGuardTop; plane <<= 1) {
-    if (!(planes & plane & kMustClipPlanes)) continue;
+  for (uint32_t plane = 1; plane <= geometry::kOutGuardTop; plane <<= 1) {
+    if (!(planes & plane & geometry::kMustClipPlanes)) continue;
     double da = distance(a, plane, guard), db = distance(b, plane, guard);
     if (da < 0 && db < 0) return false;
     if (da < 0) t0 = std::max(t0, float(da / (da - db)));
@@ -79,4 +79,4 @@ bool clip_line(Vec4& a, Vec4& b, uint32_t planes, GuardBand guard, float* t0_out
   return true;
 }
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle

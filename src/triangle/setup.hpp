@@ -4,15 +4,16 @@
 
 #include <cmath>
 
+#include "geometry/viewport.hpp"
 #include "raster/bins.hpp"
-#include "raster/raster_types.hpp"
+#include "raster/contract.hpp"
 
-namespace velocity::raster {
+namespace velocity::triangle {
 
 // Snaps a screen coordinate to 24.8 fixed point, rounding to nearest.
-inline int64_t snap(float v) { return int64_t(std::lrint(v * float(kSubpixelOne))); }
+inline int64_t snap(float v) { return int64_t(std::lrint(v * float(raster::kSubpixelOne))); }
 
-// The geometry stage keeps vertices within the guard band (16384 pixels around the
+// The triangle stage keeps vertices within the guard band (16384 pixels around the
 // framebuffer, or around a viewport that lies within 16384 pixels of it), but a
 // degenerate projection can still hand over NaN or huge coordinates. Set-up refuses
 // anything outside +-2^20 pixels: snapped values then stay below 2^28 (they fit int32).
@@ -30,6 +31,16 @@ struct ScreenVertex {
   static ScreenVertex make(float x, float y, float z, float inv_w) {
     bool ok = std::fabs(x) <= kMaxScreenCoord && std::fabs(y) <= kMaxScreenCoord;  // false for NaN
     return {x, y, z, inv_w, ok ? int32_t(snap(x)) : 0, ok ? int32_t(snap(y)) : 0, ok};
+  }
+  // A vertex as the vertex stage projected and snapped it, with its region code.
+  static ScreenVertex projected(const geometry::ProjectedVertex& p, uint32_t code) {
+    return {float(p.fx) * (1.0f / 256), float(p.fy) * (1.0f / 256), p.z, p.inv_w, p.fx, p.fy,
+            !(code & (geometry::kMustClipPlanes | geometry::kOutNonFinite | geometry::kOutUnsnapped))};
+  }
+  // A vertex made by clipping, through the vertex stage's projection.
+  static ScreenVertex window(const geometry::ViewportMap& vp, const Vec4& clip) {
+    const Vec4 w = vp.window(clip);
+    return make(w.x, w.y, w.z, w.w);
   }
 };
 
@@ -63,27 +74,28 @@ struct RecordInfo {
 // in `offset`, or nullptr when the triangle covers no pixel centre inside the box
 // (degenerate, too small, or outside). Either winding is accepted; culling is the
 // caller's decision, made with facing().
-RecordHeader* setup_triangle(WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                             const float* var0, const float* var1, const float* var2, int num_varyings,
-                             const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+raster::RecordHeader* setup_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
+                                     const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
+                                     int num_varyings, const RecordInfo& info, const SetupParams& params,
+                                     uint32_t& offset);
 
 // Sets up a small triangle whose covered pixel centres are already known: `mask`, the
 // centres in the 4x4 box at its first centre (bit y * 4 + x), from the triangle
-// stage's exact first pass (geometry/triangle_cull.hpp). No edge functions.
+// stage's exact first pass (cull.hpp). No edge functions.
 // (setup_triangle itself turns triangles whose centres lie within 8x8 into the same
 // kind of record, finding their pixels with the edge functions.)
-RecordHeader* setup_small_triangle(WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
-                                   const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
-                                   int num_varyings, uint32_t mask, const RecordInfo& info, const SetupParams& params,
-                                   uint32_t& offset);
+raster::RecordHeader* setup_small_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
+                                           const ScreenVertex& v2, const float* var0, const float* var1,
+                                           const float* var2, int num_varyings, uint32_t mask, const RecordInfo& info,
+                                           const SetupParams& params, uint32_t& offset);
 
 // A line `width` pixels wide from a to b, varyings interpolated along it.
-RecordHeader* setup_line(WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b, const float* var_a,
-                         const float* var_b, int num_varyings, int width, const RecordInfo& info,
-                         const SetupParams& params, uint32_t& offset);
+raster::RecordHeader* setup_line(raster::WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b,
+                                 const float* var_a, const float* var_b, int num_varyings, int width,
+                                 const RecordInfo& info, const SetupParams& params, uint32_t& offset);
 
 // A point: the size x size square of pixels centred on p, with p's varyings.
-RecordHeader* setup_point(WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings, int size,
-                          const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+raster::RecordHeader* setup_point(raster::WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings,
+                                  int size, const RecordInfo& info, const SetupParams& params, uint32_t& offset);
 
-}  // namespace velocity::raster
+}  // namespace velocity::triangle

@@ -1,21 +1,21 @@
-// A frame's draws as the geometry stage runs them: what Renderer::draw recorded, with
-// everything decided once per draw (matrices, per-material kernels, which vertex
-// outputs are needed), and the frame-wide per-vertex arrays the vertex stage fills.
+// A frame's draws as the vertex and triangle stages run them: what Renderer::draw
+// recorded, with everything decided once per draw (matrices, per-material kernels,
+// which vertex outputs are needed), and the frame-wide per-vertex arrays the vertex
+// stage fills.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "geometry/lighting.hpp"
-#include "geometry/vertex_stage.hpp"
-#include "raster/bins.hpp"
-#include "raster/rasterize.hpp"
-#include "raster/setup.hpp"
+#include "geometry/viewport.hpp"
+#include "raster/contract.hpp"
+#include "shading/lighting.hpp"
+#include "triangle/setup.hpp"
 #include "velocity/mesh.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 // How one material of a mesh draw is drawn.
 struct SlotPlan {
@@ -30,7 +30,7 @@ struct SlotPlan {
   bool flat = false;        // one colour per face
   bool vertex_light_ok = false;  // the vertex stage's light terms were computed for this material
   bool vertex_color = false;     // ... and its lit colour (MeshDrawPlan::vertex_color)
-  Specular specular;
+  shading::Specular specular;
   uint32_t draw_state = 0;  // index into the frame's DrawStates
   uint32_t line_color = 0;  // RGBA8 for wireframe and points
 };
@@ -52,7 +52,7 @@ struct MeshDrawPlan {
   Vec3 uniform_color;
   bool cull_all = true;   // every material culls back faces
   bool fill_only = true;  // no material draws wireframe or points
-  Specular vertex_specular;                    // what the vertex stage lit with
+  shading::Specular vertex_specular;                   // what the vertex stage lit with
 };
 
 // A Renderer::draw(batch, state) call.
@@ -63,8 +63,8 @@ struct BatchDrawPlan {
   bool textured = false, fog = false;
   int num_varyings = 0;
   uint32_t primitive_count = 0;
-  ViewportMap viewport{};
-  raster::SetupParams setup;
+  geometry::ViewportMap viewport{};
+  SetupParams setup;
   size_t vertex_base = 0;
 };
 
@@ -75,19 +75,19 @@ struct ClearPlan {
 
 // The per-vertex arrays of a frame, shared by its draws (each at its vertex_base).
 struct VertexArrays {
-  std::vector<ProjectedVertex> projected;
+  std::vector<geometry::ProjectedVertex> projected;
   std::vector<uint32_t> codes;
   std::vector<Vec3> diffuse, specular, normal, eye;
 };
 
-// Everything the triangle stage reads, immutable while it runs.
-struct FramePlan {
+// A frame's draws: everything the triangle stage reads, immutable while it runs.
+struct DrawList {
   int width = 0, height = 0;  // the sample buffer
-  GuardBand guard{};
-  ViewportMap viewport{};     // the whole framebuffer, for meshes
-  EyeLights lights;
+  geometry::GuardBand guard{};
+  geometry::ViewportMap viewport{};     // the whole framebuffer, for meshes
+  shading::EyeLights lights;
   RenderOptions options;
-  raster::SetupParams mesh_setup;
+  SetupParams mesh_setup;
   std::vector<MeshDrawPlan> meshes;
   std::vector<BatchDrawPlan> batches;
   std::vector<ClearPlan> clears;
@@ -95,49 +95,15 @@ struct FramePlan {
   VertexArrays vertices;
 };
 
-// The most triangles (or primitives) one job of the triangle stage holds.
-inline constexpr uint32_t kTrianglesPerJob = 4096;
-
-// One piece of the triangle stage: a range of one draw's primitives, or a clear.
-struct Job {
-  enum class Kind : uint8_t { Mesh, Batch, Clear } kind;
-  uint32_t draw;         // index into meshes, batches or clears
-  uint32_t begin, end;   // primitives
-  size_t nonfinite = 0;  // filled in by the worker that ran it
-};
-
-// What one worker needs while it runs jobs of the triangle stage.
-struct StageContext {
-  raster::WorkerBins& bins;
-  FrameStats& stats;
-  int tiles_x;
-  uint32_t job = 0;
-  size_t nonfinite = 0;  // triangles of this job dropped for NaN/Inf
-  bool painter = false;  // painter's mode: defer binning until every record is sorted
-  // The worker's scratch for the first pass's survivors (kTrianglesPerJob each).
-  uint32_t* direct = nullptr;
-  uint32_t* info = nullptr;
-  uint32_t* clipped = nullptr;
-  std::vector<uint8_t>* marks = nullptr;  // points: which vertices this job drew
-
-  void emit(raster::RecordHeader& r, uint32_t ref, float sort_key) {
-    if (painter) {
-      r.sort_key = sort_key;
-      bins.defer(job, ref);
-      return;
-    }
-    bins.bin(job, ref, r.min_x, r.min_y, r.max_x, r.max_y, tiles_x);
-  }
-};
-
 // Fills d's slots (one per material, with its kernel and DrawState) and decides which
 // vertex outputs the draw needs. `default_material` is slot 0 when there is no override.
-void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
+void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
                     const Material& default_material);
 
-// The triangle stage for one job: assemble, reject, cull, clip, set up and bin.
-void run_mesh_job(const FramePlan& plan, const MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
-void run_batch_job(const FramePlan& plan, const BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
-void run_clear_job(const ClearPlan& clear, int width, int height, StageContext& cx);
+// Plans a Renderer::draw(batch, state) of `primitives` primitives: its kernel, its
+// viewport (within the guard band's reach of the framebuffer), the pixels set-up may
+// touch (viewport and scissor) and its DrawState, appended to `states`.
+BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawState>& states, const PrimitiveBatch& batch,
+                              const PixelState& state, uint32_t primitives);
 
-}  // namespace velocity::geometry
+}  // namespace velocity::triangle

@@ -1,11 +1,11 @@
 // Planning a draw: everything decided once per draw, before any vertex is touched.
-#include "geometry/draw_plan.hpp"
+#include "triangle/draw_plan.hpp"
 
 #include <algorithm>
 
 #include "velocity/error.hpp"
 
-namespace velocity::geometry {
+namespace velocity::triangle {
 
 namespace {
 
@@ -43,11 +43,11 @@ void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool rep
   }
 }
 
-bool same_specular(const Specular& a, const Specular& b) { return a.ks == b.ks && a.exponent == b.exponent; }
+bool same_specular(const shading::Specular& a, const shading::Specular& b) { return a.ks == b.ks && a.exponent == b.exponent; }
 
 }  // namespace
 
-void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
+void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
                     const Material& default_material) {
   const Mesh& mesh = *d.mesh;
   const RenderOptions& o = plan.options;
@@ -65,7 +65,7 @@ void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, Mes
     s.shading = o.shading.value_or(mat.shading);
     s.cull = o.cull_back_faces && !mat.two_sided;
     s.lit = s.shading != Shading::Unlit;
-    s.specular = Specular(mat.specular, mat.shininess);
+    s.specular = shading::Specular(mat.specular, mat.shininess);
     s.line_color = raster::pack_rgba(mat.color.x, mat.color.y, mat.color.z);
     const Texture* tex = o.texture ? o.texture.get() : mat.texture.get();
     const Texture* env = o.env_map ? o.env_map.get() : mat.env_map.get();
@@ -104,4 +104,46 @@ void plan_mesh_draw(FramePlan& plan, std::vector<raster::DrawState>& states, Mes
   d.vertex_specular_terms = d.light && !d.vertex_color && d.vertex_specular.ks > 0;
 }
 
-}  // namespace velocity::geometry
+BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawState>& states, const PrimitiveBatch& batch,
+                              const PixelState& state, uint32_t primitives) {
+  BatchDrawPlan d;
+  d.batch = batch;
+  d.primitive_count = primitives;
+  d.textured = state.texture.texture != nullptr;
+  d.fog = state.fog;
+  d.kernel = raster::fixed_kernel(d.textured, d.fog);
+  d.num_varyings = raster::fixed_varyings(d.textured, d.fog);
+
+  // The viewport, within the guard band's reach of the framebuffer (as OpenGL's
+  // GL_MAX_VIEWPORT_DIMS bounds it).
+  const int fw = plan.width, fh = plan.height;
+  const Viewport& v = batch.viewport;
+  const int vw = v.width > 0 ? std::min(v.width, kMaxFramebufferSide) : fw;
+  const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
+  const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  d.viewport = geometry::viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+  // Triangles stay inside the viewport (the view volume's sides are not clipped, they
+  // are this box); points and wide lines may reach past it by half their size.
+  SetupParams& s = d.setup;
+  int sx0 = 0, sy0 = 0, sx1 = fw - 1, sy1 = fh - 1;
+  if (state.scissor) {
+    sx0 = std::max(sx0, state.scissor_x0), sy0 = std::max(sy0, state.scissor_y0);
+    sx1 = std::min(sx1, state.scissor_x1 - 1), sy1 = std::min(sy1, state.scissor_y1 - 1);
+  }
+  s.x0 = std::max(sx0, vx), s.y0 = std::max(sy0, vy), s.x1 = std::min(sx1, vx + vw - 1), s.y1 = std::min(sy1, vy + vh - 1);
+  const int reach = int(std::max(batch.point_size, batch.line_width) * 0.5f) + 1;
+  s.px0 = std::max(sx0, vx - reach), s.py0 = std::max(sy0, vy - reach);
+  s.px1 = std::min(sx1, vx + vw - 1 + reach), s.py1 = std::min(sy1, vy + vh - 1 + reach);
+  s.offset = state.polygon_offset;
+  s.offset_factor = state.offset_factor, s.offset_units = state.offset_units;
+
+  raster::DrawState st;
+  st.pixel = state;
+  if (d.textured) st.texture = raster::SamplerView(*state.texture.texture, state.texture.sampler);
+  d.draw_state = uint32_t(states.size());
+  states.push_back(st);
+  return d;
+}
+
+}  // namespace velocity::triangle

@@ -1,0 +1,131 @@
+// Vertex arrays: fetching an element's attributes, and glArrayElement, glDrawArrays and
+// glDrawElements, which feed the vertex stage as glBegin/glEnd would.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "context.hpp"
+
+namespace velocity::gl {
+
+namespace {
+size_t type_size(GLenum t) {
+  switch (t) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_DOUBLE: return 8;
+    default: return 4;
+  }
+}
+}  // namespace
+
+Vec4 ClientArray::fetch(GLint index, Vec4 v) const {
+  const size_t step = stride ? size_t(stride) : size_t(size) * type_size(type);
+  const unsigned char* p = static_cast<const unsigned char*>(pointer) + size_t(index) * step;
+  float* out[4] = {&v.x, &v.y, &v.z, &v.w};
+  for (int k = 0; k < size && k < 4; ++k) {
+    float f;
+    switch (type) {
+      case GL_FLOAT: { float x; std::memcpy(&x, p + 4 * k, 4); f = x; break; }
+      case GL_DOUBLE: { double x; std::memcpy(&x, p + 8 * k, 8); f = float(x); break; }
+      case GL_INT: { int32_t x; std::memcpy(&x, p + 4 * k, 4); f = float(x); break; }
+      case GL_UNSIGNED_INT: { uint32_t x; std::memcpy(&x, p + 4 * k, 4); f = float(x); break; }
+      case GL_SHORT: { int16_t x; std::memcpy(&x, p + 2 * k, 2); f = float(x); break; }
+      case GL_UNSIGNED_SHORT: { uint16_t x; std::memcpy(&x, p + 2 * k, 2); f = float(x); break; }
+      case GL_BYTE: f = float(int8_t(p[k])); break;
+      default: f = float(p[k]); break;
+    }
+    *out[k] = f;
+  }
+  return v;
+}
+
+Vec4 ClientArray::fetch_normalized(GLint index, Vec4 defaults, int components) const {
+  float scale;
+  switch (type) {
+    case GL_BYTE: scale = 1.0f / 127; break;
+    case GL_UNSIGNED_BYTE: scale = 1.0f / 255; break;
+    case GL_SHORT: scale = 1.0f / 32767; break;
+    case GL_UNSIGNED_SHORT: scale = 1.0f / 65535; break;
+    case GL_INT: scale = 1.0f / 2147483647.0f; break;
+    case GL_UNSIGNED_INT: scale = 1.0f / 4294967295.0f; break;
+    default: return fetch(index, defaults);
+  }
+  Vec4 v = fetch(index, defaults);
+  float* c[4] = {&v.x, &v.y, &v.z, &v.w};
+  for (int k = 0; k < components && k < 4; ++k) *c[k] *= scale;
+  return v;
+}
+
+void Context::client_state(GLenum cap, bool on) {
+  switch (cap) {
+    case GL_VERTEX_ARRAY: arrays.vertex.enabled = on; break;
+    case GL_NORMAL_ARRAY: arrays.normal.enabled = on; break;
+    case GL_COLOR_ARRAY: arrays.color.enabled = on; break;
+    case GL_TEXTURE_COORD_ARRAY: arrays.texcoord.enabled = on; break;
+    default: error(GL_INVALID_ENUM);
+  }
+}
+
+void Context::array_element(GLint i) {
+  if (i < 0) return error(GL_INVALID_VALUE);
+  if (arrays.color.enabled && arrays.color.pointer)
+    set_color(arrays.color.fetch_normalized(i, {0, 0, 0, 1}, arrays.color.size));
+  if (arrays.normal.enabled && arrays.normal.pointer) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
+  if (arrays.texcoord.enabled && arrays.texcoord.pointer) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
+  if (arrays.vertex.enabled && arrays.vertex.pointer) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
+}
+
+void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
+  if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
+  if (count < 0 || first < 0) return error(GL_INVALID_VALUE);
+  if (in_begin_error()) return;
+  if (!arrays.vertex.enabled || !arrays.vertex.pointer) return;
+  begin(mode);
+  for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) array_element(GLint(i));
+  end();
+}
+
+void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
+  if (count < 0) return error(GL_INVALID_VALUE);
+  if (in_begin_error()) return;
+  if (!arrays.vertex.enabled || !arrays.vertex.pointer || !indices) return;
+  const auto* bytes = static_cast<const uint8_t*>(indices);
+  auto index_at = [&](GLsizei k) -> uint32_t {
+    if (type == GL_UNSIGNED_BYTE) return bytes[k];
+    if (type == GL_UNSIGNED_SHORT) {
+      uint16_t s;
+      std::memcpy(&s, bytes + 2 * size_t(k), 2);
+      return s;
+    }
+    uint32_t i;
+    std::memcpy(&i, bytes + 4 * size_t(k), 4);
+    return i;
+  };
+  // Each element is processed once however often it is referenced (the vertex stage is
+  // a function of the element: the arrays cannot change during the call). The cache
+  // covers the indices up to the largest one, bounded by a multiple of the count.
+  uint32_t largest = 0;
+  for (GLsizei k = 0; k < count; ++k) largest = std::max(largest, index_at(k));
+  const size_t cache_size = std::min(size_t(largest) + 1, size_t(count) * 4 + 1024);
+  element_cache_.assign(cache_size, 0);
+  begin(mode);
+  caching_ = true;
+  for (GLsizei k = 0; k < count; ++k) {
+    const uint32_t i = index_at(k);
+    if (i > 0x7fffffffu) continue;
+    if (i < cache_size && element_cache_[i]) {
+      if (order_.size() < kMaxPrimitiveVertices) order_.push_back(element_cache_[i] - 1);
+      continue;
+    }
+    const size_t before = prim_.size();
+    array_element(GLint(i));
+    if (i < cache_size && prim_.size() > before) element_cache_[i] = uint32_t(prim_.size());
+  }
+  caching_ = false;
+  end();
+}
+
+}  // namespace velocity::gl

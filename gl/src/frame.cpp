@@ -1,0 +1,243 @@
+// Frames and batches: the vertex stage's primitives go to the renderer in batches of
+// one kind and one per-fragment state (PixelState, from the raster and texture state);
+// a frame runs when the pixels are needed, and its colour (and depth) go to the
+// caller's buffer.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "context.hpp"
+
+namespace velocity::gl {
+
+namespace {
+CompareFunc compare_func(GLenum f) { return CompareFunc(f - GL_NEVER); }
+
+BlendFactor blend_factor(GLenum f) {
+  switch (f) {
+    case GL_ZERO: return BlendFactor::Zero;
+    case GL_ONE: return BlendFactor::One;
+    case GL_SRC_COLOR: return BlendFactor::SrcColor;
+    case GL_ONE_MINUS_SRC_COLOR: return BlendFactor::OneMinusSrcColor;
+    case GL_DST_COLOR: return BlendFactor::DstColor;
+    case GL_ONE_MINUS_DST_COLOR: return BlendFactor::OneMinusDstColor;
+    case GL_SRC_ALPHA: return BlendFactor::SrcAlpha;
+    case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::OneMinusSrcAlpha;
+    case GL_DST_ALPHA: return BlendFactor::DstAlpha;
+    case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::OneMinusDstAlpha;
+    default: return BlendFactor::SrcAlphaSaturate;
+  }
+}
+}  // namespace
+
+void Context::ensure_frame() {
+  if (in_frame_ || !renderer_) return;
+  FrameStart start;
+  start.clear_color_buffer = start.clear_depth_buffer = first_frame_;
+  start.color = {0, 0, 0, 0};
+  start.depth = 1;
+  if (start_clear_) {
+    // A whole-framebuffer glClear before anything else in the frame: the frame starts
+    // cleared, which lets the renderer skip tiles that stay empty and clean.
+    start.clear_color_buffer = start_clear_color_ || first_frame_;
+    start.clear_depth_buffer = start_clear_depth_ || first_frame_;
+    if (start_clear_color_) start.color = start_color_;
+    if (start_clear_depth_) start.depth = start_depth_;
+    start_clear_ = start_clear_color_ = start_clear_depth_ = false;
+  }
+  renderer_->begin_frame(Camera{}, {}, start);
+  first_frame_ = false;
+  in_frame_ = true;
+}
+
+void Context::submit_pending() {
+  if (!have_pending_) return;
+  have_pending_ = false;
+  if (pending_.position.empty() || !renderer_) return;
+  ensure_frame();
+  if (submitted_used_ == submitted_.size()) submitted_.emplace_back();
+  Pending& kept = submitted_[submitted_used_++];
+  std::swap(kept, pending_);
+  pending_.clear();
+  PrimitiveBatch b;
+  b.kind = kept.kind;
+  b.position = kept.position.data();
+  b.color = kept.color.data();
+  b.texcoord = kept.texcoord.empty() ? nullptr : kept.texcoord.data();
+  b.fog = kept.fog.empty() ? nullptr : kept.fog.data();
+  b.vertex_count = uint32_t(kept.position.size());
+  b.indices = kept.index.data();
+  b.index_count = uint32_t(kept.index.size());
+  b.viewport.x = transform_.viewport.x;
+  b.viewport.y = transform_.viewport.y;  // the framebuffer is kept bottom row first (see update_derived)
+  b.viewport.width = std::max(transform_.viewport.width, 1);
+  b.viewport.height = std::max(transform_.viewport.height, 1);
+  b.viewport.depth_near = transform_.depth_near, b.viewport.depth_far = transform_.depth_far;
+  b.point_size = std::max(1.0f, raster_.point_size);
+  b.line_width = std::max(1.0f, raster_.line_width);
+  if (transform_.viewport.width == 0 || transform_.viewport.height == 0) return;  // nothing is drawn in an empty viewport
+  renderer_->draw(b, kept.state);
+  frame_vertices_ += kept.index.size();
+  if (frame_vertices_ > kMaxVerticesPerFrame) run_frame();  // bounded memory in a frame never flushed
+}
+
+void Context::run_frame() {
+  submit_pending();
+  if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
+  ensure_frame();
+  renderer_->end_frame();
+  in_frame_ = false;
+  for (size_t i = 0; i < submitted_used_; ++i) submitted_[i].clear();
+  submitted_used_ = 0;
+  frame_textures_.clear();
+  frame_vertices_ = 0;
+  // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
+  // buffer of the framebuffer's width takes the colour directly.
+  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_);
+  if (direct_) {
+    renderer_->read_color(static_cast<uint8_t*>(buffer_), size_t(width_) * 4, 4);
+    if (depth_requested_) copy_depth();
+    return;
+  }
+  renderer_->read_color(colour_.data(), size_t(width_) * 4, 4);
+  const int stride_px = row_length > 0 ? row_length : width_;
+  const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
+  uint8_t* out = static_cast<uint8_t*>(buffer_);
+  for (int y = 0; y < height_; ++y) {
+    const uint8_t* src = colour_.data() + size_t(y) * width_ * 4;
+    uint8_t* dst = out + size_t(y_up ? y : height_ - 1 - y) * stride_px * bpp;
+    switch (format_) {
+      case GL_RGBA: std::memcpy(dst, src, size_t(width_) * 4); break;
+      case GL_RGB:
+        for (int x = 0; x < width_; ++x) dst[3 * x] = src[4 * x], dst[3 * x + 1] = src[4 * x + 1], dst[3 * x + 2] = src[4 * x + 2];
+        break;
+      case 0x4:  // OSMESA_BGR
+        for (int x = 0; x < width_; ++x) dst[3 * x] = src[4 * x + 2], dst[3 * x + 1] = src[4 * x + 1], dst[3 * x + 2] = src[4 * x];
+        break;
+      case 0x1:  // OSMESA_BGRA
+        for (int x = 0; x < width_; ++x)
+          dst[4 * x] = src[4 * x + 2], dst[4 * x + 1] = src[4 * x + 1], dst[4 * x + 2] = src[4 * x], dst[4 * x + 3] = src[4 * x + 3];
+        break;
+      default:  // OSMESA_ARGB
+        for (int x = 0; x < width_; ++x)
+          dst[4 * x] = src[4 * x + 3], dst[4 * x + 1] = src[4 * x], dst[4 * x + 2] = src[4 * x + 1], dst[4 * x + 3] = src[4 * x + 2];
+        break;
+    }
+  }
+  if (depth_requested_) copy_depth();
+}
+
+void Context::copy_depth() {
+  {
+    const std::vector<float> d = renderer_->window_depth();
+    depth_out_.resize(d.size());
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x < width_; ++x)
+        depth_out_[size_t(y_up ? y : height_ - 1 - y) * width_ + x] =
+            uint32_t(std::lround(double(std::clamp(d[size_t(y) * width_ + x], 0.0f, 1.0f)) * 4294967295.0));
+  }
+}
+
+void Context::finish() {
+  if (in_begin_error()) return;
+  if (renderer_) run_frame();
+}
+
+PixelState Context::pixel_state(bool offset) {
+  PixelState s;
+  if (texture_.enabled) {
+    TextureObject* t = bound_texture();
+    if (const Texture* tex = texture_for_draw(*t)) {
+      TextureStage& st = s.texture;
+      st.texture = tex;
+      st.format = t->format;
+      st.env = texture_.env_mode == GL_REPLACE ? TexEnvMode::Replace
+               : texture_.env_mode == GL_DECAL ? TexEnvMode::Decal
+               : texture_.env_mode == GL_BLEND ? TexEnvMode::Blend
+               : texture_.env_mode == 0x0104   ? TexEnvMode::Add
+                                       : TexEnvMode::Modulate;
+      st.env_color = texture_.env_color;
+      using T = SamplerState::Texel;
+      using Mp = SamplerState::Mip;
+      SamplerState& sm = st.sampler;
+      sm.mag = t->mag_filter == GL_NEAREST ? T::Nearest : T::Linear;
+      switch (t->min_filter) {
+        case GL_NEAREST: sm.min = T::Nearest, sm.mip = Mp::None; break;
+        case GL_LINEAR: sm.min = T::Linear, sm.mip = Mp::None; break;
+        case GL_NEAREST_MIPMAP_NEAREST: sm.min = T::Nearest, sm.mip = Mp::Nearest; break;
+        case GL_LINEAR_MIPMAP_NEAREST: sm.min = T::Linear, sm.mip = Mp::Nearest; break;
+        case GL_NEAREST_MIPMAP_LINEAR: sm.min = T::Nearest, sm.mip = Mp::Linear; break;
+        default: sm.min = T::Linear, sm.mip = Mp::Linear; break;
+      }
+      auto wrap = [](GLenum w) {
+        // GL_CLAMP clamps s to [0, 1] and filters with the border: for GL_NEAREST that
+        // is the edge texel; with GL_LINEAR it differs from the edge only in the last
+        // half texel, where GL blends in the border colour (not done here: docs/gl.md).
+        return w == GL_CLAMP || w == GL_CLAMP_TO_EDGE ? Wrap::Clamp
+               : w == GL_MIRRORED_REPEAT ? Wrap::MirroredRepeat
+                                         : Wrap::Repeat;
+      };
+      sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
+      sm.border_color = t->border;
+    }
+  }
+  s.fog = raster_.fog;
+  s.fog_mode = raster_.fog_mode == GL_LINEAR ? FogMode::Linear : raster_.fog_mode == GL_EXP2 ? FogMode::Exp2 : FogMode::Exp;
+  s.fog_start = raster_.fog_start, s.fog_end = raster_.fog_end, s.fog_density = raster_.fog_density;
+  s.fog_color = raster_.fog_color;
+  s.scissor = raster_.scissor_test;
+  if (raster_.scissor_test) {
+    s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
+    s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
+  }
+  s.alpha_test = raster_.alpha_test;
+  s.alpha_func = compare_func(raster_.alpha_func);
+  s.alpha_ref = raster_.alpha_ref;
+  const bool depth = raster_.depth_test && depth_bits_ > 0;
+  s.depth_test = depth;
+  s.depth_func = compare_func(raster_.depth_func);
+  s.depth_write = depth && raster_.depth_write;
+  s.polygon_offset = offset;
+  s.offset_factor = raster_.offset_factor, s.offset_units = raster_.offset_units;
+  s.blend = raster_.blend;
+  s.blend_src_rgb = s.blend_src_alpha = blend_factor(raster_.blend_src);
+  s.blend_dst_rgb = s.blend_dst_alpha = blend_factor(raster_.blend_dst);
+  s.color_mask = raster_.color_mask_bits();
+  return s;
+}
+
+Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
+  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset ||
+                        pending_.index.size() >= kMaxBatchVertices))
+    submit_pending();
+  if (!have_pending_) {
+    pending_.clear();
+    pending_.kind = kind;
+    pending_.offset = offset;
+    pending_.state = pixel_state(offset);
+    have_pending_ = true;
+    if (++pending_gen_ == 0) {  // wrapped: forget every old mark
+      for (Emitted& e : emitted_) e = {};
+      pending_gen_ = 1;
+    }
+    pixel_dirty_ = false;
+  }
+  return pending_;
+}
+
+void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
+  Pending& p = pending_;
+  if (shared) {
+    const Emitted e = emitted_[i];
+    if (e.gen == pending_gen_) return p.index.push_back(e.index);
+    emitted_[i] = {pending_gen_, uint32_t(p.position.size())};
+  }
+  const Vertex& v = prim_[i];
+  p.index.push_back(uint32_t(p.position.size()));
+  p.position.push_back(v.clip);
+  p.color.push_back(color);
+  if (p.state.texture.texture) p.texcoord.push_back(v.tex);
+  if (p.state.fog) p.fog.push_back(v.fog);
+}
+
+}  // namespace velocity::gl

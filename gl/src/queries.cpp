@@ -1,0 +1,129 @@
+// Queries: glGet* (as doubles, converted by each entry point) and glIsEnabled. The
+// light and material queries are with their state (lighting.cpp).
+#include "context.hpp"
+
+namespace velocity::gl {
+
+bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
+  kind = 0;
+  out.clear();
+  auto v4 = [&](Vec4 c) { out = {c.x, c.y, c.z, c.w}; };
+  auto matrix_out = [&](const Mat4& m) {
+    out.resize(16);
+    store_column_major(m, out.data());
+  };
+  const TransformState& t = transform_;
+  const RasterState& r = raster_;
+  bool known = false;
+  const bool enabled = is_enabled(pname, &known);
+  if (known) return out = {enabled ? 1.0 : 0.0}, true;
+  switch (pname) {
+    case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
+    case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
+    case GL_PROJECTION_MATRIX: matrix_out(transform_.projection.back()); return true;
+    case GL_TEXTURE_MATRIX: matrix_out(transform_.texture.back()); return true;
+    case GL_MODELVIEW_STACK_DEPTH: out = {double(transform_.modelview.size())}; return true;
+    case GL_PROJECTION_STACK_DEPTH: out = {double(transform_.projection.size())}; return true;
+    case GL_TEXTURE_STACK_DEPTH: out = {double(transform_.texture.size())}; return true;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: out = {double(kMaxModelviewDepth)}; return true;
+    case GL_MAX_PROJECTION_STACK_DEPTH: out = {double(kMaxProjectionDepth)}; return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH: out = {double(kMaxTextureDepth)}; return true;
+    case GL_MAX_LIGHTS: out = {double(kMaxLights)}; return true;
+    case GL_MAX_TEXTURE_SIZE: out = {double(kMaxTextureSize)}; return true;
+    case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
+    case GL_MAX_VIEWPORT_DIMS: out = {double(kMaxViewport), double(kMaxViewport)}; return true;
+    case GL_VIEWPORT:
+      out = {double(t.viewport.x), double(t.viewport.y), double(t.viewport.width), double(t.viewport.height)};
+      return true;
+    case GL_DEPTH_RANGE: out = {transform_.depth_near, transform_.depth_far}; return true;
+    case GL_SCISSOR_BOX:
+      out = {double(r.scissor.x), double(r.scissor.y), double(r.scissor.width), double(r.scissor.height)};
+      return true;
+    case GL_COLOR_CLEAR_VALUE: v4(raster_.clear_color), kind = 1; return true;
+    case GL_DEPTH_CLEAR_VALUE: out = {raster_.clear_depth}, kind = 1; return true;
+    case GL_DEPTH_FUNC: out = {double(raster_.depth_func)}; return true;
+    case GL_DEPTH_WRITEMASK: out = {raster_.depth_write ? 1.0 : 0.0}; return true;
+    case GL_COLOR_WRITEMASK:
+      out = {double(r.color_mask[0]), double(r.color_mask[1]), double(r.color_mask[2]), double(r.color_mask[3])};
+      return true;
+    case GL_BLEND_SRC: out = {double(raster_.blend_src)}; return true;
+    case GL_BLEND_DST: out = {double(raster_.blend_dst)}; return true;
+    case GL_ALPHA_TEST_FUNC: out = {double(raster_.alpha_func)}; return true;
+    case GL_ALPHA_TEST_REF: out = {raster_.alpha_ref}, kind = 1; return true;
+    case GL_FOG_MODE: out = {double(raster_.fog_mode)}; return true;
+    case GL_FOG_DENSITY: out = {raster_.fog_density}; return true;
+    case GL_FOG_START: out = {raster_.fog_start}; return true;
+    case GL_FOG_END: out = {raster_.fog_end}; return true;
+    case GL_FOG_COLOR: v4(raster_.fog_color), kind = 1; return true;
+    case GL_CULL_FACE_MODE: out = {double(raster_.cull_mode)}; return true;
+    case GL_FRONT_FACE: out = {double(raster_.front_face)}; return true;
+    case GL_POLYGON_MODE: out = {double(raster_.polygon_mode[0]), double(raster_.polygon_mode[1])}; return true;
+    case GL_POLYGON_OFFSET_FACTOR: out = {raster_.offset_factor}; return true;
+    case GL_POLYGON_OFFSET_UNITS: out = {raster_.offset_units}; return true;
+    case GL_POINT_SIZE: out = {raster_.point_size}; return true;
+    case GL_LINE_WIDTH: out = {raster_.line_width}; return true;
+    case GL_SHADE_MODEL: out = {double(lighting_.shade_model)}; return true;
+    case GL_LIGHT_MODEL_AMBIENT: v4(lighting_.model_ambient), kind = 1; return true;
+    case GL_LIGHT_MODEL_TWO_SIDE: out = {lighting_.two_side ? 1.0 : 0.0}; return true;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: out = {lighting_.local_viewer ? 1.0 : 0.0}; return true;
+    case GL_COLOR_MATERIAL_FACE: out = {double(lighting_.color_material_face)}; return true;
+    case GL_COLOR_MATERIAL_PARAMETER: out = {double(lighting_.color_material_mode)}; return true;
+    case GL_CURRENT_COLOR: v4(color_), kind = 1; return true;
+    case GL_CURRENT_NORMAL: out = {normal_.x, normal_.y, normal_.z}; return true;
+    case GL_CURRENT_TEXTURE_COORDS: v4(texcoord_); return true;
+    case GL_TEXTURE_BINDING_2D: out = {double(texture_.bound)}; return true;
+    case GL_LIST_BASE: out = {double(lists_.base)}; return true;
+    case GL_LIST_INDEX: out = {double(lists_.compiling)}; return true;
+    case GL_LIST_MODE: out = {lists_.compiling ? double(lists_.mode) : 0.0}; return true;
+    case GL_UNPACK_ALIGNMENT: out = {double(unpack_alignment)}; return true;
+    case GL_PACK_ALIGNMENT: out = {double(pack_alignment)}; return true;
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out = {8}; return true;
+    case GL_ALPHA_BITS: out = {format_ == GL_RGB || format_ == 0x4 ? 0.0 : 8.0}; return true;
+    case GL_DEPTH_BITS: out = {depth_bits_ > 0 ? 24.0 : 0.0}; return true;
+    case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
+    case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT:
+      out = {double(raster_.hints[pname - GL_PERSPECTIVE_CORRECTION_HINT])};
+      return true;
+    case GL_VERTEX_ARRAY_SIZE: out = {double(arrays.vertex.size)}; return true;
+    case GL_VERTEX_ARRAY_TYPE: out = {double(arrays.vertex.type)}; return true;
+    case GL_VERTEX_ARRAY_STRIDE: out = {double(arrays.vertex.stride)}; return true;
+    case GL_NORMAL_ARRAY_TYPE: out = {double(arrays.normal.type)}; return true;
+    case GL_NORMAL_ARRAY_STRIDE: out = {double(arrays.normal.stride)}; return true;
+    case GL_COLOR_ARRAY_SIZE: out = {double(arrays.color.size)}; return true;
+    case GL_COLOR_ARRAY_TYPE: out = {double(arrays.color.type)}; return true;
+    case GL_COLOR_ARRAY_STRIDE: out = {double(arrays.color.stride)}; return true;
+    case GL_TEXTURE_COORD_ARRAY_SIZE: out = {double(arrays.texcoord.size)}; return true;
+    case GL_TEXTURE_COORD_ARRAY_TYPE: out = {double(arrays.texcoord.type)}; return true;
+    case GL_TEXTURE_COORD_ARRAY_STRIDE: out = {double(arrays.texcoord.stride)}; return true;
+    default: return false;
+  }
+}
+
+bool Context::is_enabled(GLenum cap, bool* known) const {
+  *known = true;
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
+  switch (cap) {
+    case GL_DEPTH_TEST: return raster_.depth_test;
+    case GL_CULL_FACE: return raster_.cull;
+    case GL_LIGHTING: return lighting_.enabled;
+    case GL_NORMALIZE: return transform_.normalize;
+    case GL_RESCALE_NORMAL: return transform_.rescale_normal;
+    case GL_COLOR_MATERIAL: return lighting_.color_material;
+    case GL_TEXTURE_2D: return texture_.enabled;
+    case GL_BLEND: return raster_.blend;
+    case GL_ALPHA_TEST: return raster_.alpha_test;
+    case GL_FOG: return raster_.fog;
+    case GL_SCISSOR_TEST: return raster_.scissor_test;
+    case GL_POLYGON_OFFSET_FILL: return raster_.offset_fill;
+    case GL_POLYGON_OFFSET_LINE: return raster_.offset_line;
+    case GL_POLYGON_OFFSET_POINT: return raster_.offset_point;
+    case GL_VERTEX_ARRAY: return arrays.vertex.enabled;
+    case GL_NORMAL_ARRAY: return arrays.normal.enabled;
+    case GL_COLOR_ARRAY: return arrays.color.enabled;
+    case GL_TEXTURE_COORD_ARRAY: return arrays.texcoord.enabled;
+    case 0x0BD0: return true;  // GL_DITHER
+    default: *known = false; return false;
+  }
+}
+
+}  // namespace velocity::gl

@@ -1,0 +1,196 @@
+// pGL's state, one struct per GL area as Mesa's gl_context holds it (src/mesa/main/
+// mtypes.h): transform, lighting, raster (per-fragment and rasterization), textures,
+// vertex arrays, display lists. Each area's entry points are in the .cpp of its name
+// (transform.cpp, lighting.cpp, raster_state.cpp, texture.cpp, arrays.cpp, lists.cpp);
+// the vertex stage (vertex.cpp) and the batches (frame.cpp) read them.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "shading/lighting.hpp"
+#include "velocity/math.hpp"
+#include "velocity/primitives.hpp"
+#include "velocity/texture.hpp"
+
+namespace velocity::gl {
+
+// OpenGL passes and returns matrices column-major, m[col * 4 + row] (glLoadMatrix,
+// glMultMatrix, glGet(GL_MODELVIEW_MATRIX), GLU's arguments); velocity::Mat4, which
+// pGL keeps, is row-major, m[row][col]. The two conversions:
+template <class T>
+Mat4 load_column_major(const T* m) {
+  Mat4 r;
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row) r.m[row][col] = float(m[col * 4 + row]);
+  return r;
+}
+template <class T>
+void store_column_major(const Mat4& a, T* out) {
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row) out[col * 4 + row] = T(a.m[row][col]);
+}
+
+// Implementation limits (what glGet reports).
+constexpr int kMaxLights = 8;
+constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDepth = 10;
+constexpr int kMaxTextureSize = 4096;
+constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
+constexpr int kMaxListNesting = 64;
+constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
+constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
+constexpr size_t kMaxBatchVertices = size_t(1) << 20;     // more: the batch goes to the renderer
+// A strip, fan, loop or polygon longer than this (GL_OUT_OF_MEMORY; the rest is dropped).
+constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
+// Commands one outermost glCallList may run, nested lists included: lists that call each
+// other twice over would otherwise run 2^64 of them (GL_OUT_OF_MEMORY, the rest skipped).
+constexpr uint64_t kMaxListCallCommands = uint64_t(1) << 25;
+constexpr int kMaxViewport = 16384;
+
+// A viewport or a scissor box (window coordinates, GL's bottom row 0).
+struct Box {
+  GLint x = 0, y = 0, width = 0, height = 0;
+};
+// The box glViewport or glScissor gives, kept within reach of the framebuffer's limits,
+// so that x + width cannot overflow.
+inline Box within_reach(GLint x, GLint y, GLsizei w, GLsizei h) {
+  return {std::clamp(x, -kMaxViewport, kMaxViewport), std::clamp(y, -kMaxViewport, kMaxViewport),
+          std::min(w, kMaxViewport), std::min(h, kMaxViewport)};
+}
+
+// --- transform (transform.cpp): matrix stacks, viewport, depth range ---------------
+struct TransformState {
+  GLenum matrix_mode = GL_MODELVIEW;
+  std::vector<Mat4> modelview{Mat4{}}, projection{Mat4{}}, texture{Mat4{}};  // the stacks, top last
+  // Derived from the tops when a glBegin needs them (update_derived).
+  Mat4 mvp;            // projection * modelview, clip-space y negated
+  Mat4 normal_matrix;  // inverse transpose of the modelview's upper 3x3
+  bool derived_dirty = true, texture_identity = true;
+  Box viewport;
+  float depth_near = 0, depth_far = 1;
+  bool normalize = false, rescale_normal = false;
+};
+
+// --- lighting (lighting.cpp): lights, materials, colour material ------------------
+struct Light {
+  Vec4 ambient{0, 0, 0, 1}, diffuse{0, 0, 0, 1}, specular{0, 0, 0, 1};
+  Vec4 position{0, 0, 1, 0};  // eye space (transformed by the modelview at glLight time)
+  Vec3 spot_direction{0, 0, -1};  // eye space
+  float spot_exponent = 0, spot_cutoff = 180;
+  float constant = 1, linear = 0, quadratic = 0;
+  bool enabled = false;
+};
+
+using Material = shading::GlMaterial;  // (src/shading/lighting.hpp)
+
+struct LightingState {
+  bool enabled = false;  // GL_LIGHTING
+  Light lights[kMaxLights];
+  Vec4 model_ambient{0.2f, 0.2f, 0.2f, 1};
+  bool two_side = false, local_viewer = false;
+  Material materials[2];  // front, back
+  bool color_material = false;
+  GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+  GLenum shade_model = GL_SMOOTH;
+  LightingState() { lights[0].diffuse = lights[0].specular = {1, 1, 1, 1}; }
+};
+
+// --- raster state (raster_state.cpp): per-fragment tests, blending, fog, clears, ----
+// --- masks, culling, polygon mode and offset, point and line size -----------------
+struct RasterState {
+  bool scissor_test = false;
+  Box scissor;
+  Vec4 clear_color{0, 0, 0, 0};
+  float clear_depth = 1;
+  bool depth_test = false, depth_write = true;
+  GLenum depth_func = GL_LESS;
+  bool color_mask[4] = {true, true, true, true};
+  bool blend = false;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0;
+  bool fog = false;
+  GLenum fog_mode = GL_EXP;
+  float fog_start = 0, fog_end = 1, fog_density = 1;
+  Vec4 fog_color{0, 0, 0, 0};
+  GLenum hints[5] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
+  bool cull = false;
+  GLenum cull_mode = GL_BACK, front_face = GL_CCW;
+  GLenum polygon_mode[2] = {GL_FILL, GL_FILL};  // front, back
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0, offset_units = 0;
+  float point_size = 1, line_width = 1;
+  uint8_t color_mask_bits() const {
+    return uint8_t((color_mask[0] ? 1 : 0) | (color_mask[1] ? 2 : 0) | (color_mask[2] ? 4 : 0) | (color_mask[3] ? 8 : 0));
+  }
+};
+
+// --- textures (texture.cpp) -------------------------------------------------------
+struct TextureObject {
+  // Levels as glTexImage2D gave them (RGBA8 after the internal format was applied);
+  // width 0: the level was never specified.
+  std::array<Texture::Level, kMaxTextureLevels> levels{};
+  TexFormat format = TexFormat::Rgba;
+  GLenum internal_format = GL_RGBA;
+  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
+  Vec4 border{0, 0, 0, 0};
+  bool generate_mipmap = false;
+  // What the renderer samples, built when first drawn after a change (null: not yet,
+  // or incomplete). Draws already recorded keep their own reference.
+  std::shared_ptr<const Texture> built;
+  bool dirty = true, complete = false;
+};
+
+struct TextureState {
+  bool enabled = false;  // GL_TEXTURE_2D
+  std::map<GLuint, std::unique_ptr<TextureObject>> objects;
+  TextureObject default_object;  // name 0
+  GLuint bound = 0;
+  GLuint next_name = 1;
+  GLenum env_mode = GL_MODULATE;
+  Vec4 env_color{0, 0, 0, 0};
+};
+
+// --- vertex arrays (arrays.cpp) ---------------------------------------------------
+// One vertex array (glVertexPointer and the like).
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+  Vec4 fetch(GLint index, Vec4 defaults) const;
+  // A colour's or a normal's first `components`: integer types map to [0, 1] (unsigned)
+  // or [-1, 1] (signed).
+  Vec4 fetch_normalized(GLint index, Vec4 defaults, int components) const;
+};
+
+struct ArrayState {
+  ClientArray vertex, normal, color, texcoord;
+};
+
+// --- display lists (lists.cpp) ----------------------------------------------------
+class Context;
+using ListCommand = std::function<void(Context&)>;
+
+struct ListState {
+  std::map<GLuint, std::vector<ListCommand>> stored;
+  GLuint compiling = 0;  // the list between glNewList and glEndList, or 0
+  GLenum mode = GL_COMPILE;
+  std::vector<ListCommand> recorded;  // what glNewList has recorded so far
+  bool overflow = false;
+  int depth = 0;        // glCallList nesting now
+  uint64_t budget = 0;  // commands the outermost glCallList may still run
+  GLuint base = 0;      // glListBase
+};
+
+}  // namespace velocity::gl

@@ -1,0 +1,61 @@
+// What draws for a Renderer: every promise renderer.hpp makes, as one interface that an
+// implementation fills in. The CPU pipeline (src/frame.cpp) is the one there is; a
+// second (a GPU backend) can be added beside it without touching it. Calls are per
+// frame or per draw, never per pixel, so the virtual calls cost nothing measurable.
+//
+// The Renderer checks its callers (a draw outside a frame, a batch whose indices do not
+// make whole primitives, a bad channel count) before it calls a backend: a backend may
+// assume calls in order (begin_frame, draws and clears, end_frame) with valid arguments.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "velocity/image.hpp"
+#include "velocity/material.hpp"
+#include "velocity/math.hpp"
+#include "velocity/mesh.hpp"
+#include "velocity/primitives.hpp"
+#include "velocity/renderer.hpp"
+#include "velocity/scene.hpp"
+
+namespace velocity {
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+
+  // The output size (Renderer's limits; velocity::Error and no change outside them).
+  // Super-sampling follows RenderOptions::ssaa at begin_frame.
+  virtual void resize(int width, int height) = 0;
+  virtual int width() const = 0;
+  virtual int height() const = 0;
+
+  // A frame: draws and clears are recorded in order and run by end_frame. The frame
+  // uses `options` as they are at begin_frame.
+  virtual void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                           const RenderOptions& options) = 0;
+  // The mesh and material stay alive and unchanged until end_frame returns.
+  virtual void draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) = 0;
+  // `primitives`: the batch's whole primitives (at least one).
+  virtual void draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) = 0;
+  virtual void clear(const ClearRequest& request) = 0;
+  virtual const FrameStats& end_frame() = 0;
+  virtual const FrameStats& stats() const = 0;
+
+  // The last frame, read back as Renderer's functions of the same names describe.
+  virtual Image color_image() const = 0;
+  virtual Image depth_image() const = 0;
+  virtual void read_color(uint8_t* rgba, size_t row_bytes, int channels) const = 0;
+  virtual void read_view_depth(float* out) const = 0;
+  virtual void read_window_depth(float* out) const = 0;
+  virtual std::vector<uint32_t> object_ids() const = 0;
+  virtual size_t framebuffer_bytes() const = 0;
+};
+
+// The CPU pipeline (src/frame.cpp) at width x height; throws as Renderer's constructor.
+std::unique_ptr<Backend> make_cpu_backend(int width, int height);
+
+}  // namespace velocity

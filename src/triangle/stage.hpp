@@ -1,0 +1,76 @@
+// The triangle stage: the frame's draws cut into jobs (a range of one draw's
+// primitives, or a clear), run on every core. Per primitive: assemble, reject, cull
+// (cull.hpp's first pass, N triangles at a time), clip (clip.hpp), set up (setup.hpp)
+// and emit the record to the worker's bins.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include "core/thread_pool.hpp"
+#include "raster/bins.hpp"
+#include "triangle/draw_plan.hpp"
+#include "velocity/renderer.hpp"
+
+namespace velocity::triangle {
+
+// The most triangles (or primitives) one job of the triangle stage holds.
+inline constexpr uint32_t kTrianglesPerJob = 4096;
+
+// One piece of the triangle stage: a range of one draw's primitives, or a clear.
+struct Job {
+  enum class Kind : uint8_t { Mesh, Batch, Clear } kind;
+  uint32_t draw;         // index into meshes, batches or clears
+  uint32_t begin, end;   // primitives
+  size_t nonfinite = 0;  // filled in by the worker that ran it
+};
+
+// What one worker needs while it runs jobs of the triangle stage.
+struct StageContext {
+  raster::WorkerBins& bins;
+  FrameStats& stats;
+  uint32_t job = 0;
+  size_t nonfinite = 0;  // triangles of this job dropped for NaN/Inf
+  // The worker's scratch for the first pass's survivors (kTrianglesPerJob each).
+  uint32_t* direct = nullptr;
+  uint32_t* info = nullptr;
+  uint32_t* clipped = nullptr;
+  std::vector<uint8_t>* marks = nullptr;  // points: which vertices this job drew
+
+  // The record goes to the tiles (raster/bins.hpp decides when).
+  void emit(raster::RecordHeader& r, uint32_t ref, float sort_key) { bins.emit(job, r, ref, sort_key); }
+};
+
+// The triangle stage for one job: assemble, reject, cull, clip, set up and bin.
+void run_mesh_job(const DrawList& plan, const MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
+void run_batch_job(const DrawList& plan, const BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
+void run_clear_job(const ClearPlan& clear, int width, int height, StageContext& cx);
+
+// The whole stage for a frame, on every core: each worker runs jobs in increasing order
+// and sets up and bins into its own bins. Holds the workers' scratch across frames.
+class TriangleStage {
+ public:
+  // Runs `jobs` (their nonfinite counts filled in) into `bins`, which are cleared first,
+  // for a width x height framebuffer; `painter`: the records are deferred for
+  // Bins::bin_deferred.
+  void run(ThreadPool& pool, raster::Bins& bins, const DrawList& plan, std::vector<Job>& jobs, int width, int height,
+           bool painter);
+  // Adds the workers' counts of the last run to `stats`.
+  void add_stats(FrameStats& stats) const;
+  // One warning per mesh with non-finite vertices (not one per frame, nor per
+  // triangle). The set only grows with distinct bad meshes; a long-running program that
+  // makes new ones forever forgets them now and then (and may warn again) rather than
+  // grow.
+  void warn_nonfinite(const DrawList& plan, const std::vector<Job>& jobs);
+
+ private:
+  std::vector<FrameStats> worker_stats_;
+  std::vector<std::vector<uint32_t>> survivors_;  // per worker: the first pass's survivors
+  std::vector<std::vector<uint8_t>> marks_;       // per worker: vertices drawn as points
+  std::vector<size_t> nonfinite_;                 // per mesh draw
+  std::unordered_set<const Mesh*> warned_meshes_;
+};
+
+}  // namespace velocity::triangle
