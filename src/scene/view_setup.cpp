@@ -4,22 +4,6 @@
 
 namespace velocity {
 
-namespace {
-
-struct DefaultLights {
-  Light ambient;
-  Light key;
-};
-
-// The one place the viewer's default light is spelled: the convention's light
-// (ambient 0.2, white diffuse 0.8 from (0.3, 0.5, 1)) as scene lights.
-// TODO(merge): return the convention's default light from src/shading/ instead.
-DefaultLights default_lights() {
-  return {Light::ambient({0.2f, 0.2f, 0.2f}), Light::directional({0.3f, 0.5f, 1.0f}, {0.8f, 0.8f, 0.8f})};
-}
-
-}  // namespace
-
 void make_two_sided(Model& model) {
   for (ModelNode& node : model.nodes) {
     if (!node.mesh) continue;
@@ -32,9 +16,10 @@ void add_default_lights(Scene& scene) {
   bool has_key = std::any_of(scene.lights.begin(), scene.lights.end(),
                              [](const Light& l) { return l.type != LightType::Ambient; });
   if (has_key) return;
-  const DefaultLights lights = default_lights();
-  if (scene.lights.empty()) scene.lights.push_back(lights.ambient);
-  scene.lights.push_back(lights.key);
+  // The convention's light (kDefaultLight) as scene lights, fixed in the world: the side
+  // of the model it lights stays lit as the camera orbits.
+  if (scene.lights.empty()) scene.lights.push_back(Light::ambient(kDefaultLight.ambient));
+  scene.lights.push_back(Light::directional(kDefaultLight.towards, kDefaultLight.diffuse));
 }
 
 Scene scene_from_model(const std::string& path, const LoadOptions& options, bool cull_back_faces, float aspect) {
