@@ -39,6 +39,7 @@ namespace {
 // depend on the thread count.
 constexpr uint32_t kVerticesPerJob = 8192;
 using triangle::kTrianglesPerJob;
+
 template <class T>
 void grow(std::vector<T>& v, size_t n) {
   if (v.size() < n) v.resize(n);
@@ -46,6 +47,7 @@ void grow(std::vector<T>& v, size_t n) {
 
 }  // namespace
 
+// The CPU pipeline: records and plans the draws, then runs the stages on a thread pool.
 class CpuBackend final : public Backend {
  public:
   CpuBackend(int width, int height) { resize(width, height, 1); }
@@ -78,8 +80,8 @@ class CpuBackend final : public Backend {
 
  private:
   int width_ = 0, height_ = 0;  // the output size
-  int ssaa = 1;               // samples per output pixel, per side
-  Framebuffer framebuffer;    // the samples: width * ssaa x height * ssaa
+  int ssaa = 1;                 // samples per output pixel, per side
+  Framebuffer framebuffer;      // the samples: width * ssaa x height * ssaa
   raster::Bins bins;
   std::unique_ptr<ThreadPool> pool;
 
