@@ -147,7 +147,8 @@ class BatchPrimitives {
 
 }  // namespace
 
-void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end,
+                   StageContext& cx) {
   BatchPrimitives(plan, draw, cx).run(begin, end);
 }
 

@@ -299,7 +299,8 @@ class MeshTriangles {
 
 }  // namespace
 
-void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end,
+                  StageContext& cx) {
   MeshTriangles(plan, draw, cx).run(begin, end);
 }
 

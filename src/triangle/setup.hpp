@@ -82,10 +82,12 @@ raster::RecordHeader* setup_small_triangle(raster::WorkerBins& bins, const Scree
 // A line `width` pixels wide from a to b, varyings interpolated along it.
 raster::RecordHeader* setup_line(raster::WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b,
                                  const float* var_a, const float* var_b, int num_varyings, int width,
-                                 const RecordInfo& info, const geometry::SetupParams& params, uint32_t& offset);
+                                 const RecordInfo& info, const geometry::SetupParams& params,
+                                 uint32_t& offset);
 
 // A point: the size x size square of pixels centred on p, with p's varyings.
 raster::RecordHeader* setup_point(raster::WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings,
-                                  int size, const RecordInfo& info, const geometry::SetupParams& params, uint32_t& offset);
+                                  int size, const RecordInfo& info, const geometry::SetupParams& params,
+                                  uint32_t& offset);
 
 }  // namespace velocity::triangle

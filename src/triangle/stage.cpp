@@ -7,8 +7,8 @@
 
 namespace velocity::triangle {
 
-void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs, int width,
-                        int height, bool painter) {
+void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs,
+                        int width, int height, bool painter) {
   bins.clear(painter);
   const int workers = pool.size();
   worker_stats_.assign(size_t(workers), FrameStats{});

@@ -44,8 +44,10 @@ struct StageContext {
 };
 
 // The triangle stage for one job: assemble, reject, cull, clip, set up and bin.
-void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
-void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
+void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end,
+                  StageContext& cx);
+void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end,
+                   StageContext& cx);
 void run_clear_job(const geometry::ClearPlan& clear, int width, int height, StageContext& cx);
 
 // The whole stage for a frame, on every core: each worker runs jobs in increasing order
@@ -55,8 +57,8 @@ class TriangleStage {
   // Runs `jobs` (their nonfinite counts filled in) into `bins`, which are cleared first,
   // for a width x height framebuffer; `painter`: the records are deferred for
   // Bins::bin_deferred.
-  void run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs, int width, int height,
-           bool painter);
+  void run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs, int width,
+           int height, bool painter);
   // Adds the workers' counts of the last run to `stats`.
   void add_stats(FrameStats& stats) const;
   // One warning per mesh with non-finite vertices (not one per frame, nor per
