@@ -22,7 +22,7 @@
 #include "framebuffer/resolve.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/object_cull.hpp"
-#include "geometry/vertex_stage.hpp"
+#include "geometry/vertex_jobs.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
 #include "shading/lighting.hpp"
@@ -35,18 +35,11 @@ namespace velocity {
 
 namespace {
 
-// Work sizes: big enough that a job's overhead is nothing, small enough that every core
-// gets a share of one large mesh. Fixed, so that the jobs (and hence the image) do not
-// depend on the thread count.
-constexpr uint32_t kVerticesPerJob = 8192;
 using triangle::kTrianglesPerJob;
-template <class T>
-void grow(std::vector<T>& v, size_t n) {
-  if (v.size() < n) v.resize(n);
-}
 
 }  // namespace
 
+// The CPU pipeline: records and plans the draws, then runs the stages on a thread pool.
 class CpuBackend final : public Backend {
  public:
   CpuBackend(int width, int height) { resize(width, height, 1); }
@@ -79,13 +72,13 @@ class CpuBackend final : public Backend {
 
  private:
   int width_ = 0, height_ = 0;  // the output size
-  int ssaa = 1;               // samples per output pixel, per side
-  Framebuffer framebuffer;    // the samples: width * ssaa x height * ssaa
+  int ssaa = 1;                 // samples per output pixel, per side
+  Framebuffer framebuffer;      // the samples: width * ssaa x height * ssaa
   raster::Bins bins;
   std::unique_ptr<ThreadPool> pool;
 
   // The frame being recorded.
-  triangle::DrawList plan;
+  geometry::DrawList plan;
   std::vector<raster::DrawState> draw_states;
   std::vector<triangle::Job> jobs;
   std::deque<std::vector<Vec3>> averaged_normals;  // for meshes that bring none, reused (stable addresses)
@@ -95,6 +88,7 @@ class CpuBackend final : public Backend {
   FrameStart start;
   FrameStats stats_;
 
+  geometry::VertexStage vertex_stage;      // its chunks, reused across frames
   triangle::TriangleStage triangle_stage;  // its workers' scratch, reused across frames
 
   ThreadPool& pool_for(int threads) {
@@ -132,77 +126,6 @@ class CpuBackend final : public Backend {
     width_ = w, height_ = h, ssaa = k;
   }
 
-  // The vertex stage's outputs for every draw, in one set of arrays.
-  void allocate_vertices() {
-    triangle::DrawList& p = plan;
-    size_t total = 0;
-    bool light = false, specular = false, normal = false, eye = false;
-    for (auto& d : p.meshes) {
-      d.vertex_base = total, total += d.mesh->positions.size();
-      light |= d.light, specular |= d.vertex_specular_terms, normal |= d.normal, eye |= d.eye;
-    }
-    for (auto& b : p.batches) b.vertex_base = total, total += b.batch.vertex_count;
-    triangle::VertexArrays& v = p.vertices;
-    try {
-      grow(v.projected, total), grow(v.codes, total);
-      if (light) grow(v.diffuse, total);
-      if (specular) grow(v.specular, total);
-      if (normal) grow(v.normal, total);
-      if (eye) grow(v.eye, total);
-    } catch (const std::bad_alloc&) {
-      throw Error("frame: out of memory for " + std::to_string(total) + " vertices");
-    }
-  }
-
-  // The vertex stage, on every core.
-  struct VertexJob {
-    bool batch;
-    uint32_t draw;
-    size_t begin, end;
-  };
-  std::vector<VertexJob> vertex_jobs;  // reused across frames
-  std::vector<size_t> nonfinite;       // per mesh draw, reused
-
-  void vertex_stage(ThreadPool& pool) {
-    std::vector<VertexJob>& work = vertex_jobs;
-    work.clear();
-    for (uint32_t i = 0; i < plan.meshes.size(); ++i)
-      for (size_t b = 0, n = plan.meshes[i].mesh->positions.size(); b < n; b += kVerticesPerJob)
-        work.push_back({false, i, b, std::min<size_t>(b + kVerticesPerJob, n)});
-    for (uint32_t i = 0; i < plan.batches.size(); ++i)
-      for (size_t b = 0, n = plan.batches[i].batch.vertex_count; b < n; b += kVerticesPerJob)
-        work.push_back({true, i, b, std::min<size_t>(b + kVerticesPerJob, n)});
-    triangle::VertexArrays& va = plan.vertices;
-    pool.run(int(work.size()), [&](int i) {
-      const VertexJob& w = work[size_t(i)];
-      if (w.batch) {
-        const triangle::BatchDrawPlan& b = plan.batches[w.draw];
-        geometry::ClipVertexJob job;
-        job.positions = b.batch.position, job.begin = w.begin, job.end = w.end, job.viewport = b.viewport;
-        job.out.projected = va.projected.data() + b.vertex_base, job.out.codes = va.codes.data() + b.vertex_base;
-        geometry::project_clip_vertices(job);
-        return;
-      }
-      const triangle::MeshDrawPlan& d = plan.meshes[w.draw];
-      geometry::MeshVertexJob job;
-      job.positions = d.mesh->positions.data(), job.normals = d.normals->data();
-      job.begin = w.begin, job.end = w.end;
-      job.mvp = d.mvp, job.model_view = d.model_view, job.normal_matrix = d.normal_matrix;
-      job.viewport = plan.viewport;
-      const size_t base = d.vertex_base;
-      job.out.projected = va.projected.data() + base, job.out.codes = va.codes.data() + base;
-      if (d.light) {
-        job.lights = &plan.lights, job.specular = d.vertex_specular;
-        job.out.diffuse = va.diffuse.data() + base;
-        if (d.vertex_color) job.base_color = &d.uniform_color;
-        if (d.vertex_specular_terms) job.out.specular = va.specular.data() + base;
-      }
-      if (d.normal) job.out.normal = va.normal.data() + base;
-      if (d.eye) job.out.eye = va.eye.data() + base;
-      geometry::transform_mesh_vertices(job);
-    });
-  }
-
   const FrameStats& run_frame(bool painter);
 };
 
@@ -220,7 +143,7 @@ void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
   r.resize(r.width_, r.height_, options.ssaa);  // follows a change of options.ssaa
   r.framebuffer.keep_ids(options.object_ids);
   const int w = r.framebuffer.width, h = r.framebuffer.height;
-  triangle::DrawList& p = r.plan;
+  geometry::DrawList& p = r.plan;
   p.width = w, p.height = h;
   const Mat4 view = camera.view();
   r.view = view;
@@ -247,8 +170,8 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   r.stats_.objects++;
   if (mesh.triangles.empty()) return;
   if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats_.objects_culled++);
-  triangle::DrawList& p = r.plan;
-  triangle::MeshDrawPlan d;
+  geometry::DrawList& p = r.plan;
+  geometry::MeshDrawPlan d;
   d.mesh = &mesh;
   d.override_material = material;
   d.object_id = object_id;
@@ -263,7 +186,7 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
     geometry::average_normals(mesh, n);
     d.normals = &n;  // normalised when transformed to eye space
   }
-  triangle::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
+  geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
   const uint32_t index = uint32_t(p.meshes.size());
   p.meshes.push_back(d);
   const size_t nt = mesh.triangles.size();
@@ -277,8 +200,8 @@ void CpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
   CpuBackend& r = *this;
   r.stats_.objects++;
   if (primitives == 0) return;
-  triangle::DrawList& p = r.plan;
-  const triangle::BatchDrawPlan d = triangle::plan_batch_draw(p, r.draw_states, batch, state, primitives);
+  geometry::DrawList& p = r.plan;
+  const geometry::BatchDrawPlan d = geometry::plan_batch_draw(p, r.draw_states, batch, state, primitives);
   const uint32_t index = uint32_t(p.batches.size());
   p.batches.push_back(d);
   for (uint32_t b = 0; b < primitives; b += kTrianglesPerJob)
@@ -289,7 +212,7 @@ void CpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
 
 void CpuBackend::clear(const ClearRequest& request) {
   CpuBackend& r = *this;
-  triangle::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
+  geometry::ClearPlan c{request, 0, 0, r.plan.width - 1, r.plan.height - 1};
   if (request.scissor) {
     c.x0 = std::max(c.x0, request.x0), c.y0 = std::max(c.y0, request.y0);
     c.x1 = std::min(c.x1, request.x1 - 1), c.y1 = std::min(c.y1, request.y1 - 1);
@@ -314,8 +237,7 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const Clock::time_point t0 = Clock::now();
-  r.allocate_vertices();
-  r.vertex_stage(pool);
+  r.vertex_stage.run(pool, r.plan);
   const Clock::time_point t1 = Clock::now();
   r.triangle_stage.run(pool, r.bins, r.plan, r.jobs, r.framebuffer.width, r.framebuffer.height, painter);
   if (painter) r.bins.bin_deferred();

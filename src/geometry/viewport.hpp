@@ -93,4 +93,15 @@ inline ViewportMap viewport_map(int x, int y, int w, int h, float n, float f) {
   return m;
 }
 
+// What a draw's primitives are set up with (triangle/setup.hpp).
+struct SetupParams {
+  // Pixels a primitive may touch (inclusive): the framebuffer, narrowed by the
+  // viewport (triangles only) and the scissor.
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;   // triangles
+  int px0 = 0, py0 = 0, px1 = 0, py1 = 0;  // points and lines
+  bool affine = false;      // make 1/w constant: varyings interpolate linearly on screen
+  bool offset = false;      // glPolygonOffset: depth += factor * max slope + units * 2^-24
+  float offset_factor = 0, offset_units = 0;
+};
+
 }  // namespace velocity::geometry

@@ -1,6 +1,58 @@
+// The scene's lights in eye space, and the SIMD form's test entry point (compiled once
+// per instruction set and dispatched at run time, as the kernels are).
 #include "shading/lighting.hpp"
 
+#include <cstring>
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shading/lighting.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+
+#include <hwy/highway.h>
+
+#include "shading/lighting-inl.h"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
 namespace velocity::shading {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+void LightForTest(const EyeLights& lights, const Vec3* n, const Vec3* p, size_t count, const Specular& s,
+                  LightTerms* out) {
+  const DF d;
+  constexpr size_t N = kLanes;
+  for (size_t i = 0; i < count; i += N) {
+    const size_t k = std::min(N, count - i);
+    alignas(64) float in[6][N] = {};
+    for (size_t j = 0; j < k; ++j) {
+      in[0][j] = n[i + j].x, in[1][j] = n[i + j].y, in[2][j] = n[i + j].z;
+      in[3][j] = p[i + j].x, in[4][j] = p[i + j].y, in[5][j] = p[i + j].z;
+    }
+    const LightTermsN t = light(lights, {hn::Load(d, in[0]), hn::Load(d, in[1]), hn::Load(d, in[2])},
+                                {hn::Load(d, in[3]), hn::Load(d, in[4]), hn::Load(d, in[5])}, s);
+    alignas(64) float o[6][N];
+    hn::Store(t.diffuse.x, d, o[0]), hn::Store(t.diffuse.y, d, o[1]), hn::Store(t.diffuse.z, d, o[2]);
+    hn::Store(t.specular.x, d, o[3]), hn::Store(t.specular.y, d, o[4]), hn::Store(t.specular.z, d, o[5]);
+    for (size_t j = 0; j < k; ++j) out[i + j] = {{o[0][j], o[1][j], o[2][j]}, {o[3][j], o[4][j], o[5][j]}};
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::shading
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace velocity::shading {
+
+HWY_EXPORT(LightForTest);
+
+void light_for_test(const EyeLights& lights, const Vec3* n, const Vec3* p, size_t count, const Specular& s,
+                    LightTerms* out) {
+  HWY_DYNAMIC_DISPATCH(LightForTest)(lights, n, p, count, s, out);
+}
 
 void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& out) {
   out.ambient = {};
@@ -25,3 +77,4 @@ void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& o
 }
 
 }  // namespace velocity::shading
+#endif  // HWY_ONCE

@@ -1,8 +1,8 @@
 // The lighting model, one function in two forms: this scalar one and the SIMD one in
 // lighting-inl.h (N points at a time), which computes the same terms in the same order.
 // The vertex stage lights vertices with it (flat, Gouraud), the pixel kernels light
-// pixels with it (Phong); a change to the model is made to both forms together.
-//
+// pixels with it (Phong); a change to the model is made to both forms together (the
+// unit test Lighting.SimdFormIsTheScalarForm holds them to each other).
 //
 //   colour = base * (ambient + sum_i diffuse_i * max(N.L_i, 0)) + Ks * sum_i light_i * max(R_i.V, 0)^n
 //
@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "velocity/math.hpp"
@@ -191,5 +192,10 @@ struct GlMaterial {
 // The scene's lights in eye space (`view`: world to eye), into `out` (its vectors keep
 // their storage). No lights: velocity::kDefaultLight, which is given in eye space.
 void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& out);
+
+// For tests: the SIMD form (lighting-inl.h, the instruction set chosen at run time) at
+// `count` points, normals `n` (unit) and positions `p`, into `out`.
+void light_for_test(const EyeLights& lights, const Vec3* n, const Vec3* p, size_t count, const Specular& s,
+                    LightTerms* out);
 
 }  // namespace velocity::shading

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "triangle/clip.hpp"
+#include "triangle/setup.hpp"
 #include "triangle/stage.hpp"
 
 namespace velocity::triangle {
@@ -14,7 +15,7 @@ using raster::RecordHeader;
 
 class BatchPrimitives {
  public:
-  BatchPrimitives(const DrawList& plan, const BatchDrawPlan& draw, StageContext& cx)
+  BatchPrimitives(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, StageContext& cx)
       : plan_(plan), d_(draw), b_(draw.batch), cx_(cx), stats_(cx.stats) {
     projected_ = plan.vertices.projected.data() + draw.vertex_base;
     codes_ = plan.vertices.codes.data() + draw.vertex_base;
@@ -134,8 +135,8 @@ class BatchPrimitives {
     stats_.points++;
   }
 
-  const DrawList& plan_;
-  const BatchDrawPlan& d_;
+  const geometry::DrawList& plan_;
+  const geometry::BatchDrawPlan& d_;
   const PrimitiveBatch& b_;
   StageContext& cx_;
   FrameStats& stats_;
@@ -146,11 +147,12 @@ class BatchPrimitives {
 
 }  // namespace
 
-void run_batch_job(const DrawList& plan, const BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end,
+                   StageContext& cx) {
   BatchPrimitives(plan, draw, cx).run(begin, end);
 }
 
-void run_clear_job(const ClearPlan& c, int width, int height, StageContext& cx) {
+void run_clear_job(const geometry::ClearPlan& c, int width, int height, StageContext& cx) {
   const int x0 = std::max(c.x0, 0), y0 = std::max(c.y0, 0);
   const int x1 = std::min(c.x1, width - 1), y1 = std::min(c.y1, height - 1);
   if (x0 > x1 || y0 > y1) return;

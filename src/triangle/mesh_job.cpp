@@ -4,6 +4,7 @@
 
 #include "triangle/clip.hpp"
 #include "triangle/cull.hpp"
+#include "triangle/setup.hpp"
 #include "triangle/stage.hpp"
 
 namespace velocity::triangle {
@@ -26,9 +27,9 @@ Vec3 clamp01(Vec3 c) { return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f
 
 class MeshTriangles {
  public:
-  MeshTriangles(const DrawList& plan, const MeshDrawPlan& draw, StageContext& cx)
+  MeshTriangles(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, StageContext& cx)
       : plan_(plan), d_(draw), mesh_(*draw.mesh), cx_(cx), stats_(cx.stats) {
-    const VertexArrays& va = plan.vertices;
+    const geometry::VertexArrays& va = plan.vertices;
     projected_ = va.projected.data() + draw.vertex_base;
     codes_ = va.codes.data() + draw.vertex_base;
     if (draw.light) diffuse_ = va.diffuse.data() + draw.vertex_base;
@@ -49,7 +50,7 @@ class MeshTriangles {
     job.triangles = mesh_.triangles.data(), job.begin = begin, job.end = end;
     job.projected = projected_, job.codes = codes_;
     job.cull_back = d_.cull_all, job.drop_empty = true;
-    const SetupParams& box = plan_.mesh_setup;
+    const geometry::SetupParams& box = plan_.mesh_setup;
     job.x0 = box.x0, job.y0 = box.y0, job.x1 = box.x1, job.y1 = box.y1;
     size_t nd = 0, nc = 0;
     CullCounts counts;
@@ -65,7 +66,7 @@ class MeshTriangles {
   }
 
  private:
-  const SlotPlan& slot_of(uint32_t f) const {
+  const geometry::SlotPlan& slot_of(uint32_t f) const {
     uint32_t local = 0;
     if (!d_.override_material) {
       if (!mesh_.face_materials.empty()) local = mesh_.face_materials[f] + 1;
@@ -99,7 +100,7 @@ class MeshTriangles {
 
   // Varyings of one corner, in the layout of the slot's kernel (raster/rasterize.hpp);
   // `flip` lights the back of a two-sided face.
-  void corner(const SlotPlan& s, uint32_t v, uint32_t f, bool flip, float* out) const {
+  void corner(const geometry::SlotPlan& s, uint32_t v, uint32_t f, bool flip, float* out) const {
     const Material& mat = *s.material;
     const Vec3 base =
         s.shading == Shading::Unlit && !mesh_.colors.empty() ? mesh_.colors[v] : base_color(v, f, mat);
@@ -146,7 +147,7 @@ class MeshTriangles {
   }
 
   // One colour per face: lit by the face normal at the centroid.
-  uint32_t flat_color(uint32_t f, const SlotPlan& s, bool flip) const {
+  uint32_t flat_color(uint32_t f, const geometry::SlotPlan& s, bool flip) const {
     const Material& mat = *s.material;
     const Triangle& t = mesh_.triangles[f];
     if (s.white) return 0xffffffffu;
@@ -182,7 +183,7 @@ class MeshTriangles {
     const Triangle& tri = mesh_.triangles[f];
     const uint32_t i0 = tri.v[0], i1 = tri.v[1], i2 = tri.v[2];
     const uint32_t any = codes_[i0] | codes_[i1] | codes_[i2];
-    const SlotPlan& s = slot_of(f);
+    const geometry::SlotPlan& s = slot_of(f);
     bool front;
     if (learnt & (kKnownFront | kKnownBack)) {
       front = learnt & kKnownFront;
@@ -245,7 +246,7 @@ class MeshTriangles {
     stats_.triangles_rasterized++;
   }
 
-  void edges(const Triangle& tri, const SlotPlan& s) {
+  void edges(const Triangle& tri, const geometry::SlotPlan& s) {
     const RecordInfo info{uint8_t(raster::KernelId::Flat), s.draw_state, s.line_color};
     for (int k = 0; k < 3; ++k) {
       const uint32_t a = tri.v[k], b = tri.v[(k + 1) % 3];
@@ -267,7 +268,7 @@ class MeshTriangles {
     }
   }
 
-  void points(const Triangle& tri, const SlotPlan& s) {
+  void points(const Triangle& tri, const geometry::SlotPlan& s) {
     // Each vertex once per job (a fixed range of faces, whatever the thread count),
     // however many of its faces share it.
     const RecordInfo info{uint8_t(raster::KernelId::Flat), s.draw_state, s.line_color};
@@ -285,8 +286,8 @@ class MeshTriangles {
     }
   }
 
-  const DrawList& plan_;
-  const MeshDrawPlan& d_;
+  const geometry::DrawList& plan_;
+  const geometry::MeshDrawPlan& d_;
   const Mesh& mesh_;
   StageContext& cx_;
   FrameStats& stats_;
@@ -298,7 +299,8 @@ class MeshTriangles {
 
 }  // namespace
 
-void run_mesh_job(const DrawList& plan, const MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end,
+                  StageContext& cx) {
   MeshTriangles(plan, draw, cx).run(begin, end);
 }
 

@@ -41,7 +41,7 @@ inline void fill_header(RecordHeader& r, RecordKind kind, const RecordInfo& info
 // anchored at the centre of the record's first box pixel; from the snapped positions,
 // so that they agree with coverage.
 void write_planes(RecordHeader& r, const ScreenVertex* const v[3], const float* const var[3], const int64_t X[3],
-                  const int64_t Y[3], int64_t area2, int nvar, const SetupParams& p) {
+                  const int64_t Y[3], int64_t area2, int nvar, const geometry::SetupParams& p) {
   float x[3], y[3];
   for (int i = 0; i < 3; ++i)
     x[i] = float(X[i] - X[0]) * (1.0f / kSubpixelOne), y[i] = float(Y[i] - Y[0]) * (1.0f / kSubpixelOne);
@@ -82,7 +82,7 @@ Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& 
 
 RecordHeader* setup_triangle(WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
                              const float* var0, const float* var1, const float* var2, int nvar,
-                             const RecordInfo& info, const SetupParams& p, uint32_t& offset) {
+                             const RecordInfo& info, const geometry::SetupParams& p, uint32_t& offset) {
   if (!v0.snapped || !v1.snapped || !v2.snapped) return nullptr;
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   const float* var[3] = {var0, var1, var2};
@@ -159,7 +159,7 @@ RecordHeader* setup_triangle(WorkerBins& bins, const ScreenVertex& v0, const Scr
 
 RecordHeader* setup_small_triangle(WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
                                    const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
-                                   int nvar, uint32_t mask, const RecordInfo& info, const SetupParams& p,
+                                   int nvar, uint32_t mask, const RecordInfo& info, const geometry::SetupParams& p,
                                    uint32_t& offset) {
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   const float* var[3] = {var0, var1, var2};
@@ -187,7 +187,7 @@ RecordHeader* setup_small_triangle(WorkerBins& bins, const ScreenVertex& v0, con
 }
 
 RecordHeader* setup_line(WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b, const float* va,
-                         const float* vb, int nvar, int width, const RecordInfo& info, const SetupParams& p,
+                         const float* vb, int nvar, int width, const RecordInfo& info, const geometry::SetupParams& p,
                          uint32_t& offset) {
   if (!a.snapped || !b.snapped) return nullptr;
   width = std::clamp(width, 1, 255);
@@ -220,7 +220,7 @@ RecordHeader* setup_line(WorkerBins& bins, const ScreenVertex& a, const ScreenVe
 }
 
 RecordHeader* setup_point(WorkerBins& bins, const ScreenVertex& pt, const float* var, int nvar, int size,
-                          const RecordInfo& info, const SetupParams& p, uint32_t& offset) {
+                          const RecordInfo& info, const geometry::SetupParams& p, uint32_t& offset) {
   if (!pt.snapped) return nullptr;
   size = std::clamp(size, 1, 255);
   // The pixels whose centres lie in [x - size/2, x + size/2) (and likewise in y).

@@ -51,16 +51,6 @@ enum class Facing { Front, Back, Degenerate };
 // with what the rasterizer covers.
 Facing facing(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
 
-// What a draw's primitives are set up with.
-struct SetupParams {
-  // Pixels a primitive may touch (inclusive): the framebuffer, narrowed by the
-  // viewport (triangles only) and the scissor.
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;   // triangles
-  int px0 = 0, py0 = 0, px1 = 0, py1 = 0;  // points and lines
-  bool affine = false;      // make 1/w constant: varyings interpolate linearly on screen
-  bool offset = false;      // glPolygonOffset: depth += factor * max slope + units * 2^-24
-  float offset_factor = 0, offset_units = 0;
-};
 
 // What every record of a primitive shares.
 struct RecordInfo {
@@ -76,7 +66,7 @@ struct RecordInfo {
 // caller's decision, made with facing().
 raster::RecordHeader* setup_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
                                      const ScreenVertex& v2, const float* var0, const float* var1, const float* var2,
-                                     int num_varyings, const RecordInfo& info, const SetupParams& params,
+                                     int num_varyings, const RecordInfo& info, const geometry::SetupParams& params,
                                      uint32_t& offset);
 
 // Sets up a small triangle whose covered pixel centres are already known: `mask`, the
@@ -87,15 +77,17 @@ raster::RecordHeader* setup_triangle(raster::WorkerBins& bins, const ScreenVerte
 raster::RecordHeader* setup_small_triangle(raster::WorkerBins& bins, const ScreenVertex& v0, const ScreenVertex& v1,
                                            const ScreenVertex& v2, const float* var0, const float* var1,
                                            const float* var2, int num_varyings, uint32_t mask, const RecordInfo& info,
-                                           const SetupParams& params, uint32_t& offset);
+                                           const geometry::SetupParams& params, uint32_t& offset);
 
 // A line `width` pixels wide from a to b, varyings interpolated along it.
 raster::RecordHeader* setup_line(raster::WorkerBins& bins, const ScreenVertex& a, const ScreenVertex& b,
                                  const float* var_a, const float* var_b, int num_varyings, int width,
-                                 const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+                                 const RecordInfo& info, const geometry::SetupParams& params,
+                                 uint32_t& offset);
 
 // A point: the size x size square of pixels centred on p, with p's varyings.
 raster::RecordHeader* setup_point(raster::WorkerBins& bins, const ScreenVertex& p, const float* var, int num_varyings,
-                                  int size, const RecordInfo& info, const SetupParams& params, uint32_t& offset);
+                                  int size, const RecordInfo& info, const geometry::SetupParams& params,
+                                  uint32_t& offset);
 
 }  // namespace velocity::triangle

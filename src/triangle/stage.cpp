@@ -7,8 +7,8 @@
 
 namespace velocity::triangle {
 
-void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const DrawList& plan, std::vector<Job>& jobs, int width,
-                        int height, bool painter) {
+void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs,
+                        int width, int height, bool painter) {
   bins.clear(painter);
   const int workers = pool.size();
   worker_stats_.assign(size_t(workers), FrameStats{});
@@ -47,7 +47,7 @@ void TriangleStage::add_stats(FrameStats& s) const {
   }
 }
 
-void TriangleStage::warn_nonfinite(const DrawList& plan, const std::vector<Job>& jobs) {
+void TriangleStage::warn_nonfinite(const geometry::DrawList& plan, const std::vector<Job>& jobs) {
   std::vector<size_t>& bad = nonfinite_;
   bad.assign(plan.meshes.size(), 0);
   for (const Job& j : jobs)

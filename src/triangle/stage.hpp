@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/thread_pool.hpp"
+#include "geometry/draw_plan.hpp"
 #include "raster/bins.hpp"
-#include "triangle/draw_plan.hpp"
 #include "velocity/renderer.hpp"
 
 namespace velocity::triangle {
@@ -44,9 +44,11 @@ struct StageContext {
 };
 
 // The triangle stage for one job: assemble, reject, cull, clip, set up and bin.
-void run_mesh_job(const DrawList& plan, const MeshDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
-void run_batch_job(const DrawList& plan, const BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
-void run_clear_job(const ClearPlan& clear, int width, int height, StageContext& cx);
+void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end,
+                  StageContext& cx);
+void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end,
+                   StageContext& cx);
+void run_clear_job(const geometry::ClearPlan& clear, int width, int height, StageContext& cx);
 
 // The whole stage for a frame, on every core: each worker runs jobs in increasing order
 // and sets up and bins into its own bins. Holds the workers' scratch across frames.
@@ -55,15 +57,15 @@ class TriangleStage {
   // Runs `jobs` (their nonfinite counts filled in) into `bins`, which are cleared first,
   // for a width x height framebuffer; `painter`: the records are deferred for
   // Bins::bin_deferred.
-  void run(ThreadPool& pool, raster::Bins& bins, const DrawList& plan, std::vector<Job>& jobs, int width, int height,
-           bool painter);
+  void run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs, int width,
+           int height, bool painter);
   // Adds the workers' counts of the last run to `stats`.
   void add_stats(FrameStats& stats) const;
   // One warning per mesh with non-finite vertices (not one per frame, nor per
   // triangle). The set only grows with distinct bad meshes; a long-running program that
   // makes new ones forever forgets them now and then (and may warn again) rather than
   // grow.
-  void warn_nonfinite(const DrawList& plan, const std::vector<Job>& jobs);
+  void warn_nonfinite(const geometry::DrawList& plan, const std::vector<Job>& jobs);
 
  private:
   std::vector<FrameStats> worker_stats_;

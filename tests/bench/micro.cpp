@@ -97,7 +97,7 @@ void SetUpAndBin(benchmark::State& state, bool bin) {
   triangle::cull_triangles(job, direct.data(), info.data(), nd, clip.data(), nc, counts);
   raster::Bins bins;
   bins.resize(kW, kH, 1);
-  triangle::SetupParams p;
+  geometry::SetupParams p;
   p.x1 = p.px1 = kW - 1, p.y1 = p.py1 = kH - 1;
   auto sv = [&](uint32_t v) { return triangle::ScreenVertex::projected(s.projected[v], 0); };
   for (auto _ : state) {

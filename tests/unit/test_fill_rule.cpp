@@ -15,8 +15,8 @@ namespace {
 
 constexpr int W = 203, H = 137;  // not tile multiples, on purpose
 
-SetupParams screen_box() {
-  SetupParams p;
+velocity::geometry::SetupParams screen_box() {
+  velocity::geometry::SetupParams p;
   p.x1 = p.px1 = W - 1;
   p.y1 = p.py1 = H - 1;
   return p;

@@ -10,12 +10,11 @@
 #include "geometry/viewport.hpp"
 #include "raster/contract.hpp"
 #include "shading/lighting.hpp"
-#include "triangle/setup.hpp"
 #include "velocity/mesh.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
 
-namespace velocity::triangle {
+namespace velocity::geometry {
 
 // How one material of a mesh draw is drawn.
 struct SlotPlan {
@@ -63,7 +62,7 @@ struct BatchDrawPlan {
   bool textured = false, fog = false;
   int num_varyings = 0;
   uint32_t primitive_count = 0;
-  geometry::ViewportMap viewport{};
+  ViewportMap viewport{};
   SetupParams setup;
   size_t vertex_base = 0;
 };
@@ -75,7 +74,7 @@ struct ClearPlan {
 
 // The per-vertex arrays of a frame, shared by its draws (each at its vertex_base).
 struct VertexArrays {
-  std::vector<geometry::ProjectedVertex> projected;
+  std::vector<ProjectedVertex> projected;
   std::vector<uint32_t> codes;
   std::vector<Vec3> diffuse, specular, normal, eye;
 };
@@ -83,8 +82,8 @@ struct VertexArrays {
 // A frame's draws: everything the triangle stage reads, immutable while it runs.
 struct DrawList {
   int width = 0, height = 0;  // the sample buffer
-  geometry::GuardBand guard{};
-  geometry::ViewportMap viewport{};     // the whole framebuffer, for meshes
+  GuardBand guard{};
+  ViewportMap viewport{};     // the whole framebuffer, for meshes
   shading::EyeLights lights;
   RenderOptions options;
   SetupParams mesh_setup;
@@ -106,4 +105,4 @@ void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, Mesh
 BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawState>& states, const PrimitiveBatch& batch,
                               const PixelState& state, uint32_t primitives);
 
-}  // namespace velocity::triangle
+}  // namespace velocity::geometry

@@ -1,11 +1,11 @@
 // Planning a draw: everything decided once per draw, before any vertex is touched.
-#include "triangle/draw_plan.hpp"
+#include "geometry/draw_plan.hpp"
 
 #include <algorithm>
 
 #include "velocity/error.hpp"
 
-namespace velocity::triangle {
+namespace velocity::geometry {
 
 namespace {
 
@@ -122,7 +122,7 @@ BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawStat
   const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
   const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
-  d.viewport = geometry::viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+  d.viewport = viewport_map(vx, vy, vw, vh, std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
   // Triangles stay inside the viewport (the view volume's sides are not clipped, they
   // are this box); points and wide lines may reach past it by half their size.
   SetupParams& s = d.setup;
@@ -146,4 +146,4 @@ BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawStat
   return d;
 }
 
-}  // namespace velocity::triangle
+}  // namespace velocity::geometry
