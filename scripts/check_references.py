@@ -8,7 +8,8 @@ checks each against the tree. A path is resolved from the project root, from the
 folders the build puts on the include path (src/, include/, gl/include/), from the
 folder of the file that names it and each folder above it, from the folder beside the
 project and from /usr/include (system headers); build outputs (build*/), ../shared/, install locations and paths with
-wildcards or placeholders are not checked.
+wildcards or placeholders are not checked. A Markdown link's #fragment must name a
+heading of the page it points to.
 
     scripts/check_references.py [ROOT]     exit 0: none stale; 1: each stale one listed
 """
@@ -21,12 +22,31 @@ ROOT = Path(sys.argv[1] if len(sys.argv) > 1 else Path(__file__).resolve().paren
 TOP = ("src", "include", "gl", "present", "python", "apps", "tests", "scripts", "docs", "cmake", ".ci")
 SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".c", ".py", ".pyi", ".sh", ".cmake", ".txt", ".in", ".md", ".map"}
 SEARCH_ROOTS = ("", "src", "include", "gl/include", "python", "present")
-# Where things are installed, named in comments: not in the tree.
-INSTALLED = ("include/velocity-gl/",)
+# Not in the tree: where things are installed, and other projects' trees that comments
+# name (Mesa's src/mesa/main/, which pGL's layout follows).
+ELSEWHERE = ("include/velocity-gl/", "src/mesa/")
 # A path: an optional ./, a first folder of the project (or, for include-style names, any
 # folder the resolver knows), then /-separated name parts ending in a file or a slash.
 PATH = re.compile(r"(?<![\w./~$-])((?:\./)?[A-Za-z_.][\w.-]*(?:/[\w.*<>{}-]+)+/?)")
 MD_LINK = re.compile(r"\]\(([^)#\s]+)(?:#[^)]*)?\)")
+
+
+def slug(heading):
+    """GitHub's anchor for a Markdown heading: lower case, punctuation dropped, spaces to -."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
+def anchors(path):
+    text = path.read_text(encoding="utf-8")
+    return {slug(m) for m in re.findall(r"^#+ (.+)$", text, re.MULTILINE)}
+
+
+def stale_anchors(rel, line):
+    """The #fragments of this line's Markdown links that name no heading."""
+    for target, fragment in re.findall(r"\]\(([^)#\s]*)#([^)\s]+)\)", line):
+        page = (ROOT / rel.parent / target) if target else ROOT / rel
+        if page.suffix == ".md" and page.exists() and fragment not in anchors(page):
+            yield f"{target}#{fragment}"
 
 
 def tracked_files():
@@ -43,7 +63,7 @@ def checkable(ref):
     if any(c in ref for c in "*<>{}$") or "..." in ref:
         return False
     first = ref.lstrip("./").split("/")[0]
-    if first.startswith("build") or first == "shared" or ref.startswith(("../",) + INSTALLED) or "://" in ref:
+    if first.startswith("build") or first == "shared" or ref.startswith(("../",) + ELSEWHERE) or "://" in ref:
         return False
     return True
 
@@ -73,6 +93,8 @@ def main():
             continue
         for lineno, line in enumerate(text.splitlines(), 1):
             refs = set(MD_LINK.findall(line)) if rel.suffix == ".md" else set()
+            if rel.suffix == ".md":
+                stale += [f"{rel}:{lineno}: {a}" for a in stale_anchors(rel, line)]
             refs |= {m for m in PATH.findall(line) if looks_like_project_path(m)}
             for ref in sorted(refs):
                 ref = ref.rstrip(".,;:)'\"`")
