@@ -593,7 +593,10 @@ void glListBase(GLuint base) { LIST(if (!c.in_begin_error()) c.set_list_base(bas
 GLenum glGetError(void) {
   Context* c = current();
   if (!c) return GL_NO_ERROR;
-  if (c->in_begin()) return GL_INVALID_OPERATION;
+  // Between glBegin and glEnd the call itself is the error: it is recorded (unless an
+  // earlier one is) and 0 returned, as Mesa does; the first glGetError after glEnd
+  // reports it, once.
+  if (c->in_begin_error()) return GL_NO_ERROR;
   return c->take_error();
 }
 

@@ -25,6 +25,21 @@ int main(int argc, char** argv) {
   glEnable(GL_DEPTH_TEST);
   glEnd();
   err("enable_in_begin");
+  /* glGetError between glBegin and glEnd: the call is the error and returns 0, so a
+   * loop that drains the errors there ends; glEnd's glGetError reports it once. */
+  glBegin(GL_TRIANGLES);
+  err("geterror_in_begin");
+  for (i = 0; i < 8 && glGetError() != GL_NO_ERROR; ++i) continue;
+  conf_value("geterror_in_begin_drained", i);
+  glEnd();
+  err("geterror_after_begin");
+  err("geterror_after_begin_again");
+  glEnable(0x1234);
+  glBegin(GL_POINTS);
+  err("geterror_in_begin_keeps_earlier");
+  glEnd();
+  err("geterror_earlier_after_end");
+  err("geterror_earlier_after_end_again");
   glEnable(0x1234);
   err("bad_enable");
   glBegin(0x20);
