@@ -188,15 +188,17 @@ void Context::polygon_offset(float factor, float units) {
 void Context::point_size(float s) {
   if (in_begin_error()) return;
   if (!(s > 0)) return error(GL_INVALID_VALUE);
-  raster_.point_size = std::min(s, 64.0f);
-  changed();
+  s = std::min(s, 64.0f);
+  if (s != raster_.point_size) changed();  // the open batch keeps the size it was drawn with
+  raster_.point_size = s;
 }
 
 void Context::line_width(float w) {
   if (in_begin_error()) return;
   if (!(w > 0)) return error(GL_INVALID_VALUE);
-  raster_.line_width = std::min(w, 64.0f);
-  changed();
+  w = std::min(w, 64.0f);
+  if (w != raster_.line_width) changed();  // (as glPointSize)
+  raster_.line_width = w;
 }
 
 }  // namespace velocity::gl
