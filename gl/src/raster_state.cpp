@@ -188,7 +188,7 @@ void Context::polygon_offset(float factor, float units) {
 void Context::point_size(float s) {
   if (in_begin_error()) return;
   if (!(s > 0)) return error(GL_INVALID_VALUE);
-  s = std::min(s, 64.0f);
+  s = std::min(s, kMaxPointLineSize);
   if (s != raster_.point_size) changed();  // the open batch keeps the size it was drawn with
   raster_.point_size = s;
 }
@@ -196,7 +196,7 @@ void Context::point_size(float s) {
 void Context::line_width(float w) {
   if (in_begin_error()) return;
   if (!(w > 0)) return error(GL_INVALID_VALUE);
-  w = std::min(w, 64.0f);
+  w = std::min(w, kMaxPointLineSize);
   if (w != raster_.line_width) changed();  // (as glPointSize)
   raster_.line_width = w;
 }
