@@ -154,7 +154,7 @@ PixelState Context::pixel_state(bool offset) {
       st.env = texture_.env_mode == GL_REPLACE ? TexEnvMode::Replace
                : texture_.env_mode == GL_DECAL ? TexEnvMode::Decal
                : texture_.env_mode == GL_BLEND ? TexEnvMode::Blend
-               : texture_.env_mode == 0x0104   ? TexEnvMode::Add
+               : texture_.env_mode == GL_ADD    ? TexEnvMode::Add
                                        : TexEnvMode::Modulate;
       st.env_color = texture_.env_color;
       using T = SamplerState::Texel;

@@ -148,7 +148,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_NORMAL_ARRAY: return arrays.normal.enabled;
     case GL_COLOR_ARRAY: return arrays.color.enabled;
     case GL_TEXTURE_COORD_ARRAY: return arrays.texcoord.enabled;
-    case 0x0BD0: return true;  // GL_DITHER
+    case GL_DITHER: return true;
     default: *known = false; return false;
   }
 }

@@ -186,6 +186,7 @@ typedef double GLclampd;
 #define GL_ALPHA_TEST_REF 0x0BC2
 #define GL_ALPHA_TEST_FUNC 0x0BC1
 #define GL_BLEND 0x0BE2
+#define GL_DITHER 0x0BD0
 #define GL_BLEND_SRC 0x0BE1
 #define GL_BLEND_DST 0x0BE0
 #define GL_ZERO 0
@@ -207,6 +208,7 @@ typedef double GLclampd;
 #define GL_FOG_COLOR 0x0B66
 #define GL_FOG_START 0x0B63
 #define GL_FOG_END 0x0B64
+#define GL_FOG_INDEX 0x0B61
 #define GL_LINEAR 0x2601
 #define GL_EXP 0x0800
 #define GL_EXP2 0x0801
@@ -220,6 +222,16 @@ typedef double GLclampd;
 #define GL_COLOR_INDEX 0x1900
 #define GL_LUMINANCE 0x1909
 #define GL_LUMINANCE_ALPHA 0x190A
+#define GL_RED 0x1903
+#define GL_GREEN 0x1904
+#define GL_BLUE 0x1905
+#define GL_ALPHA8 0x803C
+#define GL_LUMINANCE8 0x8040
+#define GL_LUMINANCE8_ALPHA8 0x8045
+#define GL_INTENSITY 0x8049
+#define GL_INTENSITY8 0x804B
+#define GL_RGB8 0x8051
+#define GL_RGBA8 0x8058
 #define GL_BGR 0x80E0
 #define GL_BGRA 0x80E1
 #define GL_RED_BITS 0x0D52
@@ -305,6 +317,8 @@ typedef double GLclampd;
 /* glClear */
 #define GL_DEPTH_BUFFER_BIT 0x00000100
 #define GL_COLOR_BUFFER_BIT 0x00004000
+#define GL_ACCUM_BUFFER_BIT 0x00000200
+#define GL_STENCIL_BUFFER_BIT 0x00000400
 
 /* Textures */
 #define GL_TEXTURE_2D 0x0DE1
@@ -315,6 +329,7 @@ typedef double GLclampd;
 #define GL_MODULATE 0x2100
 #define GL_DECAL 0x2101
 #define GL_REPLACE 0x1E01
+#define GL_ADD 0x0104
 #define GL_TEXTURE_MAG_FILTER 0x2800
 #define GL_TEXTURE_MIN_FILTER 0x2801
 #define GL_TEXTURE_WRAP_S 0x2802
