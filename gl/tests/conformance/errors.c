@@ -128,6 +128,23 @@ int main(int argc, char** argv) {
   conf_value("max_lights", iv[0]);
   glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, iv);
   conf_value("modelview_depth", iv[0]);
+  /* GL_EXTENSIONS names each extension pGL has (token-only ones, all in Mesa's list
+   * too); GLU 1.1's gluGetString. */
+  {
+    static const char* const names[] = {"GL_ARB_texture_env_add", "GL_ARB_texture_mirrored_repeat",
+                                        "GL_ARB_texture_non_power_of_two", "GL_EXT_bgra", "GL_EXT_rescale_normal",
+                                        "GL_EXT_texture_edge_clamp", "GL_EXT_texture_env_add",
+                                        "GL_IBM_texture_mirrored_repeat", "GL_SGIS_texture_edge_clamp"};
+    const char* ext = (const char*)glGetString(GL_EXTENSIONS);
+    const char* glu_version = (const char*)gluGetString(GLU_VERSION);
+    for (i = 0; i < 9; ++i) conf_value(names[i], ext && strstr(ext, names[i]) != NULL);
+#ifdef GLU_VERSION_1_1
+    conf_value("glu_version_1_1", 1);
+#endif
+    conf_value("glu_version_major", glu_version ? atoi(glu_version) : -1);
+    conf_value("glu_extensions", gluGetString(GLU_EXTENSIONS) != NULL);
+    conf_value("glu_get_string_bad", gluGetString(GL_VENDOR) == NULL);
+  }
   /* The framebuffer's and the implementation's values that answered GL_INVALID_ENUM
    * (the context has no stencil or accumulation buffer, as conf_init asks Mesa). */
   query("stencil_bits", GL_STENCIL_BITS, 1);
