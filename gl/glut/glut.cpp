@@ -9,12 +9,19 @@
 //
 // Misuse follows freeglut: a function that needs a window, called before
 // glutCreateWindow, prints what was wrong and ends the program (exit(1)); so does a
-// window that cannot be opened (no display).
+// window that cannot be opened (no display). SIGINT and SIGTERM end the program as they
+// end freeglut's (which installs no handler for them): SDL's handlers, which would make
+// them a quit event that only the main loop sees, are taken out again.
+//
+// A program may never return to the main loop (a display callback that loops, calling
+// glutSwapBuffers or glutPostRedisplay): VELOCITY_GLUT_FRAMES counts its frames all the
+// same, and ends the program when the loop cannot be left (end_if_past_limit).
 #include <GL/glut.h>
 #include <GL/osmesa.h>
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -80,8 +87,15 @@ struct Glut {
   std::optional<velocity::realtime::ScriptPlayer> script;
   long max_frames = 0;
   std::string record_dir;
+  long record_limit = 0;  // frames recorded at most
   long frames = 0;
+  bool in_main_loop = false, in_display = false;
+  int posts_in_display = 0;  // glutPostRedisplay calls during this display callback
+  long frames_at_post = 0;   // `frames` at the last of them
 };
+
+// VELOCITY_GLUT_RECORD's bound without VELOCITY_GLUT_FRAMES (with it, that many).
+constexpr long kMaxRecordedFrames = 1000;
 
 // Never destroyed: GLUT programs end with exit() from inside the main loop, and the
 // window must outlive everything that may still run then.
@@ -139,10 +153,33 @@ void release_window() {
 // libraries while their own exit handlers may still run).
 void at_exit() { release_context(); }
 
+// One frame more, wherever it comes from (a swap, a single-buffered display callback's
+// end, a display callback's repeated glutPostRedisplay): the last of
+// VELOCITY_GLUT_FRAMES asks the main loop to stop.
+void count_frame(Glut& g) {
+  ++g.frames;
+  if (g.max_frames > 0 && g.frames >= g.max_frames) g.leave = true;
+}
+
+// Called by a callback about to make a frame: past VELOCITY_GLUT_FRAMES, the main loop
+// was asked to stop and the callback went on without returning to it (a display
+// callback that loops): the program ends here (exit 0, as when its window closes)
+// rather than run on.
+void end_if_past_limit(const Glut& g) {
+  if (!g.in_main_loop || g.max_frames == 0 || g.frames < g.max_frames) return;
+  std::fflush(stdout);
+  std::fprintf(stderr, "velocity-glut: %ld frames shown (VELOCITY_GLUT_FRAMES) and the program does not return "
+               "to the main loop: it ends\n", g.max_frames);
+  std::exit(0);
+}
+
 void show_frame(Glut& g) {
   glFinish();
   g.window->present(g.pixels.data(), g.width, g.height);
-  if (!g.record_dir.empty()) {
+  if (!g.record_dir.empty() && g.frames == g.record_limit && g.max_frames == 0)
+    std::fprintf(stderr, "velocity-glut: VELOCITY_GLUT_RECORD: %ld frames recorded, no more (VELOCITY_GLUT_FRAMES "
+                 "sets how many)\n", g.record_limit);
+  if (!g.record_dir.empty() && g.frames < g.record_limit) {
     velocity::Image image(g.width, g.height);
     std::copy(g.pixels.begin(), g.pixels.end(), image.pixels.begin());
     char name[32];
@@ -153,8 +190,7 @@ void show_frame(Glut& g) {
       fail(e.what());
     }
   }
-  ++g.frames;
-  if (g.max_frames > 0 && g.frames >= g.max_frames) g.leave = true;
+  count_frame(g);
 }
 
 // GLUT's special keys for the presenter's, or 0 for none.
@@ -270,6 +306,7 @@ void glutInit(int* argcp, char** argv) {
     std::filesystem::create_directories(s, ec);
     if (ec) fail(std::string("VELOCITY_GLUT_RECORD: cannot create ") + s + ": " + ec.message());
     g.record_dir = s;
+    g.record_limit = g.max_frames > 0 ? g.max_frames : kMaxRecordedFrames;
   }
 }
 
@@ -288,11 +325,20 @@ int glutCreateWindow(const char* title) {
   options.title = title ? title : "";
   options.width = std::clamp(g.init_width, 1, 16384), options.height = std::clamp(g.init_height, 1, 16384);
   options.at_origin = g.init_x == 0 && g.init_y == 0;
+  // SDL turns SIGINT and SIGTERM into a quit event when their action is the default;
+  // the actions they had are put back, so that they end the program wherever it is
+  // (a callback that never returns included), as they end freeglut's: by the signal
+  // (a shell's status 128 + the signal's number).
+  struct sigaction sigint_action {}, sigterm_action {};
+  sigaction(SIGINT, nullptr, &sigint_action);
+  sigaction(SIGTERM, nullptr, &sigterm_action);
   try {
     g.window = std::make_unique<velocity::present::SdlPresenter>(options);
   } catch (const velocity::Error& e) {
     fail(std::string("cannot open a window: ") + e.what());
   }
+  sigaction(SIGINT, &sigint_action, nullptr);
+  sigaction(SIGTERM, &sigterm_action, nullptr);
   g.double_buffered = g.display_mode & GLUT_DOUBLE;
   g.context = OSMesaCreateContextExt(OSMESA_RGBA, (g.display_mode & GLUT_DEPTH) ? 24 : 0,
                                      (g.display_mode & GLUT_STENCIL) ? 8 : 0, 0, nullptr);
@@ -321,9 +367,25 @@ void glutReshapeWindow(int width, int height) {
 
 void glutFullScreen(void) { need_window("glutFullScreen").window->toggle_fullscreen(); }
 
-void glutPostRedisplay(void) { need_window("glutPostRedisplay").redisplay = true; }
+void glutPostRedisplay(void) {
+  Glut& g = need_window("glutPostRedisplay");
+  g.redisplay = true;
+  // A display callback posts its next redisplay once; posting again is a loop inside
+  // it, each turn a frame (counted here unless a glutSwapBuffers counted it).
+  if (g.in_display) {
+    if (g.posts_in_display++ > 0 && g.frames == g.frames_at_post) {
+      end_if_past_limit(g);
+      count_frame(g);
+    }
+    g.frames_at_post = g.frames;
+  }
+}
 
-void glutSwapBuffers(void) { show_frame(need_window("glutSwapBuffers")); }
+void glutSwapBuffers(void) {
+  Glut& g = need_window("glutSwapBuffers");
+  end_if_past_limit(g);
+  show_frame(g);
+}
 
 void glutDisplayFunc(void (*callback)(void)) {
   if (!callback) fail("glutDisplayFunc: the display callback cannot be NULL");
@@ -352,6 +414,7 @@ void glutMainLoop(void) {
   if (!g.display) fail("glutMainLoop: no display callback for the window (glutDisplayFunc)");
   std::vector<InputEvent> events;
   g.leave = false;
+  g.in_main_loop = true;
   while (!g.leave) {
     events.clear();
     g.window->poll(events);
@@ -373,7 +436,9 @@ void glutMainLoop(void) {
     if (g.leave) break;
     if (g.redisplay) {
       g.redisplay = false;
+      g.in_display = true, g.posts_in_display = 0;
       g.display();
+      g.in_display = false;
       if (!g.double_buffered) show_frame(g);
     } else if (g.idle) {
       g.idle();
@@ -383,6 +448,7 @@ void glutMainLoop(void) {
     }
   }
   g.leave = false;
+  g.in_main_loop = false;
 }
 
 void glutLeaveMainLoop(void) { glut().leave = true; }

@@ -593,7 +593,10 @@ void glListBase(GLuint base) { LIST(if (!c.in_begin_error()) c.set_list_base(bas
 GLenum glGetError(void) {
   Context* c = current();
   if (!c) return GL_NO_ERROR;
-  if (c->in_begin()) return GL_INVALID_OPERATION;
+  // Between glBegin and glEnd the call itself is the error: it is recorded (unless an
+  // earlier one is) and 0 returned, as Mesa does; the first glGetError after glEnd
+  // reports it, once.
+  if (c->in_begin_error()) return GL_NO_ERROR;
   return c->take_error();
 }
 
@@ -624,7 +627,14 @@ const GLubyte* glGetString(GLenum name) {
     case GL_VENDOR: s = "Velocity"; break;
     case GL_RENDERER: s = "Velocity pGL (software, tile rasterizer)"; break;
     case GL_VERSION: s = "1.4 Velocity pGL 0.1 (a subset: docs/gl.md)"; break;
-    case GL_EXTENSIONS: s = ""; break;
+    // The extensions whose whole functionality pGL has (each only names tokens that
+    // gl.h defines and the library accepts; none adds a function): GL_ADD, NPOT
+    // sizes, BGR/BGRA pixels, GL_RESCALE_NORMAL, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT.
+    case GL_EXTENSIONS:
+      s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
+          "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
+          "GL_SGIS_texture_edge_clamp";
+      break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }
   return reinterpret_cast<const GLubyte*>(s);

@@ -5,7 +5,8 @@
 // face culling, polygon modes, flat shading with GL's provoking vertex — and hands the
 // renderer clip-space points, lines and triangles with per-fragment state
 // (velocity::PrimitiveBatch + PixelState). Consecutive primitives of one kind with the
-// same per-fragment state go into one batch; a batch is handed over when that changes.
+// same per-fragment state, viewport, depth range, point size and line width go into one
+// batch, which keeps the state it opened with; a batch is handed over when that changes.
 // The renderer keeps a frame open until something needs the pixels (glFinish,
 // glFlush, glReadPixels, OSMesaMakeCurrent, OSMesaGetDepthBuffer): then the frame runs
 // on every core and the colour lands in the caller's buffer.
@@ -185,6 +186,10 @@ class Context {
     PrimitiveKind kind = PrimitiveKind::Triangles;
     bool offset = false;
     PixelState state;
+    // What the renderer's batch carries besides PixelState, as it was when the batch
+    // opened (a width or height of 0 here is an empty viewport: nothing is drawn).
+    Viewport viewport;
+    float point_size = 1, line_width = 1;
     std::vector<Vec4> position, color, texcoord;
     std::vector<float> fog;
     std::vector<uint32_t> index;

@@ -1,5 +1,7 @@
 // Frames and batches: the vertex stage's primitives go to the renderer in batches of
-// one kind and one per-fragment state (PixelState, from the raster and texture state);
+// one kind and one per-fragment state (PixelState, from the raster and texture state)
+// and one viewport, depth range, point size and line width, each taken when the batch
+// opens: state set after drawing changes only what is drawn after it;
 // a frame runs when the pixels are needed, and its colour (and depth) go to the
 // caller's buffer.
 #include <algorithm>
@@ -68,14 +70,12 @@ void Context::submit_pending() {
   b.vertex_count = uint32_t(kept.position.size());
   b.indices = kept.index.data();
   b.index_count = uint32_t(kept.index.size());
-  b.viewport.x = transform_.viewport.x;
-  b.viewport.y = transform_.viewport.y;  // the framebuffer is kept bottom row first (see update_derived)
-  b.viewport.width = std::max(transform_.viewport.width, 1);
-  b.viewport.height = std::max(transform_.viewport.height, 1);
-  b.viewport.depth_near = transform_.depth_near, b.viewport.depth_far = transform_.depth_far;
-  b.point_size = std::max(1.0f, raster_.point_size);
-  b.line_width = std::max(1.0f, raster_.line_width);
-  if (transform_.viewport.width == 0 || transform_.viewport.height == 0) return;  // nothing is drawn in an empty viewport
+  // The viewport, depth range and sizes the batch's primitives were drawn with (set
+  // when it opened, in target()), not the context's now.
+  b.viewport = kept.viewport;
+  b.point_size = kept.point_size;
+  b.line_width = kept.line_width;
+  if (kept.viewport.width == 0 || kept.viewport.height == 0) return;  // nothing is drawn in an empty viewport
   renderer_->draw(b, kept.state);
   frame_vertices_ += kept.index.size();
   if (frame_vertices_ > kMaxVerticesPerFrame) run_frame();  // bounded memory in a frame never flushed
@@ -154,7 +154,7 @@ PixelState Context::pixel_state(bool offset) {
       st.env = texture_.env_mode == GL_REPLACE ? TexEnvMode::Replace
                : texture_.env_mode == GL_DECAL ? TexEnvMode::Decal
                : texture_.env_mode == GL_BLEND ? TexEnvMode::Blend
-               : texture_.env_mode == 0x0104   ? TexEnvMode::Add
+               : texture_.env_mode == GL_ADD    ? TexEnvMode::Add
                                        : TexEnvMode::Modulate;
       st.env_color = texture_.env_color;
       using T = SamplerState::Texel;
@@ -215,6 +215,11 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
     pending_.kind = kind;
     pending_.offset = offset;
     pending_.state = pixel_state(offset);
+    const Box& vp = transform_.viewport;
+    // The framebuffer is kept bottom row first (see update_derived): GL's y as it is.
+    pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};
+    pending_.point_size = std::max(1.0f, raster_.point_size);
+    pending_.line_width = std::max(1.0f, raster_.line_width);
     have_pending_ = true;
     if (++pending_gen_ == 0) {  // wrapped: forget every old mark
       for (Emitted& e : emitted_) e = {};

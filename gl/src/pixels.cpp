@@ -11,7 +11,7 @@ int format_components(GLenum format) {
     case GL_RGBA: case GL_BGRA: return 4;
     case GL_RGB: case GL_BGR: return 3;
     case GL_LUMINANCE_ALPHA: return 2;
-    case GL_LUMINANCE: case GL_ALPHA: case 0x1903: /* GL_RED */ return 1;
+    case GL_LUMINANCE: case GL_ALPHA: case GL_RED: return 1;
     default: return 0;
   }
 }

@@ -1,6 +1,7 @@
 // Queries: glGet* (as doubles, converted by each entry point) and glIsEnabled. The
 // light and material queries are with their state (lighting.cpp).
 #include "context.hpp"
+#include "raster/contract.hpp"  // kSubpixelBits
 
 namespace velocity::gl {
 
@@ -80,6 +81,32 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out = {8}; return true;
     case GL_ALPHA_BITS: out = {format_ == GL_RGB || format_ == 0x4 ? 0.0 : 8.0}; return true;
     case GL_DEPTH_BITS: out = {depth_bits_ > 0 ? 24.0 : 0.0}; return true;
+    // The framebuffer: one RGBA colour buffer (OSMesa's, single-buffered: GL_FRONT),
+    // a depth buffer; no stencil, accumulation or auxiliary buffers, no colour index,
+    // no stereo, no multisampling (all 0 until they exist, whatever the context asked for).
+    case GL_STENCIL_BITS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
+    case GL_ACCUM_ALPHA_BITS: case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
+    case GL_DOUBLEBUFFER: case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
+      out = {0}; return true;
+    case GL_RGBA_MODE: out = {1}; return true;
+    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = {double(GL_FRONT)}; return true;
+    // The rasterizer's: window coordinates snap to 24.8 fixed point; points and lines
+    // are aliased, of a whole number of pixels (the size rounded), 1 to 64 (glPointSize,
+    // glLineWidth clamp there). There is no antialiasing: the "smooth" ranges
+    // (GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE) are the sizes that are drawn.
+    case GL_SUBPIXEL_BITS: out = {double(raster::kSubpixelBits)}; return true;
+    case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: case GL_ALIASED_POINT_SIZE_RANGE:
+    case GL_ALIASED_LINE_WIDTH_RANGE:
+      out = {1, double(kMaxPointLineSize)}; return true;
+    case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
+    // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
+    // so a program that asks learns that they are missing (docs/gl.md): clip planes,
+    // evaluators, glPushAttrib and glPushClientAttrib, the selection name stack, pixel maps.
+    case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_CLIP_PLANES: case GL_MAX_EVAL_ORDER:
+    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: case GL_MAX_NAME_STACK_DEPTH:
+    case GL_MAX_PIXEL_MAP_TABLE:
+      out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT:
       out = {double(raster_.hints[pname - GL_PERSPECTIVE_CORRECTION_HINT])};
@@ -121,7 +148,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_NORMAL_ARRAY: return arrays.normal.enabled;
     case GL_COLOR_ARRAY: return arrays.color.enabled;
     case GL_TEXTURE_COORD_ARRAY: return arrays.texcoord.enabled;
-    case 0x0BD0: return true;  // GL_DITHER
+    case GL_DITHER: return true;
     default: *known = false; return false;
   }
 }

@@ -45,7 +45,7 @@ void Context::enable(GLenum cap, bool on) {
     case GL_POLYGON_OFFSET_POINT: raster_.offset_point = on; return;
     // Accepted and without effect on what is drawn here (aliased points and lines,
     // colour dithering of an 8-bit framebuffer):
-    case 0x0BD0: /* GL_DITHER */ return;
+    case GL_DITHER: return;
     default: return error(GL_INVALID_ENUM);
   }
   changed();
@@ -60,7 +60,7 @@ void Context::scissor(GLint x, GLint y, GLsizei w, GLsizei h) {
 
 void Context::clear(GLbitfield mask) {
   if (in_begin_error()) return;
-  if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | 0x400 /* stencil */ | 0x200 /* accum */))
+  if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
   if (!renderer_) return;
   submit_pending();
@@ -144,7 +144,7 @@ void Context::fog(GLenum pname, const float* v) {
     case GL_FOG_START: raster_.fog_start = v[0]; break;
     case GL_FOG_END: raster_.fog_end = v[0]; break;
     case GL_FOG_COLOR: raster_.fog_color = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])}; break;
-    case 0x0B61: /* GL_FOG_INDEX */ break;
+    case GL_FOG_INDEX: break;
     default: return error(GL_INVALID_ENUM);
   }
   changed();
@@ -188,15 +188,17 @@ void Context::polygon_offset(float factor, float units) {
 void Context::point_size(float s) {
   if (in_begin_error()) return;
   if (!(s > 0)) return error(GL_INVALID_VALUE);
-  raster_.point_size = std::min(s, 64.0f);
-  changed();
+  s = std::min(s, kMaxPointLineSize);
+  if (s != raster_.point_size) changed();  // the open batch keeps the size it was drawn with
+  raster_.point_size = s;
 }
 
 void Context::line_width(float w) {
   if (in_begin_error()) return;
   if (!(w > 0)) return error(GL_INVALID_VALUE);
-  raster_.line_width = std::min(w, 64.0f);
-  changed();
+  w = std::min(w, kMaxPointLineSize);
+  if (w != raster_.line_width) changed();  // (as glPointSize)
+  raster_.line_width = w;
 }
 
 }  // namespace velocity::gl

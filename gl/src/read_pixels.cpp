@@ -13,8 +13,8 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   switch (format) {
     case GL_RGBA: case GL_BGRA: comps = 4; break;
     case GL_RGB: case GL_BGR: comps = 3; break;
-    case GL_ALPHA: case GL_LUMINANCE: case 0x1903: /* GL_RED */ case 0x1904: /* GL_GREEN */
-    case 0x1905: /* GL_BLUE */ case GL_DEPTH_COMPONENT:
+    case GL_ALPHA: case GL_LUMINANCE: case GL_RED: case GL_GREEN:
+    case GL_BLUE: case GL_DEPTH_COMPONENT:
       comps = 1;
       break;
     default: return error(GL_INVALID_ENUM);
@@ -57,8 +57,8 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
           case GL_BGR: c[0] = b, c[1] = g, c[2] = r; break;
           case GL_ALPHA: c[0] = a; break;
           case GL_LUMINANCE: c[0] = std::min(1.0f, r + g + b); break;
-          case 0x1903: c[0] = r; break;
-          case 0x1904: c[0] = g; break;
+          case GL_RED: c[0] = r; break;
+          case GL_GREEN: c[0] = g; break;
           default: c[0] = b; break;
         }
       }

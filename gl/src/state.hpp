@@ -53,6 +53,8 @@ constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
 // other twice over would otherwise run 2^64 of them (GL_OUT_OF_MEMORY, the rest skipped).
 constexpr uint64_t kMaxListCallCommands = uint64_t(1) << 25;
 constexpr int kMaxViewport = 16384;
+// The largest point size and line width (glPointSize, glLineWidth clamp to it).
+constexpr float kMaxPointLineSize = 64;
 
 // A viewport or a scissor box (window coordinates, GL's bottom row 0).
 struct Box {

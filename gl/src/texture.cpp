@@ -11,12 +11,12 @@ namespace velocity::gl {
 
 GLenum Context::base_format(GLint internal) {
   switch (internal) {
-    case 1: case GL_LUMINANCE: case 0x8040: /* GL_LUMINANCE8 */ return GL_LUMINANCE;
-    case 2: case GL_LUMINANCE_ALPHA: case 0x8045: /* GL_LUMINANCE8_ALPHA8 */ return GL_LUMINANCE_ALPHA;
-    case 3: case GL_RGB: case 0x8051: /* GL_RGB8 */ return GL_RGB;
-    case 4: case GL_RGBA: case 0x8058: /* GL_RGBA8 */ return GL_RGBA;
-    case GL_ALPHA: case 0x803C: /* GL_ALPHA8 */ return GL_ALPHA;
-    case 0x8049: /* GL_INTENSITY */ return 0x8049;
+    case 1: case GL_LUMINANCE: case GL_LUMINANCE8: return GL_LUMINANCE;
+    case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE8_ALPHA8: return GL_LUMINANCE_ALPHA;
+    case 3: case GL_RGB: case GL_RGB8: return GL_RGB;
+    case 4: case GL_RGBA: case GL_RGBA8: return GL_RGBA;
+    case GL_ALPHA: case GL_ALPHA8: return GL_ALPHA;
+    case GL_INTENSITY: case GL_INTENSITY8: return GL_INTENSITY;
     default: return 0;
   }
 }
@@ -65,7 +65,7 @@ namespace {
 
 // An RGBA8 texel (R in the low byte) as a texture of internal format `base` keeps it:
 // RGB opaque, luminance (L, L, L, 1), luminance-alpha (L, L, L, A), alpha (0, 0, 0, A),
-// intensity (GL_INTENSITY, 0x8049) (I, I, I, I); RGBA as it is.
+// intensity (GL_INTENSITY) (I, I, I, I); RGBA as it is.
 uint32_t stored_texel(GLenum base, uint32_t p) {
   const uint32_t r = p & 0xff, a = p >> 24;
   switch (base) {
@@ -73,7 +73,7 @@ uint32_t stored_texel(GLenum base, uint32_t p) {
     case GL_LUMINANCE: return r | r << 8 | r << 16 | 0xff000000u;
     case GL_LUMINANCE_ALPHA: return r | r << 8 | r << 16 | a << 24;
     case GL_ALPHA: return a << 24;
-    case 0x8049: return r | r << 8 | r << 16 | r << 24;
+    case GL_INTENSITY: return r | r << 8 | r << 16 | r << 24;
     default: return p;
   }
 }
@@ -100,7 +100,7 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
                : base == GL_LUMINANCE ? TexFormat::Luminance
                : base == GL_LUMINANCE_ALPHA ? TexFormat::LuminanceAlpha
                : base == GL_ALPHA     ? TexFormat::Alpha
-               : base == 0x8049       ? TexFormat::Intensity
+               : base == GL_INTENSITY ? TexFormat::Intensity
                                       : TexFormat::Rgba;
   }
   // The texels as the format keeps them: luminance (L, L, L, 1), alpha (0, 0, 0, A)...
@@ -167,7 +167,7 @@ void Context::tex_env(GLenum target, GLenum pname, const float* v) {
   if (target != GL_TEXTURE_ENV) return error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_MODE) {
     const GLenum m = to_enum(v[0]);
-    if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != 0x0104 /* GL_ADD */)
+    if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != GL_ADD)
       return error(GL_INVALID_ENUM);
     texture_.env_mode = m;
   } else if (pname == GL_TEXTURE_ENV_COLOR) {

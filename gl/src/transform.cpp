@@ -105,14 +105,18 @@ void Context::update_derived() {
 void Context::viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
   if (in_begin_error()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  transform_.viewport = within_reach(x, y, w, h);
-  changed();
+  const Box b = within_reach(x, y, w, h), &old = transform_.viewport;
+  // A new viewport closes the open batch (which keeps the one it was drawn with); the
+  // same one again, as programs set it every frame, does not split it.
+  if (b.x != old.x || b.y != old.y || b.width != old.width || b.height != old.height) changed();
+  transform_.viewport = b;
 }
 
 void Context::depth_range(double n, double f) {
   if (in_begin_error()) return;
-  transform_.depth_near = unit(n), transform_.depth_far = unit(f);
-  changed();
+  const float dn = unit(n), df = unit(f);
+  if (dn != transform_.depth_near || df != transform_.depth_far) changed();  // (as glViewport)
+  transform_.depth_near = dn, transform_.depth_far = df;
 }
 
 }  // namespace velocity::gl

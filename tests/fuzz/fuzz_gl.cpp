@@ -238,6 +238,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         glGetBooleanv(e1, bv);
         glIsEnabled(e1);
         glGetString(e1);
+        gluGetString(e1);
         break;
       }
       case 61: (in.u8() & 1 ? glFinish : glFlush)(); break;

@@ -6,6 +6,9 @@
                                               them, the timer fires, frames are recorded
     glut_test.py window GLUT_DEMO WORKDIR      under Xvfb: the window shows exactly the
                                               frame the program rendered (glReadPixels)
+    glut_test.py stops GLUT_LOOP WORKDIR       a program looping in its display callback
+                                              ends after VELOCITY_GLUT_FRAMES, records at
+                                              most its bound, ends on SIGTERM and SIGINT
 """
 import os
 import signal
@@ -89,7 +92,7 @@ def window(demo, work):
                 matched = True
                 break
         assert app.poll() is None, "glut_demo exited before its window was seen"
-        app.send_signal(signal.SIGTERM)  # SDL makes it a quit event: GLUT ends the program
+        app.send_signal(signal.SIGTERM)  # ends the program by the signal, as freeglut's
         out, _ = app.communicate(timeout=30)
     finally:
         if app.poll() is None:
@@ -97,11 +100,72 @@ def window(demo, work):
         server.terminate()
         server.wait(timeout=10)
     print(out)
-    assert app.returncode == 0, f"glut_demo exited with {app.returncode}"
+    assert app.returncode == -signal.SIGTERM, f"glut_demo exited with {app.returncode}, not by SIGTERM"
     assert last is not None, "the frame was never dumped"
     assert expect.std() > 10, "the dumped frame is blank: nothing to compare"
     assert matched, f"the window differs from the GL frame: max {last.max()}, {np.count_nonzero(last.max(axis=2) > 2)} pixels"
     print("the window shows the frame pGL rendered (320x240, every channel within 2)")
+    return 0
+
+
+def stops(loop, work):
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    # VELOCITY_GLUT_FRAMES counts the swaps made inside the display callback, and the
+    # single-buffered loop's repeated glutPostRedisplay; recording stops with it.
+    rec = os.path.join(work, "frames")
+    out = subprocess.run([loop, "swap"], env=dict(env, VELOCITY_GLUT_FRAMES="5", VELOCITY_GLUT_RECORD=rec),
+                         capture_output=True, text=True, timeout=30)
+    print(out.stdout, out.stderr)
+    assert out.returncode == 0, f"glut_loop swap with 5 frames exited with {out.returncode}"
+    assert "looping" in out.stdout and "main loop left" not in out.stdout
+    assert sorted(os.listdir(rec)) == [f"frame_{i:05d}.png" for i in range(5)], sorted(os.listdir(rec))
+    out = subprocess.run([loop, "post"], env=dict(env, VELOCITY_GLUT_FRAMES="5"), capture_output=True, text=True,
+                         timeout=30)
+    print(out.stdout, out.stderr)
+    assert out.returncode == 0, f"glut_loop post with 5 frames exited with {out.returncode}"
+
+    # Without a frame limit, the recorder keeps its bound (1000 frames) and says so.
+    rec = os.path.join(work, "unbounded")
+    app = subprocess.Popen([loop, "swap"], env=dict(env, VELOCITY_GLUT_RECORD=rec), stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, text=True)
+    try:
+        deadline, count, steady = time.time() + 120, -1, 0
+        while time.time() < deadline and steady < 4:
+            time.sleep(0.25)
+            n = len(os.listdir(rec)) if os.path.isdir(rec) else 0
+            steady = steady + 1 if n == count and n >= 1000 else 0
+            count = n
+        assert app.poll() is None, f"the program ended by itself: {app.returncode}, {app.stderr.read()}"
+        app.send_signal(signal.SIGTERM)
+        _, err = app.communicate(timeout=5)
+    finally:
+        if app.poll() is None:
+            app.kill()
+    print(err)
+    assert count == 1000, f"{count} frames recorded: the bound is 1000"
+    assert "1000 frames recorded, no more" in err
+
+    # SIGTERM and SIGINT end it, by the signal, as they end freeglut's programs.
+    for sig in (signal.SIGTERM, signal.SIGINT):
+        # (with the signal's default action, whatever this test inherited: a background
+        # shell's children ignore SIGINT, and GLUT keeps what it finds, as freeglut)
+        app = subprocess.Popen([loop, "swap"], env=env, stdout=subprocess.PIPE, text=True,
+                               preexec_fn=lambda s=sig: signal.signal(s, signal.SIG_DFL))
+        try:
+            assert app.stdout.readline().strip() == "looping"
+            time.sleep(0.3)
+            sent = time.time()
+            app.send_signal(sig)
+            app.wait(timeout=5)
+            took = time.time() - sent
+        finally:
+            if app.poll() is None:
+                app.kill()
+        print(f"{sig.name}: ended {took:.3f} s after it was sent, status {app.returncode}")
+        assert app.returncode == -sig, f"{sig.name}: exit status {app.returncode}, not killed by the signal"
+        assert took < 1, f"{sig.name}: took {took:.2f} s to end"
+    print("a program looping in its display callback: stopped by the frame limit, the recorder's bound, "
+          "SIGTERM and SIGINT")
     return 0
 
 
@@ -111,6 +175,8 @@ def main():
     os.makedirs(work)
     if mode == "callbacks":
         return callbacks(demo, work) or 0
+    if mode == "stops":
+        return stops(demo, work)
     return window(demo, work)
 
 

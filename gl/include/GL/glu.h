@@ -1,4 +1,7 @@
-/* Velocity's GLU subset (pGL): the GLU 1.3 calls libvelocity-gl implements. */
+/* Velocity's GLU subset (pGL): the GLU calls libvelocity-gl implements. GLU_VERSION_1_1
+ * is defined (gluGetString, 1.1's addition, exists); GLU_VERSION_1_2 and _1_3 are not,
+ * as their additions (the gluTess* tessellator, gluCheckExtension, gluBuild*MipmapLevels,
+ * gluUnProject4) do not exist here: a program guarded by them takes its fallback. */
 #ifndef __glu_h__
 #define __glu_h__
 
@@ -8,11 +11,15 @@
 extern "C" {
 #endif
 
+#define GLU_VERSION_1_1 1
+
 #define GLU_FALSE 0
 #define GLU_TRUE 1
 #define GLU_INVALID_ENUM 100900
 #define GLU_INVALID_VALUE 100901
 #define GLU_OUT_OF_MEMORY 100902
+#define GLU_VERSION 100800
+#define GLU_EXTENSIONS 100801
 
 GLAPI void GLAPIENTRY gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
 GLAPI void GLAPIENTRY gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
@@ -27,6 +34,7 @@ GLAPI GLint GLAPIENTRY gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ,
 GLAPI GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
                                          GLenum format, GLenum type, const void *data);
 GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
+GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
 
 #ifdef __cplusplus
 }

@@ -12,9 +12,15 @@
  * For tests and recordings (no person at the keyboard), environment variables:
  *   VELOCITY_GLUT_SCRIPT=FILE   timed key presses and mouse events (the format of
  *                               `velocity view --script`, docs in present/runtime/script.hpp)
- *   VELOCITY_GLUT_FRAMES=N      glutMainLoop returns after N frames have been shown
- *   VELOCITY_GLUT_RECORD=DIR    every frame shown is also written as DIR/frame_NNNNN.png
- * With SDL_VIDEODRIVER=dummy no display is needed. */
+ *   VELOCITY_GLUT_FRAMES=N      glutMainLoop returns after N frames (glutSwapBuffers
+ *                               calls, wherever made; a single-buffered window's display
+ *                               callbacks; a display callback's repeated
+ *                               glutPostRedisplay); a program that makes another without
+ *                               returning to the main loop ends there (exit status 0)
+ *   VELOCITY_GLUT_RECORD=DIR    every frame shown is also written as DIR/frame_NNNNN.png,
+ *                               at most N frames (VELOCITY_GLUT_FRAMES) or else 1000
+ * With SDL_VIDEODRIVER=dummy no display is needed. SIGINT and SIGTERM end the program
+ * wherever it is, by the signal, as they end freeglut's. */
 #ifndef VELOCITY_GL_GLUT_H
 #define VELOCITY_GL_GLUT_H
 
@@ -115,7 +121,8 @@ void glutIdleFunc(void (*callback)(void));
 void glutTimerFunc(unsigned int milliseconds, void (*callback)(int value), int value);
 
 /* The main loop: never returns, except after glutLeaveMainLoop (freeglut's) or
- * VELOCITY_GLUT_FRAMES frames. Closing the window ends the program (exit(0)). */
+ * VELOCITY_GLUT_FRAMES frames. Closing the window ends the program (exit(0)); SIGINT and
+ * SIGTERM end it by the signal. */
 void glutMainLoop(void);
 void glutLeaveMainLoop(void);
 

@@ -4,6 +4,20 @@
 
 static void err(const char* what) { conf_value(what, (double)glGetError()); }
 
+/* glGetIntegerv(pname) into a variable preset to -7: no error and the variable set, and
+ * with `exact`, its first value as Mesa's. (Without: limits of features Velocity lacks,
+ * 0 there, and sizes it draws differently; docs/gl.md.) */
+static void query(const char* name, GLenum pname, int exact) {
+  GLint v[2] = {-7, -7};
+  char n[96];
+  glGetIntegerv(pname, v);
+  snprintf(n, sizeof n, "%s_error", name);
+  err(n);
+  snprintf(n, sizeof n, "%s_set", name);
+  conf_value(n, v[0] != -7);
+  if (exact) conf_value(name, v[0]);
+}
+
 int main(int argc, char** argv) {
   GLint iv[4];
   GLfloat fv[16];
@@ -25,6 +39,21 @@ int main(int argc, char** argv) {
   glEnable(GL_DEPTH_TEST);
   glEnd();
   err("enable_in_begin");
+  /* glGetError between glBegin and glEnd: the call is the error and returns 0, so a
+   * loop that drains the errors there ends; glEnd's glGetError reports it once. */
+  glBegin(GL_TRIANGLES);
+  err("geterror_in_begin");
+  for (i = 0; i < 8 && glGetError() != GL_NO_ERROR; ++i) continue;
+  conf_value("geterror_in_begin_drained", i);
+  glEnd();
+  err("geterror_after_begin");
+  err("geterror_after_begin_again");
+  glEnable(0x1234);
+  glBegin(GL_POINTS);
+  err("geterror_in_begin_keeps_earlier");
+  glEnd();
+  err("geterror_earlier_after_end");
+  err("geterror_earlier_after_end_again");
   glEnable(0x1234);
   err("bad_enable");
   glBegin(0x20);
@@ -99,6 +128,56 @@ int main(int argc, char** argv) {
   conf_value("max_lights", iv[0]);
   glGetIntegerv(GL_MODELVIEW_STACK_DEPTH, iv);
   conf_value("modelview_depth", iv[0]);
+  /* GL_EXTENSIONS names each extension pGL has (token-only ones, all in Mesa's list
+   * too); GLU 1.1's gluGetString. */
+  {
+    static const char* const names[] = {"GL_ARB_texture_env_add", "GL_ARB_texture_mirrored_repeat",
+                                        "GL_ARB_texture_non_power_of_two", "GL_EXT_bgra", "GL_EXT_rescale_normal",
+                                        "GL_EXT_texture_edge_clamp", "GL_EXT_texture_env_add",
+                                        "GL_IBM_texture_mirrored_repeat", "GL_SGIS_texture_edge_clamp"};
+    const char* ext = (const char*)glGetString(GL_EXTENSIONS);
+    const char* glu_version = (const char*)gluGetString(GLU_VERSION);
+    for (i = 0; i < 9; ++i) conf_value(names[i], ext && strstr(ext, names[i]) != NULL);
+#ifdef GLU_VERSION_1_1
+    conf_value("glu_version_1_1", 1);
+#endif
+    conf_value("glu_version_major", glu_version ? atoi(glu_version) : -1);
+    conf_value("glu_extensions", gluGetString(GLU_EXTENSIONS) != NULL);
+    conf_value("glu_get_string_bad", gluGetString(GL_VENDOR) == NULL);
+  }
+  /* The framebuffer's and the implementation's values that answered GL_INVALID_ENUM
+   * (the context has no stencil or accumulation buffer, as conf_init asks Mesa). */
+  query("stencil_bits", GL_STENCIL_BITS, 1);
+  query("accum_red_bits", GL_ACCUM_RED_BITS, 1);
+  query("accum_green_bits", GL_ACCUM_GREEN_BITS, 1);
+  query("accum_blue_bits", GL_ACCUM_BLUE_BITS, 1);
+  query("accum_alpha_bits", GL_ACCUM_ALPHA_BITS, 1);
+  query("aux_buffers", GL_AUX_BUFFERS, 1);
+  query("index_bits", GL_INDEX_BITS, 1);
+  query("rgba_mode", GL_RGBA_MODE, 1);
+  query("index_mode", GL_INDEX_MODE, 1);
+  query("stereo", GL_STEREO, 1);
+  query("doublebuffer", GL_DOUBLEBUFFER, 1);
+  query("draw_buffer", GL_DRAW_BUFFER, 1);
+  query("read_buffer", GL_READ_BUFFER, 1);
+  query("sample_buffers", GL_SAMPLE_BUFFERS, 1);
+  query("samples", GL_SAMPLES, 1);
+  query("subpixel_bits", GL_SUBPIXEL_BITS, 1);
+  query("max_list_nesting", GL_MAX_LIST_NESTING, 1);
+  query("point_size_range", GL_POINT_SIZE_RANGE, 1);
+  query("line_width_range", GL_LINE_WIDTH_RANGE, 1);
+  query("aliased_point_size_range", GL_ALIASED_POINT_SIZE_RANGE, 1);
+  query("aliased_line_width_range", GL_ALIASED_LINE_WIDTH_RANGE, 1);
+  query("point_size_granularity", GL_POINT_SIZE_GRANULARITY, 0);
+  query("line_width_granularity", GL_LINE_WIDTH_GRANULARITY, 0);
+  query("max_texture_units", GL_MAX_TEXTURE_UNITS, 0);
+  query("num_compressed_texture_formats", GL_NUM_COMPRESSED_TEXTURE_FORMATS, 0);
+  query("max_clip_planes", GL_MAX_CLIP_PLANES, 0);
+  query("max_eval_order", GL_MAX_EVAL_ORDER, 0);
+  query("max_attrib_stack_depth", GL_MAX_ATTRIB_STACK_DEPTH, 0);
+  query("max_client_attrib_stack_depth", GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, 0);
+  query("max_name_stack_depth", GL_MAX_NAME_STACK_DEPTH, 0);
+  query("max_pixel_map_table", GL_MAX_PIXEL_MAP_TABLE, 0);
   glTranslatef(1, 2, 3);
   glRotatef(90, 0, 0, 1);
   glScalef(2, 2, 2);

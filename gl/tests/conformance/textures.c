@@ -1,6 +1,7 @@
 /* Textures: RGB, RGBA, LUMINANCE and ALPHA images of odd sizes, glTexSubImage2D, every
  * filter (the four mip-map ones with gluBuild2DMipmaps and GL_GENERATE_MIPMAP), wrap
- * modes REPEAT, CLAMP, CLAMP_TO_EDGE, environments MODULATE, REPLACE, DECAL, BLEND. */
+ * modes REPEAT, CLAMP, CLAMP_TO_EDGE, environments MODULATE, REPLACE, DECAL, BLEND, ADD;
+ * the sized and intensity internal formats. */
 #include "harness.h"
 
 static unsigned char checker[64 * 64 * 4];
@@ -176,6 +177,50 @@ int main(int argc, char** argv) {
     floor_quad();
     snprintf(name, sizeof name, "min%d", i);
     conf_frame(name);
+  }
+
+  /* Frame 5: the sized and intensity internal formats (gl.h's names) from one RGBA
+   * image, each under MODULATE and ADD, with GL_DITHER on (no effect at 8 bits); 3
+   * pixels a texel, so no nearest-texel ties. Then one pixel read back as GL_RED,
+   * GL_GREEN, GL_BLUE. */
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  gluOrtho2D(0, 192, 0, 128);
+  glMatrixMode(GL_MODELVIEW);
+  glEnable(GL_DITHER);
+  glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+  conf_value("clear_stencil_accum_bits_error", glGetError());
+  make_checker(8, 2);
+  glBindTexture(GL_TEXTURE_2D, tex[0]);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glColor4f(0.6f, 0.3f, 0.9f, 0.7f);
+  for (i = 0; i < 14; ++i) {
+    static const GLenum formats[7] = {GL_RGB8, GL_RGBA8, GL_ALPHA8, GL_LUMINANCE8, GL_LUMINANCE8_ALPHA8,
+                                      GL_INTENSITY, GL_INTENSITY8};
+    const float x = 4.0f + 27 * (i % 7), y = 20.0f + 50 * (i / 7);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)formats[i % 7], 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, checker);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, i < 7 ? GL_MODULATE : GL_ADD);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0);
+    glVertex2f(x, y);
+    glTexCoord2f(1, 0);
+    glVertex2f(x + 24, y);
+    glTexCoord2f(1, 1);
+    glVertex2f(x + 24, y + 24);
+    glTexCoord2f(0, 1);
+    glVertex2f(x, y + 24);
+    glEnd();
+  }
+  conf_value("sized_formats_error", glGetError());
+  conf_frame("sized");
+  {
+    static const GLenum channels[3] = {GL_RED, GL_GREEN, GL_BLUE};
+    for (i = 0; i < 3; ++i) {
+      GLubyte v = 0;
+      glReadPixels(5, 21, 1, 1, channels[i], GL_UNSIGNED_BYTE, &v);
+      conf_value("sized_pixel_channel", v);
+    }
   }
   glDeleteTextures(4, tex);
   return conf_end();
