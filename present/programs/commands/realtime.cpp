@@ -14,6 +14,7 @@
 namespace velocity::cli {
 
 void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
+  a.command = cmd->get_name();
   cmd->add_option("--size", a.size,
                   "Frame size WxH (the seed's modes: 320x200, 320x240, 640x480, 800x600) or 'window' (the window's size)");
   cmd->add_option("--scale", a.scale, "Window size as a multiple of the frame size (default: fits the screen)");
@@ -63,9 +64,15 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
       window = std::make_unique<present::SdlPresenter>(w);
     } catch (const Error& e) {
       if (a.frames <= 0 && a.record.empty())
-        throw Error(std::string(e.what()) + " (without a display, use --headless with --frames N and/or --record DIR)");
+        throw Error(std::string(e.what()) + "; without a display, run: velocity " + a.command +
+                    " --headless --frames N");
       std::fprintf(stderr, "velocity: %s; running headless\n", e.what());
     }
+    // SDL_VIDEODRIVER=dummy (tests): nobody sees the window, so something must end the run.
+    if (window && window->invisible() && a.frames <= 0)
+      throw Error("the " + window->driver().substr(0, window->driver().find('/')) +
+                  " video driver shows nothing: give --frames N to end the run, " +
+                  "or unset SDL_VIDEODRIVER to open a window");
   }
   realtime::Synth synth;
   std::unique_ptr<present::SdlAudio> audio;
