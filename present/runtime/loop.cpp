@@ -188,6 +188,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     pending = std::async(std::launch::async, render_job, std::ref(renderer), std::move(job));
     if (previous) show(std::move(*previous));
     ++result.frames;
+    if (o.end_with_script && script && script->finished()) quit = true;
 
     // A fixed step with sound on: keep the program's time with the audio's.
     if (fixed && o.pace_to_clock) {

@@ -43,6 +43,7 @@ struct LoopOptions {
   long frames = 0;             // stop after this many frames (0: when the program ends)
   std::string record_dir;      // write frame N as DIR/frame_NNNNN.png
   std::optional<Script> script;
+  bool end_with_script = false;  // stop once the script has played out (runs nobody sees)
   bool fixed_step = false;     // 1/60 s a frame whatever the clock says
   bool pace_to_clock = false;  // with a fixed step, never run ahead of the wall clock (sound on)
   bool overlay = true;         // frame rate and frame time in the corner (F3 toggles)
