@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -17,6 +18,22 @@ namespace velocity::realtime {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+  std::signal(sig, SIG_DFL);  // a second one ends the program at once
+}
+
+// The whole file or none: PNGs are written next to their name and renamed.
+void write_png_whole(const std::string& path, const Image& image) {
+  std::string part = path + ".part";
+  write_png(part, image);
+  std::error_code ec;
+  std::filesystem::rename(part, path, ec);
+  if (ec) throw Error("cannot write " + path + ": " + ec.message());
+}
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
@@ -64,6 +81,14 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
 }
 
 }  // namespace
+
+void install_stop_signals() {
+  g_stop_signal = 0;
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+}
+
+int stop_signal() { return int(g_stop_signal); }
 
 double percentile(std::vector<double> samples, double fraction) {
   if (samples.empty()) return 0;
@@ -119,11 +144,11 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     if (!o.record_dir.empty()) {
       char name[64];
       std::snprintf(name, sizeof name, "/frame_%05ld.png", recorded);
-      write_png(o.record_dir + name, r.image);
+      write_png_whole(o.record_dir + name, r.image);
     }
     ++recorded;
     if (!r.screenshot.empty()) {
-      write_png(r.screenshot, r.image);
+      write_png_whole(r.screenshot, r.image);
       std::printf("wrote %s (%dx%d)\n", r.screenshot.c_str(), r.image.width, r.image.height);
       std::fflush(stdout);
     }
@@ -161,7 +186,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
       input.apply(e);
       program.event(e, input);
     }
-    if (program.finished()) quit = true;
+    if (program.finished() || g_stop_signal) quit = true;
     if (quit) break;
 
     program.update(n > 0 ? dt : 0.0, input);
@@ -202,7 +227,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   // Keep the last frame on screen a while (tests take the window's picture then).
   if (presenter && o.linger > 0) {
     auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.linger));
-    while (Clock::now() < until) {
+    while (Clock::now() < until && !g_stop_signal) {
       events.clear();
       presenter->poll(events);
       if (std::any_of(events.begin(), events.end(), [](const InputEvent& e) {

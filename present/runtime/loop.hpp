@@ -64,6 +64,14 @@ inline constexpr double kFixedStep = 1.0 / 60.0;
 
 LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& options);
 
+// SIGINT and SIGTERM ask run_loop to stop after the frame in progress: the frame being
+// rendered is still shown and recorded, the statistics printed. A second signal ends the
+// program at once (frames are written to NAME.part and renamed, so no PNG is ever half
+// written). Install before SDL starts (SDL then leaves these signals alone).
+void install_stop_signals();
+// The signal that asked run_loop to stop; 0 when none.
+int stop_signal();
+
 // The value below which `fraction` (0..1) of `samples` lie (nearest rank); 0 when empty.
 double percentile(std::vector<double> samples, double fraction);
 // "frames=N size=WxH median_ms=... p99_ms=... fps=... render_median_ms=... render_p99_ms=..."

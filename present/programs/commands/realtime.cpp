@@ -55,6 +55,8 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   lo.linger = a.linger;
   lo.threads = a.threads;
 
+  // Ctrl+C and SIGTERM finish the frame in progress and the recording, then end.
+  realtime::install_stop_signals();
   std::unique_ptr<present::SdlPresenter> window;
   if (!a.headless) {
     present::WindowOptions w;
@@ -89,6 +91,7 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   audio.reset();
   window.reset();
   SDL_Quit();
+  if (int sig = realtime::stop_signal()) return 128 + sig;  // as a shell reports a signal
   return 0;
 }
 
