@@ -26,7 +26,7 @@ std::string upper(std::string_view s) {
 }  // namespace
 
 ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
-  options_.ssaa = std::clamp(o_.ssaa, 1, 4);
+  options_.ssaa = std::clamp(o_.ssaa, 1, 3);  // what A cycles through
   options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see velocity/view_setup.hpp)
   open(o_.model);
 }
