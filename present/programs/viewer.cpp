@@ -44,22 +44,28 @@ void ViewerProgram::open(const std::string& path) {
   for (const Object& obj : scene.objects())
     if (obj.mesh) triangles_ += obj.mesh->triangle_count();
   Sphere b = scene.bounds();
-  target_ = b.center;
+  home_target_ = b.center;
   radius_ = std::max(b.radius, 1e-3f);
-  // Start where the scene's own camera is (the demo's, or the framed one).
-  Vec3 d = scene.camera.position - target_;
-  if (length(d) > 1e-6f) initial_dir_ = normalize(d);
+  // Start where the scene's own camera is (the demo's, or the framed one), orbiting the
+  // middle of the scene; without one, far enough to see all of it.
+  Vec3 d = scene.camera.position - home_target_;
+  if (length(d) > 1e-6f) {
+    initial_dir_ = normalize(d);
+    home_distance_ = std::max(length(d), radius_ * 0.1f);
+  } else {
+    home_distance_ = radius_ / std::sin(scene.camera.fov_y / 2) * 1.05f;
+  }
   scene_ = std::move(scene);
   reset_view();
-  distance_ = std::max(length(d), radius_ * 0.1f);
 }
 
+// Back to the opening view: orbit angles, distance, and the pan undone.
 void ViewerProgram::reset_view() {
   Vec3 d = initial_dir_;
   yaw_ = std::atan2(d.x, d.z);
   pitch_ = std::asin(std::clamp(d.y, -1.0f, 1.0f));
-  float fov = scene_.camera.fov_y;
-  distance_ = radius_ / std::sin(fov / 2) * 1.05f;
+  target_ = home_target_;
+  distance_ = home_distance_;
 }
 
 void ViewerProgram::place_camera() {
@@ -152,7 +158,11 @@ void ViewerProgram::event(const InputEvent& e, const InputState&) {
           }
           say(o_.cull_back_faces ? "BACK FACES CULLED" : "BACK FACES DRAWN");
           break;
-        case 'r': reset_view(); break;
+        case 'r':
+          reset_view();
+          spin_ = false;
+          say("OPENING VIEW");
+          break;
         case ' ': spin_ = !spin_; break;
         case 'h':
         case KeyF1: help_ = !help_; break;
@@ -206,7 +216,7 @@ void ViewerProgram::frame(FrameDescription& out) {
   if (help_) {
     const char* help =
         "LEFT DRAG: ROTATE   RIGHT DRAG: PAN   WHEEL: ZOOM\n"
-        "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: RESET\n"
+        "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
         "C or F12: SCREENSHOT   F2: SCREEN MODE   F3: FPS\n"

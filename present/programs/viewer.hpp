@@ -49,6 +49,8 @@ class ViewerProgram : public Program {
   std::string name_;
   size_t triangles_ = 0;
   Vec3 target_, initial_dir_{0.6f, 0.45f, 1.0f};
+  Vec3 home_target_;           // the opening view, which R returns to
+  float home_distance_ = 3;
   float radius_ = 1, yaw_ = 0, pitch_ = 0, distance_ = 3;
   RenderOptions options_;
   int shading_ = 0;  // 0: the model's own; then flat, gouraud, phong, unlit, points

@@ -376,3 +376,26 @@ TEST(Viewer, OrbitZoomAndModes) {
   run_scripted(v, "0 drop /nonexistent/model.asc\n", 0.1);
   EXPECT_NE(v.message().find("nonexistent"), std::string::npos);
 }
+
+// Issue 21: R after rotating, panning, zooming and spinning returns to the opening view
+// (on the demo scene it jumped to a distant one).
+TEST(Viewer, ResetReturnsToTheOpeningView) {
+  for (std::string model : {std::string(), std::string(VELOCITY_TEST_MODEL)}) {
+    SCOPED_TRACE(model.empty() ? "demo scene" : model);
+    ViewerOptions o;
+    o.model = model;
+    ViewerProgram v(o);
+    v.resize(320, 240);
+    run_scripted(v, "", 0);
+    const Vec3 start = v.scene().camera.position;
+    const float yaw = v.yaw(), pitch = v.pitch(), d = v.distance();
+    run_scripted(v, "0 mousedown left 100 100\n0.1 move 180 140\n0.2 mouseup left 180 140\n"
+                    "0.3 mousedown right 100 100\n0.4 move 150 60\n0.5 mouseup right 150 60\n"
+                    "0.6 wheel -3\n0.7 press space\n1.5 press r\n", 1.6);
+    EXPECT_NEAR(v.yaw(), yaw, 1e-5);
+    EXPECT_NEAR(v.pitch(), pitch, 1e-5);
+    EXPECT_NEAR(v.distance(), d, 1e-5 * d);
+    const Vec3 end = v.scene().camera.position;
+    EXPECT_LT(length(end - start), 1e-4f * d) << "the camera is not where it started";
+  }
+}
