@@ -43,7 +43,9 @@ namespace {
 // an RGBA colour) each. Calls `f(x0, y0, x1, y1)` for every quad of `text` at (0, 0).
 template <typename F>
 void for_each_quad(const std::string& text, F&& f) {
-  // About 270 bytes of quads per character at most; text is drawn a line at a time.
+  // 64 bytes a quad; 'X' takes 11 quads and other glyphs more than 5, so guess generously
+  // and, when the buffer filled up (stb_easy_font stops writing quietly and the last
+  // glyphs would come out cut), try again with twice the room. A line at a time.
   std::vector<char> buffer;
   size_t start = 0;
   int line = 0;
@@ -51,8 +53,12 @@ void for_each_quad(const std::string& text, F&& f) {
     size_t end = text.find('\n', start);
     if (end == std::string::npos) end = text.size();
     std::string s = text.substr(start, end - start);
-    buffer.assign(s.size() * 300 + 64, 0);
-    int quads = stb_easy_font_print(0, float(line * 10), s.data(), nullptr, buffer.data(), int(buffer.size()));
+    int quads = 0;
+    for (size_t size = s.size() * 16 * 64 + 64;; size *= 2) {
+      buffer.resize(size);
+      quads = stb_easy_font_print(0, float(line * 10), s.data(), nullptr, buffer.data(), int(buffer.size()));
+      if (size_t(quads) * 64 + 64 <= size) break;
+    }
     for (int q = 0; q < quads; ++q) {
       const float* v0 = reinterpret_cast<const float*>(buffer.data() + q * 64);
       const float* v2 = reinterpret_cast<const float*>(buffer.data() + q * 64 + 32);

@@ -399,3 +399,22 @@ TEST(Viewer, ResetReturnsToTheOpeningView) {
     EXPECT_LT(length(end - start), 1e-4f * d) << "the camera is not where it started";
   }
 }
+
+// Issue 21: the "SSAA 2X2" message's last glyph came out cut (stb_easy_font ran out of
+// room for the quads of 'X'). Every glyph of a string is drawn whole: the string lights
+// as many pixels as its characters do one by one.
+TEST(Canvas, EveryGlyphIsDrawnWhole) {
+  auto lit = [](const std::string& text) {
+    std::vector<uint8_t> px(400 * 20 * 4, 0);
+    Canvas c{px.data(), 400, 20, 400 * 4};
+    draw_text(c, 0, 2, text, {255, 255, 255, 255});
+    int n = 0;
+    for (size_t i = 0; i < px.size(); i += 4) n += px[i] == 255;
+    return n;
+  };
+  for (std::string s : {"SSAA 2X2", "SSAA 3X3", "XXXXXXXXXXXX", "8888%%%%@@@@", "MW#&$"}) {
+    int sum = 0;
+    for (char ch : s) sum += lit(std::string(1, ch));
+    EXPECT_EQ(lit(s), sum) << s;
+  }
+}
