@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <vector>
 
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
@@ -205,14 +206,39 @@ void ViewerProgram::frame(FrameDescription& out) {
 
   const int s = std::max(1, height_ / 300);
   DrawList& d = out.overlay;
-  char line[256];
-  std::snprintf(line, sizeof line, "%s  %zu TRIS  %s  %s  SSAA %d  %s  H: HELP", upper(name_).c_str(), triangles_,
-                wire_ ? "WIRE" : shading_ ? upper(to_string(kShadings[shading_ - 1])).c_str() : "OWN",
-                options_.depth_mode == DepthMode::Painter ? "PAINTER" : "Z-BUFFER", options_.ssaa,
-                options_.affine ? "AFFINE" : "PERSPECTIVE");
-  d.rect(0, height_ - 12 * s, width_, 12 * s, {0, 0, 0, 140});
-  d.text(3 * s, height_ - 10 * s, line, {220, 230, 255, 255}, s);
-  if (message_time_ > 0) d.text_centered(width_ / 2, height_ - 30 * s, message_, {255, 230, 120, 255}, s);
+  // The status bar: its items left to right, on as many lines as the width needs, the
+  // model's name cut to half the width; never past the frame's edges.
+  const int room = std::max(width_ - 6 * s, 1);
+  std::vector<std::string> items = {
+      ellipsize(upper(name_), room / 2, s),
+      std::to_string(triangles_) + " TRIS",
+      wire_ ? "WIRE" : shading_ ? upper(to_string(kShadings[shading_ - 1])) : "OWN",
+      options_.depth_mode == DepthMode::Painter ? "PAINTER" : "Z-BUFFER",
+      "SSAA " + std::to_string(options_.ssaa),
+      options_.affine ? "AFFINE" : "PERSPECTIVE",
+      "H: HELP"};
+  std::vector<std::string> lines(1);
+  for (const std::string& item : items) {
+    std::string joined = lines.back().empty() ? item : lines.back() + "  " + item;
+    if (lines.back().empty() || text_width(joined, s) <= room) lines.back() = joined;
+    else lines.push_back(ellipsize(item, room, s));
+  }
+  const int bar = (int(lines.size()) * 10 + 2) * s;
+  d.rect(0, height_ - bar, width_, bar, {0, 0, 0, 140});
+  for (size_t i = 0; i < lines.size(); ++i)
+    d.text(3 * s, height_ - bar + (2 + 10 * int(i)) * s, lines[i], {220, 230, 255, 255}, s);
+  // Messages (an error can be long: a path) wrap within the frame, above the bar.
+  if (message_time_ > 0) {
+    std::string m = wrap_text(message_, std::max(width_ - 16 * s, 1), s);
+    int y = height_ - bar - 8 * s - text_height(m, s);
+    size_t start = 0;
+    while (start <= m.size()) {
+      size_t end = std::min(m.find('\n', start), m.size());
+      d.text_centered(width_ / 2, y, m.substr(start, end - start), {255, 230, 120, 255}, s);
+      y += 10 * s;
+      start = end + 1;
+    }
+  }
   if (help_) {
     const char* help =
         "LEFT DRAG: ROTATE   RIGHT DRAG: PAN   WHEEL: ZOOM\n"
@@ -221,10 +247,11 @@ void ViewerProgram::frame(FrameDescription& out) {
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
         "C or F12: SCREENSHOT   F2: SCREEN MODE   F3: FPS\n"
         "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";
-    int w = text_width(help, s) + 16 * s, h = text_height(help, s) + 16 * s;
+    std::string wrapped = wrap_text(help, std::max(width_ - 16 * s, 1), s);
+    int w = text_width(wrapped, s) + 16 * s, h = text_height(wrapped, s) + 16 * s;
     int x = (width_ - w) / 2, y = (height_ - h) / 2;
     d.rect(x, y, w, h, {10, 20, 40, 200});
-    d.text(x + 8 * s, y + 8 * s, help, {255, 255, 255, 255}, s);
+    d.text(x + 8 * s, y + 8 * s, wrapped, {255, 255, 255, 255}, s);
   }
 }
 

@@ -88,6 +88,41 @@ void draw_text(Canvas& c, int x, int y, const std::string& text, Rgba color, int
   });
 }
 
+std::string ellipsize(const std::string& text, int max_width, int scale) {
+  if (text_width(text, scale) <= max_width) return text;
+  std::string s = text;
+  while (!s.empty() && text_width(s + "...", scale) > max_width) s.pop_back();
+  return s.empty() ? std::string() : s + "...";
+}
+
+std::string wrap_text(const std::string& text, int max_width, int scale) {
+  std::string out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string rest = text.substr(start, end - start), line;
+    while (text_width(rest, scale) > max_width && rest.size() > 1) {
+      // The longest start of `rest` that fits, ended at a space, else after a '/',
+      // else anywhere (at least one character a line).
+      size_t fit = 1;
+      while (fit < rest.size() && text_width(rest.substr(0, fit + 1), scale) <= max_width) ++fit;
+      size_t cut = rest.rfind(' ', fit);
+      if (cut == std::string::npos || cut == 0) {
+        cut = rest.rfind('/', fit - 1);
+        cut = cut == std::string::npos || cut == 0 ? fit : cut + 1;
+      }
+      out += rest.substr(0, cut) + "\n";
+      rest = rest.substr(cut);
+      rest.erase(0, rest.find_first_not_of(' ') == std::string::npos ? rest.size() : rest.find_first_not_of(' '));
+    }
+    out += rest;
+    if (end < text.size()) out += "\n";
+    start = end + 1;
+  }
+  return out;
+}
+
 void draw_text_shadow(Canvas& c, int x, int y, const std::string& text, Rgba color, int scale) {
   draw_text(c, x + scale, y + scale, text, {0, 0, 0, uint8_t(color.a * 3 / 4)}, scale);
   draw_text(c, x, y, text, color, scale);

@@ -418,3 +418,76 @@ TEST(Canvas, EveryGlyphIsDrawnWhole) {
     EXPECT_EQ(lit(s), sum) << s;
   }
 }
+
+namespace {
+
+// Every text and rectangle of a frame's 2D layer inside the frame; all its text, joined.
+std::string expect_overlay_inside(const FrameDescription& f, int width, int height) {
+  std::string all;
+  for (const DrawOp& op : f.overlay.ops()) {
+    if (op.kind == DrawOp::Fade) continue;
+    int w = op.kind == DrawOp::Rect ? op.w : text_width(op.text, op.scale);
+    int h = op.kind == DrawOp::Rect ? op.h : text_height(op.text, op.scale);
+    EXPECT_GE(op.x, 0) << op.text;
+    EXPECT_GE(op.y, 0) << op.text;
+    EXPECT_LE(op.x + w, width) << "'" << op.text << "' runs off the right edge at " << width << "x" << height;
+    EXPECT_LE(op.y + h, height) << op.text;
+    all += op.text + "\n";
+  }
+  return all;
+}
+
+}  // namespace
+
+// Issue 21: the status bar ran off the right edge at 800x600 ("H:"), and a dropped bad
+// file's error was cut at both edges. At every screen mode, with a long file name and a
+// long error, the 2D layer stays inside the frame and still says everything.
+TEST(Viewer, StatusBarAndMessagesStayInside) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "velocity_viewer_overlay";
+  fs::create_directories(dir);
+  fs::path long_name = dir / (std::string(90, 'w') + "_a_model_with_a_very_long_name.obj");
+  fs::copy_file(VELOCITY_TEST_MODEL, long_name, fs::copy_options::overwrite_existing);
+  const std::string bad = "/nonexistent/folder/with/a/rather/long/path/to/somewhere/" + std::string(60, 'x') + ".obj";
+  for (auto [w, h] : {std::pair{320, 200}, {320, 240}, {640, 480}, {800, 600}, {1280, 720}}) {
+    SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+    ViewerProgram v({});
+    v.resize(w, h);
+    run_scripted(v, "0 press h\n", 0.2);
+    FrameDescription f;
+    v.frame(f);
+    std::string text = expect_overlay_inside(f, w, h);
+    EXPECT_NE(text.find("H: HELP"), std::string::npos) << text;
+    EXPECT_NE(text.find("QUIT"), std::string::npos) << text;
+
+    run_scripted(v, "0 press h\n0 drop " + bad + "\n", 0.2);
+    FrameDescription g;
+    v.frame(g);
+    text = expect_overlay_inside(g, w, h);
+    EXPECT_NE(text.find("nonexistent"), std::string::npos) << text;
+
+    run_scripted(v, "0 drop " + long_name.string() + "\n", 0.2);
+    FrameDescription k;
+    v.frame(k);
+    text = expect_overlay_inside(k, w, h);
+    EXPECT_NE(text.find("WWWW"), std::string::npos) << text;
+    EXPECT_NE(text.find("H: HELP"), std::string::npos) << text;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Canvas, WrapAndEllipsize) {
+  EXPECT_EQ(wrap_text("ONE TWO THREE", 1000), "ONE TWO THREE");
+  std::string w = wrap_text("ONE TWO THREE FOUR", text_width("ONE TWO"));
+  EXPECT_EQ(w, "ONE TWO\nTHREE\nFOUR");
+  std::string p = wrap_text("/a/very/long/path/name", text_width("/a/very/"));
+  EXPECT_EQ(p.substr(0, p.find('\n')), "/a/very/");
+  for (size_t a = 0, b; a <= p.size(); a = b + 1) {
+    b = std::min(p.find('\n', a), p.size());
+    EXPECT_LE(text_width(p.substr(a, b - a)), text_width("/a/very/"));
+  }
+  EXPECT_EQ(ellipsize("SHORT", 1000), "SHORT");
+  std::string e = ellipsize("A RATHER LONG NAME", text_width("A RATHER"));
+  EXPECT_LE(text_width(e), text_width("A RATHER"));
+  EXPECT_EQ(e.substr(e.size() - 3), "...");
+}
