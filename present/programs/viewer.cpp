@@ -211,11 +211,13 @@ void ViewerProgram::frame(FrameDescription& out) {
   const int room = std::max(width_ - 6 * s, 1);
   std::vector<std::string> items = {
       ellipsize(upper(name_), room / 2, s),
-      std::to_string(triangles_) + " TRIS",
-      wire_ ? "WIRE" : shading_ ? upper(to_string(kShadings[shading_ - 1])) : "OWN",
-      options_.depth_mode == DepthMode::Painter ? "PAINTER" : "Z-BUFFER",
-      "SSAA " + std::to_string(options_.ssaa),
-      options_.affine ? "AFFINE" : "PERSPECTIVE",
+      std::to_string(triangles_) + " TRIANGLES",
+      wire_      ? std::string("WIREFRAME")
+      : shading_ ? "SHADING: " + upper(to_string(kShadings[shading_ - 1]))
+                 : std::string("SHADING: AS THE MODEL SAYS"),
+      options_.depth_mode == DepthMode::Painter ? "PAINTER'S ALGORITHM" : "DEPTH BUFFER",
+      "SSAA " + std::to_string(options_.ssaa) + "X" + std::to_string(options_.ssaa),
+      options_.affine ? "AFFINE TEXTURES" : "PERSPECTIVE TEXTURES",
       "H: HELP"};
   std::vector<std::string> lines(1);
   for (const std::string& item : items) {

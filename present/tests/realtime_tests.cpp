@@ -491,3 +491,25 @@ TEST(Canvas, WrapAndEllipsize) {
   EXPECT_LE(text_width(e), text_width("A RATHER"));
   EXPECT_EQ(e.substr(e.size() - 3), "...");
 }
+
+// Issue 21: "seed 000", "seed 001" and "OWN" meant nothing to a user. The menus and
+// credits say what the programs are in plain words, and the viewer's status bar names
+// each mode (the command line's help: rt_help_plain_words).
+TEST(Words, NoSeedNumbersAndEveryModeNamed) {
+  for (const ShellText& t : {drive_shell_text(), fly_shell_text()}) {
+    for (const std::string& s : {t.title, t.subtitle, t.start, t.credits}) {
+      EXPECT_EQ(s.find("SEED"), std::string::npos) << s;
+      EXPECT_EQ(s.find("seed"), std::string::npos) << s;
+    }
+    EXPECT_FALSE(t.credits.empty());
+  }
+  ViewerProgram v({});
+  v.resize(800, 600);
+  run_scripted(v, "", 0);
+  FrameDescription f;
+  v.frame(f);
+  std::string text = expect_overlay_inside(f, 800, 600);
+  EXPECT_EQ(text.find("OWN"), std::string::npos) << text;
+  for (const char* named : {"SHADING: AS THE MODEL SAYS", "DEPTH BUFFER", "SSAA 1X1", "PERSPECTIVE TEXTURES", "TRIANGLES"})
+    EXPECT_NE(text.find(named), std::string::npos) << named << " not in " << text;
+}

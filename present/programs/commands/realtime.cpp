@@ -16,7 +16,7 @@ namespace velocity::cli {
 void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   a.command = cmd->get_name();
   cmd->add_option("--size", a.size,
-                  "Frame size WxH (the seed's modes: 320x200, 320x240, 640x480, 800x600) or 'window' (the window's size)");
+                  "Frame size WxH (the classic modes: 320x200, 320x240, 640x480, 800x600) or 'window' (the window's size)");
   cmd->add_option("--scale", a.scale, "Window size as a multiple of the frame size (default: fits the screen)");
   cmd->add_flag("--fullscreen", a.fullscreen, "Start fullscreen (F11 or Alt+Enter toggles)");
   cmd->add_option("--frames", a.frames, "Stop after this many frames");
