@@ -82,7 +82,7 @@ void ViewerProgram::place_camera() {
 
 void ViewerProgram::resize(int width, int height) { Program::resize(width, height); }
 
-void ViewerProgram::event(const InputEvent& e, const InputState&) {
+void ViewerProgram::event(const InputEvent& e, const InputState& input) {
   auto say = [&](std::string m) {
     message_ = std::move(m);
     message_time_ = 2.5;
@@ -169,9 +169,11 @@ void ViewerProgram::event(const InputEvent& e, const InputState&) {
         case KeyF1: help_ = !help_; break;
         case 'c':
         case KeyF12: {
+          // The model alone; with Shift, as the window shows it (status bar, messages).
           char name[64];
           std::snprintf(name, sizeof name, "-%03d.png", shots_++);
           pending_shot_ = o_.screenshot_prefix + name;
+          shot_overlay_ = input.held(KeyShift);
           break;
         }
         default: break;
@@ -202,6 +204,7 @@ void ViewerProgram::frame(FrameDescription& out) {
   if (wire_) out.options.shading = Shading::Wireframe;
   else if (shading_) out.options.shading = kShadings[shading_ - 1];
   out.screenshot = std::move(pending_shot_);
+  out.screenshot_overlay = shot_overlay_;
   pending_shot_.clear();
 
   const int s = std::max(1, height_ / 300);
@@ -247,7 +250,8 @@ void ViewerProgram::frame(FrameDescription& out) {
         "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
-        "C or F12: SCREENSHOT   F2: SCREEN MODE   F3: FPS\n"
+        "C or F12: SCREENSHOT   SHIFT+F12: WITH THIS TEXT\n"
+        "F2: SCREEN MODE   F3: FPS\n"
         "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";
     std::string wrapped = wrap_text(help, std::max(width_ - 16 * s, 1), s);
     int w = text_width(wrapped, s) + 16 * s, h = text_height(wrapped, s) + 16 * s;

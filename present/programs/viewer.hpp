@@ -58,6 +58,7 @@ class ViewerProgram : public Program {
   int drag_ = 0, last_x_ = 0, last_y_ = 0;
   int shots_ = 0;
   std::string pending_shot_;
+  bool shot_overlay_ = false;
   std::string message_;
   double message_time_ = 0;
 };

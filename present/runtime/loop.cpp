@@ -48,6 +48,7 @@ struct Rendered {
   Image image;
   double ms = 0;
   std::string screenshot;
+  Image clean;  // the screenshot without the 2D layer, when it asks for that
 };
 
 Rendered render_job(Renderer& renderer, RenderJob job) {
@@ -67,6 +68,7 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
     auto c = [](float v) { return uint32_t(std::lrint(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
     out.image = Image(job.width, job.height, 0xff000000u | c(bg.z) << 16 | c(bg.y) << 8 | c(bg.x));
   }
+  if (!f.screenshot.empty() && !f.screenshot_overlay) out.clean = out.image;
   Canvas canvas{out.image.pixels.data(), job.width, job.height, size_t(job.width) * 4};
   f.overlay.draw(canvas);
   if (!job.stats_text.empty()) {
@@ -148,7 +150,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     }
     ++recorded;
     if (!r.screenshot.empty()) {
-      write_png_whole(r.screenshot, r.image);
+      write_png_whole(r.screenshot, r.clean.width > 0 ? r.clean : r.image);
       std::printf("wrote %s (%dx%d)\n", r.screenshot.c_str(), r.image.width, r.image.height);
       std::fflush(stdout);
     }

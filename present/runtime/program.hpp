@@ -22,6 +22,7 @@ struct FrameDescription {
   RenderOptions options;
   DrawList overlay;         // drawn over the 3D image
   std::string screenshot;   // when set, the finished frame is also written there (PNG)
+  bool screenshot_overlay = true;  // false: the screenshot is the 3D image alone
 };
 
 class Program {

@@ -3,7 +3,9 @@
 // viewer's model policy is the library's: tests/unit/test_view_setup.cpp.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 
@@ -16,6 +18,7 @@
 #include "runtime/shell.hpp"
 #include "runtime/synth.hpp"
 #include "velocity/error.hpp"
+#include "velocity/image.hpp"
 
 using namespace velocity;
 using namespace velocity::realtime;
@@ -512,4 +515,41 @@ TEST(Words, NoSeedNumbersAndEveryModeNamed) {
   EXPECT_EQ(text.find("OWN"), std::string::npos) << text;
   for (const char* named : {"SHADING: AS THE MODEL SAYS", "DEPTH BUFFER", "SSAA 1X1", "PERSPECTIVE TEXTURES", "TRIANGLES"})
     EXPECT_NE(text.find(named), std::string::npos) << named << " not in " << text;
+}
+
+// Issue 21: screenshots always included the overlay. F12 (or C) writes the model alone,
+// Shift+F12 the frame as the window shows it (status bar and frame rate too).
+TEST(Viewer, ScreenshotsWithAndWithoutTheOverlay) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "velocity_viewer_shots";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ViewerOptions vo;
+  vo.screenshot_prefix = (dir / "shot").string();
+  ViewerProgram viewer(vo);
+  LoopOptions o;
+  o.width = 320, o.height = 240, o.frames = 20, o.threads = 2, o.quiet = true;
+  o.record_dir = (dir / "frames").string();
+  o.script = parse_script("0.05 press f12\n0.1 down shift\n0.15 press f12\n0.25 up shift\n");
+  run_loop(viewer, nullptr, o);
+  Image clean = read_image((dir / "shot-000.png").string());
+  Image shown = read_image((dir / "shot-001.png").string());
+  ASSERT_EQ(clean.width, 320);
+  ASSERT_EQ(shown.width, 320);
+  // Shift+F12 is exactly a frame the window showed.
+  bool recorded = false;
+  for (int i = 0; i < 20 && !recorded; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", i);
+    recorded = read_image((dir / "frames" / name).string()).pixels == shown.pixels;
+  }
+  EXPECT_TRUE(recorded);
+  // F12: the same scene, without the status bar (bottom rows) or the frame rate (top left).
+  auto rows_equal = [&](int y0, int y1) {
+    return std::equal(clean.pixel(0, y0), clean.pixel(0, y1), shown.pixel(0, y0));
+  };
+  EXPECT_TRUE(rows_equal(30, 180));
+  EXPECT_FALSE(rows_equal(230, 240)) << "the status bar is in the F12 screenshot";
+  EXPECT_FALSE(rows_equal(0, 10)) << "the frame rate is in the F12 screenshot";
+  fs::remove_all(dir);
 }
