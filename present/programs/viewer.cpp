@@ -80,13 +80,17 @@ void ViewerProgram::place_camera() {
   c.far = to_center + radius_ * 1.2f;
 }
 
-void ViewerProgram::resize(int width, int height) { Program::resize(width, height); }
+void ViewerProgram::resize(int width, int height) {
+  Program::resize(width, height);
+  changed_ = true;
+}
 
 void ViewerProgram::event(const InputEvent& e, const InputState& input) {
   auto say = [&](std::string m) {
     message_ = std::move(m);
     message_time_ = 2.5;
   };
+  if (e.kind != InputEvent::MouseMove || drag_) changed_ = true;
   switch (e.kind) {
     case InputEvent::MouseDown:
       drag_ = e.button == MouseButton::Left ? 1 : 2;
@@ -184,6 +188,10 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
 }
 
 void ViewerProgram::update(double dt, const InputState& input) {
+  // Moving, or a message on screen (it fades out): the frame changes.
+  for (Key k : {KeyLeft, KeyRight, KeyUp, KeyDown, Key('+'), Key('='), Key('-')})
+    if (input.held(k)) changed_ = true;
+  if (spin_ || message_time_ > 0) changed_ = true;
   if (spin_) yaw_ += float(dt) * 0.6f;
   float turn = float(dt) * 1.5f;
   if (input.held(KeyLeft)) yaw_ -= turn;
@@ -203,6 +211,7 @@ void ViewerProgram::frame(FrameDescription& out) {
   out.options = options_;
   if (wire_) out.options.shading = Shading::Wireframe;
   else if (shading_) out.options.shading = kShadings[shading_ - 1];
+  changed_ = false;
   out.screenshot = std::move(pending_shot_);
   out.screenshot_overlay = shot_overlay_;
   pending_shot_.clear();

@@ -29,6 +29,7 @@ class ViewerProgram : public Program {
   void update(double dt, const InputState& input) override;
   void frame(FrameDescription& out) override;
   bool finished() const override { return quit_; }
+  bool changed() const override { return changed_; }
   std::string title() const override;
 
   // The orbit, for tests: angles in radians, distance in scene units.
@@ -60,6 +61,7 @@ class ViewerProgram : public Program {
   std::string pending_shot_;
   bool shot_overlay_ = false;
   std::string message_;
+  bool changed_ = true;  // something to draw since the last frame
   double message_time_ = 0;
 };
 

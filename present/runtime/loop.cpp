@@ -157,12 +157,16 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     last_image = std::move(r.image);
   };
 
+  // In a window with nothing bounding the run, a frame in which nothing changed (no input,
+  // and the program says so) is not drawn: an idle viewer costs no CPU.
+  const bool may_idle = presenter && !fixed && o.frames <= 0;
+  bool drew_last = false;
   bool quit = false;
   for (long n = 0; !quit && (o.frames <= 0 || n < o.frames); ++n) {
     // Time step.
     auto now = Clock::now();
     double dt = fixed ? kFixedStep : std::clamp(std::chrono::duration<double>(now - last).count(), 0.0, 0.1);
-    if (n > 0) result.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
+    if (n > 0 && drew_last) result.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
     last = now;
     sim_time += n > 0 ? dt : 0.0;
 
@@ -194,6 +198,13 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     program.update(n > 0 ? dt : 0.0, input);
     if (o.synth) program.sound(*o.synth);
     if (presenter && program.title() != title) presenter->set_title(title = program.title());
+    if (may_idle && n > 0 && events.empty() && !program.changed()) {
+      if (pending.valid()) show(pending.get());  // the last frame drawn goes up first
+      drew_last = false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(8));
+      continue;
+    }
+    drew_last = true;
 
     RenderJob job;
     program.frame(job.frame);

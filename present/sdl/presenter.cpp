@@ -147,6 +147,12 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
         }
         break;
       case SDL_WINDOWEVENT:
+        // Uncovered: show the last frame again (an idle program draws no new one).
+        if (ev.window.event == SDL_WINDOWEVENT_EXPOSED && impl_->texture) {
+          SDL_RenderClear(impl_->renderer);
+          SDL_RenderCopy(impl_->renderer, impl_->texture, nullptr, nullptr);
+          SDL_RenderPresent(impl_->renderer);
+        }
         if (ev.window.event != SDL_WINDOWEVENT_SIZE_CHANGED) continue;
         e.kind = InputEvent::Resize;
         std::tie(e.x, e.y) = window_size();

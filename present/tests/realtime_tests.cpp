@@ -553,3 +553,53 @@ TEST(Viewer, ScreenshotsWithAndWithoutTheOverlay) {
   EXPECT_FALSE(rows_equal(0, 10)) << "the frame rate is in the F12 screenshot";
   fs::remove_all(dir);
 }
+
+namespace {
+
+// A window that is not there: counts the frames shown, hands out `events` at the given
+// polls, and closes itself at poll `quit_at`.
+struct FakeWindow : Presenter {
+  int polls = 0, presents = 0, quit_at = 40;
+  std::vector<std::pair<int, InputEvent>> events;
+  void poll(std::vector<InputEvent>& out) override {
+    ++polls;
+    for (auto& [at, e] : events)
+      if (at == polls) out.push_back(e);
+    if (polls >= quit_at) {
+      InputEvent quit;
+      quit.kind = InputEvent::Quit;
+      out.push_back(quit);
+    }
+  }
+  void present(const uint8_t*, int, int) override { ++presents; }
+  void set_title(const std::string&) override {}
+  void toggle_fullscreen() override {}
+  std::pair<int, int> window_size() const override { return {64, 48}; }
+};
+
+}  // namespace
+
+// Issue 21: the viewer redrew when nothing changed (28 % of a core, idle). In a window,
+// a frame with no input and nothing moving is not drawn; spinning draws every frame.
+TEST(Loop, IdleViewerDrawsNothing) {
+  LoopOptions o;
+  o.width = 64, o.height = 48, o.threads = 1, o.quiet = true;
+  {
+    ViewerProgram viewer({});
+    FakeWindow window;
+    LoopResult r = run_loop(viewer, &window, o);
+    EXPECT_EQ(window.polls, 40);
+    EXPECT_LE(r.frames, 2);
+    EXPECT_GE(window.presents, 1);  // the first frame is shown
+  }
+  {
+    ViewerProgram viewer({});
+    FakeWindow window;
+    InputEvent space;
+    space.kind = InputEvent::KeyDown;
+    space.key = KeySpace;
+    window.events = {{5, space}};
+    LoopResult r = run_loop(viewer, &window, o);
+    EXPECT_GE(r.frames, 35);  // spinning: every frame drawn
+  }
+}
