@@ -69,6 +69,12 @@ void ViewerProgram::reset_view() {
   distance_ = home_distance_;
 }
 
+Light* ViewerProgram::key_light() {
+  for (Light& l : scene_.lights)
+    if (l.type == LightType::Directional) return &l;
+  return nullptr;
+}
+
 void ViewerProgram::place_camera() {
   Camera& c = scene_.camera;
   Vec3 dir{std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_), std::cos(pitch_) * std::cos(yaw_)};
@@ -93,8 +99,9 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
   if (e.kind != InputEvent::MouseMove || drag_) changed_ = true;
   switch (e.kind) {
     case InputEvent::MouseDown:
-      drag_ = e.button == MouseButton::Left ? 1 : 2;
+      drag_ = e.button == MouseButton::Left ? (input.held(KeyShift) ? 3 : 1) : 2;
       last_x_ = e.x, last_y_ = e.y;
+      if (drag_ == 3) say(key_light() ? "DRAG TO MOVE THE LIGHT" : "NO LIGHT TO MOVE");
       break;
     case InputEvent::MouseUp: drag_ = 0; break;
     case InputEvent::MouseMove:
@@ -104,6 +111,15 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
         if (drag_ == 1) {
           yaw_ -= dx * per_pixel * kPi;
           pitch_ = std::clamp(pitch_ + dy * per_pixel * kPi, -1.55f, 1.55f);
+        } else if (drag_ == 3) {
+          // The key light turns as the model would under the mouse: about the vertical,
+          // and up or down (never past straight overhead or below).
+          if (Light* l = key_light()) {
+            Vec3 d = normalize(l->direction);
+            float ly = std::atan2(d.x, d.z) + dx * per_pixel * kPi;
+            float lp = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)) - dy * per_pixel * kPi, -1.55f, 1.55f);
+            l->direction = {std::cos(lp) * std::sin(ly), std::sin(lp), std::cos(lp) * std::cos(ly)};
+          }
         } else {
           // Pan in the view plane, so the point under the mouse follows it.
           const Camera& c = scene_.camera;
@@ -256,6 +272,7 @@ void ViewerProgram::frame(FrameDescription& out) {
   if (help_) {
     const char* help =
         "LEFT DRAG: ROTATE   RIGHT DRAG: PAN   WHEEL: ZOOM\n"
+        "SHIFT+LEFT DRAG: MOVE THE LIGHT\n"
         "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"

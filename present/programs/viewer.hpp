@@ -39,11 +39,18 @@ class ViewerProgram : public Program {
   const Scene& scene() const { return scene_; }
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
+  // The direction towards the key light (the first directional one); zero if none.
+  Vec3 light_direction() const {
+    for (const Light& l : scene_.lights)
+      if (l.type == LightType::Directional) return normalize(l.direction);
+    return {};
+  }
 
  private:
   void open(const std::string& path);  // throws
   void reset_view();
   void place_camera();
+  Light* key_light();  // the first directional light (Shift+drag turns it); null if none
 
   ViewerOptions o_;
   Scene scene_;

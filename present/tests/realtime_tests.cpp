@@ -603,3 +603,28 @@ TEST(Loop, IdleViewerDrawsNothing) {
     EXPECT_GE(r.frames, 35);  // spinning: every frame drawn
   }
 }
+
+// Issue 21: a light you can move. Shift+left-drag turns the key light about the vertical
+// (and up or down); the camera stays; a plain drag still orbits the camera.
+TEST(Viewer, ShiftDragMovesTheLight) {
+  ViewerProgram v({});
+  v.resize(320, 240);
+  run_scripted(v, "", 0);
+  const Vec3 light = v.light_direction();
+  const float yaw = v.yaw(), pitch = v.pitch();
+  ASSERT_GT(length(light), 0.5f);
+  run_scripted(v, "0 down shift\n0.05 mousedown left 100 100\n0.1 move 160 100\n0.2 mouseup left 160 100\n"
+                  "0.3 up shift\n", 0.4);
+  const Vec3 moved = v.light_direction();
+  EXPECT_NEAR(v.yaw(), yaw, 1e-6);
+  EXPECT_NEAR(v.pitch(), pitch, 1e-6);
+  EXPECT_NEAR(std::atan2(moved.x, moved.z) - std::atan2(light.x, light.z), 60.0f / 240.0f * std::numbers::pi_v<float>,
+              1e-4);
+  EXPECT_NEAR(moved.y, light.y, 1e-4);  // a horizontal drag keeps its height
+  FrameDescription f;
+  v.frame(f);
+  bool found = false;
+  for (const Light& l : f.scene.lights)
+    found |= l.type == LightType::Directional && length(normalize(l.direction) - moved) < 1e-5f;
+  EXPECT_TRUE(found) << "the frame is not lit from the moved light";
+}
