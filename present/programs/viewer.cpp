@@ -24,6 +24,34 @@ std::string upper(std::string_view s) {
   return r;
 }
 
+// A square grid of `lines` x `lines` lines `step` apart in the XZ plane, centred on the
+// origin, as thin flat strips (unlit grey, seen from both sides).
+Mesh make_floor_grid(int lines, float step) {
+  Mesh m;
+  m.name = "viewer grid";
+  Material mat;
+  mat.name = "grid";
+  mat.color = {0.55f, 0.6f, 0.65f};
+  mat.shading = Shading::Unlit;
+  mat.two_sided = true;
+  m.materials.push_back(mat);
+  const float half = step * float(lines - 1) / 2, w = step * 0.02f;
+  auto strip = [&](Vec3 a, Vec3 b, Vec3 side) {
+    uint32_t base = uint32_t(m.positions.size());
+    for (Vec3 p : {a - side, a + side, b + side, b - side}) m.positions.push_back(p);
+    m.triangles.push_back({{base, base + 1, base + 2}});
+    m.triangles.push_back({{base, base + 2, base + 3}});
+  };
+  for (int i = 0; i < lines; ++i) {
+    float t = -half + step * float(i);
+    strip({t, 0, -half}, {t, 0, half}, {w, 0, 0});
+    strip({-half, 0, t}, {half, 0, t}, {0, 0, w});
+  }
+  m.face_materials.assign(m.triangles.size(), 0);
+  compute_normals(m);
+  return m;
+}
+
 }  // namespace
 
 ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
@@ -56,6 +84,26 @@ void ViewerProgram::open(const std::string& path) {
   } else {
     home_distance_ = radius_ / std::sin(scene.camera.fov_y / 2) * 1.05f;
   }
+  // The grid: under the lowest point of the scene, 1, 2 or 5 times a power of ten apart,
+  // about eight lines across the model.
+  float low = b.center.y - radius_;
+  std::vector<Mat4> world = scene.world_matrices();
+  bool any = false;
+  for (size_t i = 0; i < scene.objects().size(); ++i) {
+    const Object& obj = scene.objects()[i];
+    if (!obj.mesh) continue;
+    for (const Vec3& p : obj.mesh->positions) {
+      float y = world[i].transform_point(p).y;
+      low = any ? std::min(low, y) : y;
+      any = true;
+    }
+  }
+  float raw = radius_ / 4, decade = std::pow(10.0f, std::floor(std::log10(raw)));
+  grid_step_ = decade * (raw / decade < 2 ? 1.0f : raw / decade < 5 ? 2.0f : 5.0f);
+  // (A hair above it: a floor in the scene would otherwise fight it for the pixels.)
+  grid_at_ = {std::round(b.center.x / grid_step_) * grid_step_, low + radius_ * 0.002f,
+              std::round(b.center.z / grid_step_) * grid_step_};
+  grid_ = std::make_shared<const Mesh>(make_floor_grid(2 * int(std::ceil(radius_ * 1.5f / grid_step_)) + 1, grid_step_));
   scene_ = std::move(scene);
   reset_view();
 }
@@ -82,8 +130,9 @@ void ViewerProgram::place_camera() {
   c.roll = 0;
   c.look_at(target_);
   float to_center = length(scene_.bounds().center - c.position);
-  c.near = std::max(to_center - radius_ * 1.2f, std::max(distance_, radius_) * 1e-3f);
-  c.far = to_center + radius_ * 1.2f;
+  float reach = radius_ * (show_grid_ ? 2.4f : 1.2f);  // the grid reaches past the model
+  c.near = std::max(to_center - reach, std::max(distance_, radius_) * 1e-3f);
+  c.far = to_center + reach;
 }
 
 void ViewerProgram::resize(int width, int height) {
@@ -185,6 +234,10 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
           say("OPENING VIEW");
           break;
         case ' ': spin_ = !spin_; break;
+        case 'g':
+          show_grid_ = !show_grid_;
+          say(show_grid_ ? "GRID ON THE FLOOR" : "NO GRID");
+          break;
         case 'h':
         case KeyF1: help_ = !help_; break;
         case 'c':
@@ -228,6 +281,10 @@ void ViewerProgram::frame(FrameDescription& out) {
   if (wire_) out.options.shading = Shading::Wireframe;
   else if (shading_) out.options.shading = kShadings[shading_ - 1];
   changed_ = false;
+  if (show_grid_ && grid_) {
+    ObjectId id = out.scene.add_object("viewer grid", grid_);
+    out.scene.object(id).transform.translation = grid_at_;
+  }
   out.screenshot = std::move(pending_shot_);
   out.screenshot_overlay = shot_overlay_;
   pending_shot_.clear();
@@ -272,7 +329,7 @@ void ViewerProgram::frame(FrameDescription& out) {
   if (help_) {
     const char* help =
         "LEFT DRAG: ROTATE   RIGHT DRAG: PAN   WHEEL: ZOOM\n"
-        "SHIFT+LEFT DRAG: MOVE THE LIGHT\n"
+        "SHIFT+LEFT DRAG: MOVE THE LIGHT   G: GRID\n"
         "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"

@@ -4,6 +4,7 @@
 // the window replaces the model.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,7 @@ class ViewerProgram : public Program {
   float pitch() const { return pitch_; }
   float distance() const { return distance_; }
   const Scene& scene() const { return scene_; }
+  bool grid_shown() const { return show_grid_; }
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
   // The direction towards the key light (the first directional one); zero if none.
@@ -59,10 +61,13 @@ class ViewerProgram : public Program {
   Vec3 target_, initial_dir_{0.6f, 0.45f, 1.0f};
   Vec3 home_target_;           // the opening view, which R returns to
   float home_distance_ = 3;
+  std::shared_ptr<const Mesh> grid_;  // G: lines on the floor under the model, built on open
+  Vec3 grid_at_;
+  float grid_step_ = 1;
   float radius_ = 1, yaw_ = 0, pitch_ = 0, distance_ = 3;
   RenderOptions options_;
   int shading_ = 0;  // 0: the model's own; then flat, gouraud, phong, unlit, points
-  bool wire_ = false, help_ = false, spin_ = false, quit_ = false;
+  bool wire_ = false, help_ = false, spin_ = false, quit_ = false, show_grid_ = false;
   int drag_ = 0, last_x_ = 0, last_y_ = 0;
   int shots_ = 0;
   std::string pending_shot_;

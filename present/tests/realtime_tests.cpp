@@ -628,3 +628,42 @@ TEST(Viewer, ShiftDragMovesTheLight) {
     found |= l.type == LightType::Directional && length(normalize(l.direction) - moved) < 1e-5f;
   EXPECT_TRUE(found) << "the frame is not lit from the moved light";
 }
+
+// Issue 21: a grid toggle. G puts a grid on the floor, under the model's lowest point,
+// and it shows in the rendered frame; G again takes it away.
+TEST(Viewer, GridOnTheFloor) {
+  ViewerOptions o;
+  o.model = VELOCITY_TEST_MODEL;
+  ViewerProgram v(o);
+  v.resize(160, 120);
+  auto render = [&](FrameDescription& f) {
+    v.frame(f);
+    Renderer r(160, 120);
+    r.options = f.options;
+    r.render(f.scene);
+    std::vector<uint8_t> px(160 * 120 * 4);
+    r.read_color(px.data(), 160 * 4, 4);
+    return px;
+  };
+  run_scripted(v, "", 0);
+  FrameDescription plain;
+  std::vector<uint8_t> without = render(plain);
+  EXPECT_FALSE(plain.scene.find("viewer grid"));
+  run_scripted(v, "0 press g\n", 0.1);
+  EXPECT_TRUE(v.grid_shown());
+  FrameDescription gridded;
+  std::vector<uint8_t> with = render(gridded);
+  auto id = gridded.scene.find("viewer grid");
+  ASSERT_TRUE(id);
+  float low = 1e30f;
+  std::vector<Mat4> world = plain.scene.world_matrices();
+  for (size_t i = 0; i < plain.scene.objects().size(); ++i)
+    if (plain.scene.objects()[i].mesh)
+      for (const Vec3& p : plain.scene.objects()[i].mesh->positions) low = std::min(low, world[i].transform_point(p).y);
+  const float grid_y = gridded.scene.object(*id).transform.translation.y;
+  EXPECT_NEAR(grid_y, low, 0.01f * plain.scene.bounds().radius);
+  EXPECT_NE(with, without) << "the grid does not show";
+  run_scripted(v, "0 press g\n", 0.1);
+  FrameDescription again;
+  EXPECT_EQ(render(again), without);
+}
