@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "programs/shapes.hpp"
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
 #include "velocity/view_setup.hpp"
@@ -49,6 +50,24 @@ Mesh make_floor_grid(int lines, float step) {
   }
   m.face_materials.assign(m.triangles.size(), 0);
   compute_normals(m);
+  return m;
+}
+
+// An axis: a thin box from the origin `length` along axis `a` (0 X, 1 Y, 2 Z), unlit.
+Mesh make_axis(int a, float length, Vec3 color) {
+  const float t = length * 0.015f;
+  Mesh m = make_shaped_box([&](Vec3 p) {
+    Vec3 q{p.x * 2 * t, p.y * 2 * t, p.z * 2 * t};
+    (&q.x)[a] = ((&p.x)[a] + 0.5f) * length;
+    return q;
+  });
+  Material mat;
+  mat.name = "axis";
+  mat.color = color;
+  mat.shading = Shading::Unlit;
+  m.materials = {mat};
+  m.face_colors.clear();
+  m.face_materials.assign(m.triangles.size(), 0);
   return m;
 }
 
@@ -104,6 +123,8 @@ void ViewerProgram::open(const std::string& path) {
   grid_at_ = {std::round(b.center.x / grid_step_) * grid_step_, low + radius_ * 0.002f,
               std::round(b.center.z / grid_step_) * grid_step_};
   grid_ = std::make_shared<const Mesh>(make_floor_grid(2 * int(std::ceil(radius_ * 1.5f / grid_step_)) + 1, grid_step_));
+  const Vec3 axis_colors[3] = {{0.9f, 0.15f, 0.1f}, {0.2f, 0.85f, 0.2f}, {0.2f, 0.4f, 1.0f}};
+  for (int a = 0; a < 3; ++a) axes_[a] = std::make_shared<const Mesh>(make_axis(a, radius_ * 0.6f, axis_colors[a]));
   scene_ = std::move(scene);
   reset_view();
 }
@@ -234,6 +255,10 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
           say("OPENING VIEW");
           break;
         case ' ': spin_ = !spin_; break;
+        case 'x':
+          show_axes_ = !show_axes_;
+          say(show_axes_ ? "AXES: X RED, Y GREEN, Z BLUE" : "NO AXES");
+          break;
         case 'g':
           show_grid_ = !show_grid_;
           say(show_grid_ ? "GRID ON THE FLOOR" : "NO GRID");
@@ -285,6 +310,10 @@ void ViewerProgram::frame(FrameDescription& out) {
     ObjectId id = out.scene.add_object("viewer grid", grid_);
     out.scene.object(id).transform.translation = grid_at_;
   }
+  if (show_axes_) {
+    const char* names[3] = {"viewer axis x", "viewer axis y", "viewer axis z"};
+    for (int a = 0; a < 3; ++a) out.scene.add_object(names[a], axes_[a]);
+  }
   out.screenshot = std::move(pending_shot_);
   out.screenshot_overlay = shot_overlay_;
   pending_shot_.clear();
@@ -329,7 +358,7 @@ void ViewerProgram::frame(FrameDescription& out) {
   if (help_) {
     const char* help =
         "LEFT DRAG: ROTATE   RIGHT DRAG: PAN   WHEEL: ZOOM\n"
-        "SHIFT+LEFT DRAG: MOVE THE LIGHT   G: GRID\n"
+        "SHIFT+LEFT DRAG: MOVE THE LIGHT   G: GRID   X: AXES\n"
         "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"

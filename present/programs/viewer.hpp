@@ -39,6 +39,7 @@ class ViewerProgram : public Program {
   float distance() const { return distance_; }
   const Scene& scene() const { return scene_; }
   bool grid_shown() const { return show_grid_; }
+  bool axes_shown() const { return show_axes_; }
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
   // The direction towards the key light (the first directional one); zero if none.
@@ -64,10 +65,11 @@ class ViewerProgram : public Program {
   std::shared_ptr<const Mesh> grid_;  // G: lines on the floor under the model, built on open
   Vec3 grid_at_;
   float grid_step_ = 1;
+  std::shared_ptr<const Mesh> axes_[3];  // X: the world's axes at its origin, red, green, blue
   float radius_ = 1, yaw_ = 0, pitch_ = 0, distance_ = 3;
   RenderOptions options_;
   int shading_ = 0;  // 0: the model's own; then flat, gouraud, phong, unlit, points
-  bool wire_ = false, help_ = false, spin_ = false, quit_ = false, show_grid_ = false;
+  bool wire_ = false, help_ = false, spin_ = false, quit_ = false, show_grid_ = false, show_axes_ = false;
   int drag_ = 0, last_x_ = 0, last_y_ = 0;
   int shots_ = 0;
   std::string pending_shot_;

@@ -667,3 +667,40 @@ TEST(Viewer, GridOnTheFloor) {
   FrameDescription again;
   EXPECT_EQ(render(again), without);
 }
+
+// Issue 21: an axes toggle. X draws the world's axes at its origin (red X, green Y,
+// blue Z), and they show in the rendered frame.
+TEST(Viewer, AxesAtTheOrigin) {
+  ViewerOptions o;
+  o.model = VELOCITY_TEST_MODEL;
+  ViewerProgram v(o);
+  v.resize(160, 120);
+  run_scripted(v, "0 press x\n", 0.1);
+  ASSERT_TRUE(v.axes_shown());
+  FrameDescription f;
+  v.frame(f);
+  int axis = 0;
+  for (const char* name : {"viewer axis x", "viewer axis y", "viewer axis z"}) {
+    auto id = f.scene.find(name);
+    ASSERT_TRUE(id) << name;
+    Bounds b = f.scene.object(*id).mesh->bounds();
+    // Long along its own axis from the origin, thin across.
+    EXPECT_NEAR((&b.min.x)[axis], 0.0f, 1e-5f) << name;
+    EXPECT_GT((&b.max.x)[axis], 10 * (&b.max.x)[(axis + 1) % 3]) << name;
+    ++axis;
+  }
+  Renderer r(160, 120);
+  r.options = f.options;
+  r.render(f.scene);
+  std::vector<uint8_t> px(160 * 120 * 4);
+  r.read_color(px.data(), 160 * 4, 4);
+  int red = 0, green = 0, blue = 0;
+  for (size_t i = 0; i < px.size(); i += 4) {
+    red += px[i] > 180 && px[i + 1] < 80 && px[i + 2] < 80;
+    green += px[i + 1] > 180 && px[i] < 100 && px[i + 2] < 100;
+    blue += px[i + 2] > 200 && px[i] < 100 && px[i + 1] < 140;
+  }
+  EXPECT_GT(red, 5);
+  EXPECT_GT(green, 5);
+  EXPECT_GT(blue, 5);
+}
