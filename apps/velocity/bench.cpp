@@ -101,7 +101,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--shade", args->shade, "flat|gouraud|phong|wire|tex|env")->capture_default_str();
   cmd->add_option("--tex", args->tex, "Texture for tex and env (default: the 256x256 checkerboard)");
   cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear (default trilinear)");
-  cmd->add_flag("--affine", args->affine, "Affine (screen-linear) interpolation, as the seed could afford");
+  cmd->add_flag("--affine", args->affine, "Affine (screen-linear) interpolation: cheaper, bends on large polygons");
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor per side, 1..4")->capture_default_str();
   cmd->add_option("--copies", args->copies, "Draw the mesh N times per frame, in a square grid")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();

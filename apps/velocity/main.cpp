@@ -6,8 +6,8 @@
 //   velocity info FILE            what a model file holds
 //   velocity batch JOB ...        many models x many views to a folder (the Python job runner)
 //   velocity view [FILE]          look at a model in a window (present/programs)
-//   velocity fly                  seed 001's flythrough
-//   velocity drive                seed 000's driving simulation
+//   velocity fly                  a flythrough among polygon shapes
+//   velocity drive                a driving simulation on a race track
 #include <cstdio>
 
 #include "commands.hpp"

@@ -200,7 +200,7 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--texture", args->texture, "Base texture for every material (PNG, JPEG, TGA, BMP, GIF, PCX)");
   cmd->add_option("--env", args->env, "Sphere environment map for every material");
   cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear");
-  cmd->add_flag("--affine", args->affine, "Affine (screen-linear) texture mapping, as the seed could afford");
+  cmd->add_flag("--affine", args->affine, "Affine (screen-linear) texture mapping: cheaper, bends on large polygons");
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor per side, 1..4 (default: 3 for the demo scene, else 1)");
   cmd->add_option("--camera", args->camera, "Camera position x,y,z (looking at the model) or x,y,z,yaw,pitch,roll (degrees)");
   cmd->add_option("--fov", args->fov, "Vertical field of view in degrees");

@@ -527,4 +527,19 @@ void DriveProgram::sound(Synth& synth) {
   for (; pending_crashes_ > 0; --pending_crashes_) synth.play(Effect::Crash);
 }
 
+ShellText drive_shell_text() {
+  ShellText text;
+  text.title = "VELOCITY DRIVE";
+  text.subtitle = "A DRIVING SIMULATION";
+  text.start = "DRIVE";
+  text.credits =
+      "*VELOCITY DRIVE\n\nA CAR ON A RACE TRACK\nIN THE STYLE OF 1990S 3D DRIVING GAMES\n\n\n"
+      "*ENGINE\nVELOCITY SOFTWARE RENDERER\nFLAT, GOURAUD AND PHONG SHADING\nTEXTURE AND ENVIRONMENT MAPS\n\n\n"
+      "*CONTROLS\nUP  THROTTLE     DOWN  BRAKE\nLEFT / RIGHT  STEER\nC  CAMERA     H  HIGH QUALITY\n"
+      "[ ]  FOCAL LENGTH     Q E  SWIVEL\nPGUP PGDN  PITCH     , .  ROLL\nR  BACK TO THE GRID     ESC  MENU\n\n\n"
+      "*SOUND\nSYNTHESISED AS YOU LISTEN\n\n\n"
+      "*DRIVE SAFELY\n";
+  return text;
+}
+
 }  // namespace velocity::realtime

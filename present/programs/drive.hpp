@@ -1,4 +1,4 @@
-// `velocity drive`: seed 000's driving simulation. A car whose four wheels are child
+// `velocity drive`: the driving simulation (after seed 000's). A car whose four wheels are child
 // objects (spinning with the speed; the front two steer), on a race track over textured
 // grass with trees, buildings and cones; chase, cockpit and trackside cameras with the
 // seed's camera controls (position, roll, pitch, swivel, focal length); an
@@ -93,5 +93,8 @@ class DriveProgram : public Game {
   bool hq_ = false, attract_ = false;
   int collisions_ = 0, pending_crashes_ = 0;
 };
+
+// The title screen, menu and credits around the game (plain words: no seed numbers).
+ShellText drive_shell_text();
 
 }  // namespace velocity::realtime

@@ -249,4 +249,19 @@ void FlyProgram::sound(Synth& synth) {
   for (; pending_crashes_ > 0; --pending_crashes_) synth.play(Effect::Crash);
 }
 
+ShellText fly_shell_text() {
+  ShellText text;
+  text.title = "VELOCITY FLIGHT";
+  text.subtitle = "A POLYGON FLYTHROUGH";
+  text.start = "FLY";
+  text.credits =
+      "*VELOCITY FLIGHT\n\nA FLIGHT AMONG STATIONS AND MOONS\nIN THE STYLE OF 1990S 3D DEMOS\n\n\n"
+      "*ENGINE\nVELOCITY SOFTWARE RENDERER\nEVERY PIXEL ON THE CPU\n\n\n"
+      "*CONTROLS\nLEFT / RIGHT  TURN\nUP  DIVE     DOWN  CLIMB\nA or CTRL  FASTER\nZ or SHIFT  SLOWER\nESC  MENU\n\n\n"
+      "*MODELS\nCUBES, PYRAMIDS AND TORI\nOR YOUR OWN PLG FILES\n\n\n"
+      "*MUSIC AND SOUND\nSYNTHESISED AS YOU LISTEN\n\n\n"
+      "*THANK YOU FOR FLYING\n";
+  return text;
+}
+
 }  // namespace velocity::realtime

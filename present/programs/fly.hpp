@@ -1,4 +1,4 @@
-// `velocity fly`: seed 001's flythrough. A world of flat-shaded objects (built-in cubes,
+// `velocity fly`: the flythrough (after seed 001's). A world of flat-shaded objects (built-in cubes,
 // pyramids and tori, or PLG models) in an object hierarchy (stations with moons that
 // orbit them), lit by an ambient and a point light. Left and right turn, up dives, down
 // climbs, A or Ctrl flies faster, Z or Shift slower. Each object's bounding sphere
@@ -77,5 +77,8 @@ class FlyProgram : public Game {
   size_t rejected_ = 0;
   float clearance_ = 1e30f;
 };
+
+// The title screen, menu and credits around the flight (plain words: no seed numbers).
+ShellText fly_shell_text();
 
 }  // namespace velocity::realtime

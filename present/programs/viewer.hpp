@@ -4,6 +4,7 @@
 // the window replaces the model.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,7 @@ class ViewerProgram : public Program {
   void update(double dt, const InputState& input) override;
   void frame(FrameDescription& out) override;
   bool finished() const override { return quit_; }
+  bool changed() const override { return changed_; }
   std::string title() const override;
 
   // The orbit, for tests: angles in radians, distance in scene units.
@@ -36,27 +38,44 @@ class ViewerProgram : public Program {
   float pitch() const { return pitch_; }
   float distance() const { return distance_; }
   const Scene& scene() const { return scene_; }
+  bool grid_shown() const { return show_grid_; }
+  bool axes_shown() const { return show_axes_; }
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
+  // The direction towards the key light (the first directional one); zero if none.
+  Vec3 light_direction() const {
+    for (const Light& l : scene_.lights)
+      if (l.type == LightType::Directional) return normalize(l.direction);
+    return {};
+  }
 
  private:
   void open(const std::string& path);  // throws
   void reset_view();
   void place_camera();
+  Light* key_light();  // the first directional light (Shift+drag turns it); null if none
 
   ViewerOptions o_;
   Scene scene_;
   std::string name_;
   size_t triangles_ = 0;
   Vec3 target_, initial_dir_{0.6f, 0.45f, 1.0f};
+  Vec3 home_target_;           // the opening view, which R returns to
+  float home_distance_ = 3;
+  std::shared_ptr<const Mesh> grid_;  // G: lines on the floor under the model, built on open
+  Vec3 grid_at_;
+  float grid_step_ = 1;
+  std::shared_ptr<const Mesh> axes_[3];  // X: the world's axes at its origin, red, green, blue
   float radius_ = 1, yaw_ = 0, pitch_ = 0, distance_ = 3;
   RenderOptions options_;
   int shading_ = 0;  // 0: the model's own; then flat, gouraud, phong, unlit, points
-  bool wire_ = false, help_ = false, spin_ = false, quit_ = false;
+  bool wire_ = false, help_ = false, spin_ = false, quit_ = false, show_grid_ = false, show_axes_ = false;
   int drag_ = 0, last_x_ = 0, last_y_ = 0;
   int shots_ = 0;
   std::string pending_shot_;
+  bool shot_overlay_ = false;
   std::string message_;
+  bool changed_ = true;  // something to draw since the last frame
   double message_time_ = 0;
 };
 

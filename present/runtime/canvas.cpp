@@ -43,7 +43,9 @@ namespace {
 // an RGBA colour) each. Calls `f(x0, y0, x1, y1)` for every quad of `text` at (0, 0).
 template <typename F>
 void for_each_quad(const std::string& text, F&& f) {
-  // About 270 bytes of quads per character at most; text is drawn a line at a time.
+  // 64 bytes a quad; 'X' takes 11 quads and other glyphs more than 5, so guess generously
+  // and, when the buffer filled up (stb_easy_font stops writing quietly and the last
+  // glyphs would come out cut), try again with twice the room. A line at a time.
   std::vector<char> buffer;
   size_t start = 0;
   int line = 0;
@@ -51,8 +53,12 @@ void for_each_quad(const std::string& text, F&& f) {
     size_t end = text.find('\n', start);
     if (end == std::string::npos) end = text.size();
     std::string s = text.substr(start, end - start);
-    buffer.assign(s.size() * 300 + 64, 0);
-    int quads = stb_easy_font_print(0, float(line * 10), s.data(), nullptr, buffer.data(), int(buffer.size()));
+    int quads = 0;
+    for (size_t size = s.size() * 16 * 64 + 64;; size *= 2) {
+      buffer.resize(size);
+      quads = stb_easy_font_print(0, float(line * 10), s.data(), nullptr, buffer.data(), int(buffer.size()));
+      if (size_t(quads) * 64 + 64 <= size) break;
+    }
     for (int q = 0; q < quads; ++q) {
       const float* v0 = reinterpret_cast<const float*>(buffer.data() + q * 64);
       const float* v2 = reinterpret_cast<const float*>(buffer.data() + q * 64 + 32);
@@ -80,6 +86,41 @@ void draw_text(Canvas& c, int x, int y, const std::string& text, Rgba color, int
   for_each_quad(text, [&](int x0, int y0, int x1, int y1) {
     fill_rect(c, x + x0 * scale, y + y0 * scale, (x1 - x0) * scale, (y1 - y0) * scale, color);
   });
+}
+
+std::string ellipsize(const std::string& text, int max_width, int scale) {
+  if (text_width(text, scale) <= max_width) return text;
+  std::string s = text;
+  while (!s.empty() && text_width(s + "...", scale) > max_width) s.pop_back();
+  return s.empty() ? std::string() : s + "...";
+}
+
+std::string wrap_text(const std::string& text, int max_width, int scale) {
+  std::string out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string rest = text.substr(start, end - start), line;
+    while (text_width(rest, scale) > max_width && rest.size() > 1) {
+      // The longest start of `rest` that fits, ended at a space, else after a '/',
+      // else anywhere (at least one character a line).
+      size_t fit = 1;
+      while (fit < rest.size() && text_width(rest.substr(0, fit + 1), scale) <= max_width) ++fit;
+      size_t cut = rest.rfind(' ', fit);
+      if (cut == std::string::npos || cut == 0) {
+        cut = rest.rfind('/', fit - 1);
+        cut = cut == std::string::npos || cut == 0 ? fit : cut + 1;
+      }
+      out += rest.substr(0, cut) + "\n";
+      rest = rest.substr(cut);
+      rest.erase(0, rest.find_first_not_of(' ') == std::string::npos ? rest.size() : rest.find_first_not_of(' '));
+    }
+    out += rest;
+    if (end < text.size()) out += "\n";
+    start = end + 1;
+  }
+  return out;
 }
 
 void draw_text_shadow(Canvas& c, int x, int y, const std::string& text, Rgba color, int scale) {

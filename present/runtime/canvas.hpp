@@ -34,6 +34,11 @@ void fade(Canvas& c, float amount);
 int text_width(const std::string& text, int scale = 1);
 int text_height(const std::string& text, int scale = 1);
 void draw_text(Canvas& c, int x, int y, const std::string& text, Rgba color, int scale = 1);
+// `text` cut to at most `max_width` pixels, ending in "..." when cut (one line).
+std::string ellipsize(const std::string& text, int max_width, int scale = 1);
+// `text` with line breaks so that no line is wider than `max_width` pixels: at spaces,
+// and where a word alone is too wide, after a '/' or anywhere in it. Keeps its '\n's.
+std::string wrap_text(const std::string& text, int max_width, int scale = 1);
 // draw_text with a one-pixel (times scale) dark shadow, readable on any background.
 void draw_text_shadow(Canvas& c, int x, int y, const std::string& text, Rgba color, int scale = 1);
 

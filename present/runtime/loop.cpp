@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -18,6 +19,22 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+  std::signal(sig, SIG_DFL);  // a second one ends the program at once
+}
+
+// The whole file or none: PNGs are written next to their name and renamed.
+void write_png_whole(const std::string& path, const Image& image) {
+  std::string part = path + ".part";
+  write_png(part, image);
+  std::error_code ec;
+  std::filesystem::rename(part, path, ec);
+  if (ec) throw Error("cannot write " + path + ": " + ec.message());
+}
+
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 // The render thread's side: owns the renderer; one frame at a time.
@@ -31,6 +48,7 @@ struct Rendered {
   Image image;
   double ms = 0;
   std::string screenshot;
+  Image clean;  // the screenshot without the 2D layer, when it asks for that
 };
 
 Rendered render_job(Renderer& renderer, RenderJob job) {
@@ -50,6 +68,7 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
     auto c = [](float v) { return uint32_t(std::lrint(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
     out.image = Image(job.width, job.height, 0xff000000u | c(bg.z) << 16 | c(bg.y) << 8 | c(bg.x));
   }
+  if (!f.screenshot.empty() && !f.screenshot_overlay) out.clean = out.image;
   Canvas canvas{out.image.pixels.data(), job.width, job.height, size_t(job.width) * 4};
   f.overlay.draw(canvas);
   if (!job.stats_text.empty()) {
@@ -64,6 +83,14 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
 }
 
 }  // namespace
+
+void install_stop_signals() {
+  g_stop_signal = 0;
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+}
+
+int stop_signal() { return int(g_stop_signal); }
 
 double percentile(std::vector<double> samples, double fraction) {
   if (samples.empty()) return 0;
@@ -119,23 +146,27 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     if (!o.record_dir.empty()) {
       char name[64];
       std::snprintf(name, sizeof name, "/frame_%05ld.png", recorded);
-      write_png(o.record_dir + name, r.image);
+      write_png_whole(o.record_dir + name, r.image);
     }
     ++recorded;
     if (!r.screenshot.empty()) {
-      write_png(r.screenshot, r.image);
+      write_png_whole(r.screenshot, r.clean.width > 0 ? r.clean : r.image);
       std::printf("wrote %s (%dx%d)\n", r.screenshot.c_str(), r.image.width, r.image.height);
       std::fflush(stdout);
     }
     last_image = std::move(r.image);
   };
 
+  // In a window with nothing bounding the run, a frame in which nothing changed (no input,
+  // and the program says so) is not drawn: an idle viewer costs no CPU.
+  const bool may_idle = presenter && !fixed && o.frames <= 0;
+  bool drew_last = false;
   bool quit = false;
   for (long n = 0; !quit && (o.frames <= 0 || n < o.frames); ++n) {
     // Time step.
     auto now = Clock::now();
     double dt = fixed ? kFixedStep : std::clamp(std::chrono::duration<double>(now - last).count(), 0.0, 0.1);
-    if (n > 0) result.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
+    if (n > 0 && drew_last) result.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
     last = now;
     sim_time += n > 0 ? dt : 0.0;
 
@@ -161,12 +192,19 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
       input.apply(e);
       program.event(e, input);
     }
-    if (program.finished()) quit = true;
+    if (program.finished() || g_stop_signal) quit = true;
     if (quit) break;
 
     program.update(n > 0 ? dt : 0.0, input);
     if (o.synth) program.sound(*o.synth);
     if (presenter && program.title() != title) presenter->set_title(title = program.title());
+    if (may_idle && n > 0 && events.empty() && !program.changed()) {
+      if (pending.valid()) show(pending.get());  // the last frame drawn goes up first
+      drew_last = false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(8));
+      continue;
+    }
+    drew_last = true;
 
     RenderJob job;
     program.frame(job.frame);
@@ -188,6 +226,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     pending = std::async(std::launch::async, render_job, std::ref(renderer), std::move(job));
     if (previous) show(std::move(*previous));
     ++result.frames;
+    if (o.end_with_script && script && script->finished()) quit = true;
 
     // A fixed step with sound on: keep the program's time with the audio's.
     if (fixed && o.pace_to_clock) {
@@ -201,7 +240,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   // Keep the last frame on screen a while (tests take the window's picture then).
   if (presenter && o.linger > 0) {
     auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.linger));
-    while (Clock::now() < until) {
+    while (Clock::now() < until && !g_stop_signal) {
       events.clear();
       presenter->poll(events);
       if (std::any_of(events.begin(), events.end(), [](const InputEvent& e) {

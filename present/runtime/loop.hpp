@@ -43,6 +43,7 @@ struct LoopOptions {
   long frames = 0;             // stop after this many frames (0: when the program ends)
   std::string record_dir;      // write frame N as DIR/frame_NNNNN.png
   std::optional<Script> script;
+  bool end_with_script = false;  // stop once the script has played out (runs nobody sees)
   bool fixed_step = false;     // 1/60 s a frame whatever the clock says
   bool pace_to_clock = false;  // with a fixed step, never run ahead of the wall clock (sound on)
   bool overlay = true;         // frame rate and frame time in the corner (F3 toggles)
@@ -62,6 +63,14 @@ struct LoopResult {
 inline constexpr double kFixedStep = 1.0 / 60.0;
 
 LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& options);
+
+// SIGINT and SIGTERM ask run_loop to stop after the frame in progress: the frame being
+// rendered is still shown and recorded, the statistics printed. A second signal ends the
+// program at once (frames are written to NAME.part and renamed, so no PNG is ever half
+// written). Install before SDL starts (SDL then leaves these signals alone).
+void install_stop_signals();
+// The signal that asked run_loop to stop; 0 when none.
+int stop_signal();
 
 // The value below which `fraction` (0..1) of `samples` lie (nearest rank); 0 when empty.
 double percentile(std::vector<double> samples, double fraction);

@@ -22,6 +22,7 @@ struct FrameDescription {
   RenderOptions options;
   DrawList overlay;         // drawn over the 3D image
   std::string screenshot;   // when set, the finished frame is also written there (PNG)
+  bool screenshot_overlay = true;  // false: the screenshot is the 3D image alone
 };
 
 class Program {
@@ -40,6 +41,10 @@ class Program {
   // Pushes sound parameters (engine pitch, effects, music) to the synthesiser.
   virtual void sound(Synth&) {}
   virtual bool finished() const = 0;
+  // Whether the next frame would differ from the last one described, with no input since.
+  // A program that knows returns false when idle, and the main loop then draws nothing
+  // until input comes (in a window, when no fixed step or frame count is asked for).
+  virtual bool changed() const { return true; }
   virtual std::string title() const = 0;
 
   int width() const { return width_; }

@@ -38,6 +38,12 @@ Key translate_key(SDL_Keycode k) {
   return realtime::KeyNone;
 }
 
+// SDL's video drivers that draw nowhere a person can see.
+bool is_invisible_driver(const char* name) {
+  return name && (SDL_strcasecmp(name, "offscreen") == 0 || SDL_strcasecmp(name, "dummy") == 0 ||
+                  SDL_strcasecmp(name, "evdev") == 0);
+}
+
 }  // namespace
 
 struct SdlPresenter::Impl {
@@ -49,7 +55,27 @@ struct SdlPresenter::Impl {
 };
 
 SdlPresenter::SdlPresenter(const WindowOptions& o) : impl_(std::make_unique<Impl>()) {
-  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) throw Error(std::string("cannot open a window: ") + SDL_GetError());
+  const bool chosen = SDL_GetHint(SDL_HINT_VIDEODRIVER) != nullptr;  // SDL_VIDEODRIVER
+  if (!chosen) {
+    // Only the drivers that show a window. Wayland cannot connect without
+    // XDG_RUNTIME_DIR (and its library would print an error saying so).
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    bool no_wayland = !std::getenv("XDG_RUNTIME_DIR") && !(wayland && wayland[0] == '/');
+    std::string drivers;
+    for (int i = 0; i < SDL_GetNumVideoDrivers(); ++i) {
+      const char* name = SDL_GetVideoDriver(i);
+      if (is_invisible_driver(name) || (no_wayland && SDL_strcasecmp(name, "wayland") == 0)) continue;
+      drivers += (drivers.empty() ? "" : ",") + std::string(name);
+    }
+    if (!drivers.empty()) SDL_SetHint(SDL_HINT_VIDEODRIVER, drivers.c_str());
+  }
+  bool opened = SDL_InitSubSystem(SDL_INIT_VIDEO) == 0;
+  if (!opened || (!chosen && is_invisible_driver(SDL_GetCurrentVideoDriver()))) {
+    if (opened) SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))
+      throw Error("cannot open a window: no display (DISPLAY and WAYLAND_DISPLAY are not set)");
+    throw Error(std::string("cannot open a window: ") + SDL_GetError());
+  }
   // Nearest filtering: a 320x200 frame stays crisp pixels at any window size.
   SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");
   SDL_SetHint(SDL_HINT_RENDER_VSYNC, o.vsync ? "1" : "0");
@@ -121,6 +147,12 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
         }
         break;
       case SDL_WINDOWEVENT:
+        // Uncovered: show the last frame again (an idle program draws no new one).
+        if (ev.window.event == SDL_WINDOWEVENT_EXPOSED && impl_->texture) {
+          SDL_RenderClear(impl_->renderer);
+          SDL_RenderCopy(impl_->renderer, impl_->texture, nullptr, nullptr);
+          SDL_RenderPresent(impl_->renderer);
+        }
         if (ev.window.event != SDL_WINDOWEVENT_SIZE_CHANGED) continue;
         e.kind = InputEvent::Resize;
         std::tie(e.x, e.y) = window_size();
@@ -175,6 +207,8 @@ std::string SdlPresenter::driver() const {
   return std::string(SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "?") + "/" +
          (info.name ? info.name : "?");
 }
+
+bool SdlPresenter::invisible() const { return is_invisible_driver(SDL_GetCurrentVideoDriver()); }
 
 namespace {
 

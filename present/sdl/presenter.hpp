@@ -23,6 +23,9 @@ struct WindowOptions {
 class SdlPresenter : public realtime::Presenter {
  public:
   // Throws velocity::Error with SDL's reason when no window can be opened (no display).
+  // SDL 2.26 falls back to its off-screen driver when there is no display, which would
+  // run invisibly: without SDL_VIDEODRIVER naming a driver, only a driver that shows
+  // a window (x11, wayland, KMSDRM, ...) is taken, and otherwise this throws saying so.
   explicit SdlPresenter(const WindowOptions& options);
   ~SdlPresenter() override;
   SdlPresenter(const SdlPresenter&) = delete;
@@ -35,6 +38,9 @@ class SdlPresenter : public realtime::Presenter {
   std::pair<int, int> window_size() const override;
   // The video driver in use ("x11", "wayland", "dummy", ...) and the renderer's name.
   std::string driver() const;
+  // Whether the window shows nowhere (SDL's dummy or offscreen driver, chosen with
+  // SDL_VIDEODRIVER).
+  bool invisible() const;
 
  private:
   struct Impl;

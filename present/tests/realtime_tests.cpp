@@ -3,7 +3,9 @@
 // viewer's model policy is the library's: tests/unit/test_view_setup.cpp.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 
@@ -16,6 +18,7 @@
 #include "runtime/shell.hpp"
 #include "runtime/synth.hpp"
 #include "velocity/error.hpp"
+#include "velocity/image.hpp"
 
 using namespace velocity;
 using namespace velocity::realtime;
@@ -375,4 +378,329 @@ TEST(Viewer, OrbitZoomAndModes) {
   // A dropped file that cannot be read leaves the scene and says why.
   run_scripted(v, "0 drop /nonexistent/model.asc\n", 0.1);
   EXPECT_NE(v.message().find("nonexistent"), std::string::npos);
+}
+
+// Issue 21: R after rotating, panning, zooming and spinning returns to the opening view
+// (on the demo scene it jumped to a distant one).
+TEST(Viewer, ResetReturnsToTheOpeningView) {
+  for (std::string model : {std::string(), std::string(VELOCITY_TEST_MODEL)}) {
+    SCOPED_TRACE(model.empty() ? "demo scene" : model);
+    ViewerOptions o;
+    o.model = model;
+    ViewerProgram v(o);
+    v.resize(320, 240);
+    run_scripted(v, "", 0);
+    const Vec3 start = v.scene().camera.position;
+    const float yaw = v.yaw(), pitch = v.pitch(), d = v.distance();
+    run_scripted(v, "0 mousedown left 100 100\n0.1 move 180 140\n0.2 mouseup left 180 140\n"
+                    "0.3 mousedown right 100 100\n0.4 move 150 60\n0.5 mouseup right 150 60\n"
+                    "0.6 wheel -3\n0.7 press space\n1.5 press r\n", 1.6);
+    EXPECT_NEAR(v.yaw(), yaw, 1e-5);
+    EXPECT_NEAR(v.pitch(), pitch, 1e-5);
+    EXPECT_NEAR(v.distance(), d, 1e-5 * d);
+    const Vec3 end = v.scene().camera.position;
+    EXPECT_LT(length(end - start), 1e-4f * d) << "the camera is not where it started";
+  }
+}
+
+// Issue 21: the "SSAA 2X2" message's last glyph came out cut (stb_easy_font ran out of
+// room for the quads of 'X'). Every glyph of a string is drawn whole: the string lights
+// as many pixels as its characters do one by one.
+TEST(Canvas, EveryGlyphIsDrawnWhole) {
+  auto lit = [](const std::string& text) {
+    std::vector<uint8_t> px(400 * 20 * 4, 0);
+    Canvas c{px.data(), 400, 20, 400 * 4};
+    draw_text(c, 0, 2, text, {255, 255, 255, 255});
+    int n = 0;
+    for (size_t i = 0; i < px.size(); i += 4) n += px[i] == 255;
+    return n;
+  };
+  for (std::string s : {"SSAA 2X2", "SSAA 3X3", "XXXXXXXXXXXX", "8888%%%%@@@@", "MW#&$"}) {
+    int sum = 0;
+    for (char ch : s) sum += lit(std::string(1, ch));
+    EXPECT_EQ(lit(s), sum) << s;
+  }
+}
+
+namespace {
+
+// Every text and rectangle of a frame's 2D layer inside the frame; all its text, joined.
+std::string expect_overlay_inside(const FrameDescription& f, int width, int height) {
+  std::string all;
+  for (const DrawOp& op : f.overlay.ops()) {
+    if (op.kind == DrawOp::Fade) continue;
+    int w = op.kind == DrawOp::Rect ? op.w : text_width(op.text, op.scale);
+    int h = op.kind == DrawOp::Rect ? op.h : text_height(op.text, op.scale);
+    EXPECT_GE(op.x, 0) << op.text;
+    EXPECT_GE(op.y, 0) << op.text;
+    EXPECT_LE(op.x + w, width) << "'" << op.text << "' runs off the right edge at " << width << "x" << height;
+    EXPECT_LE(op.y + h, height) << op.text;
+    all += op.text + "\n";
+  }
+  return all;
+}
+
+}  // namespace
+
+// Issue 21: the status bar ran off the right edge at 800x600 ("H:"), and a dropped bad
+// file's error was cut at both edges. At every screen mode, with a long file name and a
+// long error, the 2D layer stays inside the frame and still says everything.
+TEST(Viewer, StatusBarAndMessagesStayInside) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "velocity_viewer_overlay";
+  fs::create_directories(dir);
+  fs::path long_name = dir / (std::string(90, 'w') + "_a_model_with_a_very_long_name.obj");
+  fs::copy_file(VELOCITY_TEST_MODEL, long_name, fs::copy_options::overwrite_existing);
+  const std::string bad = "/nonexistent/folder/with/a/rather/long/path/to/somewhere/" + std::string(60, 'x') + ".obj";
+  for (auto [w, h] : {std::pair{320, 200}, {320, 240}, {640, 480}, {800, 600}, {1280, 720}}) {
+    SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+    ViewerProgram v({});
+    v.resize(w, h);
+    run_scripted(v, "0 press h\n", 0.2);
+    FrameDescription f;
+    v.frame(f);
+    std::string text = expect_overlay_inside(f, w, h);
+    EXPECT_NE(text.find("H: HELP"), std::string::npos) << text;
+    EXPECT_NE(text.find("QUIT"), std::string::npos) << text;
+
+    run_scripted(v, "0 press h\n0 drop " + bad + "\n", 0.2);
+    FrameDescription g;
+    v.frame(g);
+    text = expect_overlay_inside(g, w, h);
+    EXPECT_NE(text.find("nonexistent"), std::string::npos) << text;
+
+    run_scripted(v, "0 drop " + long_name.string() + "\n", 0.2);
+    FrameDescription k;
+    v.frame(k);
+    text = expect_overlay_inside(k, w, h);
+    EXPECT_NE(text.find("WWWW"), std::string::npos) << text;
+    EXPECT_NE(text.find("H: HELP"), std::string::npos) << text;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Canvas, WrapAndEllipsize) {
+  EXPECT_EQ(wrap_text("ONE TWO THREE", 1000), "ONE TWO THREE");
+  std::string w = wrap_text("ONE TWO THREE FOUR", text_width("ONE TWO"));
+  EXPECT_EQ(w, "ONE TWO\nTHREE\nFOUR");
+  std::string p = wrap_text("/a/very/long/path/name", text_width("/a/very/"));
+  EXPECT_EQ(p.substr(0, p.find('\n')), "/a/very/");
+  for (size_t a = 0, b; a <= p.size(); a = b + 1) {
+    b = std::min(p.find('\n', a), p.size());
+    EXPECT_LE(text_width(p.substr(a, b - a)), text_width("/a/very/"));
+  }
+  EXPECT_EQ(ellipsize("SHORT", 1000), "SHORT");
+  std::string e = ellipsize("A RATHER LONG NAME", text_width("A RATHER"));
+  EXPECT_LE(text_width(e), text_width("A RATHER"));
+  EXPECT_EQ(e.substr(e.size() - 3), "...");
+}
+
+// Issue 21: "seed 000", "seed 001" and "OWN" meant nothing to a user. The menus and
+// credits say what the programs are in plain words, and the viewer's status bar names
+// each mode (the command line's help: rt_help_plain_words).
+TEST(Words, NoSeedNumbersAndEveryModeNamed) {
+  for (const ShellText& t : {drive_shell_text(), fly_shell_text()}) {
+    for (const std::string& s : {t.title, t.subtitle, t.start, t.credits}) {
+      EXPECT_EQ(s.find("SEED"), std::string::npos) << s;
+      EXPECT_EQ(s.find("seed"), std::string::npos) << s;
+    }
+    EXPECT_FALSE(t.credits.empty());
+  }
+  ViewerProgram v({});
+  v.resize(800, 600);
+  run_scripted(v, "", 0);
+  FrameDescription f;
+  v.frame(f);
+  std::string text = expect_overlay_inside(f, 800, 600);
+  EXPECT_EQ(text.find("OWN"), std::string::npos) << text;
+  for (const char* named : {"SHADING: AS THE MODEL SAYS", "DEPTH BUFFER", "SSAA 1X1", "PERSPECTIVE TEXTURES", "TRIANGLES"})
+    EXPECT_NE(text.find(named), std::string::npos) << named << " not in " << text;
+}
+
+// Issue 21: screenshots always included the overlay. F12 (or C) writes the model alone,
+// Shift+F12 the frame as the window shows it (status bar and frame rate too).
+TEST(Viewer, ScreenshotsWithAndWithoutTheOverlay) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "velocity_viewer_shots";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ViewerOptions vo;
+  vo.screenshot_prefix = (dir / "shot").string();
+  ViewerProgram viewer(vo);
+  LoopOptions o;
+  o.width = 320, o.height = 240, o.frames = 20, o.threads = 2, o.quiet = true;
+  o.record_dir = (dir / "frames").string();
+  o.script = parse_script("0.05 press f12\n0.1 down shift\n0.15 press f12\n0.25 up shift\n");
+  run_loop(viewer, nullptr, o);
+  Image clean = read_image((dir / "shot-000.png").string());
+  Image shown = read_image((dir / "shot-001.png").string());
+  ASSERT_EQ(clean.width, 320);
+  ASSERT_EQ(shown.width, 320);
+  // Shift+F12 is exactly a frame the window showed.
+  bool recorded = false;
+  for (int i = 0; i < 20 && !recorded; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", i);
+    recorded = read_image((dir / "frames" / name).string()).pixels == shown.pixels;
+  }
+  EXPECT_TRUE(recorded);
+  // F12: the same scene, without the status bar (bottom rows) or the frame rate (top left).
+  auto rows_equal = [&](int y0, int y1) {
+    return std::equal(clean.pixel(0, y0), clean.pixel(0, y1), shown.pixel(0, y0));
+  };
+  EXPECT_TRUE(rows_equal(30, 180));
+  EXPECT_FALSE(rows_equal(230, 240)) << "the status bar is in the F12 screenshot";
+  EXPECT_FALSE(rows_equal(0, 10)) << "the frame rate is in the F12 screenshot";
+  fs::remove_all(dir);
+}
+
+namespace {
+
+// A window that is not there: counts the frames shown, hands out `events` at the given
+// polls, and closes itself at poll `quit_at`.
+struct FakeWindow : Presenter {
+  int polls = 0, presents = 0, quit_at = 40;
+  std::vector<std::pair<int, InputEvent>> events;
+  void poll(std::vector<InputEvent>& out) override {
+    ++polls;
+    for (auto& [at, e] : events)
+      if (at == polls) out.push_back(e);
+    if (polls >= quit_at) {
+      InputEvent quit;
+      quit.kind = InputEvent::Quit;
+      out.push_back(quit);
+    }
+  }
+  void present(const uint8_t*, int, int) override { ++presents; }
+  void set_title(const std::string&) override {}
+  void toggle_fullscreen() override {}
+  std::pair<int, int> window_size() const override { return {64, 48}; }
+};
+
+}  // namespace
+
+// Issue 21: the viewer redrew when nothing changed (28 % of a core, idle). In a window,
+// a frame with no input and nothing moving is not drawn; spinning draws every frame.
+TEST(Loop, IdleViewerDrawsNothing) {
+  LoopOptions o;
+  o.width = 64, o.height = 48, o.threads = 1, o.quiet = true;
+  {
+    ViewerProgram viewer({});
+    FakeWindow window;
+    LoopResult r = run_loop(viewer, &window, o);
+    EXPECT_EQ(window.polls, 40);
+    EXPECT_LE(r.frames, 2);
+    EXPECT_GE(window.presents, 1);  // the first frame is shown
+  }
+  {
+    ViewerProgram viewer({});
+    FakeWindow window;
+    InputEvent space;
+    space.kind = InputEvent::KeyDown;
+    space.key = KeySpace;
+    window.events = {{5, space}};
+    LoopResult r = run_loop(viewer, &window, o);
+    EXPECT_GE(r.frames, 35);  // spinning: every frame drawn
+  }
+}
+
+// Issue 21: a light you can move. Shift+left-drag turns the key light about the vertical
+// (and up or down); the camera stays; a plain drag still orbits the camera.
+TEST(Viewer, ShiftDragMovesTheLight) {
+  ViewerProgram v({});
+  v.resize(320, 240);
+  run_scripted(v, "", 0);
+  const Vec3 light = v.light_direction();
+  const float yaw = v.yaw(), pitch = v.pitch();
+  ASSERT_GT(length(light), 0.5f);
+  run_scripted(v, "0 down shift\n0.05 mousedown left 100 100\n0.1 move 160 100\n0.2 mouseup left 160 100\n"
+                  "0.3 up shift\n", 0.4);
+  const Vec3 moved = v.light_direction();
+  EXPECT_NEAR(v.yaw(), yaw, 1e-6);
+  EXPECT_NEAR(v.pitch(), pitch, 1e-6);
+  EXPECT_NEAR(std::atan2(moved.x, moved.z) - std::atan2(light.x, light.z), 60.0f / 240.0f * std::numbers::pi_v<float>,
+              1e-4);
+  EXPECT_NEAR(moved.y, light.y, 1e-4);  // a horizontal drag keeps its height
+  FrameDescription f;
+  v.frame(f);
+  bool found = false;
+  for (const Light& l : f.scene.lights)
+    found |= l.type == LightType::Directional && length(normalize(l.direction) - moved) < 1e-5f;
+  EXPECT_TRUE(found) << "the frame is not lit from the moved light";
+}
+
+// Issue 21: a grid toggle. G puts a grid on the floor, under the model's lowest point,
+// and it shows in the rendered frame; G again takes it away.
+TEST(Viewer, GridOnTheFloor) {
+  ViewerOptions o;
+  o.model = VELOCITY_TEST_MODEL;
+  ViewerProgram v(o);
+  v.resize(160, 120);
+  auto render = [&](FrameDescription& f) {
+    v.frame(f);
+    Renderer r(160, 120);
+    r.options = f.options;
+    r.render(f.scene);
+    std::vector<uint8_t> px(160 * 120 * 4);
+    r.read_color(px.data(), 160 * 4, 4);
+    return px;
+  };
+  run_scripted(v, "", 0);
+  FrameDescription plain;
+  std::vector<uint8_t> without = render(plain);
+  EXPECT_FALSE(plain.scene.find("viewer grid"));
+  run_scripted(v, "0 press g\n", 0.1);
+  EXPECT_TRUE(v.grid_shown());
+  FrameDescription gridded;
+  std::vector<uint8_t> with = render(gridded);
+  auto id = gridded.scene.find("viewer grid");
+  ASSERT_TRUE(id);
+  float low = 1e30f;
+  std::vector<Mat4> world = plain.scene.world_matrices();
+  for (size_t i = 0; i < plain.scene.objects().size(); ++i)
+    if (plain.scene.objects()[i].mesh)
+      for (const Vec3& p : plain.scene.objects()[i].mesh->positions) low = std::min(low, world[i].transform_point(p).y);
+  const float grid_y = gridded.scene.object(*id).transform.translation.y;
+  EXPECT_NEAR(grid_y, low, 0.01f * plain.scene.bounds().radius);
+  EXPECT_NE(with, without) << "the grid does not show";
+  run_scripted(v, "0 press g\n", 0.1);
+  FrameDescription again;
+  EXPECT_EQ(render(again), without);
+}
+
+// Issue 21: an axes toggle. X draws the world's axes at its origin (red X, green Y,
+// blue Z), and they show in the rendered frame.
+TEST(Viewer, AxesAtTheOrigin) {
+  ViewerOptions o;
+  o.model = VELOCITY_TEST_MODEL;
+  ViewerProgram v(o);
+  v.resize(160, 120);
+  run_scripted(v, "0 press x\n", 0.1);
+  ASSERT_TRUE(v.axes_shown());
+  FrameDescription f;
+  v.frame(f);
+  int axis = 0;
+  for (const char* name : {"viewer axis x", "viewer axis y", "viewer axis z"}) {
+    auto id = f.scene.find(name);
+    ASSERT_TRUE(id) << name;
+    Bounds b = f.scene.object(*id).mesh->bounds();
+    // Long along its own axis from the origin, thin across.
+    EXPECT_NEAR((&b.min.x)[axis], 0.0f, 1e-5f) << name;
+    EXPECT_GT((&b.max.x)[axis], 10 * (&b.max.x)[(axis + 1) % 3]) << name;
+    ++axis;
+  }
+  Renderer r(160, 120);
+  r.options = f.options;
+  r.render(f.scene);
+  std::vector<uint8_t> px(160 * 120 * 4);
+  r.read_color(px.data(), 160 * 4, 4);
+  int red = 0, green = 0, blue = 0;
+  for (size_t i = 0; i < px.size(); i += 4) {
+    red += px[i] > 180 && px[i + 1] < 80 && px[i + 2] < 80;
+    green += px[i + 1] > 180 && px[i] < 100 && px[i + 2] < 100;
+    blue += px[i + 2] > 200 && px[i] < 100 && px[i + 1] < 140;
+  }
+  EXPECT_GT(red, 5);
+  EXPECT_GT(green, 5);
+  EXPECT_GT(blue, 5);
 }

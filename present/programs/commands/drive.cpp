@@ -1,5 +1,5 @@
-// `velocity drive`: seed 000's driving simulation (programs/drive.hpp) behind a title screen
-// and menu.
+// `velocity drive`: the driving simulation (programs/drive.hpp) behind a title screen and
+// menu.
 #include <memory>
 
 #include "commands.hpp"
@@ -7,18 +7,6 @@
 #include "programs/drive.hpp"
 
 namespace velocity::cli {
-
-namespace {
-
-const char* const kCredits =
-    "*VELOCITY DRIVE\n\nA DRIVING SIMULATION AFTER SEED 000\n\n\n"
-    "*ENGINE\nVELOCITY SOFTWARE RENDERER\nFLAT, GOURAUD AND PHONG SHADING\nTEXTURE AND ENVIRONMENT MAPS\n\n\n"
-    "*CONTROLS\nUP  THROTTLE     DOWN  BRAKE\nLEFT / RIGHT  STEER\nC  CAMERA     H  HIGH QUALITY\n"
-    "[ ]  FOCAL LENGTH     Q E  SWIVEL\nPGUP PGDN  PITCH     , .  ROLL\nR  BACK TO THE GRID     ESC  MENU\n\n\n"
-    "*SOUND\nSYNTHESISED AS YOU LISTEN\n\n\n"
-    "*DRIVE SAFELY\n";
-
-}  // namespace
 
 std::function<int()> add_drive_command(CLI::App& app) {
   struct Args {
@@ -28,7 +16,7 @@ std::function<int()> add_drive_command(CLI::App& app) {
     bool hq = false, skip_menu = false;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("drive", "Seed 000's driving simulation: arrows drive, C camera, H high quality, Esc menu");
+  CLI::App* cmd = app.add_subcommand("drive", "Drive a car on a race track: arrows drive, C camera, H high quality, Esc menu");
   cmd->add_option("--car", args->car, "Car body model (e.g. ../shared/data/models/asc/car01.asc); default: the built-in car");
   cmd->add_option("--car-yaw", args->car_yaw, "Turn the car model by this many degrees (its nose must point forward)");
   cmd->add_flag("--hq", args->hq, "High quality: 3x3 super-sampling (H toggles)");
@@ -40,12 +28,7 @@ std::function<int()> add_drive_command(CLI::App& app) {
     o.car_yaw = args->car_yaw;
     o.high_quality = args->hq;
     realtime::DriveProgram drive(o);
-    realtime::ShellText text;
-    text.title = "VELOCITY DRIVE";
-    text.subtitle = "A DRIVING SIMULATION";
-    text.start = "DRIVE";
-    text.credits = kCredits;
-    realtime::Shell shell(drive, text, args->skip_menu);
+    realtime::Shell shell(drive, realtime::drive_shell_text(), args->skip_menu);
     return run_realtime(shell, args->realtime, "800x600", true);
   };
 }

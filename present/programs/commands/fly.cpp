@@ -1,4 +1,4 @@
-// `velocity fly`: seed 001's flythrough (programs/fly.hpp) behind its title screen and menu.
+// `velocity fly`: the flythrough (programs/fly.hpp) behind its title screen and menu.
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -10,18 +10,6 @@
 
 namespace velocity::cli {
 
-namespace {
-
-const char* const kCredits =
-    "*VELOCITY FLIGHT\n\nA FLYTHROUGH AFTER SEED 001\n\n\n"
-    "*ENGINE\nVELOCITY SOFTWARE RENDERER\nEVERY PIXEL ON THE CPU\n\n\n"
-    "*CONTROLS\nLEFT / RIGHT  TURN\nUP  DIVE     DOWN  CLIMB\nA or CTRL  FASTER\nZ or SHIFT  SLOWER\nESC  MENU\n\n\n"
-    "*MODELS\nCUBES, PYRAMIDS AND TORI\nOR YOUR OWN PLG FILES\n\n\n"
-    "*MUSIC AND SOUND\nSYNTHESISED AS YOU LISTEN\n\n\n"
-    "*THANK YOU FOR FLYING\n";
-
-}  // namespace
-
 std::function<int()> add_fly_command(CLI::App& app) {
   struct Args {
     RealtimeArgs realtime;
@@ -32,7 +20,7 @@ std::function<int()> add_fly_command(CLI::App& app) {
     bool skip_menu = false;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("fly", "Seed 001's flythrough: arrows turn, dive and climb; A/Z faster/slower; Esc menu");
+  CLI::App* cmd = app.add_subcommand("fly", "Fly through a world of polygon shapes: arrows turn, dive and climb; A/Z faster/slower; Esc menu");
   cmd->add_option("--models", args->models, "Model files to fill the world with (PLG, ASC, OBJ, ...)");
   cmd->add_option("--plg", args->plg_dir, "Fill the world with every .plg file in this folder (e.g. ../shared/data/models/plg)");
   cmd->add_option("--objects", args->objects, "How many objects (1..2000)")->capture_default_str();
@@ -58,12 +46,7 @@ std::function<int()> add_fly_command(CLI::App& app) {
     o.objects = args->objects;
     o.seed = args->seed;
     realtime::FlyProgram fly(o);
-    realtime::ShellText text;
-    text.title = "VELOCITY FLIGHT";
-    text.subtitle = "A POLYGON FLYTHROUGH";
-    text.start = "FLY";
-    text.credits = kCredits;
-    realtime::Shell shell(fly, text, args->skip_menu);
+    realtime::Shell shell(fly, realtime::fly_shell_text(), args->skip_menu);
     return run_realtime(shell, args->realtime, "640x480", true);
   };
 }

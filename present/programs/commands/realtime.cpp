@@ -14,14 +14,15 @@
 namespace velocity::cli {
 
 void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
+  a.command = cmd->get_name();
   cmd->add_option("--size", a.size,
-                  "Frame size WxH (the seed's modes: 320x200, 320x240, 640x480, 800x600) or 'window' (the window's size)");
+                  "Frame size WxH (the classic modes: 320x200, 320x240, 640x480, 800x600) or 'window' (the window's size)");
   cmd->add_option("--scale", a.scale, "Window size as a multiple of the frame size (default: fits the screen)");
   cmd->add_flag("--fullscreen", a.fullscreen, "Start fullscreen (F11 or Alt+Enter toggles)");
   cmd->add_option("--frames", a.frames, "Stop after this many frames");
   cmd->add_option("--record", a.record, "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step)");
   cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/runtime/script.hpp)");
-  cmd->add_flag("--headless", a.headless, "No window (with --frames and/or --record)");
+  cmd->add_flag("--headless", a.headless, "No window; needs --frames N or --script FILE to end the run");
   cmd->add_flag("--mute", a.mute, "No sound");
   cmd->add_flag("--no-overlay", a.no_overlay, "Hide the frame-rate overlay (F3 toggles)");
   cmd->add_flag("--no-vsync", a.no_vsync, "Present without waiting for vertical sync (may tear)");
@@ -42,6 +43,11 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   if (a.frames < 0) throw Error("--frames must be 0 or more");
   if (a.scale < 0 || a.scale > 16) throw Error("--scale must be 1..16");
   if (a.linger < 0 || a.linger > 3600) throw Error("--linger must be 0..3600 seconds");
+  // Something must end a run nobody sees: --frames, or a script (it ends when played out).
+  const bool bounded = a.frames > 0 || !a.script.empty();
+  if (a.headless && !bounded)
+    throw Error("--headless runs until something ends it: give --frames N, or --script FILE (the run ends when "
+                "the script has played out)");
   lo.frames = a.frames;
   lo.record_dir = a.record;
   if (!a.script.empty()) lo.script = realtime::load_script(a.script);
@@ -49,6 +55,8 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   lo.linger = a.linger;
   lo.threads = a.threads;
 
+  // Ctrl+C and SIGTERM finish the frame in progress and the recording, then end.
+  realtime::install_stop_signals();
   std::unique_ptr<present::SdlPresenter> window;
   if (!a.headless) {
     present::WindowOptions w;
@@ -62,11 +70,18 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
     try {
       window = std::make_unique<present::SdlPresenter>(w);
     } catch (const Error& e) {
-      if (a.frames <= 0 && a.record.empty())
-        throw Error(std::string(e.what()) + " (without a display, use --headless with --frames N and/or --record DIR)");
+      if (!bounded)
+        throw Error(std::string(e.what()) + "; without a display, run: velocity " + a.command +
+                    " --headless --frames N");
       std::fprintf(stderr, "velocity: %s; running headless\n", e.what());
     }
+    // SDL_VIDEODRIVER=dummy (tests): nobody sees the window, so something must end the run.
+    if (window && window->invisible() && !bounded)
+      throw Error("the " + window->driver().substr(0, window->driver().find('/')) +
+                  " video driver shows nothing: give --frames N (or --script FILE) to end the run, " +
+                  "or unset SDL_VIDEODRIVER to open a window");
   }
+  lo.end_with_script = a.frames <= 0 && (!window || window->invisible());
   realtime::Synth synth;
   std::unique_ptr<present::SdlAudio> audio;
   if (sound && !a.mute) audio = std::make_unique<present::SdlAudio>(synth);
@@ -76,6 +91,7 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   audio.reset();
   window.reset();
   SDL_Quit();
+  if (int sig = realtime::stop_signal()) return 128 + sig;  // as a shell reports a signal
   return 0;
 }
 

@@ -11,6 +11,7 @@
 namespace velocity::cli {
 
 struct RealtimeArgs {
+  std::string command;       // "view", "fly" or "drive" (for messages)
   std::string size;          // "WxH" or "window"; empty: the command's default
   int scale = 0;             // window = frame size x scale (0: fit the screen sensibly)
   bool fullscreen = false;

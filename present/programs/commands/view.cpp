@@ -20,7 +20,9 @@ std::function<int()> add_view_command(CLI::App& app) {
   cmd->add_option("model", args->model, "Model file (.asc, .plg, .obj, .gltf, .glb, .3ds, .ply, .stl); none: the demo scene");
   cmd->add_flag("--cull", args->cull, "Cull back faces (default: drawn, lit from both sides)");
   cmd->add_flag("!--no-swap-yz", args->swap_yz, "Keep 3D Studio's Z-up coordinates (ASC files)");
-  cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor 1..3 to start with (A cycles)");
+  cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor 1..3 to start with (A cycles)")
+      ->check(CLI::Range(1, 3))
+      ->capture_default_str();
   cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
   add_realtime_options(cmd, args->realtime);
   return [args] {
