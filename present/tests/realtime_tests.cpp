@@ -545,8 +545,9 @@ TEST(Viewer, ScreenshotsWithAndWithoutTheOverlay) {
   }
   EXPECT_TRUE(recorded);
   // F12: the same scene, without the status bar (bottom rows) or the frame rate (top left).
-  auto rows_equal = [&](int y0, int y1) {
-    return std::equal(clean.pixel(0, y0), clean.pixel(0, y1), shown.pixel(0, y0));
+  auto rows_equal = [&](int y0, int y1) {  // rows [y0, y1); y1 may be the height
+    const size_t row = size_t(clean.width) * 4;
+    return std::equal(clean.pixels.begin() + y0 * row, clean.pixels.begin() + y1 * row, shown.pixels.begin() + y0 * row);
   };
   EXPECT_TRUE(rows_equal(30, 180));
   EXPECT_FALSE(rows_equal(230, 240)) << "the status bar is in the F12 screenshot";
