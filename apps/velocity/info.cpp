@@ -13,6 +13,7 @@ const char* light_kind(LightType t) {
     case LightType::Ambient: return "ambient";
     case LightType::Directional: return "directional";
     case LightType::Point: return "point";
+    case LightType::Spot: return "spot";
   }
   return "?";
 }

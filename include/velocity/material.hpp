@@ -20,12 +20,53 @@ enum class Shading {
                 // gradient), else the face or material colour (PLG's constant shading)
   Wireframe,    // triangle edges as lines, unlit, with depth
   Points,       // vertices as points, unlit, with depth
+  Pbr,          // glTF 2.0 metallic-roughness, per pixel (Material::pbr), in linear light
 };
 
 // How a base texture combines with the lighting.
 enum class TextureMode {
   Modulate,  // texture colour times the lit colour (OpenGL's GL_MODULATE)
   Replace,   // the texture colour as it is, unlit
+};
+
+// How a texture or a colour's numbers relate to light. glTF's colour factors and vertex
+// colours are linear; its base-colour and emissive images are sRGB-encoded, as are the
+// images and colours of OBJ/MTL, 3DS, ASC and PLG files (display values).
+enum class ColorSpace { Srgb, Linear };
+
+// Alpha as glTF 2.0 defines it: ignored, a cut-out at `alpha_cutoff`, or blended.
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// Which of the mesh's uv sets addresses a texture, and glTF's KHR_texture_transform
+// (uv' = T(offset) R(rotation) S(scale) uv, as the extension writes it).
+struct UvTransform {
+  int uv_set = 0;  // 0: Mesh::uvs, 1: Mesh::uvs1
+  Vec2 offset{0, 0};
+  float rotation = 0;  // radians
+  Vec2 scale{1, 1};
+  bool identity() const { return uv_set == 0 && offset == Vec2{0, 0} && rotation == 0 && scale == Vec2{1, 1}; }
+};
+
+// A texture as a material uses it.
+struct TextureRef {
+  std::shared_ptr<const Texture> texture;
+  UvTransform uv;
+  explicit operator bool() const { return texture != nullptr; }
+};
+
+// glTF 2.0's metallic-roughness material (Shading::Pbr), the spec's parameters as they
+// are, all factors linear. Material::color is the base colour factor's rgb and
+// Material::texture the base-colour texture (sRGB); the rest is here.
+struct PbrParams {
+  float metallic = 1.0f, roughness = 1.0f;
+  TextureRef metallic_roughness;  // linear: G roughness, B metallic
+  TextureRef normal;              // linear, tangent space
+  float normal_scale = 1.0f;
+  TextureRef occlusion;           // linear, R
+  float occlusion_strength = 1.0f;
+  Vec3 emissive{0, 0, 0};
+  TextureRef emissive_map;        // sRGB
+  bool unlit = false;             // KHR_materials_unlit: base colour only
 };
 
 std::string_view to_string(Shading shading);
@@ -56,6 +97,18 @@ struct Material {
   float env_mix = 1.0f;
   Filter filter = Filter::Trilinear;
   Wrap wrap = Wrap::Repeat;
+
+  // The space of `color`, the mesh's vertex and face colours and `specular` (see
+  // ColorSpace): Srgb for every format but glTF.
+  ColorSpace color_space = ColorSpace::Srgb;
+  // The base colour factor's alpha, multiplied by the texture's and the vertex's alpha,
+  // and how it is used.
+  float alpha = 1.0f;
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;
+  // The uv set and transform that address `texture` (glTF).
+  UvTransform texture_uv;
+  PbrParams pbr;  // read by Shading::Pbr
 };
 
 }  // namespace velocity

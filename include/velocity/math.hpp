@@ -14,6 +14,7 @@ namespace velocity {
 
 struct Vec2 {
   float x = 0, y = 0;
+  constexpr bool operator==(const Vec2&) const = default;
 };
 
 struct Vec3 {

@@ -35,8 +35,13 @@ struct Mesh {
 
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;  // unit length; empty: computed by compute_normals()
+  // Texture coordinates in the engine's convention, whatever the file's: v = 0 is the
+  // image's top row (Texture::Level). Each loader converts its format's own (docs/appearance.md).
   std::vector<Vec2> uvs;
-  std::vector<Vec3> colors;  // per-vertex colour in [0, 1] (seed 002's gradient)
+  std::vector<Vec2> uvs1;    // a second uv set (glTF TEXCOORD_1), addressed by UvTransform::uv_set
+  std::vector<Vec4> tangents;  // unit xyz and handedness w = +-1 (glTF TANGENT); empty: generated when needed
+  std::vector<Vec3> colors;  // per-vertex colour in [0, 1] (seed 002's gradient), in the material's ColorSpace
+  std::vector<float> alphas;  // per-vertex alpha in [0, 1]; empty: opaque
 
   std::vector<Triangle> triangles;
   std::vector<Vec3> face_colors;        // per-face colour, overrides the material colour

@@ -30,6 +30,16 @@ enum class DepthMode {
   Painter,  // no depth buffer: primitives sorted by mean depth, drawn far to near (seeds 001, 004)
 };
 
+// How colours become light and light becomes pixels (docs/appearance.md).
+enum class ColorPipeline {
+  Auto,     // Linear for a frame with a Pbr material, else Display
+  Linear,   // sRGB inputs decoded, lighting in linear light, the output encoded to sRGB
+  Display,  // the 8-bit values lit as they are and written as they are (the seed's look, OpenGL 1.x's)
+};
+
+// Tone mapping of linear light before the output encoding (Linear only).
+enum class ToneMap { None, Aces, KhronosNeutral };
+
 struct RenderOptions {
   DepthMode depth_mode = DepthMode::ZBuffer;
   bool cull_back_faces = true;       // two-sided materials are never culled
@@ -55,6 +65,13 @@ struct RenderOptions {
   // second time, unlit, with their normals as colours (8 bits a component), into buffers
   // of their own. Read them with read_normals().
   bool normals = false;
+  ColorPipeline color = ColorPipeline::Auto;
+  ToneMap tone_map = ToneMap::None;  // off by default, as pyrender's
+  float exposure = 1.0f;             // linear light is multiplied by this before tone mapping
+  // Shadow maps for the lights that cast shadows (directional, spot, point), filtered
+  // (PCF), shadow_map_size texels a side.
+  bool shadows = false;
+  int shadow_map_size = 2048;
 };
 
 // How begin_frame starts the frame: cleared (the default), or from what the previous

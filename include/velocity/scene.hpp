@@ -90,16 +90,29 @@ struct Camera {
   Mat4 projection_matrix(float aspect) const;
 };
 
-enum class LightType { Ambient, Directional, Point };
+enum class LightType { Ambient, Directional, Point, Spot };
+
+// How a point or spot light's intensity falls with distance d: the seed's and OpenGL's
+// 1 / (c + l*d + q*d^2), or KHR_lights_punctual's physical inverse square windowed by
+// `range` (clamp(1 - (d/range)^4, 0, 1)^2 / d^2; range 0 is infinite).
+enum class Falloff { Attenuation, InverseSquare };
 
 struct Light {
   LightType type = LightType::Directional;
-  Vec3 color{1, 1, 1};  // intensity per channel
-  // Directional: the direction *towards* the light, in world space.
+  Vec3 color{1, 1, 1};  // intensity per channel (PBR: linear; lux for directional, candela for point/spot)
+  // Directional and spot: the direction *towards* the light (the opposite of where a spot
+  // points), in world space.
   Vec3 direction{0, 0, 1};
-  // Point: position in world space, attenuation 1 / (c + l*d + q*d^2).
+  // Point and spot: position in world space, attenuation 1 / (c + l*d + q*d^2).
   Vec3 position;
   float constant = 1, linear = 0, quadratic = 0;
+  Falloff falloff = Falloff::Attenuation;
+  float range = 0;
+  // Spot: full intensity inside inner_cone, none outside outer_cone (half-angles in
+  // radians, 0 <= inner < outer <= pi/2), KHR_lights_punctual's smooth falloff between.
+  float inner_cone = 0, outer_cone = radians(45.0f);
+  // Casts shadows when the frame's shadows are on (RenderOptions).
+  bool cast_shadows = true;
 
   static Light ambient(Vec3 color) {
     Light l;
@@ -111,6 +124,16 @@ struct Light {
     Light l;
     l.color = color;
     l.direction = normalize(towards);
+    return l;
+  }
+  static Light spot(Vec3 position, Vec3 towards, Vec3 color, float inner_cone, float outer_cone) {
+    Light l;
+    l.type = LightType::Spot;
+    l.color = color;
+    l.position = position;
+    l.direction = normalize(towards);
+    l.inner_cone = inner_cone;
+    l.outer_cone = outer_cone;
     return l;
   }
   static Light point(Vec3 position, Vec3 color, float linear = 0, float quadratic = 0) {

@@ -31,6 +31,7 @@ void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool rep
       else s.kernel = uint8_t(KernelId::Smooth), s.num_varyings = raster::kSmoothVaryings;
       return;
     case Shading::Phong:
+    case Shading::Pbr:  // until the PBR kernel exists (issue 17): Phong
       s.kernel = tex && env ? with(KernelId::PhongTexEnv)
                  : tex      ? with(KernelId::PhongTex)
                  : env      ? with(KernelId::PhongEnv)

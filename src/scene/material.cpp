@@ -10,6 +10,7 @@ struct ShadingName {
 constexpr ShadingName kShadingNames[] = {
     {Shading::Flat, "flat"},         {Shading::Gouraud, "gouraud"},  {Shading::Phong, "phong"},
     {Shading::Unlit, "unlit"}, {Shading::Wireframe, "wire"},   {Shading::Points, "points"},
+    {Shading::Pbr, "pbr"},
 };
 }  // namespace
 

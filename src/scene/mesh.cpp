@@ -49,7 +49,10 @@ void Mesh::validate() const {
   size_t nv = positions.size(), nt = triangles.size();
   check_length(*this, "normals", normals.size(), nv);
   check_length(*this, "uvs", uvs.size(), nv);
+  check_length(*this, "uvs1", uvs1.size(), nv);
+  check_length(*this, "tangents", tangents.size(), nv);
   check_length(*this, "colors", colors.size(), nv);
+  check_length(*this, "alphas", alphas.size(), nv);
   check_length(*this, "face_colors", face_colors.size(), nt);
   check_length(*this, "face_materials", face_materials.size(), nt);
   check_length(*this, "smoothing_groups", smoothing_groups.size(), nt);

@@ -69,6 +69,7 @@ void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& o
         out.directional.push_back({normalize(view.transform_vector(light.direction)), light.color});
         break;
       case LightType::Point:
+      case LightType::Spot:  // the cone is the PBR model's (issue 17); here, a point light
         out.point.push_back({view.transform_point(light.position), light.color, light.constant, light.linear,
                              light.quadratic});
         break;
