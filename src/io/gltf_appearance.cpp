@@ -258,9 +258,12 @@ class Reader {
       const float v = number(s, key, 10497, 0, 1e6f, "sampler: ");
       return v == 33071 ? Wrap::Clamp : v == 33648 ? Wrap::MirroredRepeat : Wrap::Repeat;
     };
-    // One wrap mode for both axes: clamping wins (it is what a texture atlas asks for).
+    // Velocity has one wrap mode for both axes. When the file's differ, the repeating
+    // one wins over a clamp: an axis is clamped mostly where its uvs stay inside [0, 1],
+    // where repeating draws the same, while a repeating axis' uvs leave it (BoxTextured:
+    // u from 3 to 4, mirrored, v from 0 to 1, clamped).
     const Wrap s_wrap = wrap("wrapS"), t_wrap = wrap("wrapT");
-    m.wrap = s_wrap == t_wrap ? s_wrap : (s_wrap == Wrap::Clamp || t_wrap == Wrap::Clamp) ? Wrap::Clamp : s_wrap;
+    m.wrap = s_wrap == t_wrap ? s_wrap : s_wrap == Wrap::Clamp ? t_wrap : s_wrap;
     const float mag = number(s, "magFilter", 9729, 0, 1e6f, "sampler: ");
     const float min = number(s, "minFilter", 9987, 0, 1e6f, "sampler: ");
     if (mag == 9728 && (min == 9728 || min == 9984)) m.filter = Filter::Nearest;  // NEAREST

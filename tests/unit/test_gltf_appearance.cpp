@@ -340,3 +340,52 @@ TEST_F(GltfAppearanceTest, BrokenEmbeddedImageIsAWarning) {
 
 }  // namespace
 }  // namespace velocity
+
+namespace velocity {
+namespace {
+
+// assimp-testmodels' BoxTextured in its three forms (image file, data URIs, .glb):
+// each draws the Cesium logo on the front face (the file's -Y face, +Z once its root
+// node stands it up) upright -- sky blue above, grass green below. The file's uvs run
+// u from 4 at the left to 3 at the right: with the .gltf's sampler (wrapS
+// MIRRORED_REPEAT, wrapT CLAMP_TO_EDGE, whose v stays in [0, 1]) the logo reads the
+// right way round, the white sun on the right; the other two forms' sampler repeats, so
+// there the logo is mirrored as authored, the sun on the left.
+TEST(GltfBoxTextured, ImagesInAllThreeFormsDrawUpright) {
+  const std::string models = "/usr/share/assimp/models/glTF2/";
+  if (!fs::is_directory(models)) GTEST_SKIP() << "skipped: " << models << " is missing (assimp-testmodels)";
+  for (const char* file : {"BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Embedded/BoxTextured.gltf",
+                           "BoxTextured-glTF-Binary/BoxTextured.glb"}) {
+    Model m = load_model(models + file);
+    bool mirrored_repeat = false;
+    for (ModelNode& n : m.nodes)
+      if (n.mesh)
+        for (Material& mat : n.mesh->materials) {
+          ASSERT_TRUE(mat.texture) << file;
+          EXPECT_EQ(mat.texture->width(), 211) << file;
+          mat.shading = Shading::Unlit;  // the texels as they are
+          mirrored_repeat = mat.wrap == Wrap::MirroredRepeat;
+        }
+    Scene scene;
+    add_to_scene(scene, m);
+    scene.camera.position = {0, 0, 2.5f};
+    Renderer r(128, 128);
+    r.render(scene);
+    Image img = r.color_image();
+    auto is = [&](int x, int y, const char* what) {
+      const uint8_t* p = img.pixel(x, y);
+      const int red = p[0], green = p[1], blue = p[2];
+      if (std::string(what) == "sky") return blue > 180 && blue > red + 60;
+      if (std::string(what) == "grass") return green > 100 && green > blue + 40 && green > red + 20;
+      return red > 220 && green > 220 && blue > 220;  // the sun
+    };
+    EXPECT_TRUE(is(64, 40, "sky")) << file;
+    EXPECT_TRUE(is(64, 88, "grass")) << file;
+    EXPECT_EQ(mirrored_repeat, std::string(file) == "BoxTextured-glTF/BoxTextured.gltf");
+    EXPECT_TRUE(is(mirrored_repeat ? 77 : 51, 48, "sun")) << file;
+    EXPECT_TRUE(is(mirrored_repeat ? 51 : 77, 48, "sky")) << file;
+  }
+}
+
+}  // namespace
+}  // namespace velocity
