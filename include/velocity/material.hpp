@@ -97,8 +97,8 @@ struct Material {
   // the base texture's alpha channel (a white texture when there is none).
   std::string alpha_file;
   // Sphere environment map, addressed by the eye-space normal: u = 0.5 + 0.5 Nx,
-  // v = 0.5 + 0.5 Ny (seed 000). Per vertex in flat and Gouraud shading, per pixel in
-  // Phong. The base colour becomes mix(base, environment, env_mix).
+  // v = 0.5 - 0.5 Ny, the image's top row at Ny = 1 (seed 000). Per vertex in flat and
+  // Gouraud shading, per pixel in Phong. The base colour becomes mix(base, environment, env_mix).
   std::shared_ptr<const Texture> env_map;
   float env_mix = 1.0f;
   Filter filter = Filter::Trilinear;
