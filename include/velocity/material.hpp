@@ -47,6 +47,10 @@ struct UvTransform {
   bool identity() const { return uv_set == 0 && offset == Vec2{0, 0} && rotation == 0 && scale == Vec2{1, 1}; }
 };
 
+// `uv` transformed as `t` says (the uv set is the caller's choice): scale, then rotate,
+// then offset, as KHR_texture_transform's matrix T * R * S with R = [cos sin; -sin cos].
+Vec2 transform_uv(const UvTransform& t, Vec2 uv);
+
 // A texture as a material uses it.
 struct TextureRef {
   std::shared_ptr<const Texture> texture;

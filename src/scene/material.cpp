@@ -1,5 +1,7 @@
 #include "velocity/material.hpp"
 
+#include <cmath>
+
 namespace velocity {
 
 namespace {
@@ -25,6 +27,16 @@ std::optional<Shading> parse_shading(std::string_view name) {
   for (const auto& s : kShadingNames)
     if (s.name == name) return s.shading;
   return std::nullopt;
+}
+
+}  // namespace velocity
+
+namespace velocity {
+
+Vec2 transform_uv(const UvTransform& t, Vec2 uv) {
+  const float su = uv.x * t.scale.x, sv = uv.y * t.scale.y;
+  const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+  return {c * su + s * sv + t.offset.x, -s * su + c * sv + t.offset.y};
 }
 
 }  // namespace velocity

@@ -140,8 +140,12 @@ class MeshTriangles {
       Vec3 n = eye_normal(v);
       if (flip) n = -n;
       uv = {0.5f + 0.5f * n.x, 0.5f - 0.5f * n.y};  // seed 000's sphere map (top row at Ny = 1), per vertex
-    } else if (!mesh_.uvs.empty()) {
-      uv = mesh_.uvs[v];
+    } else if (mat.texture_uv.identity()) {
+      if (!mesh_.uvs.empty()) uv = mesh_.uvs[v];
+    } else {
+      // The base texture's uv set and KHR_texture_transform (or MTL -s / -o).
+      const std::vector<Vec2>& set = mat.texture_uv.uv_set == 1 && !mesh_.uvs1.empty() ? mesh_.uvs1 : mesh_.uvs;
+      if (!set.empty()) uv = transform_uv(mat.texture_uv, set[v]);
     }
     out[uv_at] = uv.x, out[uv_at + 1] = uv.y;
   }

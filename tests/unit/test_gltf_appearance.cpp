@@ -389,3 +389,52 @@ TEST(GltfBoxTextured, ImagesInAllThreeFormsDrawUpright) {
 
 }  // namespace
 }  // namespace velocity
+
+namespace velocity {
+namespace {
+
+// KHR_texture_transform and texCoord 1 as drawn: the quad's quarters for a transform
+// (as JSON) on the base-colour texture of the four-colour image.
+class GltfTextureTransform : public GltfAppearanceTest {
+ protected:
+  std::string quarters(const char* texture_info) {
+    GltfBuilder b;
+    b.texture(b.image_in_buffer(four_colour_png(dir_)));
+    add_quad(b, {0});
+    b.json["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", nlohmann::json::parse(texture_info)}}}}};
+    Model m = load_model(write("t.glb", b.glb()));
+    Mesh& mesh = quad_mesh(m);
+    mesh.materials.at(0).shading = Shading::Unlit;
+    mesh.materials[0].filter = Filter::Nearest;
+    mesh.colors.clear();
+    Scene scene;
+    add_to_scene(scene, m);
+    scene.camera.position = {0, 0, 3};
+    Renderer r(64, 64);
+    r.render(scene);
+    Image img = r.color_image();
+    std::string out;
+    for (auto [x, y] : {std::pair{24, 24}, {40, 24}, {24, 40}, {40, 40}}) {
+      const uint8_t* p = img.pixel(x, y);
+      out += (out.empty() ? "" : " ") + std::to_string(p[0] > 128) + std::to_string(p[1] > 128) +
+             std::to_string(p[2] > 128);
+    }
+    return out;
+  }
+};
+
+TEST_F(GltfTextureTransform, OffsetScaleRotationAndUvSet) {
+  // Red, green / blue, white as the image is.
+  EXPECT_EQ(quarters(R"({"index": 0})"), "100 010 001 111");
+  // u' = 0.5 u + 0.5: the image's right column over the whole quad.
+  EXPECT_EQ(quarters(R"({"index": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [0.5, 1]}}})"),
+            "010 010 111 111");
+  // A quarter turn: u' = v, v' = 1 - u (offset [0, 1]).
+  EXPECT_EQ(quarters(R"({"index": 0, "extensions": {"KHR_texture_transform": {"rotation": 1.5707963, "offset": [0, 1]}}})"),
+            "001 100 111 010");
+  // TEXCOORD_1 is TEXCOORD_0 mirrored in u.
+  EXPECT_EQ(quarters(R"({"index": 0, "texCoord": 1})"), "010 100 111 001");
+}
+
+}  // namespace
+}  // namespace velocity
