@@ -172,7 +172,9 @@ TEST_F(FormatsUv, PlgAndStlHaveNone) {
                                "endloop\nendfacet\nendsolid t\n"));
   for (Model* m : {&plg, &stl})
     for (const ModelNode& n : m->nodes)
-      if (n.mesh) EXPECT_TRUE(n.mesh->uvs.empty()) << m->path;
+      if (n.mesh) {
+        EXPECT_TRUE(n.mesh->uvs.empty()) << m->path;
+      }
 }
 
 }  // namespace
