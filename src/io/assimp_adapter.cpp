@@ -297,6 +297,13 @@ Material convert_material(const aiMaterial& in) {
   else if (model == aiShadingMode_Phong || model == aiShadingMode_Blinn || m.specular > 0) m.shading = Shading::Phong;
   int two_sided = 0;
   if (in.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) m.two_sided = two_sided != 0;
+  // For --shading pbr (docs/appearance.md): a dielectric whose roughness matches the
+  // Phong exponent (GGX alpha = roughness^2, alpha^2 = 2 / (n + 2)), the emissive colour.
+  m.pbr.metallic = 0;
+  m.pbr.roughness = std::sqrt(std::sqrt(2 / (std::max(0.0f, std::isfinite(shininess) ? shininess : 0.0f) + 2)));
+  aiColor4D emissive(0, 0, 0, 0);
+  if (in.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS)
+    m.pbr.emissive = {clamp01(emissive.r), clamp01(emissive.g), clamp01(emissive.b)};
   // The base-colour texture's file name; load_model resolves and loads it. A "*N" name
   // is an image embedded in aiScene::mTextures, not read yet (resolve_texture_path
   // gives "" for it, so it is reported as not found).

@@ -388,6 +388,11 @@ TEST(Formats3ds, CountsHierarchyAndAxes) {
   ASSERT_EQ(box.materials.size(), 1u);
   EXPECT_EQ(box.materials[0].name, "2 - Default");
   EXPECT_NEAR(box.materials[0].color.x, 150 / 255.0f, 1e-6);
+  // Filled for --shading pbr: a dielectric, its roughness from the Phong exponent.
+  EXPECT_EQ(box.materials[0].shading, Shading::Gouraud);  // its own shading stays the default
+  EXPECT_EQ(box.materials[0].pbr.metallic, 0.0f);
+  EXPECT_GT(box.materials[0].pbr.roughness, 0.0f);
+  EXPECT_LE(box.materials[0].pbr.roughness, 1.0f);
 }
 
 TEST(Formats3ds, CamerasAreNotConvertedButSaidSo) {
