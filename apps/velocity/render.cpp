@@ -35,6 +35,7 @@ struct RenderArgs {
   std::string texture, env, filter;
   float fov = 0;
   int ssaa = 0;  // 0: 3 for the demo scene, 1 for anything else
+  float point_size = 1.0f;
   int threads = 0;
   bool ortho = false, painter = false, no_cull = false, cull = false, verbose = false, swap_yz = true, affine = false;
   size_t max_memory = LoadOptions{}.max_memory;
@@ -163,6 +164,9 @@ int run_render(const RenderArgs& a) {
   o.affine = a.affine;
   o.ssaa = a.ssaa ? a.ssaa : (a.model.empty() ? 3 : 1);
   if (o.ssaa < 1 || o.ssaa > 4) throw Error("--ssaa must be 1..4, got " + std::to_string(o.ssaa));
+  if (!(a.point_size >= 1 && a.point_size <= 64))
+    throw Error("--point-size must be 1..64, got " + std::to_string(a.point_size));
+  o.point_size = a.point_size;
   if (a.threads < 0) throw Error("--threads must be 0 (every core) or more");
   o.threads = a.threads;
   o.depth_mode = a.painter ? DepthMode::Painter : DepthMode::ZBuffer;
@@ -202,6 +206,8 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear");
   cmd->add_flag("--affine", args->affine, "Affine (screen-linear) texture mapping: cheaper, bends on large polygons");
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor per side, 1..4 (default: 3 for the demo scene, else 1)");
+  cmd->add_option("--point-size", args->point_size, "Side of a point (points shading, point clouds) in pixels, 1..64")
+      ->capture_default_str();
   cmd->add_option("--camera", args->camera, "Camera position x,y,z (looking at the model) or x,y,z,yaw,pitch,roll (degrees)");
   cmd->add_option("--fov", args->fov, "Vertical field of view in degrees");
   cmd->add_flag("--ortho", args->ortho, "Orthographic projection");

@@ -100,8 +100,10 @@ Model load_obj(const std::string& path, const LoadOptions& options = {});
 // ones, else compute_normals(); uvs from channels 0 and 1 in the engine's convention
 // (v = 0 at the image's top row); glTF tangents; per-vertex colours and alphas (glTF
 // COLOR_0, PLY red/green/blue) as the file has them. Vertices keep the file's indexing
-// (STL: three per triangle; 3D Studio: three per face). Triangles only: points and
-// lines are dropped with a warning. glTF cameras (perspective and orthographic) become
+// (STL: three per triangle; 3D Studio: three per face). Points (a PLY file without
+// faces, glTF POINTS) become a point cloud: one triangle (v, v, v) per point, drawn by
+// a Shading::Points material (RenderOptions::point_size); lines are dropped with a
+// warning. glTF cameras (perspective and orthographic) become
 // NamedCameras placed by their node, KHR_lights_punctual lights Lights (intensity times
 // colour, inverse-square falloff with the range); 3D Studio cameras are not converted
 // (Assimp 5.2 loses their target), nor are 3D Studio lights. Skins, animations and

@@ -72,6 +72,9 @@ struct RenderOptions {
   // (PCF), shadow_map_size texels a side.
   bool shadows = false;
   int shadow_map_size = 2048;
+  // The side of a point (Shading::Points, point clouds) in pixels of the output image,
+  // 1..64 (scaled by ssaa inside).
+  float point_size = 1.0f;
 };
 
 // How begin_frame starts the frame: cleared (the default), or from what the previous

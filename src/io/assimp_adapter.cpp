@@ -43,7 +43,8 @@
 // (see engine_uv), tangents with glTF's handedness; colours and alphas from colour set
 // 0 (as the file has them: a glTF material's base colour is not multiplied in). A glTF
 // file's materials and lights are read from its JSON (io/gltf_appearance.hpp), the
-// other formats' materials from Assimp's. Faces with fewer than three corners (points, lines) are dropped.
+// other formats' materials from Assimp's. Points (point clouds) become triangles with one
+// corner three times under a Shading::Points material; lines are dropped.
 // Assimp and Velocity both take counter-clockwise triangles as front; under a node
 // whose world matrix mirrors (negative determinant) the winding is reversed, as glTF
 // specifies.
@@ -185,12 +186,26 @@ std::string format_name(const std::string& path) {
 // the bytes (Assimp reads the whole file anyway, so reading it once more is cheap).
 // Returns what Assimp is to read instead of the file, if anything (a glTF file), and a
 // glTF file's materials and lights (read from the JSON: io/gltf_appearance.hpp).
+// A PLY file's header declares no faces (or zero): a point cloud.
+bool ply_without_faces(std::string_view bytes) {
+  const size_t end = bytes.find("end_header");
+  const std::string_view header = bytes.substr(0, end == std::string_view::npos ? 0 : end);
+  const size_t at = header.find("\nelement face ");
+  if (at == std::string_view::npos) return true;
+  const size_t digit = header.find_first_not_of(' ', at + 14);
+  return digit < header.size() && header[digit] == '0' &&
+         (digit + 1 >= header.size() || header[digit + 1] < '0' || header[digit + 1] > '9');
+}
+
 std::shared_ptr<const std::string> check_file(const std::string& path, const LoadOptions& options,
-                                              std::optional<detail::GltfAppearance>& appearance) {
+                                              std::optional<detail::GltfAppearance>& appearance, bool& point_cloud) {
   const size_t max_memory = options.max_memory;
   const std::string bytes = detail::read_file(path, max_memory);
   const std::string ext = detail::lower_extension(path);
-  if (detail::looks_like_ply(bytes)) detail::check_ply(bytes, path);
+  if (detail::looks_like_ply(bytes)) {
+    detail::check_ply(bytes, path);
+    point_cloud = ply_without_faces(bytes);
+  }
   if (ext == "stl" && detail::is_ascii_stl(bytes)) detail::check_ascii_stl(bytes, path);
   if (ext == "3ds") detail::check_3ds(bytes, path);
   if (ext == "gltf" || ext == "glb") {
@@ -231,6 +246,7 @@ void check_scene(const aiScene& scene, const std::string& path, size_t max_memor
       bytes += kFaceBytes * std::max<size_t>(1, face.mNumIndices - (face.mNumIndices > 2 ? 2 : 0));
     }
     bytes += kVertexBytes * mesh->mNumVertices;
+    if (mesh->mNumFaces == 0) bytes += kFaceBytes * mesh->mNumVertices;  // a point cloud's points
     if (bytes > max_memory)
       throw Error(path + ": the meshes need more than the limit of " + std::to_string(max_memory) +
                   " bytes (LoadOptions::max_memory)");
@@ -337,7 +353,12 @@ Mesh convert_part(const aiMesh& in, const Material& material, const Channels& wi
   for (unsigned f = 0; f < in.mNumFaces; ++f) {
     const aiFace& face = in.mFaces[f];
     if (face.mNumIndices == 3) part.triangles.push_back({{face.mIndices[0], face.mIndices[1], face.mIndices[2]}});
+    // A point (a point cloud: PLY without faces, glTF POINTS) is a triangle with one
+    // corner three times, drawn by Shading::Points.
+    if (face.mNumIndices == 1) part.triangles.push_back({{face.mIndices[0], face.mIndices[0], face.mIndices[0]}});
   }
+  if (in.mNumFaces == 0)  // a PLY point cloud: every vertex a point
+    for (uint32_t v = 0; v < in.mNumVertices; ++v) part.triangles.push_back({{v, v, v}});
   const unsigned nv = in.mNumVertices;
   part.positions.resize(nv);
   for (unsigned v = 0; v < nv; ++v) {
@@ -413,9 +434,15 @@ void append(Mesh& to, const Mesh& part, uint32_t material) {
 std::shared_ptr<Mesh> convert_node_meshes(const aiScene& scene, const aiNode& node, bool mirrored,
                                           const std::vector<Material>& materials, const std::string& path) {
   auto has_triangles = [](const aiMesh& m) {
+    if (m.mNumFaces == 0) return m.mNumVertices > 0;  // a point cloud
     for (unsigned f = 0; f < m.mNumFaces; ++f)
-      if (m.mFaces[f].mNumIndices == 3) return true;
+      if (m.mFaces[f].mNumIndices == 3 || m.mFaces[f].mNumIndices == 1) return true;
     return false;
+  };
+  auto only_points = [](const aiMesh& m) {
+    for (unsigned f = 0; f < m.mNumFaces; ++f)
+      if (m.mFaces[f].mNumIndices != 1) return false;
+    return true;
   };
   std::vector<const aiMesh*> parts;
   Channels with;
@@ -433,10 +460,15 @@ std::shared_ptr<Mesh> convert_node_meshes(const aiScene& scene, const aiNode& no
 
   auto mesh = std::make_shared<Mesh>();
   mesh->name = parts.size() == 1 && parts[0]->mName.length ? parts[0]->mName.C_Str() : node.mName.C_Str();
-  std::map<unsigned, uint32_t> slot_of;  // aiMaterial index -> index in mesh->materials
+  // (aiMaterial index, a point cloud) -> index in mesh->materials
+  std::map<std::pair<unsigned, bool>, uint32_t> slot_of;
   for (const aiMesh* m : parts) {
-    auto [it, added] = slot_of.try_emplace(m->mMaterialIndex, uint32_t(mesh->materials.size()));
-    if (added) mesh->materials.push_back(materials[m->mMaterialIndex]);
+    const bool points = only_points(*m);
+    auto [it, added] = slot_of.try_emplace({m->mMaterialIndex, points}, uint32_t(mesh->materials.size()));
+    if (added) {
+      mesh->materials.push_back(materials[m->mMaterialIndex]);
+      if (points) mesh->materials.back().shading = Shading::Points;
+    }
     Mesh part = convert_part(*m, mesh->materials[it->second], with, path);
     // Normals are all from the file or all computed per part: compute_normals may have
     // split vertices, so the arrays are appended as they are now.
@@ -552,7 +584,7 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
       out.mesh = mesh;
       for (unsigned i = 0; i < node->mNumMeshes; ++i) {
         const aiMesh* m = scene.mMeshes[node->mMeshes[i]];
-        for (unsigned f = 0; f < m->mNumFaces; ++f) dropped += m->mFaces[f].mNumIndices < 3;
+        for (unsigned f = 0; f < m->mNumFaces; ++f) dropped += m->mFaces[f].mNumIndices == 2;
       }
     }
     index_of[node] = model.nodes.size();
@@ -563,10 +595,10 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
   }
   if (model.triangle_count() == 0)
     throw Error(path + ": the file has no triangles" +
-                (dropped ? " (only " + std::to_string(dropped) + " points or lines, which Velocity does not draw)"
+                (dropped ? " (only " + std::to_string(dropped) + " lines, which Velocity does not draw)"
                          : std::string()));
   if (dropped)
-    warn(path + ": " + std::to_string(dropped) + " points and lines dropped (Velocity draws triangles only)");
+    warn(path + ": " + std::to_string(dropped) + " lines dropped (Velocity draws triangles and points only)");
 
   const std::string ext = detail::lower_extension(path);
   const bool gltf = ext == "gltf" || ext == "glb";
@@ -597,14 +629,17 @@ Model load_with_assimp(const std::string& path, const LoadOptions& options) {
   if (ext != "gltf" && ext != "glb" && ext != "3ds" && ext != "ply" && ext != "stl")
     throw Error(path + ": '" + ext + "' is not a format read through Assimp (expected .gltf, .glb, .3ds, .ply or .stl)");
   std::optional<detail::GltfAppearance> appearance;
-  std::shared_ptr<const std::string> replacement = check_file(path, options, appearance);
+  bool point_cloud = false;
+  std::shared_ptr<const std::string> replacement = check_file(path, options, appearance, point_cloud);
   const std::string format = format_name(path);
   try {
     Assimp::Importer importer;
     auto* io = new LimitedIOSystem(options.max_memory, path, replacement);
     importer.SetIOHandler(io);  // the importer owns and deletes it
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    // A PLY point cloud's mesh has no faces, which Assimp's validation refuses; the file
+    // was checked whole (check_ply) and check_scene checks what Assimp built.
+    const aiScene* scene = importer.ReadFile(path, point_cloud ? 0u : unsigned(aiProcess_ValidateDataStructure));
     if (!scene) {
       if (!io->refused().empty())
         throw Error(path + ": " + io->refused() + " would take the files read past the limit of " +

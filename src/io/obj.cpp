@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <unordered_map>
 #include <sstream>
@@ -140,6 +141,29 @@ struct CornerHash {
   }
 };
 
+// An OBJ file without faces (only `v`, or `p` points): every vertex a point, one
+// triangle (v, v, v) each under a Shading::Points material, with the vertex colours.
+std::shared_ptr<Mesh> point_cloud(const tinyobj::attrib_t& at, const std::string& path) {
+  auto mesh = std::make_shared<Mesh>();
+  mesh->name = "points";
+  const size_t n = at.vertices.size() / 3;
+  if (n > std::numeric_limits<uint32_t>::max()) throw Error(path + ": too many points");
+  const bool colors = at.colors.size() == at.vertices.size();
+  for (size_t v = 0; v < n; ++v) {
+    mesh->positions.push_back({at.vertices[3 * v], at.vertices[3 * v + 1], at.vertices[3 * v + 2]});
+    if (colors) mesh->colors.push_back({at.colors[3 * v], at.colors[3 * v + 1], at.colors[3 * v + 2]});
+    mesh->triangles.push_back({{uint32_t(v), uint32_t(v), uint32_t(v)}});
+  }
+  mesh->normals.assign(n, Vec3{0, 0, 1});  // unlit: any unit normal
+  Material m;
+  m.name = "points";
+  m.shading = Shading::Points;
+  m.color = {1, 1, 1};
+  mesh->materials.push_back(m);
+  mesh->validate();
+  return mesh;
+}
+
 }  // namespace
 
 Model load_obj(const std::string& path, const LoadOptions& options) {
@@ -233,7 +257,8 @@ Model load_obj(const std::string& path, const LoadOptions& options) {
     mesh->validate();
     model.nodes.push_back({shape.name, std::move(mesh), Mat4::identity(), -1});
   }
-  if (model.nodes.empty()) throw Error(path + ": OBJ file has no faces");
+  if (model.nodes.empty() && !at.vertices.empty()) model.nodes.push_back({"points", point_cloud(at, path), Mat4::identity(), -1});
+  if (model.nodes.empty()) throw Error(path + ": OBJ file has no faces and no vertices");
   return model;
 }
 

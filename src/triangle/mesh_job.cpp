@@ -1,6 +1,7 @@
 // The triangle stage for mesh draws: per triangle, reject, cull and clip, then set up
 // what survives (the varyings its material's kernel needs) and bin it.
 #include <algorithm>
+#include <cmath>
 
 #include "triangle/clip.hpp"
 #include "triangle/cull.hpp"
@@ -188,6 +189,9 @@ class MeshTriangles {
     const uint32_t i0 = tri.v[0], i1 = tri.v[1], i2 = tri.v[2];
     const uint32_t any = codes_[i0] | codes_[i1] | codes_[i2];
     const geometry::SlotPlan& s = slot_of(f);
+    // A point cloud's points are triangles with one corner three times (Mesh): no
+    // facing to cull by.
+    if (s.shading == Shading::Points && i0 == i1 && i1 == i2) return points(tri, s);
     bool front;
     if (learnt & (kKnownFront | kKnownBack)) {
       front = learnt & kKnownFront;
@@ -272,6 +276,12 @@ class MeshTriangles {
     }
   }
 
+  // RenderOptions::point_size in samples, 1..64 times the super-sampling factor.
+  int point_size() const {
+    const float size = std::isfinite(plan_.options.point_size) ? std::clamp(plan_.options.point_size, 1.0f, 64.0f) : 1.0f;
+    return std::max(1, int(size * float(std::max(1, plan_.options.ssaa)) + 0.5f));
+  }
+
   void points(const Triangle& tri, const geometry::SlotPlan& s) {
     // Each vertex once per job (a fixed range of faces, whatever the thread count),
     // however many of its faces share it.
@@ -283,7 +293,7 @@ class MeshTriangles {
       drawn[v] = 1;
       uint32_t offset;
       const ScreenVertex p = screen(v);
-      RecordHeader* r = setup_point(cx_.bins, p, nullptr, 0, 1, info, plan_.mesh_setup, offset);
+      RecordHeader* r = setup_point(cx_.bins, p, nullptr, 0, point_size(), info, plan_.mesh_setup, offset);
       if (!r) continue;
       cx_.emit(*r, offset, p.z);
       stats_.points++;

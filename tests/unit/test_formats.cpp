@@ -283,8 +283,9 @@ TEST(FormatsGltf, StripsAndFansBecomeTrianglesPointsAndLinesAreRefused) {
     Vec3 n0 = cross(c[1] - c[0], c[2] - c[0]), n1 = cross(c[4] - c[3], c[5] - c[3]);
     EXPECT_GT(dot(n0, n1), 0) << "a strip's second triangle must keep the first one's winding";
   }
-  // Points (mode 0) and lines (mode 1) only: nothing to draw.
-  for (const char* n : {"00", "01"}) {
+  // Lines only (mode 1): nothing to draw (points, mode 0, are a point cloud:
+  // test_formats_points.cpp).
+  for (const char* n : {"01"}) {
     std::string e = error_of(model("glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_" +
                                    std::string(n) + ".gltf"));
     EXPECT_NE(e.find("the file has no triangles (only"), std::string::npos) << e;
@@ -534,12 +535,17 @@ TEST(FormatsPly, AsciiLittleAndBigEndianWithColorsAgree) {
   }
 }
 
-TEST(FormatsPly, PointCloudsHaveNoTriangles) {
+TEST(FormatsPly, PointCloudsArePoints) {
   REQUIRE_TEST_MODELS();
-  // points.ply: four coloured points, no faces.
-  std::string e = error_of(model("PLY/points.ply"));
-  EXPECT_NE(e.find("points.ply"), std::string::npos) << e;
-  EXPECT_NE(e.find("face"), std::string::npos) << e;
+  // points.ply: four coloured points, no faces: four points, one (v, v, v) each.
+  Model m = load_with_assimp(model("PLY/points.ply"));
+  ASSERT_EQ(m.vertex_count(), 4u);
+  ASSERT_EQ(m.triangle_count(), 4u);
+  for (const ModelNode& n : m.nodes)
+    if (n.mesh) {
+      EXPECT_EQ(n.mesh->materials.at(0).shading, Shading::Points);
+      for (const Triangle& t : n.mesh->triangles) EXPECT_TRUE(t.v[0] == t.v[1] && t.v[1] == t.v[2]);
+    }
 }
 
 // -------------------------------------------------------------------------------- STL
