@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <mutex>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,41 @@ std::optional<Shading> shading_of(const std::string& name) {
   std::optional<Shading> s = parse_shading(name);
   if (!s) throw py::value_error("shading: expected flat, gouraud, phong, unlit, wire or points, got '" + name + "'");
   return s;
+}
+
+// An H x W (x 1..4) uint8 image array as a texture (grey, grey+alpha, RGB or RGBA).
+std::shared_ptr<const Texture> texture_of(py::handle obj, const char* what) {
+  py::array raw = as_native(obj);
+  if (raw.dtype().kind() == 'f') {  // floats in [0, 1], as pyrender accepts
+    py::module_ np = py::module_::import("numpy");
+    raw = np.attr("clip")(np.attr("rint")(raw.attr("__mul__")(255.0)), 0, 255);
+  }
+  auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(raw);
+  if (!a) throw py::type_error(std::string(what) + ": expected an image array of numbers");
+  if (a.ndim() != 2 && a.ndim() != 3)
+    throw py::value_error(std::string(what) + ": expected an H x W or H x W x C image, got " + std::to_string(a.ndim()) +
+                          " dimensions");
+  const py::ssize_t h = a.shape(0), w = a.shape(1), c = a.ndim() == 3 ? a.shape(2) : 1;
+  if (c < 1 || c > 4) throw py::value_error(std::string(what) + ": expected 1 to 4 channels, got " + std::to_string(c));
+  if (h < 1 || w < 1 || h > 65536 || w > 65536)
+    throw py::value_error(std::string(what) + ": expected 1..65536 pixels a side, got " + std::to_string(w) + " x " +
+                          std::to_string(h));
+  Image image{int(w), int(h)};
+  const uint8_t* src = a.data();
+  for (size_t i = 0, n = size_t(w) * size_t(h); i < n; ++i, src += c) {
+    uint8_t* d = &image.pixels[i * 4];
+    if (c <= 2) d[0] = d[1] = d[2] = src[0], d[3] = c == 2 ? src[1] : 255;
+    else d[0] = src[0], d[1] = src[1], d[2] = src[2], d[3] = c == 4 ? src[3] : 255;
+  }
+  py::gil_scoped_release release;
+  return std::make_shared<const Texture>(image);
+}
+
+std::optional<double> finite_or_none(std::optional<double> v, const char* what, double lo, double hi) {
+  if (v && !(std::isfinite(*v) && *v >= lo && *v <= hi))
+    throw py::value_error(std::string(what) + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                          "], got " + std::to_string(*v));
+  return v;
 }
 
 // ---------------------------------------------------------------- meshes
@@ -312,6 +348,9 @@ struct PyRenderer {
 enum : int64_t {
   kDepthOnly = 1,
   kAllWireframe = 8,
+  kShadowsDirectional = 32,
+  kShadowsPoint = 64,
+  kShadowsSpot = 128,
   kSkipCullFaces = 1024,
   kRgba = 2048,
   kFlat = 4096,
@@ -319,7 +358,7 @@ enum : int64_t {
   kNormals = 1 << 20,
 };
 
-py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
+py::object render(PyRenderer& self, const PyScene& scene, int64_t flags, const std::string& color_pipeline) {
   RenderRequest req;
   req.color = !(flags & kDepthOnly);
   req.alpha = flags & kRgba;
@@ -328,6 +367,13 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
   req.cull_back_faces = !(flags & kSkipCullFaces);
   if (flags & kAllWireframe) req.shading = Shading::Wireframe;
   else if (flags & kFlat) req.shading = Shading::Flat;
+  req.shadows_directional = flags & kShadowsDirectional;
+  req.shadows_point = flags & kShadowsPoint;
+  req.shadows_spot = flags & kShadowsSpot;
+  if (color_pipeline == "auto") req.color_pipeline = ColorPipeline::Auto;
+  else if (color_pipeline == "linear") req.color_pipeline = ColorPipeline::Linear;
+  else if (color_pipeline == "display") req.color_pipeline = ColorPipeline::Display;
+  else throw py::value_error("color: expected 'auto', 'linear' or 'display', got '" + color_pipeline + "'");
   RenderOutput out;
   int w, h;
   std::unique_ptr<uint8_t[]> color, depth_buffer;
@@ -410,9 +456,13 @@ PYBIND11_MODULE(_velocity, m) {
     else std::fprintf(stderr, "velocity: warning: %.*s\n", int(message.size()), message.data());
   });
 
-  py::class_<PyMaterial>(m, "Material", "How a mesh's surface is shaded (Velocity's fixed-function model).")
+  py::class_<PyMaterial>(m, "Material", "How a mesh's surface is shaded (Velocity's fixed-function model, or "
+                                          "glTF's metallic-roughness one when metallic or roughness is given).")
       .def(py::init([](py::object color, const std::string& shading, double specular, double shininess,
-                       bool two_sided, std::optional<std::string> texture) {
+                       bool two_sided, std::optional<std::string> texture, std::optional<double> metallic,
+                       std::optional<double> roughness, double alpha, const std::string& alpha_mode,
+                       double alpha_cutoff, py::object emissive, py::object image, const std::string& wrap,
+                       const std::string& filter, const std::string& color_space) {
              PyMaterial pm;
              auto c = color_of(color, "color", {0.8, 0.8, 0.8, 1});
              pm.m.color = {float(c[0]), float(c[1]), float(c[2])};
@@ -422,6 +472,35 @@ PYBIND11_MODULE(_velocity, m) {
              pm.m.specular = float(specular);
              pm.m.shininess = float(shininess);
              pm.m.two_sided = two_sided;
+             finite_or_none(metallic, "metallic", 0, 1);
+             finite_or_none(roughness, "roughness", 0, 1);
+             if (metallic || roughness) {
+               pm.m.shading = Shading::Pbr;
+               pm.m.pbr.metallic = float(metallic.value_or(1.0));
+               pm.m.pbr.roughness = float(roughness.value_or(1.0));
+             }
+             finite_or_none(alpha, "alpha", 0, 1);
+             finite_or_none(alpha_cutoff, "alpha_cutoff", 0, 1);
+             pm.m.alpha = float(alpha);
+             pm.m.alpha_cutoff = float(alpha_cutoff);
+             if (alpha_mode == "OPAQUE") pm.m.alpha_mode = AlphaMode::Opaque;
+             else if (alpha_mode == "MASK") pm.m.alpha_mode = AlphaMode::Mask;
+             else if (alpha_mode == "BLEND") pm.m.alpha_mode = AlphaMode::Blend;
+             else throw py::value_error("alpha_mode: expected OPAQUE, MASK or BLEND, got '" + alpha_mode + "'");
+             auto e = color_of(emissive, "emissive", {0, 0, 0, 1});
+             pm.m.pbr.emissive = {float(e[0]), float(e[1]), float(e[2])};
+             if (color_space == "srgb") pm.m.color_space = ColorSpace::Srgb;
+             else if (color_space == "linear") pm.m.color_space = ColorSpace::Linear;
+             else throw py::value_error("color_space: expected 'srgb' or 'linear', got '" + color_space + "'");
+             if (wrap == "repeat") pm.m.wrap = Wrap::Repeat;
+             else if (wrap == "clamp") pm.m.wrap = Wrap::Clamp;
+             else if (wrap == "mirror") pm.m.wrap = Wrap::MirroredRepeat;
+             else throw py::value_error("wrap: expected 'repeat', 'clamp' or 'mirror', got '" + wrap + "'");
+             std::optional<Filter> f = parse_filter(filter);
+             if (!f) throw py::value_error("filter: expected 'nearest', 'bilinear' or 'trilinear', got '" + filter + "'");
+             pm.m.filter = *f;
+             if (texture && !image.is_none()) throw py::value_error("give texture (a file) or image (an array), not both");
+             if (!image.is_none()) pm.m.texture = texture_of(image, "image");
              if (texture) {
                py::gil_scoped_release release;
                pm.m.texture = load_texture(*texture);
@@ -431,14 +510,34 @@ PYBIND11_MODULE(_velocity, m) {
            }),
            py::arg("color") = py::none(), py::arg("shading") = "gouraud", py::arg("specular") = 0.0,
            py::arg("shininess") = 32.0, py::arg("two_sided") = false, py::arg("texture") = py::none(),
+           py::arg("metallic") = py::none(), py::arg("roughness") = py::none(), py::arg("alpha") = 1.0,
+           py::arg("alpha_mode") = "OPAQUE", py::arg("alpha_cutoff") = 0.5, py::arg("emissive") = py::none(),
+           py::arg("image") = py::none(), py::arg("wrap") = "repeat", py::arg("filter") = "trilinear",
+           py::arg("color_space") = "srgb",
            "color: RGB in [0, 1] (or 0..255 integers); shading: 'flat', 'gouraud', 'phong', 'unlit', 'wire' "
            "or 'points'; specular: Ks of the white highlight Ks*(R.V)^shininess; two_sided: draw and light back "
-           "faces; texture: an image file modulating the colour through the mesh's uvs.")
+           "faces; texture: an image file modulating the colour through the mesh's uvs (or image: an H x W x C "
+           "array). metallic / roughness (0..1): glTF's metallic-roughness shading ('pbr') with these factors; "
+           "alpha, alpha_mode ('OPAQUE', 'MASK', 'BLEND'), alpha_cutoff and emissive as glTF defines them; "
+           "color_space: whether color is 'srgb' (display values) or 'linear' (glTF's factors).")
       .def_property_readonly("color", [](const PyMaterial& p) { return std::array<float, 3>{p.m.color.x, p.m.color.y, p.m.color.z}; })
       .def_property_readonly("shading", [](const PyMaterial& p) { return std::string(to_string(p.m.shading)); })
       .def_property_readonly("specular", [](const PyMaterial& p) { return p.m.specular; })
       .def_property_readonly("shininess", [](const PyMaterial& p) { return p.m.shininess; })
       .def_property_readonly("two_sided", [](const PyMaterial& p) { return p.m.two_sided; })
+      .def_property_readonly("metallic", [](const PyMaterial& p) { return p.m.pbr.metallic; })
+      .def_property_readonly("roughness", [](const PyMaterial& p) { return p.m.pbr.roughness; })
+      .def_property_readonly("alpha", [](const PyMaterial& p) { return p.m.alpha; })
+      .def_property_readonly("alpha_mode", [](const PyMaterial& p) {
+        return std::string(p.m.alpha_mode == AlphaMode::Opaque ? "OPAQUE" : p.m.alpha_mode == AlphaMode::Mask ? "MASK" : "BLEND");
+      })
+      .def_property_readonly("emissive", [](const PyMaterial& p) {
+        return std::array<float, 3>{p.m.pbr.emissive.x, p.m.pbr.emissive.y, p.m.pbr.emissive.z};
+      })
+      .def_property_readonly("color_space", [](const PyMaterial& p) {
+        return std::string(p.m.color_space == ColorSpace::Srgb ? "srgb" : "linear");
+      })
+      .def_property_readonly("has_texture", [](const PyMaterial& p) { return bool(p.m.texture); })
       .def_property_readonly("texture", [](const PyMaterial& p) -> std::optional<std::string> {
         if (p.m.texture_file.empty()) return std::nullopt;
         return p.m.texture_file;
@@ -617,16 +716,45 @@ PYBIND11_MODULE(_velocity, m) {
              return make_light(std::make_shared<DirectionalLight>(), color, intensity, name);
            }),
            py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("name") = py::none());
+  auto check_range = [](py::object range) -> std::optional<double> {
+    if (range.is_none()) return std::nullopt;
+    double r = range.cast<double>();
+    if (!(std::isfinite(r) && r > 0)) throw py::value_error("range must be finite and > 0 (or None), got " + std::to_string(r));
+    return r;
+  };
   py::class_<PointLight, LightBase, std::shared_ptr<PointLight>>(m, "PointLight",
-      "A light at the origin of its pose, falling off as 1 / d^2 (pyrender's PointLight; its `range` cut-off "
-      "is not supported and must be None).")
-      .def(py::init([make_light](py::object color, std::optional<double> intensity, py::object range,
-                                 std::optional<std::string> name) {
-             if (!range.is_none()) throw py::value_error("PointLight: range is not supported (use None)");
-             return make_light(std::make_shared<PointLight>(), color, intensity, name);
+      "A light at the origin of its pose, falling off as 1 / d^2 (pyrender's PointLight); range: "
+      "KHR_lights_punctual's cut-off distance (None: infinite).")
+      .def(py::init([make_light, check_range](py::object color, std::optional<double> intensity, py::object range,
+                                              std::optional<std::string> name) {
+             auto l = make_light(std::make_shared<PointLight>(), color, intensity, name);
+             l->range = check_range(range);
+             return l;
            }),
            py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("range") = py::none(),
-           py::arg("name") = py::none());
+           py::arg("name") = py::none())
+      .def_property("range", [](const PointLight& l) { return l.range; },
+                    [check_range](PointLight& l, py::object r) { l.range = check_range(r); });
+  py::class_<SpotLight, PointLight, std::shared_ptr<SpotLight>>(m, "SpotLight",
+      "A point light shining along the -Z axis of its pose in a cone (pyrender's SpotLight): full intensity "
+      "inside innerConeAngle, none outside outerConeAngle (half-angles, radians).")
+      .def(py::init([make_light, check_range](py::object color, std::optional<double> intensity, py::object range,
+                                              double inner, double outer, std::optional<std::string> name) {
+             auto l = make_light(std::make_shared<SpotLight>(), color, intensity, name);
+             l->range = check_range(range);
+             l->inner_cone = inner, l->outer_cone = outer;
+             try {
+               l->validate();
+             } catch (const Error& e) {
+               throw py::value_error(e.what());
+             }
+             return l;
+           }),
+           py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("range") = py::none(),
+           py::arg("innerConeAngle") = 0.0, py::arg("outerConeAngle") = std::numbers::pi / 4,
+           py::arg("name") = py::none())
+      .def_readonly("innerConeAngle", &SpotLight::inner_cone)
+      .def_readonly("outerConeAngle", &SpotLight::outer_cone);
 
   // Nodes and scenes.
   py::class_<PyNode>(m, "Node", "A node of a Scene: one mesh, camera or light with a pose. `id` is what the "
@@ -727,7 +855,7 @@ PYBIND11_MODULE(_velocity, m) {
                       std::lock_guard lock(r.mutex);
                       r.renderer.resize(r.renderer.width(), h);
                     })
-      .def("_render", &render, py::arg("scene"), py::arg("flags"))
+      .def("_render", &render, py::arg("scene"), py::arg("flags"), py::arg("color") = "auto")
       .def("delete", [](PyRenderer&) {}, "Nothing to free (pyrender needs this; kept for its users).");
 
   m.def("_camera_pose_angles", [](py::object pose) {

@@ -114,7 +114,27 @@ Light DirectionalLight::make(const double w[16]) const {
 Light PointLight::make(const double w[16]) const {
   Light l = Light::point({float(w[3]), float(w[7]), float(w[11])}, scaled_color(*this));
   l.constant = 0, l.linear = 0, l.quadratic = 1;  // 1 / d^2, as pyrender's
+  l.falloff = Falloff::InverseSquare;
+  l.range = range ? float(*range) : 0.0f;
   return l;
+}
+
+void SpotLight::validate() const {
+  if (!(std::isfinite(inner_cone) && std::isfinite(outer_cone) && inner_cone >= 0 && inner_cone < outer_cone &&
+        outer_cone <= std::numbers::pi / 2))
+    throw Error("SpotLight: expected 0 <= innerConeAngle < outerConeAngle <= pi/2, got " + std::to_string(inner_cone) +
+                ", " + std::to_string(outer_cone));
+}
+
+Light SpotLight::make(const double w[16]) const {
+  validate();
+  Light l = PointLight::make(w);
+  // Shines along -Z of its pose: the direction towards the light is the pose's +Z.
+  Light s = Light::spot(l.position, {float(w[2]), float(w[6]), float(w[10])}, l.color, float(inner_cone),
+                        float(outer_cone));
+  s.constant = l.constant, s.linear = l.linear, s.quadratic = l.quadratic;
+  s.falloff = l.falloff, s.range = l.range;
+  return s;
 }
 
 std::vector<std::array<double, 16>> SceneData::world_poses() const {
@@ -180,9 +200,15 @@ RenderOutput render_frame(Renderer& r, const SceneCopy& frame, const RenderReque
   r.options.shading = req.shading;
   r.options.cull_back_faces = req.cull_back_faces;
   r.options.normals = req.normals;
+  r.options.color = req.color_pipeline;
+  r.options.shadows = req.shadows_directional || req.shadows_point || req.shadows_spot;
+  std::vector<Light> lights = frame.lights;
+  for (Light& l : lights)
+    l.cast_shadows = (l.type == LightType::Directional && req.shadows_directional) ||
+                     (l.type == LightType::Point && req.shadows_point) || (l.type == LightType::Spot && req.shadows_spot);
   RenderOutput out;
   try {
-    r.begin_frame(frame.camera, frame.lights, frame.start);
+    r.begin_frame(frame.camera, lights, frame.start);
     for (const SceneCopy::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
     r.end_frame();
     if (req.color) r.read_color(req.color_buffer, size_t(w) * (req.alpha ? 4 : 3), req.alpha ? 4 : 3);

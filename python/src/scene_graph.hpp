@@ -71,7 +71,14 @@ struct DirectionalLight : LightBase {  // shines along its pose's -Z
   Light make(const double world[16]) const override;
 };
 struct PointLight : LightBase {  // at its pose's origin, falling off as 1 / d^2
+  std::optional<double> range;  // KHR_lights_punctual's cut-off distance; none: infinite
   Light make(const double world[16]) const override;
+};
+struct SpotLight : PointLight {  // a point light shining along its pose's -Z in a cone
+  double inner_cone = 0, outer_cone = 0.7853981633974483;  // half-angles, radians
+  Light make(const double world[16]) const override;
+  // Throws velocity::Error unless 0 <= inner < outer <= pi/2.
+  void validate() const;
 };
 
 struct NodeData {
@@ -126,6 +133,9 @@ struct RenderRequest {
   float* depth_buffer = nullptr;    // width * height floats, or null: RenderOutput::depth
   std::optional<Shading> shading;
   bool cull_back_faces = true;
+  // Shadow maps for the lights of these types (pyrender's SHADOWS_* flags).
+  bool shadows_directional = false, shadows_point = false, shadows_spot = false;
+  ColorPipeline color_pipeline = ColorPipeline::Auto;
 };
 RenderOutput render_frame(Renderer& renderer, const SceneCopy& frame, const RenderRequest& request);
 

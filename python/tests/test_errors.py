@@ -65,7 +65,9 @@ def test_bad_cameras_poses_and_sizes():
     with pytest.raises(TypeError, match="expected a Mesh"):
         scene.add("cube")
     with pytest.raises(ValueError, match="range"):
-        velocity.PointLight(range=3.0)
+        velocity.PointLight(range=-3.0)
+    with pytest.raises(ValueError, match="innerConeAngle"):
+        velocity.SpotLight(innerConeAngle=0.5, outerConeAngle=0.2)
 
 
 def test_node_of_another_scene():

@@ -33,6 +33,7 @@ from ._velocity import (  # noqa: F401  (re-exported)
     PointLight,
     Primitive,
     Scene,
+    SpotLight,
 )
 from ._velocity import IntrinsicsCamera as _IntrinsicsCamera
 from ._velocity import OffscreenRenderer as _OffscreenRenderer
@@ -40,7 +41,7 @@ from ._velocity import OffscreenRenderer as _OffscreenRenderer
 __all__ = [
     "Camera", "DirectionalLight", "Error", "IntrinsicsCamera", "Light", "Material", "Mesh", "Node",
     "OffscreenRenderer", "OrthographicCamera", "PerspectiveCamera", "PointLight", "Primitive", "RenderFlags",
-    "Scene", "look_at", "opencv_to_opengl_pose", "opengl_to_opencv_pose",
+    "Scene", "SpotLight", "look_at", "opencv_to_opengl_pose", "opengl_to_opencv_pose",
 ]
 
 
@@ -106,7 +107,7 @@ class OffscreenRenderer(_OffscreenRenderer):
         unknown = flags & ~int(_SUPPORTED)
         if unknown:
             raise ValueError(f"render: flags {RenderFlags(unknown)!r} are not supported by Velocity")
-        return self._render(scene, flags)
+        return self._render(scene, flags, "auto")
 
 
 class IntrinsicsCamera(_IntrinsicsCamera):
