@@ -21,6 +21,15 @@ class ThreadPool {
 
   int size() const { return int(workers_.size()) + 1; }
 
+  // True in a child process forked after the pool was made: fork() copies only the
+  // thread that called it, so the workers are gone. run() then does every item on the
+  // calling thread (never waiting for workers that do not exist), and the destructor
+  // lets go of the workers without joining them; make a new pool to have threads again.
+  bool orphaned() const { return forks_ != fork_count(); }
+  // How many fork()s this process descends through since the library was loaded
+  // (pthread_atfork's child handler counts them).
+  static unsigned fork_count();
+
   // Calls job(i, worker) for every i in [0, count), spread over the pool and the
   // calling thread, and returns when all are done. `worker` (0 .. size() - 1) is the
   // thread's own index, the calling thread being 0: per-worker buffers need no locks.
@@ -64,6 +73,7 @@ class ThreadPool {
   std::atomic<int> busy_{0};   // workers still inside the current generation
   std::atomic<unsigned> generation_{0};  // bumped for each run()
   std::atomic<bool> stop_{false};
+  unsigned forks_ = fork_count();  // fork_count() when the workers were started
 };
 
 }  // namespace velocity
