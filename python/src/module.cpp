@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstring>
 #include <mutex>
 #include <numbers>
 #include <string>
@@ -171,6 +172,34 @@ std::optional<double> finite_or_none(std::optional<double> v, const char* what, 
   return v;
 }
 
+// Camera parameters: a bad value is a ValueError naming it, from the constructor and
+// from every setter alike (a setter puts the old value back).
+template <class Cam>
+void validate_camera(const Cam& c) {
+  try {
+    c.validate();
+  } catch (const Error& e) {
+    throw py::value_error(e.what());
+  }
+}
+template <class C, class T>
+auto checked_get(T C::*member) {
+  return [member](const C& c) { return c.*member; };
+}
+template <class C, class T>
+auto checked_set(T C::*member) {
+  return [member](C& c, T value) {
+    T old = c.*member;
+    c.*member = value;
+    try {
+      validate_camera(c);
+    } catch (...) {
+      c.*member = old;
+      throw;
+    }
+  };
+}
+
 // ---------------------------------------------------------------- meshes
 struct PyMaterial {
   Material m;
@@ -202,7 +231,23 @@ PyMesh py_mesh_from_arrays(py::object vertices, py::object faces, py::object nor
   return {make_mesh_data(std::move(name), {mesh}, {Mat4::identity()})};
 }
 
-PyMesh mesh_from_file(const std::string& path, bool swap_yz, double max_memory) {
+// Raises `type` with `message`, whose file names may not be UTF-8 (shown escaped).
+void set_error(PyObject* type, const char* message) {
+  PyObject* text = PyUnicode_DecodeUTF8(message, Py_ssize_t(std::strlen(message)), "backslashreplace");
+  if (!text) return;  // the decoding's own error is set
+  PyErr_SetObject(type, text);
+  Py_DECREF(text);
+}
+
+// A file name as the OS has it: str (non-UTF-8 names as os.fsdecode gives them),
+// bytes or os.PathLike, through os.fsencode.
+std::string path_of(py::handle obj) {
+  py::object encoded = py::module_::import("os").attr("fsencode")(obj);
+  return std::string(encoded.cast<py::bytes>());
+}
+
+PyMesh mesh_from_file(py::object path_obj, bool swap_yz, double max_memory) {
+  const std::string path = path_of(path_obj);
   Model model;
   {
     CollectWarnings warnings;
@@ -225,7 +270,11 @@ PyMesh mesh_from_file(const std::string& path, bool swap_yz, double max_memory) 
     if (n.mesh && !n.mesh->triangles.empty()) parts.push_back(n.mesh), poses.push_back(world[i]);
   }
   if (parts.empty()) throw Error(path + ": the file holds no triangles");
-  std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  // The name is the file's, as text (bytes that are not UTF-8 replaced).
+  py::object os = py::module_::import("os");
+  std::string name = py::str(os.attr("path").attr("basename")(os.attr("fsdecode")(path_obj)))
+                         .attr("encode")("utf-8", "replace")
+                         .cast<std::string>();
   return {make_mesh_data(name, std::move(parts), std::move(poses))};
 }
 
@@ -444,11 +493,25 @@ PYBIND11_MODULE(_velocity, m) {
   m.doc() = "Velocity's Python bindings (use the `velocity` package, which re-exports these).";
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
   error.doc() = "An error from the Velocity engine; the message names the file, line or argument.";
+  // Shape and element-type errors are ValueError and TypeError, as Python code expects,
+  // and velocity.Error too.
+  static py::object shape_error = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "velocity._velocity.ShapeError", "An array argument of the wrong shape (a ValueError and a velocity.Error).",
+      py::make_tuple(error, py::handle(PyExc_ValueError)).ptr(), nullptr));
+  static py::object dtype_error = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "velocity._velocity.DtypeError", "An array argument of the wrong element type (a TypeError and a velocity.Error).",
+      py::make_tuple(error, py::handle(PyExc_TypeError)).ptr(), nullptr));
+  m.attr("ShapeError") = shape_error;
+  m.attr("DtypeError") = dtype_error;
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const ShapeError& e) {
+      set_error(shape_error.ptr(), e.what());
+    } catch (const DtypeError& e) {
+      set_error(dtype_error.ptr(), e.what());
     } catch (const Error& e) {
-      error(e.what());
+      set_error(error.ptr(), e.what());
     }
   });
   set_warning_handler([](std::string_view message) {
@@ -459,7 +522,7 @@ PYBIND11_MODULE(_velocity, m) {
   py::class_<PyMaterial>(m, "Material", "How a mesh's surface is shaded (Velocity's fixed-function model, or "
                                           "glTF's metallic-roughness one when metallic or roughness is given).")
       .def(py::init([](py::object color, const std::string& shading, double specular, double shininess,
-                       bool two_sided, std::optional<std::string> texture, std::optional<double> metallic,
+                       bool two_sided, py::object texture_obj, std::optional<double> metallic,
                        std::optional<double> roughness, double alpha, const std::string& alpha_mode,
                        double alpha_cutoff, py::object emissive, py::object image, const std::string& wrap,
                        const std::string& filter, const std::string& color_space) {
@@ -499,6 +562,8 @@ PYBIND11_MODULE(_velocity, m) {
              std::optional<Filter> f = parse_filter(filter);
              if (!f) throw py::value_error("filter: expected 'nearest', 'bilinear' or 'trilinear', got '" + filter + "'");
              pm.m.filter = *f;
+             std::optional<std::string> texture;
+             if (!texture_obj.is_none()) texture = path_of(texture_obj);
              if (texture && !image.is_none()) throw py::value_error("give texture (a file) or image (an array), not both");
              if (!image.is_none()) pm.m.texture = texture_of(image, "image");
              if (texture) {
@@ -637,8 +702,10 @@ PYBIND11_MODULE(_velocity, m) {
   // Cameras.
   py::class_<CameraBase, std::shared_ptr<CameraBase>> camera(m, "Camera", "Base class of the cameras.");
   camera.def_readwrite("name", &CameraBase::name)
-      .def_readwrite("znear", &CameraBase::znear, "Distance to the near clipping plane.")
-      .def_readwrite("zfar", &CameraBase::zfar, "Distance to the far plane (None: fitted to the scene).");
+      .def_property("znear", checked_get(&CameraBase::znear), checked_set(&CameraBase::znear),
+                    "Distance to the near clipping plane (> 0; a perspective camera's at least zfar / 1e5).")
+      .def_property("zfar", checked_get(&CameraBase::zfar), checked_set(&CameraBase::zfar),
+                    "Distance to the far plane (None: fitted to the scene).");
   py::class_<PerspectiveCamera, CameraBase, std::shared_ptr<PerspectiveCamera>>(m, "PerspectiveCamera",
       "A pinhole camera with a vertical field of view (pyrender's PerspectiveCamera). It looks down the -Z "
       "axis of its pose with +Y up.")
@@ -647,15 +714,16 @@ PYBIND11_MODULE(_velocity, m) {
              auto c = std::make_shared<PerspectiveCamera>();
              c->yfov = yfov, c->znear = znear, c->zfar = zfar, c->aspect_ratio = aspect;
              if (name) c->name = *name;
-             c->validate();
+             validate_camera(*c);
              return c;
            }),
            py::arg("yfov"), py::arg("znear") = 0.05, py::arg("zfar") = py::none(), py::arg("aspectRatio") = py::none(),
            py::arg("name") = py::none(),
            "yfov: vertical field of view in radians; aspectRatio: width / height (None: the image's); zfar None: "
            "just beyond the farthest mesh of the scene at each render.")
-      .def_readwrite("yfov", &PerspectiveCamera::yfov)
-      .def_readwrite("aspectRatio", &PerspectiveCamera::aspect_ratio)
+      .def_property("yfov", checked_get(&PerspectiveCamera::yfov), checked_set(&PerspectiveCamera::yfov))
+      .def_property("aspectRatio", checked_get(&PerspectiveCamera::aspect_ratio),
+                    checked_set(&PerspectiveCamera::aspect_ratio))
       .def("get_projection_matrix", &projection_of<PerspectiveCamera>, py::arg("width"), py::arg("height"),
            "The 4x4 OpenGL projection matrix for a width x height image (zfar None: 1e6 here).");
   py::class_<OrthographicCamera, CameraBase, std::shared_ptr<OrthographicCamera>>(m, "OrthographicCamera",
@@ -664,13 +732,13 @@ PYBIND11_MODULE(_velocity, m) {
              auto c = std::make_shared<OrthographicCamera>();
              c->xmag = xmag, c->ymag = ymag, c->znear = znear, c->zfar = zfar;
              if (name) c->name = *name;
-             c->validate();
+             validate_camera(*c);
              return c;
            }),
            py::arg("xmag"), py::arg("ymag"), py::arg("znear") = 0.05, py::arg("zfar") = 100.0,
            py::arg("name") = py::none())
-      .def_readwrite("xmag", &OrthographicCamera::xmag)
-      .def_readwrite("ymag", &OrthographicCamera::ymag)
+      .def_property("xmag", checked_get(&OrthographicCamera::xmag), checked_set(&OrthographicCamera::xmag))
+      .def_property("ymag", checked_get(&OrthographicCamera::ymag), checked_set(&OrthographicCamera::ymag))
       .def("get_projection_matrix", &projection_of<OrthographicCamera>, py::arg("width"), py::arg("height"));
   py::class_<IntrinsicsCamera, CameraBase, std::shared_ptr<IntrinsicsCamera>>(m, "IntrinsicsCamera",
       "A pinhole camera from intrinsics in pixels (pyrender's IntrinsicsCamera). Image coordinates run right "
@@ -681,15 +749,15 @@ PYBIND11_MODULE(_velocity, m) {
              auto c = std::make_shared<IntrinsicsCamera>();
              c->fx = fx, c->fy = fy, c->cx = cx, c->cy = cy, c->znear = znear, c->zfar = zfar;
              if (name) c->name = *name;
-             c->validate();
+             validate_camera(*c);
              return c;
            }),
            py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"), py::arg("znear") = 0.05,
            py::arg("zfar") = 100.0, py::arg("name") = py::none())
-      .def_readwrite("fx", &IntrinsicsCamera::fx)
-      .def_readwrite("fy", &IntrinsicsCamera::fy)
-      .def_readwrite("cx", &IntrinsicsCamera::cx)
-      .def_readwrite("cy", &IntrinsicsCamera::cy)
+      .def_property("fx", checked_get(&IntrinsicsCamera::fx), checked_set(&IntrinsicsCamera::fx))
+      .def_property("fy", checked_get(&IntrinsicsCamera::fy), checked_set(&IntrinsicsCamera::fy))
+      .def_property("cx", checked_get(&IntrinsicsCamera::cx), checked_set(&IntrinsicsCamera::cx))
+      .def_property("cy", checked_get(&IntrinsicsCamera::cy), checked_set(&IntrinsicsCamera::cy))
       .def("get_projection_matrix", &projection_of<IntrinsicsCamera>, py::arg("width"), py::arg("height"));
 
   // Lights.
@@ -700,7 +768,11 @@ PYBIND11_MODULE(_velocity, m) {
                       auto v = color_of(c, "color", {1, 1, 1, 1});
                       l.color = {float(v[0]), float(v[1]), float(v[2])};
                     })
-      .def_readwrite("intensity", &LightBase::intensity);
+      .def_property("intensity", [](const LightBase& l) { return l.intensity; },
+                    [](LightBase& l, double v) {
+                      if (!(std::isfinite(v) && v >= 0)) throw py::value_error("intensity must be finite and >= 0, got " + std::to_string(v));
+                      l.intensity = v;
+                    });
   auto make_light = [](auto l, py::object color, std::optional<double> intensity, std::optional<std::string> name) {
     auto v = color_of(color, "color", {1, 1, 1, 1});
     l->color = {float(v[0]), float(v[1]), float(v[2])};

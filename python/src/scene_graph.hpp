@@ -36,8 +36,10 @@ struct CameraBase {
   std::optional<double> zfar;
   // Sets the projection part of `camera` for a width x height image.
   virtual void apply(Camera& camera, int width, int height) const = 0;
-  // Checks the parameters; throws velocity::Error with what is wrong.
+  // Checks the parameters; throws velocity::Error with what is wrong (a perspective
+  // camera's znear too small for the depth buffer at zfar included).
   virtual void validate() const;
+  virtual bool perspective() const { return true; }
 };
 struct PerspectiveCamera : CameraBase {
   double yfov = 1.0;                   // radians
@@ -47,6 +49,7 @@ struct PerspectiveCamera : CameraBase {
 };
 struct OrthographicCamera : CameraBase {
   double xmag = 1.0, ymag = 1.0;  // half the view volume's width and height
+  bool perspective() const override { return false; }
   void apply(Camera& camera, int width, int height) const override;
   void validate() const override;
 };

@@ -298,3 +298,20 @@ def test_render_flags_every_member_and_refusals():
     r.delete()
     with pytest.raises(RuntimeError):
         r.render(scene)
+
+
+def test_camera_setters_validate_like_the_constructors():
+    cam = pyrender.PerspectiveCamera(yfov=np.pi / 3.0, znear=0.1, zfar=10.0)
+    with pytest.raises(ValueError, match="yfov"):
+        cam.yfov = 0.0
+    with pytest.raises(ValueError, match="smallest znear"):
+        cam.znear = 1e-9
+    assert cam.yfov == pytest.approx(np.pi / 3.0) and cam.znear == 0.1
+    with pytest.raises(ValueError):
+        pyrender.IntrinsicsCamera(fx=0, fy=1, cx=0, cy=0)
+    ortho = pyrender.OrthographicCamera(xmag=1.0, ymag=1.0)
+    with pytest.raises(ValueError, match="xmag"):
+        ortho.xmag = -1.0
+    light = pyrender.PointLight()
+    with pytest.raises(ValueError):
+        light.intensity = float("inf")

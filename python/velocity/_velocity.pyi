@@ -1,5 +1,6 @@
 # Type stubs for the compiled module velocity._velocity (python/src/module.cpp).
 # tests/test_stubs.py checks that every name and argument here matches the module.
+import os
 from typing import Optional, Sequence, Union
 
 import numpy as np
@@ -9,10 +10,12 @@ ArrayLike = npt.ArrayLike
 Color = Union[Sequence[float], npt.NDArray[np.generic]]
 
 class Error(RuntimeError): ...
+class ShapeError(Error, ValueError): ...
+class DtypeError(Error, TypeError): ...
 
 class Material:
     def __init__(self, color: Optional[Color] = None, shading: str = "gouraud", specular: float = 0.0,
-                 shininess: float = 32.0, two_sided: bool = False, texture: Optional[str] = None,
+                 shininess: float = 32.0, two_sided: bool = False, texture: Optional[Union[str, bytes, os.PathLike[str]]] = None,
                  metallic: Optional[float] = None, roughness: Optional[float] = None, alpha: float = 1.0,
                  alpha_mode: str = "OPAQUE", alpha_cutoff: float = 0.5, emissive: Optional[Color] = None,
                  image: Optional[ArrayLike] = None, wrap: str = "repeat", filter: str = "trilinear",
@@ -69,7 +72,7 @@ class Mesh:
     def from_trimesh(mesh: object, material: Optional[Material] = None, smooth: bool = True,
                      name: Optional[str] = None) -> Mesh: ...
     @staticmethod
-    def from_file(path: str, swap_yz: bool = True, max_memory: float = 0.0) -> Mesh: ...
+    def from_file(path: Union[str, bytes, os.PathLike[str]], swap_yz: bool = True, max_memory: float = 0.0) -> Mesh: ...
     @staticmethod
     def sphere(segments: int = 64) -> Mesh: ...
     @staticmethod

@@ -556,6 +556,20 @@ class Camera:
                 raise ValueError(f"zfar: expected a finite value > 0 (or None), got {value}")
         self._zfar = value
 
+    _PARAMETERS = ("znear", "zfar", "yfov", "aspectRatio", "xmag", "ymag", "fx", "fy", "cx", "cy")
+
+    def __setattr__(self, name, value):
+        # Every setter checks what the constructor checks, and a bad value is not kept.
+        if name not in self._PARAMETERS or not getattr(self, "_ready", False):
+            return object.__setattr__(self, name, value)
+        old = getattr(self, name)
+        object.__setattr__(self, name, value)
+        try:
+            _check(self)
+        except (ValueError, TypeError):
+            object.__setattr__(self, name, old)
+            raise
+
     def _near(self):
         # pyrender allows znear 0 for orthographic cameras; the engine needs a plane in front.
         return self.znear if self.znear > 0 else min(1e-3, (self.zfar or 1.0) * 1e-4)
@@ -570,6 +584,9 @@ def _check(camera):
         camera._native()
     except _v.Error as e:
         raise ValueError(str(e)) from None
+    except TypeError as e:
+        raise TypeError(f"{type(camera).__name__}: {e}") from None
+    camera._ready = True
 
 
 class PerspectiveCamera(Camera):
