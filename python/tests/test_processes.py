@@ -51,6 +51,7 @@ def test_renderer_made_before_fork_works_in_the_child():
     # And in a bare os.fork() child, which then exits without Python's clean-up.
     import os
     import time
+    time.sleep(0.05)  # the renderer's workers past their spinning, asleep
     pid = os.fork()
     if pid == 0:
         code = 1

@@ -61,10 +61,16 @@ ThreadPool::ThreadPool(int threads) {
 ThreadPool::~ThreadPool() {
   if (orphaned()) {
     // The workers' std::thread handles name threads of the parent: joining one would
-    // wait forever. Keep the handles, never destroyed (destroying a joinable one calls
-    // std::terminate), from a static, so that leak checkers still reach them.
-    static auto* orphans = new std::vector<std::thread>;
-    for (auto& t : workers_) orphans->push_back(std::move(t));
+    // wait forever, and so would destroying the condition variables they slept on.
+    // Keep both, never destroyed (destroying a joinable thread calls std::terminate),
+    // from a static, so that leak checkers still reach them.
+    struct Orphans {
+      std::vector<std::thread> threads;
+      std::vector<std::unique_ptr<Sync>> syncs;
+    };
+    static auto* orphans = new Orphans;
+    for (auto& t : workers_) orphans->threads.push_back(std::move(t));
+    orphans->syncs.push_back(std::move(sync_));
     return;
   }
   {

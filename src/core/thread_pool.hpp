@@ -4,6 +4,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <exception>
+#include <memory>
 #include <type_traits>
 #include <mutex>
 #include <thread>
@@ -61,9 +62,16 @@ class ThreadPool {
   std::vector<std::thread> workers_;
   // Workers and the caller wait by spinning a little (a frame runs its stages back to
   // back, and waking a sleeping thread costs tens of microseconds, more in a virtual
-  // machine), then by sleeping on these.
-  std::mutex mutex_;
-  std::condition_variable wake_, done_;
+  // machine), then by sleeping on these. On the heap: in a forked child they may hold
+  // waiters that no longer exist, and destroying such a condition variable waits for
+  // them forever, so an orphaned pool never destroys them.
+  struct Sync {
+    std::mutex mutex;
+    std::condition_variable wake, done;
+  };
+  std::unique_ptr<Sync> sync_ = std::make_unique<Sync>();
+  std::mutex& mutex_ = sync_->mutex;
+  std::condition_variable &wake_ = sync_->wake, &done_ = sync_->done;
   // The run in progress: written by run_items before it publishes a new generation,
   // read by the workers after they see it.
   Job job_{nullptr, nullptr};
