@@ -1,5 +1,5 @@
 """pyrender's offscreen quickstart rendered by velocity.pyrender, compared with the image
-pyrender's repository publishes for it (docs/source/_static/minexcolor.png, copied to
+pyrender's repository publishes for it (its documentation's minexcolor.png, copied to
 python/tests/data/pyrender/). Prints the PSNR and the silhouette's overlap.
 
     PYTHONPATH=build/python:python/tests python3 python/bench/compare_quickstart.py [out.png]

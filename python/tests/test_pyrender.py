@@ -45,7 +45,7 @@ def test_quickstart_offscreen_matches_pyrender_silhouette_and_depth():
     color, depth = r.render(scene)
     assert color.shape == (400, 400, 3) and color.dtype == np.uint8
     assert depth.shape == (400, 400) and depth.dtype == np.float32
-    # pyrender's published image (docs/source/_static/minexcolor.png): the same bottle, in
+    # pyrender's published image (its documentation's minexcolor.png): the same bottle, in
     # the same place. The shading differs until the engine's PBR path lands (docs/python.md).
     ref = np.asarray(Image.open(os.path.join(DATA, "minexcolor.png")).convert("RGB"))
     ours, theirs = depth > 0, (ref < 250).any(axis=2)
