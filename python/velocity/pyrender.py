@@ -55,6 +55,15 @@ _REFUSED = {
 }
 
 
+_REFUSED_MASK = int(RenderFlags.VERTEX_NORMALS | RenderFlags.FACE_NORMALS)
+_SEG, _FLAT, _DEPTH_ONLY = int(RenderFlags.SEG), int(RenderFlags.FLAT), int(RenderFlags.DEPTH_ONLY)
+_FLIP_WIREFRAME, _ALL_SOLID, _SHADOWS = (int(RenderFlags.FLIP_WIREFRAME), int(RenderFlags.ALL_SOLID),
+                                         int(RenderFlags.SHADOWS_ALL))
+# What the engine's render takes as it is (velocity's RenderFlags use pyrender's values).
+_NATIVE = int(RenderFlags.DEPTH_ONLY | RenderFlags.ALL_WIREFRAME | RenderFlags.SKIP_CULL_FACES | RenderFlags.RGBA |
+              RenderFlags.SHADOWS_ALL)
+
+
 class GLTF:
     """pyrender's GLTF constants (OpenGL enum values): filters, wraps, primitive modes."""
 
@@ -822,6 +831,7 @@ class Scene:
     @bg_color.setter
     def bg_color(self, value):
         self._bg = _vec(value, 4, (1.0, 1.0, 1.0, 1.0), "bg_color")
+        self._bg_native = tuple(float(v) for v in np.clip(self._bg, 0, 1))  # what each render gives the engine
 
     @property
     def ambient_light(self):
@@ -830,6 +840,7 @@ class Scene:
     @ambient_light.setter
     def ambient_light(self, value):
         self._ambient = _vec(value, 3, (0.0, 0.0, 0.0), "ambient_light")[:3]
+        self._ambient_native = tuple(float(v) for v in np.clip(self._ambient, 0, None))
 
     # The node sets pyrender exposes.
     @property
@@ -1078,25 +1089,22 @@ class OffscreenRenderer:
         renderer = self._live()
         if not isinstance(scene, Scene):
             raise TypeError(f"render: expected a velocity.pyrender.Scene, got {type(scene).__name__}")
-        flags = RenderFlags(int(flags))
-        for flag, why in _REFUSED.items():
-            if flags & flag:
-                raise ValueError(f"render: RenderFlags.{flag.name} is not supported: {why}")
+        flags = int(flags)  # plain ints from here: IntFlag's operators cost microseconds each
+        if flags & _REFUSED_MASK:
+            flag = next(f for f in _REFUSED if flags & f)
+            raise ValueError(f"render: RenderFlags.{flag.name} is not supported: {_REFUSED[flag]}")
         if scene.main_camera_node is None:
             raise ValueError("render: the scene has no camera (add one with scene.add(camera, pose=...))")
-        seg = bool(flags & RenderFlags.SEG)
-        unlit = bool(flags & (RenderFlags.FLAT | RenderFlags.SEG))
+        seg = bool(flags & _SEG)
+        unlit = bool(flags & (_FLAT | _SEG))
         native, ids, points = self._frame(scene, flags, seg, unlit, seg_node_map or {})
-        native_flags = int(flags) & (RenderFlags.DEPTH_ONLY | RenderFlags.ALL_WIREFRAME | RenderFlags.SKIP_CULL_FACES |
-                                     RenderFlags.RGBA | RenderFlags.SHADOWS_ALL)
+        native_flags = flags & _NATIVE
         if seg:  # the mask, from which the segmentation colours come; no shadows for it
-            native_flags = (native_flags & ~int(RenderFlags.SHADOWS_ALL)) | int(RenderFlags.SEG)
-        if seg and flags & RenderFlags.DEPTH_ONLY:
-            native_flags &= ~int(RenderFlags.SEG)
+            native_flags = (native_flags & ~_SHADOWS) | (0 if flags & _DEPTH_ONLY else _SEG)
         # pyrender lights in linear light and writes gamma-encoded pixels, except for FLAT
         # and SEG, which write their colours as they are.
         out = renderer._render(native, native_flags, "display" if unlit else "linear")
-        if flags & RenderFlags.DEPTH_ONLY:
+        if flags & _DEPTH_ONLY:
             depth = out
             color = mask = None
         elif seg:
@@ -1106,7 +1114,7 @@ class OffscreenRenderer:
             mask = None
         if points:
             ids.update(self._draw_points(scene, points, color, depth, mask, max(ids, default=0) + 1))
-        if flags & RenderFlags.DEPTH_ONLY:
+        if flags & _DEPTH_ONLY:
             return depth
         if seg:
             color = self._segmentation(mask, ids, seg_node_map or {}, color.shape[2])
@@ -1114,8 +1122,8 @@ class OffscreenRenderer:
 
     def _frame(self, scene, flags, seg, unlit, seg_node_map):
         """The engine's scene for this frame: (scene, {mask id: node}, point primitives)."""
-        bg = (0.0, 0.0, 0.0, 1.0) if seg else scene.bg_color
-        native = _v.Scene(bg_color=np.clip(bg, 0, 1), ambient_light=np.clip(scene.ambient_light, 0, None))
+        bg = (0.0, 0.0, 0.0, 1.0) if seg else scene._bg_native
+        native = _v.Scene(bg_color=bg, ambient_light=scene._ambient_native)
         ids: dict = {}
         points = []
         for node in scene._order:
@@ -1128,9 +1136,9 @@ class OffscreenRenderer:
                     points.append((node, prim, world))
                     continue
                 wire = prim.material.wireframe
-                if flags & RenderFlags.FLIP_WIREFRAME:
+                if flags & _FLIP_WIREFRAME:
                     wire = not wire
-                if flags & RenderFlags.ALL_SOLID:
+                if flags & _ALL_SOLID:
                     wire = False
                 m = prim._native(wire, unlit)
                 if prim.poses is None:
@@ -1138,7 +1146,7 @@ class OffscreenRenderer:
                 else:
                     for p in prim.poses:
                         ids[native.add(m, pose=world @ p).id] = node
-        if not (unlit or flags & RenderFlags.DEPTH_ONLY):
+        if not (unlit or flags & _DEPTH_ONLY):
             for node in scene._order:
                 if node.light is not None:
                     native.add(node.light._native(), pose=scene.get_pose(node))
