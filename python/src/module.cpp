@@ -142,6 +142,8 @@ std::shared_ptr<const Texture> texture_of(py::handle obj, const char* what) {
   py::array raw = as_native(obj);
   if (raw.dtype().kind() == 'f') {  // floats in [0, 1], as pyrender accepts
     py::module_ np = py::module_::import("numpy");
+    if (!np.attr("all")(np.attr("isfinite")(raw)).cast<bool>())
+      throw py::value_error(std::string(what) + ": pixel values must be finite");
     raw = np.attr("clip")(np.attr("rint")(raw.attr("__mul__")(255.0)), 0, 255);
   }
   auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(raw);

@@ -315,3 +315,64 @@ def test_camera_setters_validate_like_the_constructors():
     light = pyrender.PointLight()
     with pytest.raises(ValueError):
         light.intensity = float("inf")
+
+
+def test_random_inputs_raise_documented_errors_only():
+    # A fuzz of the API surface: random shapes, types and values for what scripts pass.
+    # Every call either works or raises ValueError / TypeError / velocity.Error; the
+    # process never crashes, and a render that works returns pyrender's shapes.
+    import velocity
+    rng = np.random.default_rng(20261126)
+    allowed = (ValueError, TypeError, velocity.Error)
+
+    def junk():
+        kind = rng.integers(7)
+        shape = tuple(int(s) for s in rng.integers(0, 5, size=rng.integers(0, 4)))
+        if kind == 0:
+            return rng.normal(size=shape) * 10 ** rng.integers(-9, 9)
+        if kind == 1:
+            return rng.integers(-300, 300, size=shape).astype(rng.choice([np.int8, np.int64, np.uint16]))
+        if kind == 2:
+            return np.full(shape, rng.choice([np.nan, np.inf, -np.inf]))
+        if kind == 3:
+            return [float(x) for x in rng.normal(size=int(rng.integers(0, 6)))]
+        if kind == 4:
+            return "text"
+        if kind == 5:
+            return None
+        return rng.random((int(rng.integers(1, 9)), 3)).astype(np.float32)
+
+    r = pyrender.OffscreenRenderer(24, 16, point_size=2)
+    for i in range(300):
+        scene = pyrender.Scene(bg_color=[0, 0, 0])
+        try:
+            what = i % 6
+            if what == 0:
+                prim = pyrender.Primitive(positions=junk(), normals=junk() if rng.random() < 0.3 else None,
+                                          color_0=junk() if rng.random() < 0.3 else None,
+                                          indices=junk() if rng.random() < 0.5 else None,
+                                          mode=int(rng.choice([0, 4, 5, 6])))
+                scene.add(pyrender.Mesh([prim]))
+            elif what == 1:
+                scene.add(pyrender.Mesh.from_points(junk(), colors=junk() if rng.random() < 0.5 else None))
+            elif what == 2:
+                mat = pyrender.MetallicRoughnessMaterial(baseColorFactor=junk(), metallicFactor=float(rng.normal()),
+                                                         roughnessFactor=float(rng.normal()),
+                                                         baseColorTexture=junk() if rng.random() < 0.5 else None)
+                scene.add(pyrender.Mesh.from_trimesh(trimesh.box(), material=mat))
+            elif what == 3:
+                scene.add(pyrender.Mesh.from_trimesh(trimesh.box()), pose=junk())
+            elif what == 4:
+                scene.add(pyrender.SpotLight(color=junk(), intensity=float(rng.normal()),
+                                             innerConeAngle=float(rng.normal()), outerConeAngle=float(rng.normal())))
+            else:
+                velocity.Material(image=junk(), metallic=float(rng.normal()))
+            scene.add(pyrender.PerspectiveCamera(yfov=float(rng.uniform(-1, 4)), znear=float(rng.uniform(-1, 1))),
+                      pose=camera_pose_looking_down())
+            out = r.render(scene, int(rng.integers(0, 1 << 14)) & ~(256 | 512))
+        except allowed:
+            continue
+        if isinstance(out, tuple):
+            assert out[0].shape[:2] == (16, 24) and out[1].shape == (16, 24)
+        else:
+            assert out.shape == (16, 24)

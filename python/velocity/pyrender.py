@@ -141,6 +141,8 @@ def _image_array(source: Any) -> np.ndarray:
         source = np.asarray(source)
     a = np.asarray(source)
     if a.dtype.kind == "f":
+        if not np.all(np.isfinite(a)):
+            raise ValueError("texture: pixel values must be finite")
         a = np.clip(np.rint(a * 255.0), 0, 255).astype(np.uint8)
     elif a.dtype.kind in "ui":
         a = a.astype(np.uint8)
