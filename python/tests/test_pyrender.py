@@ -376,3 +376,9 @@ def test_random_inputs_raise_documented_errors_only():
             assert out[0].shape[:2] == (16, 24) and out[1].shape == (16, 24)
         else:
             assert out.shape == (16, 24)
+
+
+def test_viewer_says_what_to_use_instead():
+    scene, _ = box_scene()
+    with pytest.raises(NotImplementedError, match="OffscreenRenderer"):
+        pyrender.Viewer(scene, use_raymond_lighting=True)  # pyrender's quickstart, first example

@@ -20,7 +20,7 @@ from . import _velocity as _v
 __all__ = [
     "DirectionalLight", "GLTF", "IntrinsicsCamera", "Light", "Material", "Mesh", "MetallicRoughnessMaterial",
     "Node", "OffscreenRenderer", "OrthographicCamera", "PerspectiveCamera", "PointLight", "Primitive",
-    "RenderFlags", "Sampler", "Scene", "SpecularGlossinessMaterial", "SpotLight", "Texture", "Camera",
+    "RenderFlags", "Sampler", "Scene", "SpecularGlossinessMaterial", "SpotLight", "Texture", "Camera", "Viewer",
 ]
 
 DEFAULT_Z_NEAR = 0.05
@@ -1219,6 +1219,16 @@ class OffscreenRenderer:
                     ids[next_id] = node
                     next_id += 1
         return ids
+
+
+class Viewer:
+    """pyrender's interactive Viewer needs a window and OpenGL; Velocity's module renders
+    offscreen only. Constructing one raises, saying what to use instead."""
+
+    def __init__(self, scene=None, viewport_size=None, render_flags=None, viewer_flags=None,
+                 registered_keys=None, run_in_thread=False, **kwargs):
+        raise NotImplementedError("velocity.pyrender has no Viewer (no window here): render with "
+                                  "OffscreenRenderer(w, h).render(scene), or view models with `velocity view`")
 
 
 def _size(value, what):
