@@ -21,6 +21,8 @@
 #   python3-numpy                    its arrays (colour, depth, masks, meshes)
 #   python3-pytest                   the Python tests, run by ctest
 #   python3-distributed              the batch renderer on a Dask cluster (and its tests)
+#   python3-pil                      PNG files of the batch runner; pyrender's textures as PIL images (velocity.pyrender)
+#   python3-tqdm                     the batch runner's progress bar
 #   libsdl2-dev                      the real-time window, input and sound (present/: view, fly, drive)
 #   xvfb                             a display for the window's test (present/tests/window_test.py)
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader
@@ -28,7 +30,7 @@
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
-  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed libsdl2-dev xvfb chromium "$@")
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed python3-pil python3-tqdm libsdl2-dev xvfb chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.
 command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()

@@ -94,7 +94,8 @@ class CpuBackend final : public Backend {
   ThreadPool& pool_for(int threads) {
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min(threads, 256);
-    if (!pool || pool->size() != threads) pool = std::make_unique<ThreadPool>(threads);
+    // A pool made before this process was forked has no workers here: a new one.
+    if (!pool || pool->size() != threads || pool->orphaned()) pool = std::make_unique<ThreadPool>(threads);
     if (bins.workers() != threads || bins.tiles_x() != framebuffer.tiles_x || bins.tiles_y() != framebuffer.tiles_y)
       bins.resize(framebuffer.width, framebuffer.height, threads);
     return *pool;

@@ -56,12 +56,12 @@ void check(const ArrayView& a, const char* name, size_t rows, std::initializer_l
   for (size_t c : allowed_cols) cols_ok |= a.cols == c;
   std::string want;
   for (size_t c : allowed_cols) want += (want.empty() ? "" : " or ") + std::string("Nx") + std::to_string(c);
-  if (!cols_ok) throw Error(std::string(name) + ": expected an array of shape " + want + ", got " + shape_text(a));
+  if (!cols_ok) throw ShapeError(std::string(name) + ": expected an array of shape " + want + ", got " + shape_text(a));
   if (rows && a.rows != rows)
-    throw Error(std::string(name) + ": expected " + std::to_string(rows) + " rows (one per vertex), got " +
+    throw ShapeError(std::string(name) + ": expected " + std::to_string(rows) + " rows (one per vertex), got " +
                 std::to_string(a.rows));
   if (!valid_type(a) || (floats_only && a.kind != 'f'))
-    throw Error(std::string(name) + ": expected " + (floats_only ? "float32 or float64" : "float or integer") +
+    throw DtypeError(std::string(name) + ": expected " + (floats_only ? "float32 or float64" : "float or integer") +
                 " elements, got kind '" + std::string(1, a.kind) + "' of " + std::to_string(a.itemsize) + " bytes");
 }
 
@@ -114,7 +114,7 @@ Mesh mesh_from_arrays(const MeshArrays& in, std::string name) {
 
   // Faces: indices checked before anything uses them.
   check(in.faces, "faces", 0, {3}, false);
-  if (in.faces.kind == 'f') throw Error("faces: expected integer indices, got floats");
+  if (in.faces.kind == 'f') throw DtypeError("faces: expected integer indices, got floats");
   if (in.faces.rows == 0) throw Error("faces: the mesh has no triangles");
   mesh.triangles.resize(in.faces.rows);
   const ArrayView& f = in.faces;
@@ -150,7 +150,7 @@ Mesh mesh_from_arrays(const MeshArrays& in, std::string name) {
     // uint8 colours are 0..255; float ones 0..1 (clamped). Alpha is dropped: the
     // renderer's vertex colours are RGB.
     double scale = c.kind == 'f' ? 1.0 : (c.kind == 'u' && c.itemsize == 1 ? 1.0 / 255.0 : 0.0);
-    if (scale == 0) throw Error("colors: expected float in [0, 1] or uint8 elements");
+    if (scale == 0) throw DtypeError("colors: expected float in [0, 1] or uint8 elements");
     mesh.colors.resize(n);
     for (size_t r = 0; r < n; ++r) {
       float rgb[3];

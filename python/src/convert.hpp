@@ -14,10 +14,22 @@
 #include <optional>
 #include <string>
 
+#include "velocity/error.hpp"
 #include "velocity/mesh.hpp"
 #include "velocity/scene.hpp"
 
 namespace velocity::python {
+
+// A numpy argument of the wrong shape, or of the wrong element type: Python gets
+// velocity.ShapeError (a ValueError) and velocity.DtypeError (a TypeError), both also
+// velocity.Error.
+struct ShapeError : Error {
+  using Error::Error;
+};
+struct DtypeError : Error {
+  using Error::Error;
+};
+
 
 // A two-dimensional array as numpy describes it (a 1-D array is rows x 1).
 struct ArrayView {

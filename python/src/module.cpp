@@ -11,7 +11,9 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstring>
 #include <mutex>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -135,6 +137,71 @@ std::optional<Shading> shading_of(const std::string& name) {
   return s;
 }
 
+// An H x W (x 1..4) uint8 image array as a texture (grey, grey+alpha, RGB or RGBA).
+std::shared_ptr<const Texture> texture_of(py::handle obj, const char* what) {
+  py::array raw = as_native(obj);
+  if (raw.dtype().kind() == 'f') {  // floats in [0, 1], as pyrender accepts
+    py::module_ np = py::module_::import("numpy");
+    if (!np.attr("all")(np.attr("isfinite")(raw)).cast<bool>())
+      throw py::value_error(std::string(what) + ": pixel values must be finite");
+    raw = np.attr("clip")(np.attr("rint")(raw.attr("__mul__")(255.0)), 0, 255);
+  }
+  auto a = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(raw);
+  if (!a) throw py::type_error(std::string(what) + ": expected an image array of numbers");
+  if (a.ndim() != 2 && a.ndim() != 3)
+    throw py::value_error(std::string(what) + ": expected an H x W or H x W x C image, got " + std::to_string(a.ndim()) +
+                          " dimensions");
+  const py::ssize_t h = a.shape(0), w = a.shape(1), c = a.ndim() == 3 ? a.shape(2) : 1;
+  if (c < 1 || c > 4) throw py::value_error(std::string(what) + ": expected 1 to 4 channels, got " + std::to_string(c));
+  if (h < 1 || w < 1 || h > 65536 || w > 65536)
+    throw py::value_error(std::string(what) + ": expected 1..65536 pixels a side, got " + std::to_string(w) + " x " +
+                          std::to_string(h));
+  Image image{int(w), int(h)};
+  const uint8_t* src = a.data();
+  for (size_t i = 0, n = size_t(w) * size_t(h); i < n; ++i, src += c) {
+    uint8_t* d = &image.pixels[i * 4];
+    if (c <= 2) d[0] = d[1] = d[2] = src[0], d[3] = c == 2 ? src[1] : 255;
+    else d[0] = src[0], d[1] = src[1], d[2] = src[2], d[3] = c == 4 ? src[3] : 255;
+  }
+  py::gil_scoped_release release;
+  return std::make_shared<const Texture>(image);
+}
+
+std::optional<double> finite_or_none(std::optional<double> v, const char* what, double lo, double hi) {
+  if (v && !(std::isfinite(*v) && *v >= lo && *v <= hi))
+    throw py::value_error(std::string(what) + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                          "], got " + std::to_string(*v));
+  return v;
+}
+
+// Camera parameters: a bad value is a ValueError naming it, from the constructor and
+// from every setter alike (a setter puts the old value back).
+template <class Cam>
+void validate_camera(const Cam& c) {
+  try {
+    c.validate();
+  } catch (const Error& e) {
+    throw py::value_error(e.what());
+  }
+}
+template <class C, class T>
+auto checked_get(T C::*member) {
+  return [member](const C& c) { return c.*member; };
+}
+template <class C, class T>
+auto checked_set(T C::*member) {
+  return [member](C& c, T value) {
+    T old = c.*member;
+    c.*member = value;
+    try {
+      validate_camera(c);
+    } catch (...) {
+      c.*member = old;
+      throw;
+    }
+  };
+}
+
 // ---------------------------------------------------------------- meshes
 struct PyMaterial {
   Material m;
@@ -166,7 +233,23 @@ PyMesh py_mesh_from_arrays(py::object vertices, py::object faces, py::object nor
   return {make_mesh_data(std::move(name), {mesh}, {Mat4::identity()})};
 }
 
-PyMesh mesh_from_file(const std::string& path, bool swap_yz, double max_memory) {
+// Raises `type` with `message`, whose file names may not be UTF-8 (shown escaped).
+void set_error(PyObject* type, const char* message) {
+  PyObject* text = PyUnicode_DecodeUTF8(message, Py_ssize_t(std::strlen(message)), "backslashreplace");
+  if (!text) return;  // the decoding's own error is set
+  PyErr_SetObject(type, text);
+  Py_DECREF(text);
+}
+
+// A file name as the OS has it: str (non-UTF-8 names as os.fsdecode gives them),
+// bytes or os.PathLike, through os.fsencode.
+std::string path_of(py::handle obj) {
+  py::object encoded = py::module_::import("os").attr("fsencode")(obj);
+  return std::string(encoded.cast<py::bytes>());
+}
+
+PyMesh mesh_from_file(py::object path_obj, bool swap_yz, double max_memory) {
+  const std::string path = path_of(path_obj);
   Model model;
   {
     CollectWarnings warnings;
@@ -189,7 +272,11 @@ PyMesh mesh_from_file(const std::string& path, bool swap_yz, double max_memory) 
     if (n.mesh && !n.mesh->triangles.empty()) parts.push_back(n.mesh), poses.push_back(world[i]);
   }
   if (parts.empty()) throw Error(path + ": the file holds no triangles");
-  std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  // The name is the file's, as text (bytes that are not UTF-8 replaced).
+  py::object os = py::module_::import("os");
+  std::string name = py::str(os.attr("path").attr("basename")(os.attr("fsdecode")(path_obj)))
+                         .attr("encode")("utf-8", "replace")
+                         .cast<std::string>();
   return {make_mesh_data(name, std::move(parts), std::move(poses))};
 }
 
@@ -312,6 +399,9 @@ struct PyRenderer {
 enum : int64_t {
   kDepthOnly = 1,
   kAllWireframe = 8,
+  kShadowsDirectional = 32,
+  kShadowsPoint = 64,
+  kShadowsSpot = 128,
   kSkipCullFaces = 1024,
   kRgba = 2048,
   kFlat = 4096,
@@ -319,7 +409,7 @@ enum : int64_t {
   kNormals = 1 << 20,
 };
 
-py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
+py::object render(PyRenderer& self, const PyScene& scene, int64_t flags, const std::string& color_pipeline) {
   RenderRequest req;
   req.color = !(flags & kDepthOnly);
   req.alpha = flags & kRgba;
@@ -328,6 +418,13 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags) {
   req.cull_back_faces = !(flags & kSkipCullFaces);
   if (flags & kAllWireframe) req.shading = Shading::Wireframe;
   else if (flags & kFlat) req.shading = Shading::Flat;
+  req.shadows_directional = flags & kShadowsDirectional;
+  req.shadows_point = flags & kShadowsPoint;
+  req.shadows_spot = flags & kShadowsSpot;
+  if (color_pipeline == "auto") req.color_pipeline = ColorPipeline::Auto;
+  else if (color_pipeline == "linear") req.color_pipeline = ColorPipeline::Linear;
+  else if (color_pipeline == "display") req.color_pipeline = ColorPipeline::Display;
+  else throw py::value_error("color: expected 'auto', 'linear' or 'display', got '" + color_pipeline + "'");
   RenderOutput out;
   int w, h;
   std::unique_ptr<uint8_t[]> color, depth_buffer;
@@ -398,11 +495,25 @@ PYBIND11_MODULE(_velocity, m) {
   m.doc() = "Velocity's Python bindings (use the `velocity` package, which re-exports these).";
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
   error.doc() = "An error from the Velocity engine; the message names the file, line or argument.";
+  // Shape and element-type errors are ValueError and TypeError, as Python code expects,
+  // and velocity.Error too.
+  static py::object shape_error = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "velocity._velocity.ShapeError", "An array argument of the wrong shape (a ValueError and a velocity.Error).",
+      py::make_tuple(error, py::handle(PyExc_ValueError)).ptr(), nullptr));
+  static py::object dtype_error = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "velocity._velocity.DtypeError", "An array argument of the wrong element type (a TypeError and a velocity.Error).",
+      py::make_tuple(error, py::handle(PyExc_TypeError)).ptr(), nullptr));
+  m.attr("ShapeError") = shape_error;
+  m.attr("DtypeError") = dtype_error;
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const ShapeError& e) {
+      set_error(shape_error.ptr(), e.what());
+    } catch (const DtypeError& e) {
+      set_error(dtype_error.ptr(), e.what());
     } catch (const Error& e) {
-      error(e.what());
+      set_error(error.ptr(), e.what());
     }
   });
   set_warning_handler([](std::string_view message) {
@@ -410,9 +521,13 @@ PYBIND11_MODULE(_velocity, m) {
     else std::fprintf(stderr, "velocity: warning: %.*s\n", int(message.size()), message.data());
   });
 
-  py::class_<PyMaterial>(m, "Material", "How a mesh's surface is shaded (Velocity's fixed-function model).")
+  py::class_<PyMaterial>(m, "Material", "How a mesh's surface is shaded (Velocity's fixed-function model, or "
+                                          "glTF's metallic-roughness one when metallic or roughness is given).")
       .def(py::init([](py::object color, const std::string& shading, double specular, double shininess,
-                       bool two_sided, std::optional<std::string> texture) {
+                       bool two_sided, py::object texture_obj, std::optional<double> metallic,
+                       std::optional<double> roughness, double alpha, const std::string& alpha_mode,
+                       double alpha_cutoff, py::object emissive, py::object image, const std::string& wrap,
+                       const std::string& filter, const std::string& color_space) {
              PyMaterial pm;
              auto c = color_of(color, "color", {0.8, 0.8, 0.8, 1});
              pm.m.color = {float(c[0]), float(c[1]), float(c[2])};
@@ -422,6 +537,37 @@ PYBIND11_MODULE(_velocity, m) {
              pm.m.specular = float(specular);
              pm.m.shininess = float(shininess);
              pm.m.two_sided = two_sided;
+             finite_or_none(metallic, "metallic", 0, 1);
+             finite_or_none(roughness, "roughness", 0, 1);
+             if (metallic || roughness) {
+               pm.m.shading = Shading::Pbr;
+               pm.m.pbr.metallic = float(metallic.value_or(1.0));
+               pm.m.pbr.roughness = float(roughness.value_or(1.0));
+             }
+             finite_or_none(alpha, "alpha", 0, 1);
+             finite_or_none(alpha_cutoff, "alpha_cutoff", 0, 1);
+             pm.m.alpha = float(alpha);
+             pm.m.alpha_cutoff = float(alpha_cutoff);
+             if (alpha_mode == "OPAQUE") pm.m.alpha_mode = AlphaMode::Opaque;
+             else if (alpha_mode == "MASK") pm.m.alpha_mode = AlphaMode::Mask;
+             else if (alpha_mode == "BLEND") pm.m.alpha_mode = AlphaMode::Blend;
+             else throw py::value_error("alpha_mode: expected OPAQUE, MASK or BLEND, got '" + alpha_mode + "'");
+             auto e = color_of(emissive, "emissive", {0, 0, 0, 1});
+             pm.m.pbr.emissive = {float(e[0]), float(e[1]), float(e[2])};
+             if (color_space == "srgb") pm.m.color_space = ColorSpace::Srgb;
+             else if (color_space == "linear") pm.m.color_space = ColorSpace::Linear;
+             else throw py::value_error("color_space: expected 'srgb' or 'linear', got '" + color_space + "'");
+             if (wrap == "repeat") pm.m.wrap = Wrap::Repeat;
+             else if (wrap == "clamp") pm.m.wrap = Wrap::Clamp;
+             else if (wrap == "mirror") pm.m.wrap = Wrap::MirroredRepeat;
+             else throw py::value_error("wrap: expected 'repeat', 'clamp' or 'mirror', got '" + wrap + "'");
+             std::optional<Filter> f = parse_filter(filter);
+             if (!f) throw py::value_error("filter: expected 'nearest', 'bilinear' or 'trilinear', got '" + filter + "'");
+             pm.m.filter = *f;
+             std::optional<std::string> texture;
+             if (!texture_obj.is_none()) texture = path_of(texture_obj);
+             if (texture && !image.is_none()) throw py::value_error("give texture (a file) or image (an array), not both");
+             if (!image.is_none()) pm.m.texture = texture_of(image, "image");
              if (texture) {
                py::gil_scoped_release release;
                pm.m.texture = load_texture(*texture);
@@ -431,14 +577,34 @@ PYBIND11_MODULE(_velocity, m) {
            }),
            py::arg("color") = py::none(), py::arg("shading") = "gouraud", py::arg("specular") = 0.0,
            py::arg("shininess") = 32.0, py::arg("two_sided") = false, py::arg("texture") = py::none(),
+           py::arg("metallic") = py::none(), py::arg("roughness") = py::none(), py::arg("alpha") = 1.0,
+           py::arg("alpha_mode") = "OPAQUE", py::arg("alpha_cutoff") = 0.5, py::arg("emissive") = py::none(),
+           py::arg("image") = py::none(), py::arg("wrap") = "repeat", py::arg("filter") = "trilinear",
+           py::arg("color_space") = "srgb",
            "color: RGB in [0, 1] (or 0..255 integers); shading: 'flat', 'gouraud', 'phong', 'unlit', 'wire' "
            "or 'points'; specular: Ks of the white highlight Ks*(R.V)^shininess; two_sided: draw and light back "
-           "faces; texture: an image file modulating the colour through the mesh's uvs.")
+           "faces; texture: an image file modulating the colour through the mesh's uvs (or image: an H x W x C "
+           "array). metallic / roughness (0..1): glTF's metallic-roughness shading ('pbr') with these factors; "
+           "alpha, alpha_mode ('OPAQUE', 'MASK', 'BLEND'), alpha_cutoff and emissive as glTF defines them; "
+           "color_space: whether color is 'srgb' (display values) or 'linear' (glTF's factors).")
       .def_property_readonly("color", [](const PyMaterial& p) { return std::array<float, 3>{p.m.color.x, p.m.color.y, p.m.color.z}; })
       .def_property_readonly("shading", [](const PyMaterial& p) { return std::string(to_string(p.m.shading)); })
       .def_property_readonly("specular", [](const PyMaterial& p) { return p.m.specular; })
       .def_property_readonly("shininess", [](const PyMaterial& p) { return p.m.shininess; })
       .def_property_readonly("two_sided", [](const PyMaterial& p) { return p.m.two_sided; })
+      .def_property_readonly("metallic", [](const PyMaterial& p) { return p.m.pbr.metallic; })
+      .def_property_readonly("roughness", [](const PyMaterial& p) { return p.m.pbr.roughness; })
+      .def_property_readonly("alpha", [](const PyMaterial& p) { return p.m.alpha; })
+      .def_property_readonly("alpha_mode", [](const PyMaterial& p) {
+        return std::string(p.m.alpha_mode == AlphaMode::Opaque ? "OPAQUE" : p.m.alpha_mode == AlphaMode::Mask ? "MASK" : "BLEND");
+      })
+      .def_property_readonly("emissive", [](const PyMaterial& p) {
+        return std::array<float, 3>{p.m.pbr.emissive.x, p.m.pbr.emissive.y, p.m.pbr.emissive.z};
+      })
+      .def_property_readonly("color_space", [](const PyMaterial& p) {
+        return std::string(p.m.color_space == ColorSpace::Srgb ? "srgb" : "linear");
+      })
+      .def_property_readonly("has_texture", [](const PyMaterial& p) { return bool(p.m.texture); })
       .def_property_readonly("texture", [](const PyMaterial& p) -> std::optional<std::string> {
         if (p.m.texture_file.empty()) return std::nullopt;
         return p.m.texture_file;
@@ -538,8 +704,10 @@ PYBIND11_MODULE(_velocity, m) {
   // Cameras.
   py::class_<CameraBase, std::shared_ptr<CameraBase>> camera(m, "Camera", "Base class of the cameras.");
   camera.def_readwrite("name", &CameraBase::name)
-      .def_readwrite("znear", &CameraBase::znear, "Distance to the near clipping plane.")
-      .def_readwrite("zfar", &CameraBase::zfar, "Distance to the far plane (None: fitted to the scene).");
+      .def_property("znear", checked_get(&CameraBase::znear), checked_set(&CameraBase::znear),
+                    "Distance to the near clipping plane (> 0; a perspective camera's at least zfar / 1e5).")
+      .def_property("zfar", checked_get(&CameraBase::zfar), checked_set(&CameraBase::zfar),
+                    "Distance to the far plane (None: fitted to the scene).");
   py::class_<PerspectiveCamera, CameraBase, std::shared_ptr<PerspectiveCamera>>(m, "PerspectiveCamera",
       "A pinhole camera with a vertical field of view (pyrender's PerspectiveCamera). It looks down the -Z "
       "axis of its pose with +Y up.")
@@ -548,15 +716,16 @@ PYBIND11_MODULE(_velocity, m) {
              auto c = std::make_shared<PerspectiveCamera>();
              c->yfov = yfov, c->znear = znear, c->zfar = zfar, c->aspect_ratio = aspect;
              if (name) c->name = *name;
-             c->validate();
+             validate_camera(*c);
              return c;
            }),
            py::arg("yfov"), py::arg("znear") = 0.05, py::arg("zfar") = py::none(), py::arg("aspectRatio") = py::none(),
            py::arg("name") = py::none(),
            "yfov: vertical field of view in radians; aspectRatio: width / height (None: the image's); zfar None: "
            "just beyond the farthest mesh of the scene at each render.")
-      .def_readwrite("yfov", &PerspectiveCamera::yfov)
-      .def_readwrite("aspectRatio", &PerspectiveCamera::aspect_ratio)
+      .def_property("yfov", checked_get(&PerspectiveCamera::yfov), checked_set(&PerspectiveCamera::yfov))
+      .def_property("aspectRatio", checked_get(&PerspectiveCamera::aspect_ratio),
+                    checked_set(&PerspectiveCamera::aspect_ratio))
       .def("get_projection_matrix", &projection_of<PerspectiveCamera>, py::arg("width"), py::arg("height"),
            "The 4x4 OpenGL projection matrix for a width x height image (zfar None: 1e6 here).");
   py::class_<OrthographicCamera, CameraBase, std::shared_ptr<OrthographicCamera>>(m, "OrthographicCamera",
@@ -565,13 +734,13 @@ PYBIND11_MODULE(_velocity, m) {
              auto c = std::make_shared<OrthographicCamera>();
              c->xmag = xmag, c->ymag = ymag, c->znear = znear, c->zfar = zfar;
              if (name) c->name = *name;
-             c->validate();
+             validate_camera(*c);
              return c;
            }),
            py::arg("xmag"), py::arg("ymag"), py::arg("znear") = 0.05, py::arg("zfar") = 100.0,
            py::arg("name") = py::none())
-      .def_readwrite("xmag", &OrthographicCamera::xmag)
-      .def_readwrite("ymag", &OrthographicCamera::ymag)
+      .def_property("xmag", checked_get(&OrthographicCamera::xmag), checked_set(&OrthographicCamera::xmag))
+      .def_property("ymag", checked_get(&OrthographicCamera::ymag), checked_set(&OrthographicCamera::ymag))
       .def("get_projection_matrix", &projection_of<OrthographicCamera>, py::arg("width"), py::arg("height"));
   py::class_<IntrinsicsCamera, CameraBase, std::shared_ptr<IntrinsicsCamera>>(m, "IntrinsicsCamera",
       "A pinhole camera from intrinsics in pixels (pyrender's IntrinsicsCamera). Image coordinates run right "
@@ -582,15 +751,15 @@ PYBIND11_MODULE(_velocity, m) {
              auto c = std::make_shared<IntrinsicsCamera>();
              c->fx = fx, c->fy = fy, c->cx = cx, c->cy = cy, c->znear = znear, c->zfar = zfar;
              if (name) c->name = *name;
-             c->validate();
+             validate_camera(*c);
              return c;
            }),
            py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"), py::arg("znear") = 0.05,
            py::arg("zfar") = 100.0, py::arg("name") = py::none())
-      .def_readwrite("fx", &IntrinsicsCamera::fx)
-      .def_readwrite("fy", &IntrinsicsCamera::fy)
-      .def_readwrite("cx", &IntrinsicsCamera::cx)
-      .def_readwrite("cy", &IntrinsicsCamera::cy)
+      .def_property("fx", checked_get(&IntrinsicsCamera::fx), checked_set(&IntrinsicsCamera::fx))
+      .def_property("fy", checked_get(&IntrinsicsCamera::fy), checked_set(&IntrinsicsCamera::fy))
+      .def_property("cx", checked_get(&IntrinsicsCamera::cx), checked_set(&IntrinsicsCamera::cx))
+      .def_property("cy", checked_get(&IntrinsicsCamera::cy), checked_set(&IntrinsicsCamera::cy))
       .def("get_projection_matrix", &projection_of<IntrinsicsCamera>, py::arg("width"), py::arg("height"));
 
   // Lights.
@@ -601,7 +770,11 @@ PYBIND11_MODULE(_velocity, m) {
                       auto v = color_of(c, "color", {1, 1, 1, 1});
                       l.color = {float(v[0]), float(v[1]), float(v[2])};
                     })
-      .def_readwrite("intensity", &LightBase::intensity);
+      .def_property("intensity", [](const LightBase& l) { return l.intensity; },
+                    [](LightBase& l, double v) {
+                      if (!(std::isfinite(v) && v >= 0)) throw py::value_error("intensity must be finite and >= 0, got " + std::to_string(v));
+                      l.intensity = v;
+                    });
   auto make_light = [](auto l, py::object color, std::optional<double> intensity, std::optional<std::string> name) {
     auto v = color_of(color, "color", {1, 1, 1, 1});
     l->color = {float(v[0]), float(v[1]), float(v[2])};
@@ -617,16 +790,45 @@ PYBIND11_MODULE(_velocity, m) {
              return make_light(std::make_shared<DirectionalLight>(), color, intensity, name);
            }),
            py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("name") = py::none());
+  auto check_range = [](py::object range) -> std::optional<double> {
+    if (range.is_none()) return std::nullopt;
+    double r = range.cast<double>();
+    if (!(std::isfinite(r) && r > 0)) throw py::value_error("range must be finite and > 0 (or None), got " + std::to_string(r));
+    return r;
+  };
   py::class_<PointLight, LightBase, std::shared_ptr<PointLight>>(m, "PointLight",
-      "A light at the origin of its pose, falling off as 1 / d^2 (pyrender's PointLight; its `range` cut-off "
-      "is not supported and must be None).")
-      .def(py::init([make_light](py::object color, std::optional<double> intensity, py::object range,
-                                 std::optional<std::string> name) {
-             if (!range.is_none()) throw py::value_error("PointLight: range is not supported (use None)");
-             return make_light(std::make_shared<PointLight>(), color, intensity, name);
+      "A light at the origin of its pose, falling off as 1 / d^2 (pyrender's PointLight); range: "
+      "KHR_lights_punctual's cut-off distance (None: infinite).")
+      .def(py::init([make_light, check_range](py::object color, std::optional<double> intensity, py::object range,
+                                              std::optional<std::string> name) {
+             auto l = make_light(std::make_shared<PointLight>(), color, intensity, name);
+             l->range = check_range(range);
+             return l;
            }),
            py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("range") = py::none(),
-           py::arg("name") = py::none());
+           py::arg("name") = py::none())
+      .def_property("range", [](const PointLight& l) { return l.range; },
+                    [check_range](PointLight& l, py::object r) { l.range = check_range(r); });
+  py::class_<SpotLight, PointLight, std::shared_ptr<SpotLight>>(m, "SpotLight",
+      "A point light shining along the -Z axis of its pose in a cone (pyrender's SpotLight): full intensity "
+      "inside innerConeAngle, none outside outerConeAngle (half-angles, radians).")
+      .def(py::init([make_light, check_range](py::object color, std::optional<double> intensity, py::object range,
+                                              double inner, double outer, std::optional<std::string> name) {
+             auto l = make_light(std::make_shared<SpotLight>(), color, intensity, name);
+             l->range = check_range(range);
+             l->inner_cone = inner, l->outer_cone = outer;
+             try {
+               l->validate();
+             } catch (const Error& e) {
+               throw py::value_error(e.what());
+             }
+             return l;
+           }),
+           py::arg("color") = py::none(), py::arg("intensity") = py::none(), py::arg("range") = py::none(),
+           py::arg("innerConeAngle") = 0.0, py::arg("outerConeAngle") = std::numbers::pi / 4,
+           py::arg("name") = py::none())
+      .def_readonly("innerConeAngle", &SpotLight::inner_cone)
+      .def_readonly("outerConeAngle", &SpotLight::outer_cone);
 
   // Nodes and scenes.
   py::class_<PyNode>(m, "Node", "A node of a Scene: one mesh, camera or light with a pose. `id` is what the "
@@ -727,7 +929,7 @@ PYBIND11_MODULE(_velocity, m) {
                       std::lock_guard lock(r.mutex);
                       r.renderer.resize(r.renderer.width(), h);
                     })
-      .def("_render", &render, py::arg("scene"), py::arg("flags"))
+      .def("_render", &render, py::arg("scene"), py::arg("flags"), py::arg("color") = "auto")
       .def("delete", [](PyRenderer&) {}, "Nothing to free (pyrender needs this; kept for its users).");
 
   m.def("_camera_pose_angles", [](py::object pose) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numbers>
 
@@ -27,6 +28,22 @@ void check_clip(const CameraBase& c) {
   if (c.zfar && !(std::isfinite(*c.zfar) && *c.zfar > c.znear))
     throw Error("camera zfar must be finite and > znear (" + std::to_string(c.znear) + "), got " +
                 std::to_string(*c.zfar));
+}
+
+// The depth buffer holds window depth as float in [0, 1]: a perspective projection
+// resolves the view distance z to about 6e-8 * z / znear of itself, 6 % at the far
+// plane when zfar / znear = 1e6 (pyrender's default znear 0.05 with a model 8 km deep
+// is 1 %). Beyond that depth is wrong, then the image empty (1e7 and more).
+constexpr double kMaxFarOverNear = 1e6;
+
+void check_depth_precision(double znear, double zfar, const char* far_is) {
+  if (zfar / znear <= kMaxFarOverNear) return;
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "camera znear %g is too small for %s %g: the float depth buffer resolves depth only while "
+                "zfar / znear <= %g; the smallest znear that works is %g",
+                znear, far_is, zfar, kMaxFarOverNear, zfar / kMaxFarOverNear);
+  throw Error(buf);
 }
 
 Sphere world_sphere(const Sphere& s, const Mat4& m) {
@@ -72,6 +89,7 @@ void CameraBase::validate() const { check_clip(*this); }
 
 void PerspectiveCamera::validate() const {
   check_clip(*this);
+  if (zfar) check_depth_precision(znear, *zfar, "zfar");
   if (!(std::isfinite(yfov) && yfov > 0 && yfov < std::numbers::pi))
     throw Error("PerspectiveCamera: yfov must be in (0, pi) radians, got " + std::to_string(yfov));
   if (aspect_ratio && !finite_positive(*aspect_ratio))
@@ -99,6 +117,7 @@ void OrthographicCamera::apply(Camera& c, int, int) const {
 
 void IntrinsicsCamera::validate() const {
   check_clip(*this);
+  if (zfar) check_depth_precision(znear, *zfar, "zfar");
   ViewWindow::pinhole(float(fx), float(fy), float(cx), float(cy), 1, 1);  // throws for bad values
 }
 void IntrinsicsCamera::apply(Camera& c, int width, int height) const {
@@ -114,7 +133,27 @@ Light DirectionalLight::make(const double w[16]) const {
 Light PointLight::make(const double w[16]) const {
   Light l = Light::point({float(w[3]), float(w[7]), float(w[11])}, scaled_color(*this));
   l.constant = 0, l.linear = 0, l.quadratic = 1;  // 1 / d^2, as pyrender's
+  l.falloff = Falloff::InverseSquare;
+  l.range = range ? float(*range) : 0.0f;
   return l;
+}
+
+void SpotLight::validate() const {
+  if (!(std::isfinite(inner_cone) && std::isfinite(outer_cone) && inner_cone >= 0 && inner_cone < outer_cone &&
+        outer_cone <= std::numbers::pi / 2))
+    throw Error("SpotLight: expected 0 <= innerConeAngle < outerConeAngle <= pi/2, got " + std::to_string(inner_cone) +
+                ", " + std::to_string(outer_cone));
+}
+
+Light SpotLight::make(const double w[16]) const {
+  validate();
+  Light l = PointLight::make(w);
+  // Shines along -Z of its pose: the direction towards the light is the pose's +Z.
+  Light s = Light::spot(l.position, {float(w[2]), float(w[6]), float(w[10])}, l.color, float(inner_cone),
+                        float(outer_cone));
+  s.constant = l.constant, s.linear = l.linear, s.quadratic = l.quadratic;
+  s.falloff = l.falloff, s.range = l.range;
+  return s;
 }
 
 std::vector<std::array<double, 16>> SceneData::world_poses() const {
@@ -165,6 +204,7 @@ SceneCopy copy_scene(const SceneData& scene, int width, int height) {
       far = std::max(far, -view.transform_point(s.center).z + s.radius);
     }
     f.camera.far = std::max(far * 1.01f + 1e-3f, f.camera.near * 2);
+    if (cam.perspective()) check_depth_precision(cam.znear, f.camera.far, "the scene's depth (zfar None: the farthest mesh)");
   }
   cam.apply(f.camera, width, height);
   f.start.color = {float(scene.bg_color[0]), float(scene.bg_color[1]), float(scene.bg_color[2]),
@@ -180,9 +220,15 @@ RenderOutput render_frame(Renderer& r, const SceneCopy& frame, const RenderReque
   r.options.shading = req.shading;
   r.options.cull_back_faces = req.cull_back_faces;
   r.options.normals = req.normals;
+  r.options.color = req.color_pipeline;
+  r.options.shadows = req.shadows_directional || req.shadows_point || req.shadows_spot;
+  std::vector<Light> lights = frame.lights;
+  for (Light& l : lights)
+    l.cast_shadows = (l.type == LightType::Directional && req.shadows_directional) ||
+                     (l.type == LightType::Point && req.shadows_point) || (l.type == LightType::Spot && req.shadows_spot);
   RenderOutput out;
   try {
-    r.begin_frame(frame.camera, frame.lights, frame.start);
+    r.begin_frame(frame.camera, lights, frame.start);
     for (const SceneCopy::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);
     r.end_frame();
     if (req.color) r.read_color(req.color_buffer, size_t(w) * (req.alpha ? 4 : 3), req.alpha ? 4 : 3);

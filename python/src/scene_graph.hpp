@@ -36,8 +36,10 @@ struct CameraBase {
   std::optional<double> zfar;
   // Sets the projection part of `camera` for a width x height image.
   virtual void apply(Camera& camera, int width, int height) const = 0;
-  // Checks the parameters; throws velocity::Error with what is wrong.
+  // Checks the parameters; throws velocity::Error with what is wrong (a perspective
+  // camera's znear too small for the depth buffer at zfar included).
   virtual void validate() const;
+  virtual bool perspective() const { return true; }
 };
 struct PerspectiveCamera : CameraBase {
   double yfov = 1.0;                   // radians
@@ -47,6 +49,7 @@ struct PerspectiveCamera : CameraBase {
 };
 struct OrthographicCamera : CameraBase {
   double xmag = 1.0, ymag = 1.0;  // half the view volume's width and height
+  bool perspective() const override { return false; }
   void apply(Camera& camera, int width, int height) const override;
   void validate() const override;
 };
@@ -71,7 +74,14 @@ struct DirectionalLight : LightBase {  // shines along its pose's -Z
   Light make(const double world[16]) const override;
 };
 struct PointLight : LightBase {  // at its pose's origin, falling off as 1 / d^2
+  std::optional<double> range;  // KHR_lights_punctual's cut-off distance; none: infinite
   Light make(const double world[16]) const override;
+};
+struct SpotLight : PointLight {  // a point light shining along its pose's -Z in a cone
+  double inner_cone = 0, outer_cone = 0.7853981633974483;  // half-angles, radians
+  Light make(const double world[16]) const override;
+  // Throws velocity::Error unless 0 <= inner < outer <= pi/2.
+  void validate() const;
 };
 
 struct NodeData {
@@ -126,6 +136,9 @@ struct RenderRequest {
   float* depth_buffer = nullptr;    // width * height floats, or null: RenderOutput::depth
   std::optional<Shading> shading;
   bool cull_back_faces = true;
+  // Shadow maps for the lights of these types (pyrender's SHADOWS_* flags).
+  bool shadows_directional = false, shadows_point = false, shadows_spot = false;
+  ColorPipeline color_pipeline = ColorPipeline::Auto;
 };
 RenderOutput render_frame(Renderer& renderer, const SceneCopy& frame, const RenderRequest& request);
 

@@ -139,7 +139,7 @@ def test_command_line(tmp_path):
     assert json.loads((tmp_path / "renders" / "manifest.json").read_text())["views_done"] == 8
     p = subprocess.run([sys.executable, "-m", "velocity.batch", path, "--progress", "always"],
                        capture_output=True, text=True, env=env)
-    assert "8/16 views" in p.stderr and "ETA" in p.stderr
+    assert "8/16" in p.stderr and "16/16" in p.stderr and "view/s" in p.stderr  # tqdm: done/total, rate, ETA
     p = subprocess.run([sys.executable, "-m", "velocity.batch", str(tmp_path / "nope.json")], capture_output=True,
                        text=True)
     assert p.returncode == 1 and "cannot read the job file" in p.stderr
@@ -157,3 +157,15 @@ def test_one_runner_per_output_folder(tmp_path):
         from velocity.jobs import JobError
         with pytest.raises(JobError, match="another velocity batch run"):
             run_local(load_job(make_job(tmp_path), str(out)), progress=Progress(False))
+
+
+def test_progress_bar_counts_views(tmp_path):
+    import io
+    stream = io.StringIO()
+    job = load_job(make_job(tmp_path, models=[model("duck.asc")]), str(tmp_path / "out"))
+    run_local(job, progress=Progress(True, stream))
+    text = stream.getvalue()
+    assert "8/8" in text and "view" in text  # tqdm's bar: 8 views of 8
+    stream = io.StringIO()
+    run_local(job, progress=Progress(True, stream))  # resumed: all done already
+    assert "8/8" in stream.getvalue()

@@ -33,6 +33,7 @@ from ._velocity import (  # noqa: F401  (re-exported)
     PointLight,
     Primitive,
     Scene,
+    SpotLight,
 )
 from ._velocity import IntrinsicsCamera as _IntrinsicsCamera
 from ._velocity import OffscreenRenderer as _OffscreenRenderer
@@ -40,7 +41,7 @@ from ._velocity import OffscreenRenderer as _OffscreenRenderer
 __all__ = [
     "Camera", "DirectionalLight", "Error", "IntrinsicsCamera", "Light", "Material", "Mesh", "Node",
     "OffscreenRenderer", "OrthographicCamera", "PerspectiveCamera", "PointLight", "Primitive", "RenderFlags",
-    "Scene", "look_at", "opencv_to_opengl_pose", "opengl_to_opencv_pose",
+    "Scene", "SpotLight", "look_at", "opencv_to_opengl_pose", "opengl_to_opencv_pose",
 ]
 
 
@@ -106,7 +107,7 @@ class OffscreenRenderer(_OffscreenRenderer):
         unknown = flags & ~int(_SUPPORTED)
         if unknown:
             raise ValueError(f"render: flags {RenderFlags(unknown)!r} are not supported by Velocity")
-        return self._render(scene, flags)
+        return self._render(scene, flags, "auto")
 
 
 class IntrinsicsCamera(_IntrinsicsCamera):
@@ -176,12 +177,23 @@ def look_at(eye: Any, target: Any, up: Any = (0.0, 1.0, 0.0)) -> np.ndarray:
         n = math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
         return (a[0] / n, a[1] / n, a[2] / n), n
 
-    e = [float(v) for v in np.asarray(eye, dtype=np.float64).reshape(3)]
-    t = [float(v) for v in np.asarray(target, dtype=np.float64).reshape(3)]
-    u = [float(v) for v in np.asarray(up, dtype=np.float64).reshape(3)]
-    z, n = unit((e[0] - t[0], e[1] - t[1], e[2] - t[2]))  # the camera looks down -z
-    if not math.isfinite(n) or n == 0:
+    def three(v, what):
+        a = np.asarray(v, dtype=np.float64)
+        if a.shape != (3,):
+            raise ValueError(f"look_at: {what} must be 3 numbers, got shape {a.shape}")
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"look_at: {what} must be finite")
+        return [float(x) for x in a]
+
+    e, t, u = three(eye, "eye"), three(target, "target"), three(up, "up")
+    d = (e[0] - t[0], e[1] - t[1], e[2] - t[2])
+    if d == (0.0, 0.0, 0.0):
         raise ValueError("look_at: eye and target must differ")
+    if u == [0.0, 0.0, 0.0]:
+        raise ValueError("look_at: up must not be zero")
+    z, n = unit(d)  # the camera looks down -z
+    if not math.isfinite(n) or n == 0:
+        raise ValueError("look_at: eye and target must differ (and be finite)")
     x = cross(u, z)
     if math.sqrt(x[0] ** 2 + x[1] ** 2 + x[2] ** 2) < 1e-9:  # looking along `up`: any perpendicular will do
         x = cross((1.0, 0.0, 0.0) if abs(z[0]) < 0.9 else (0.0, 0.0, 1.0), z)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import sys
 import threading
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -39,9 +40,27 @@ def _mp_context():
     return multiprocessing.get_context("spawn")
 
 
-def _worker_started(barrier: Any) -> None:
+def _worker_started(barrier: Any, owner: int) -> None:
     import velocity  # noqa: F401  (already there under forkserver)
+    from . import atomic
+    _die_with_parent()
+    atomic.set_owner(owner)
     barrier.wait()
+
+
+def _die_with_parent() -> None:
+    """This worker is killed when its parent (the forkserver, which exits as soon as the
+    main process is gone, however it went) dies: Linux's parent-death signal."""
+    parent = os.getppid()
+    try:
+        import ctypes
+        libc = ctypes.CDLL(None, use_errno=True)
+        PR_SET_PDEATHSIG = 1
+        libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    except (OSError, AttributeError):
+        pass  # not Linux: atomic.set_owner's check before each file still holds
+    if os.getppid() != parent:  # the parent died before the signal was set
+        os._exit(1)
 
 
 def _no_op() -> None:
@@ -67,7 +86,7 @@ class LocalPool:
         ctx = _mp_context()
         barrier = ctx.Barrier(workers + 1)
         self._executor = ProcessPoolExecutor(workers, mp_context=ctx, initializer=_worker_started,
-                                             initargs=(barrier,))
+                                             initargs=(barrier, os.getpid()))
         try:
             # The executor starts a worker per task submitted while none is idle.
             for _ in range(workers):
@@ -79,17 +98,22 @@ class LocalPool:
                 raise JobError(f"the {workers} worker processes did not start within {start_timeout:.0f} s") from None
             raise
 
-    def run(self, job: Job, progress: Progress | None = None) -> dict:
+    def run(self, job: Job, progress: Progress | None = None, force: bool = False) -> dict:
         """Runs the job on the pool's workers; returns the manifest."""
-        with Run(job, progress) as run:
+        with Run(job, progress, force) as run:
             futures = {self._executor.submit(run_task, job, task, self.threads): task for task in run.todo}
             try:
                 for f in as_completed(futures):
                     run.finished(f.result())
+                    if run.disk_full:  # the rest would fail too: stop, keep what is done
+                        for other in futures:
+                            other.cancel()
             except BrokenProcessPool:
                 # A process was killed (out of memory, say). What it finished is
                 # recorded; a second run resumes the rest.
                 raise JobError("a worker process died; run the job again to resume it") from None
+        if run.disk_full:
+            raise JobError(run.stop_message())
         return run.manifest
 
     def close(self) -> None:
@@ -103,24 +127,28 @@ class LocalPool:
 
 
 def run_local(job: Job, workers: int = 1, threads: int | None = None, progress: Progress | None = None,
-              hooks: dict | None = None, pool: LocalPool | None = None) -> dict:
+              hooks: dict | None = None, pool: LocalPool | None = None, force: bool = False) -> dict:
     """Runs the job here: on `pool`'s workers when one is given, else in this process
     (workers=1) or in a LocalPool of `workers` processes started for this job. `threads`
     is the cores one frame may use (default: every core for one worker, 1 each for
     several; a pool has its own). `hooks` (in-process only) are for tests. Returns the
     manifest."""
     if pool is not None:
-        return pool.run(job, progress)
+        return pool.run(job, progress, force)
     if workers < 1:
         raise JobError(f"--workers must be at least 1, got {workers}")
     if threads is None:
         threads = 0 if workers == 1 else 1
     if workers > 1:
         with LocalPool(workers, threads) as own:
-            return own.run(job, progress)
-    with Run(job, progress) as run:
+            return own.run(job, progress, force)
+    with Run(job, progress, force) as run:
         for task in run.todo:
             run.finished(run_task(job, task, threads, hooks))
+            if run.disk_full:
+                break
+    if run.disk_full:
+        raise JobError(run.stop_message())
     return run.manifest
 
 
@@ -148,6 +176,8 @@ def main(argv: list[str] | None = None) -> int:
                    help="cores one frame may use (default: all with one worker, else 1)")
     p.add_argument("--progress", choices=("auto", "always", "never"), default="auto",
                    help="progress bar: on a terminal (auto), always or never")
+    p.add_argument("--force", action="store_true",
+                   help="write into a folder that holds another job's renders (they are removed first)")
     args = p.parse_args(argv)
     if args.threads is not None and args.threads < 0:
         p.error("--threads must be >= 0")
@@ -159,10 +189,22 @@ def main(argv: list[str] | None = None) -> int:
             manifest = run_dask(job, address=args.dask, local_workers=args.local_cluster,
                                 threads=1 if args.threads is None else args.threads, progress=progress)
         else:
-            manifest = run_local(job, args.workers, args.threads, progress)
+            manifest = run_local(job, args.workers, args.threads, progress, force=args.force)
     except JobError as e:
         print(f"velocity-batch: {e}", file=sys.stderr)
         return 1
+    except OSError as e:  # the output folder cannot be made or written: one line, no traceback
+        from .render_task import disk_full
+        where = os.fsdecode(e.filename) if e.filename else (args.out or args.job)
+        if disk_full(e):
+            print(f"velocity-batch: {where}: no space left on device after 0 views; free space and run again "
+                  "to resume", file=sys.stderr)
+        else:
+            print(f"velocity-batch: {where}: {e.strerror or e}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("velocity-batch: interrupted; run again to resume", file=sys.stderr)
+        return 130
     if progress.enabled or manifest["models_failed"]:
         print(_summary(manifest, job.output), file=sys.stderr)
     return 3 if manifest["models_failed"] else 0

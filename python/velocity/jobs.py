@@ -26,14 +26,19 @@ Output folder:
 from __future__ import annotations
 
 import dataclasses
+import fnmatch
 import glob
 import hashlib
 import json
 import math
 import os
+import stat
 from typing import Any, Iterable
 
 JOB_VERSION = 1
+MAX_JOB_BYTES = 16 << 20       # a job file larger than this is refused (it is JSON text)
+MAX_VIEWS = 10_000_000         # views in one job (models x views per model)
+MAX_MODELS = 1_000_000         # files a job's globs may match
 OUTPUTS = ("color", "depth", "mask", "normals")
 _SUFFIX = {"color": "color.png", "depth": "depth.npy", "mask": "mask.png", "normals": "normals.npy"}
 
@@ -175,6 +180,7 @@ class Job:
     spec: dict                      # normalised: every default filled in
     output: str                     # absolute path
     models: list[tuple[str, str]]   # (key, absolute path), in the job's order
+    source: str = ""                # what makes it this job: the job file's path (or its models)
 
     def view_count(self) -> int:
         v = self.spec["views"]
@@ -210,15 +216,11 @@ def load_job(source: str | dict, output: str | None = None) -> Job:
     `output` overrides the job's own. Raises JobError naming what is wrong."""
     if isinstance(source, dict):
         spec, base = source, os.getcwd()
+        identity = "models:" + json.dumps(spec.get("models"), sort_keys=True)
     else:
-        try:
-            with open(source, encoding="utf-8") as f:
-                spec = json.load(f)
-        except OSError as e:
-            raise JobError(f"{source}: cannot read the job file: {e.strerror}") from None
-        except json.JSONDecodeError as e:
-            raise JobError(f"{source}:{e.lineno}:{e.colno}: not valid JSON: {e.msg}") from None
+        spec = _read_job_file(source)
         base = os.path.dirname(os.path.abspath(source))
+        identity = "file:" + os.path.abspath(source)
     _check_keys(spec, ("version", "models", "output", "size", "camera", "views", "outputs", "alpha", "bg_color",
                        "ambient_light", "light", "ssaa", "chunk", "normalize", "shading"), "job")
     version = spec.get("version", JOB_VERSION)
@@ -229,16 +231,7 @@ def load_job(source: str | dict, output: str | None = None) -> Job:
         models_spec = [models_spec]
     if not isinstance(models_spec, list) or not models_spec or not all(isinstance(m, str) and m for m in models_spec):
         raise JobError("job.models: expected a non-empty list of model paths or globs")
-    paths: list[str] = []
-    for m in models_spec:
-        p = m if os.path.isabs(m) else os.path.join(base, m)
-        if glob.has_magic(m):
-            found = sorted(glob.glob(p, recursive=True))
-            if not found:
-                raise JobError(f"job.models: {m!r} matches no file")
-            paths += [os.path.abspath(f) for f in found]
-        else:
-            paths.append(os.path.abspath(p))  # a missing file is the task's failure, not the job's
+    paths = [p for m in models_spec for p in _model_paths(m, base)]
     paths = list(dict.fromkeys(paths))
     # Output folder per model: the file's stem, with a hash of the path when two share it.
     stems: dict[str, int] = {}
@@ -248,7 +241,7 @@ def load_job(source: str | dict, output: str | None = None) -> Job:
     models = []
     for p in paths:
         stem = _safe(os.path.splitext(os.path.basename(p))[0])
-        models.append((stem if stems[stem] == 1 else f"{stem}-{hashlib.sha1(p.encode()).hexdigest()[:8]}", p))
+        models.append((stem if stems[stem] == 1 else f"{stem}-{hashlib.sha1(os.fsencode(p)).hexdigest()[:8]}", p))
 
     size = spec.get("size", [256, 256])
     if not (isinstance(size, list) and len(size) == 2 and all(isinstance(s, int) and not isinstance(s, bool)
@@ -278,10 +271,113 @@ def load_job(source: str | dict, output: str | None = None) -> Job:
         "shading": shading,
     }
     out = output or spec.get("output")
-    if not out or not isinstance(out, str):
+    if not out or not isinstance(out, (str, os.PathLike)):
         raise JobError("job.output: no output folder (give one in the job or with --out)")
+    out = os.fspath(out)
+    if not output and not isinstance(source, dict):  # a job file's own: inside its folder (--out may name any)
+        full = os.path.realpath(os.path.join(base, out))
+        if not _inside(full, os.path.realpath(base)):
+            raise JobError(f"job.output: {out!r} is outside the job file's folder {base}; "
+                           "name it with --out to write there")
     out = out if os.path.isabs(out) or output else os.path.join(base, out)
-    return Job(normalized, os.path.abspath(out), models)
+    job = Job(normalized, os.path.abspath(out), models, identity)
+    total = job.view_count() * len(models)
+    if total > MAX_VIEWS:
+        raise JobError(f"job: {len(models)} model(s) x {job.view_count()} views = {total} views; "
+                       f"a job may have at most {MAX_VIEWS} (split it)")
+    return job
+
+
+def _read_job_file(source: Any) -> dict:
+    """The job file's JSON: a regular file of at most MAX_JOB_BYTES (never a device,
+    pipe or folder, which could be read for ever)."""
+    name = os.fsdecode(source)
+    try:
+        fd = os.open(source, os.O_RDONLY | os.O_NONBLOCK)
+    except OSError as e:
+        raise JobError(f"{name}: cannot read the job file: {e.strerror}") from None
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise JobError(f"{name}: the job file is not a regular file")
+        if st.st_size > MAX_JOB_BYTES:
+            raise JobError(f"{name}: the job file is {st.st_size} bytes; at most {MAX_JOB_BYTES} are read")
+        with os.fdopen(fd, "rb", closefd=False) as f:
+            data = f.read(MAX_JOB_BYTES + 1)
+    except OSError as e:
+        raise JobError(f"{name}: cannot read the job file: {e.strerror}") from None
+    finally:
+        os.close(fd)
+    if len(data) > MAX_JOB_BYTES:
+        raise JobError(f"{name}: the job file is larger than {MAX_JOB_BYTES} bytes")
+    try:
+        spec = json.loads(data.decode("utf-8"))
+    except UnicodeDecodeError as e:
+        raise JobError(f"{name}: not UTF-8 text (byte {e.start})") from None
+    except json.JSONDecodeError as e:
+        raise JobError(f"{name}:{e.lineno}:{e.colno}: not valid JSON: {e.msg}") from None
+    except RecursionError:
+        raise JobError(f"{name}: the JSON is nested too deeply") from None
+    return spec
+
+
+def _walk_glob(pattern: str, base: str) -> Iterable[str]:
+    """glob's matches of `pattern` (relative, '/'-separated, '**' for any folders) below
+    `base`, found by walking the tree without following links to folders: a link loop
+    (/proc/self/root, say) cannot make it walk for ever. Names starting with '.' match
+    only a pattern part that does too, as glob's."""
+    parts = pattern.split(os.sep)
+    fixed = 0
+    while fixed < len(parts) - 1 and not glob.has_magic(parts[fixed]):
+        fixed += 1
+    start, rest = os.path.join(base, *parts[:fixed]), parts[fixed:]
+
+    def match(names: list[str], pats: list[str]) -> bool:
+        if not pats:
+            return not names
+        if pats[0] == "**":
+            return any(match(names[k:], pats[1:]) for k in range(len(names) + 1)
+                       if all(not n.startswith(".") for n in names[:k]))
+        return bool(names) and (not names[0].startswith(".") or pats[0].startswith(".")) and \
+            fnmatch.fnmatchcase(names[0], pats[0]) and match(names[1:], pats[1:])
+
+    for folder, dirs, files in os.walk(start, followlinks=False):
+        rel = os.path.relpath(folder, start)
+        above = [] if rel == os.curdir else rel.split(os.sep)
+        for name in sorted(files + [d for d in dirs if os.path.islink(os.path.join(folder, d))]):
+            if match(above + [name], rest):
+                yield os.path.join(folder, name)
+
+
+def _inside(path: str, folder: str) -> bool:
+    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
+
+
+def _model_paths(m: str, base: str) -> list[str]:
+    """A job's model entry as absolute paths. A plain path is taken as it is (a missing
+    or unreadable file is that model's failure). A glob stays in the job file's folder
+    tree (a pattern that leaves it is refused; a match reached through a link out of it
+    is skipped) and matches regular files only."""
+    p = m if os.path.isabs(m) else os.path.join(base, m)
+    if not glob.has_magic(m):
+        return [os.path.abspath(p)]
+    root = os.path.realpath(base)
+    if os.pardir in m.replace("\\", "/").split("/") or not _inside(os.path.abspath(p), os.path.abspath(base)):
+        raise JobError(f"job.models: the glob {m!r} leaves the job file's folder {base}; "
+                       "a glob may match only files below it (name files elsewhere one by one)")
+    found = []
+    for f in _walk_glob(os.path.relpath(os.path.abspath(p), os.path.abspath(base)), os.path.abspath(base)):
+        try:
+            if not stat.S_ISREG(os.stat(f).st_mode) or not _inside(os.path.realpath(f), root):
+                continue
+        except OSError:
+            continue
+        found.append(f)
+        if len(found) > MAX_MODELS:
+            raise JobError(f"job.models: {m!r} matches more than {MAX_MODELS} files")
+    if not found:
+        raise JobError(f"job.models: {m!r} matches no file")
+    return sorted(found)
 
 
 def _safe(name: str) -> str:

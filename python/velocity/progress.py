@@ -1,8 +1,7 @@
-"""The batch runner's progress bar: views done of the total, the rate and the ETA, on a
-terminal (stderr); silent otherwise."""
+"""The batch runner's progress bar: tqdm's (Debian's python3-tqdm), views done of the
+total with the rate and the ETA, on a terminal (stderr); silent otherwise."""
 from __future__ import annotations
 
-import time
 from typing import Any
 
 
@@ -13,36 +12,25 @@ class Progress:
         import sys
         self.stream = stream or sys.stderr
         self.enabled = self.stream.isatty() if enabled is None else enabled
-        self.total = self.done = self.skipped = self.failed = 0
-        self.t0 = time.time()
-        self._last = 0.0
+        self.failed = 0
+        self._bar = None
 
     def start(self, total: int, already: int) -> None:
-        self.total, self.done, self.skipped, self.t0 = total, already, already, time.time()
-        self._draw(force=True)
+        if not self.enabled:
+            return
+        from tqdm import tqdm
+        # Views already done count towards the bar, not towards the rate.
+        self._bar = tqdm(total=total, initial=already, unit="view", file=self.stream, dynamic_ncols=True,
+                         mininterval=0.1, smoothing=0.1, desc="velocity-batch")
 
     def advance(self, views: int, failed: bool = False) -> None:
-        self.done += views
         self.failed += views if failed else 0
-        self._draw()
-
-    def _draw(self, force: bool = False) -> None:
-        if not self.enabled or (not force and time.time() - self._last < 0.1 and self.done < self.total):
-            return
-        self._last = time.time()
-        new, elapsed = self.done - self.skipped, time.time() - self.t0
-        rate = new / elapsed if elapsed > 0 else 0.0
-        left = self.total - self.done
-        eta = f"{int(left / rate) // 60}:{int(left / rate) % 60:02d}" if rate > 0 else "?"
-        width = 30
-        filled = int(width * self.done / self.total) if self.total else width
-        fail = f"  {self.failed} failed" if self.failed else ""
-        self.stream.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {self.done}/{self.total} views"
-                          f"  {rate:.1f}/s  ETA {eta}{fail} ")
-        self.stream.flush()
+        if self._bar is not None:
+            if failed:
+                self._bar.set_postfix_str(f"{self.failed} failed", refresh=False)
+            self._bar.update(views)
 
     def close(self) -> None:
-        if self.enabled:
-            self._draw(force=True)
-            self.stream.write("\n")
-            self.stream.flush()
+        if self._bar is not None:
+            self._bar.close()
+            self._bar = None

@@ -18,7 +18,7 @@ from .tasks import Task
 
 def task_record(task: Task, status: str, **fields: Any) -> dict[str, Any]:
     """A task's record: which task, model and views, the hash its output depends on,
-    its status ("running", "done" or "failed"), and `fields`."""
+    its status ("running", "done", "failed", or "interrupted" by a full disk), and `fields`."""
     return {"task": task.id, "model": task.model, "model_key": task.model_key, "hash": task.hash,
             "views": [task.start, task.stop], "status": status, **fields}
 
@@ -47,6 +47,9 @@ def manifest(job: Job, tasks: list[Task], records: dict[str, dict]) -> dict:
         rec = records.get(t.id)
         total += t.stop - t.start
         if rec is None:
+            continue
+        if rec["status"] == "interrupted":
+            m["interrupted"] = True  # a full disk stopped it: not the model's failure
             continue
         if rec["status"] == "done":
             done += t.stop - t.start

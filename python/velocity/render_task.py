@@ -3,6 +3,8 @@ folder (velocity.atomic), with the task's record (velocity.records). Run by the 
 runner in its process or its workers, and by the Dask runner on the cluster's workers."""
 from __future__ import annotations
 
+import errno
+import io
 import os
 import socket
 import threading
@@ -32,6 +34,19 @@ def _renderer(job: Job, threads: int):
     return cache[key]
 
 
+def _npy(a: np.ndarray) -> bytes:
+    # Through memory, then one write: np.save straight to a file reports a full disk
+    # without its errno ("N requested and 0 written"); a file's write() says ENOSPC.
+    buf = io.BytesIO()
+    np.save(buf, a)
+    return buf.getvalue()
+
+
+def disk_full(e: BaseException) -> bool:
+    """Whether `e` says the output's file system is full (or the user's quota)."""
+    return isinstance(e, OSError) and e.errno in (errno.ENOSPC, errno.EDQUOT)
+
+
 def _failure(e: BaseException) -> str:
     import velocity
     return str(e) if isinstance(e, velocity.Error) else f"{type(e).__name__}: {e}"
@@ -50,9 +65,12 @@ def run_task(job: Job, task: Task, threads: int = 1, hooks: dict | None = None) 
     if is_done(job, task, prev):
         return prev
     record = task_record(task, "running", worker=f"{socket.gethostname()}:{os.getpid()}")
-    write_json(job, job.record_path(task.id), record)
+    written = 0
     cameras: dict[str, Any] = {}
     try:
+        write_json(job, job.record_path(task.id), record)
+        if not os.path.isfile(task.model) and os.path.exists(task.model):
+            raise ValueError(f"{os.fsdecode(task.model)}: not a regular file")
         mesh = velocity.Mesh.from_file(task.model)
         center, radius = mesh.bounding_sphere
         center = np.array(center, dtype=np.float64)
@@ -107,14 +125,25 @@ def run_task(job: Job, task: Task, threads: int = 1, hooks: dict | None = None) 
                 if kind == "color":
                     atomic_write(job, path, lambda f: f.write(encode_png(color)))
                 elif kind == "depth":
-                    atomic_write(job, path, lambda f: np.save(f, depth))
+                    atomic_write(job, path, lambda f: f.write(_npy(depth)))
                 elif kind == "mask":
                     atomic_write(job, path, lambda f: f.write(encode_png(mask.astype(np.uint16))))
                 else:
-                    atomic_write(job, path, lambda f: np.save(f, normals))
+                    atomic_write(job, path, lambda f: f.write(_npy(normals)))
+            written += 1
         record.update(status="done", cameras=cameras)
     except Exception as e:  # a bad model: reported, never fatal to the job
-        record.update(status="failed", error=_failure(e))
+        if disk_full(e):  # not the model's fault: the job stops, and resumes when there is room
+            record.update(status="interrupted", error=f"no space left on device ({os.strerror(e.errno)})")
+        else:
+            record.update(status="failed", error=_failure(e))
     record["seconds"] = round(time.time() - started, 3)
-    write_json(job, job.record_path(task.id), record)
+    record["written"] = written
+    try:
+        write_json(job, job.record_path(task.id), record)
+    except OSError as e:
+        if not disk_full(e):
+            raise
+        # The record on disk still says "running": the task is done again on resume.
+        record.update(status="interrupted", error=f"no space left on device ({os.strerror(e.errno)})")
     return record

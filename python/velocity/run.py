@@ -3,7 +3,9 @@ Dask runner (velocity.dask_runner): the lock on the output folder, what is left 
 progress, and the manifest written as tasks finish."""
 from __future__ import annotations
 
+import json
 import os
+import shutil
 import time
 from typing import Any
 
@@ -22,8 +24,10 @@ class Run:
             for task in run.todo: ...; run.finished(record)
     """
 
-    def __init__(self, job: Job, progress: Progress | None = None) -> None:
-        self.job, self.progress = job, progress
+    def __init__(self, job: Job, progress: Progress | None = None, force: bool = False) -> None:
+        self.job, self.progress, self.force = job, progress, force
+        self.written = 0          # views this pass wrote
+        self.disk_full = False    # a task stopped for want of space: the pass stops
         self.tasks = plan_tasks(job)
         self.records: dict[str, dict] = {}
         self._lock_file = None
@@ -38,6 +42,11 @@ class Run:
         except OSError:
             self._lock_file.close()
             raise JobError(f"{self.job.output}: another velocity batch run is using this folder") from None
+        try:
+            self._claim()
+        except BaseException:
+            self._lock_file.close()
+            raise
         self._sweep()
         self.todo = []
         for t in self.tasks:
@@ -51,13 +60,57 @@ class Run:
                                 sum(t.stop - t.start for t in self.tasks if t.id in self.records))
         return self
 
+    def _claim(self) -> None:
+        """The folder is this job's: refuses one that holds another job's renders (or
+        files of its own) unless forced, when the other job's files are removed first,
+        so that two jobs' files are never mixed."""
+        out, path = self.job.output, os.path.join(self.job.state_dir, "job.json")
+        try:
+            with open(path, encoding="utf-8") as f:
+                owner = json.load(f)
+        except (OSError, ValueError):
+            owner = None
+        keys = [k for k, _ in self.job.models]
+        if owner is not None and owner.get("source") != self.job.source:
+            if not self.force:
+                raise JobError(f"{out}: holds the renders of another job ({owner.get('source', '?')[5:]}); "
+                               "run with --force to replace them, or choose another --out")
+            for key in owner.get("model_keys", []):
+                folder = os.path.join(out, key)
+                if os.path.dirname(os.path.abspath(folder)) == os.path.abspath(out) and os.path.isdir(folder):
+                    shutil.rmtree(folder, ignore_errors=True)
+            shutil.rmtree(os.path.join(self.job.state_dir, "tasks"), ignore_errors=True)
+            os.makedirs(os.path.join(self.job.state_dir, "tasks"), exist_ok=True)
+            for name in ("manifest.json",):
+                try:
+                    os.unlink(os.path.join(out, name))
+                except OSError:
+                    pass
+        elif owner is None and not self.force:
+            others = [n for n in os.listdir(out) if n != ".velocity"]
+            if others and not os.path.exists(os.path.join(out, "manifest.json")):
+                raise JobError(f"{out}: is not empty and holds no velocity batch output ({others[0]!r}, ...); "
+                               "run with --force to write there anyway, or choose another --out")
+        if owner is not None and owner.get("source") == self.job.source:
+            keys = list(dict.fromkeys(owner.get("model_keys", []) + keys))
+        write_json(self.job, path, {"source": self.job.source, "model_keys": keys})
+
     def finished(self, record: dict) -> None:
         self.records[record["task"]] = record
+        self.written += record.get("written", 0)
+        if record["status"] == "interrupted":
+            self.disk_full = True
         if self.progress:
             a, b = record["views"]
             self.progress.advance(b - a, failed=record["status"] != "done")
         if time.time() - self._last_manifest > 2.0:
-            self.write_manifest()
+            try:
+                self.write_manifest()
+            except OSError as e:
+                from .render_task import disk_full
+                if not disk_full(e):
+                    raise
+                self.disk_full = True
 
     def _sweep(self) -> None:
         """Removes half-written files left by killed processes (this run holds the lock)."""
@@ -77,8 +130,25 @@ class Run:
         write_json(self.job, os.path.join(self.job.output, "manifest.json"), m)
         return m
 
+    def stop_message(self) -> str:
+        return (f"{self.job.output}: no space left on device after {self.written} views; "
+                "free space and run again to resume")
+
     def __exit__(self, *exc: Any) -> None:
-        self.manifest = self.write_manifest()
+        try:
+            self.manifest = self.write_manifest()
+        except OSError as e:
+            from .render_task import disk_full
+            if not disk_full(e):
+                raise
+            # No room for a true manifest: none rather than a stale one (the next run
+            # writes it from the tasks' records).
+            self.disk_full = True
+            self.manifest = manifest(self.job, self.tasks, self.records)
+            try:
+                os.unlink(os.path.join(self.job.output, "manifest.json"))
+            except OSError:
+                pass
         self._sweep()
         if self.progress:
             self.progress.close()

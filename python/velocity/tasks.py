@@ -37,7 +37,7 @@ def plan_tasks(job: Job) -> list[Task]:
             stamp = "missing"
         for start in range(0, n, chunk):
             stop = min(n, start + chunk)
-            h = hashlib.sha1(f"{path}\n{stamp}\n{start}:{stop}\n{settings}".encode()).hexdigest()
+            h = hashlib.sha1(f"{path}\n{stamp}\n{start}:{stop}\n{settings}".encode("utf-8", "surrogateescape")).hexdigest()
             tid = key if chunk >= n else f"{key}.{start:06d}-{stop:06d}"
             out.append(Task(tid, path, key, start, stop, h))
     return out

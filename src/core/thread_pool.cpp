@@ -1,5 +1,7 @@
 #include "core/thread_pool.hpp"
 
+#include <pthread.h>
+
 #include <chrono>
 #include <utility>
 
@@ -40,13 +42,37 @@ bool spin_until(Ready ready) {
   }
 }
 
+std::atomic<unsigned> g_forks{0};
+
+void count_fork() { g_forks.fetch_add(1, std::memory_order_relaxed); }
+
+// Counts forks from the moment the library is loaded, before any pool exists.
+const int g_fork_handler = pthread_atfork(nullptr, nullptr, count_fork);
+
 }  // namespace
 
+unsigned ThreadPool::fork_count() { return g_forks.load(std::memory_order_relaxed); }
+
 ThreadPool::ThreadPool(int threads) {
+  (void)g_fork_handler;
   for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { work(i); });
 }
 
 ThreadPool::~ThreadPool() {
+  if (orphaned()) {
+    // The workers' std::thread handles name threads of the parent: joining one would
+    // wait forever, and so would destroying the condition variables they slept on.
+    // Keep both, never destroyed (destroying a joinable thread calls std::terminate),
+    // from a static, so that leak checkers still reach them.
+    struct Orphans {
+      std::vector<std::thread> threads;
+      std::vector<std::unique_ptr<Sync>> syncs;
+    };
+    static auto* orphans = new Orphans;
+    for (auto& t : workers_) orphans->threads.push_back(std::move(t));
+    orphans->syncs.push_back(std::move(sync_));
+    return;
+  }
   {
     std::lock_guard lock(mutex_);
     stop_.store(true, std::memory_order_release);
@@ -89,7 +115,7 @@ void ThreadPool::work(int worker) {
 }
 
 void ThreadPool::run_items(int count, Job job) {
-  if (workers_.empty() || count <= 1) {
+  if (workers_.empty() || count <= 1 || orphaned()) {
     for (int i = 0; i < count; ++i) job(i, 0);  // exceptions propagate as they are
     return;
   }

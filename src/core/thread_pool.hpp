@@ -4,6 +4,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <exception>
+#include <memory>
 #include <type_traits>
 #include <mutex>
 #include <thread>
@@ -20,6 +21,15 @@ class ThreadPool {
   ThreadPool& operator=(const ThreadPool&) = delete;
 
   int size() const { return int(workers_.size()) + 1; }
+
+  // True in a child process forked after the pool was made: fork() copies only the
+  // thread that called it, so the workers are gone. run() then does every item on the
+  // calling thread (never waiting for workers that do not exist), and the destructor
+  // lets go of the workers without joining them; make a new pool to have threads again.
+  bool orphaned() const { return forks_ != fork_count(); }
+  // How many fork()s this process descends through since the library was loaded
+  // (pthread_atfork's child handler counts them).
+  static unsigned fork_count();
 
   // Calls job(i, worker) for every i in [0, count), spread over the pool and the
   // calling thread, and returns when all are done. `worker` (0 .. size() - 1) is the
@@ -52,9 +62,16 @@ class ThreadPool {
   std::vector<std::thread> workers_;
   // Workers and the caller wait by spinning a little (a frame runs its stages back to
   // back, and waking a sleeping thread costs tens of microseconds, more in a virtual
-  // machine), then by sleeping on these.
-  std::mutex mutex_;
-  std::condition_variable wake_, done_;
+  // machine), then by sleeping on these. On the heap: in a forked child they may hold
+  // waiters that no longer exist, and destroying such a condition variable waits for
+  // them forever, so an orphaned pool never destroys them.
+  struct Sync {
+    std::mutex mutex;
+    std::condition_variable wake, done;
+  };
+  std::unique_ptr<Sync> sync_ = std::make_unique<Sync>();
+  std::mutex& mutex_ = sync_->mutex;
+  std::condition_variable &wake_ = sync_->wake, &done_ = sync_->done;
   // The run in progress: written by run_items before it publishes a new generation,
   // read by the workers after they see it.
   Job job_{nullptr, nullptr};
@@ -64,6 +81,7 @@ class ThreadPool {
   std::atomic<int> busy_{0};   // workers still inside the current generation
   std::atomic<unsigned> generation_{0};  // bumped for each run()
   std::atomic<bool> stop_{false};
+  unsigned forks_ = fork_count();  // fork_count() when the workers were started
 };
 
 }  // namespace velocity
