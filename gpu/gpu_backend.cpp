@@ -134,6 +134,8 @@ GpuBackend::~GpuBackend() {
     glDeleteRenderbuffers(3, renderbuffers_);
     glDeleteVertexArrays(1, &empty_vao_);
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
+    for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
+    if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(5, batch_buffers_);
   } catch (const Error&) {
     // A context that cannot be made current any more: its objects go with it.
   }
@@ -559,15 +561,177 @@ void GpuBackend::draw_painter() {
   for (const PainterDraw& pd : painter_draws_) stats_.triangles_rasterized += pd.entry->face_of.size();
 }
 
-void GpuBackend::draw(const PrimitiveBatch&, const PixelState&, uint32_t) {
-  throw Error("the GPU backend does not draw primitive batches (pGL's path) yet: use the CPU backend");
+namespace {
+
+GLenum gl_compare(CompareFunc f) { return GL_NEVER + GLenum(f); }  // the same order as GL's enums
+
+GLenum gl_factor(BlendFactor f) {
+  static const GLenum table[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
+                                 GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
+                                 GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE, GL_CONSTANT_COLOR,
+                                 GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA};
+  return table[size_t(f)];
+}
+
+GLenum gl_blend_op(BlendOp op) {
+  static const GLenum table[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+  return table[size_t(op)];
+}
+
+GLint gl_wrap(Wrap w) {
+  return w == Wrap::Repeat ? GL_REPEAT : w == Wrap::Clamp ? GL_CLAMP_TO_EDGE : w == Wrap::MirroredRepeat ? GL_MIRRORED_REPEAT
+                                                                                                    : GL_CLAMP_TO_BORDER;
+}
+
+}  // namespace
+
+// A batch of pre-transformed primitives (pGL's path), drawn at once in submission order
+// (painter's mode does not sort them). Vertex arrays are streamed per draw.
+void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
+  stats_.objects++;
+  if (primitives == 0) return;
+  const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
+  // The vertices of whole primitives whose indices are all in range (the rest are dropped).
+  batch_indices_.clear();
+  for (uint32_t p = 0; p < primitives; ++p) {
+    uint32_t v[3];
+    bool ok = true;
+    for (uint32_t i = 0; i < k; ++i) {
+      v[i] = batch.indices ? batch.indices[p * k + i] : p * k + i;
+      ok = ok && v[i] < batch.vertex_count;
+    }
+    if (ok) batch_indices_.insert(batch_indices_.end(), v, v + k);
+  }
+  if (batch_indices_.empty()) return;
+  if (k == 3) stats_.triangles += batch_indices_.size() / 3, stats_.triangles_rasterized += batch_indices_.size() / 3;
+  else if (k == 2) stats_.lines += batch_indices_.size() / 2;
+  else stats_.points += batch_indices_.size();
+
+  if (!batch_program_) {
+    batch_program_ = build_batch_program();
+    glGenVertexArrays(1, &batch_vao_);
+    glGenBuffers(5, batch_buffers_);
+  }
+  const GLuint p = batch_program_;
+  glUseProgram(p);
+  glBindVertexArray(batch_vao_);
+  const size_t n = batch.vertex_count;
+  auto stream = [&](GLuint index, const void* data, size_t bytes, int components, std::initializer_list<float> constant) {
+    if (!data) {
+      glDisableVertexAttribArray(index);
+      const float* c = constant.begin();
+      glVertexAttrib4f(index, c[0], c[1], c[2], c[3]);
+      return;
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, batch_buffers_[index]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, GL_STREAM_DRAW);
+    glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(index);
+  };
+  stream(0, batch.position, n * sizeof(Vec4), 4, {0, 0, 0, 1});
+  stream(1, batch.color, n * sizeof(Vec4), 4, {1, 1, 1, 1});
+  stream(2, batch.texcoord, n * sizeof(Vec4), 4, {0, 0, 0, 1});
+  stream(3, batch.fog, n * sizeof(float), 1, {0, 0, 0, 1});
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_buffers_[4]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(batch_indices_.size() * 4), batch_indices_.data(), GL_STREAM_DRAW);
+
+  // The viewport (rows from the top: the framebuffer is upside down, so GL's rows are
+  // the image's) and depth range, as plan_batch_draw bounds them.
+  const int fw = width_ * ssaa_, fh = height_ * ssaa_;
+  const Viewport& v = batch.viewport;
+  const int vw = v.width > 0 ? std::min(v.width, kMaxFramebufferSide) : fw;
+  const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
+  const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  glViewport(vx, vy, vw, vh);
+  glDepthRange(std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+
+  const TextureStage& t = state.texture;
+  glUniform1i(uniform(p, "u_textured"), t.texture != nullptr);
+  if (t.texture) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture(*t.texture));
+    const SamplerState& ss = t.sampler;
+    GLuint& sampler = batch_samplers_[{int(ss.mag), int(ss.min), int(ss.mip), int(ss.wrap_s), int(ss.wrap_t),
+                                       ss.border_color.x, ss.border_color.y, ss.border_color.z, ss.border_color.w}];
+    if (!sampler) {
+      glGenSamplers(1, &sampler);
+      const bool linear = ss.min == SamplerState::Texel::Linear;
+      const GLint min = ss.mip == SamplerState::Mip::None ? (linear ? GL_LINEAR : GL_NEAREST)
+                        : ss.mip == SamplerState::Mip::Nearest ? (linear ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST)
+                                                               : (linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR);
+      glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, min);
+      glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, ss.mag == SamplerState::Texel::Linear ? GL_LINEAR : GL_NEAREST);
+      glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(ss.wrap_s));
+      glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(ss.wrap_t));
+      glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, &ss.border_color.x);
+    }
+    glBindSampler(0, sampler);
+    glUniform1i(uniform(p, "u_texture"), 0);
+    glUniform1i(uniform(p, "u_format"), int(t.format));
+    glUniform1i(uniform(p, "u_env"), int(t.env));
+    glUniform4fv(uniform(p, "u_env_color"), 1, &t.env_color.x);
+  }
+  glUniform1i(uniform(p, "u_fog"), state.fog);
+  glUniform1i(uniform(p, "u_fog_mode"), int(state.fog_mode));
+  glUniform3f(uniform(p, "u_fog_params"), state.fog_start, state.fog_end, state.fog_density);
+  glUniform4fv(uniform(p, "u_fog_color"), 1, &state.fog_color.x);
+  glUniform1i(uniform(p, "u_alpha_test"), state.alpha_test);
+  glUniform1i(uniform(p, "u_alpha_func"), int(state.alpha_func));
+  glUniform1f(uniform(p, "u_alpha_ref"), state.alpha_ref);
+  glUniform1i(uniform(p, "u_offset"), state.polygon_offset);
+  glUniform2f(uniform(p, "u_offset_params"), state.offset_factor, state.offset_units);
+  glUniform1f(uniform(p, "u_point_size"), std::max(batch.point_size, 1.0f));
+
+  // GL's own per-fragment state: scissor, depth, blend, masks.
+  if (state.scissor) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(state.scissor_x0, state.scissor_y0, std::max(state.scissor_x1 - state.scissor_x0, 0),
+              std::max(state.scissor_y1 - state.scissor_y0, 0));
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
+  const bool painter = options_.depth_mode == DepthMode::Painter;
+  if (state.depth_test && !painter) glEnable(GL_DEPTH_TEST), glDepthFunc(gl_compare(state.depth_func));
+  else glDisable(GL_DEPTH_TEST);
+  glDepthMask(state.depth_write);
+  if (state.blend) {
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparate(gl_factor(state.blend_src_rgb), gl_factor(state.blend_dst_rgb), gl_factor(state.blend_src_alpha),
+                        gl_factor(state.blend_dst_alpha));
+    glBlendEquation(gl_blend_op(state.blend_op));
+    glBlendColor(state.blend_color.x, state.blend_color.y, state.blend_color.z, state.blend_color.w);
+  } else {
+    glDisablei(GL_BLEND, 0);
+  }
+  const uint8_t m = state.color_mask;
+  glColorMaski(0, m & 1, (m >> 1) & 1, (m >> 2) & 1, (m >> 3) & 1);
+  glColorMaski(1, m != 0, GL_FALSE, GL_FALSE, GL_FALSE);  // the id goes with the colour
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  if (k == 2) glLineWidth(std::max(batch.line_width, 1.0f));
+  const GLenum mode = k == 3 ? GL_TRIANGLES : k == 2 ? GL_LINES : GL_POINTS;
+  glDrawElements(mode, GLsizei(batch_indices_.size()), GL_UNSIGNED_INT, nullptr);
+  if (glGetError() == GL_INVALID_VALUE && k == 2)  // a core context may refuse wide lines
+    throw Error("the GPU backend's OpenGL context does not draw lines " + std::to_string(batch.line_width) + " pixels wide");
+
+  // Back to the mesh draws' state.
+  glViewport(0, 0, fw, fh);
+  glDepthRange(0, 1);
+  glDisable(GL_SCISSOR_TEST);
+  glDisablei(GL_BLEND, 0);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE), glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  if (painter) glDisable(GL_DEPTH_TEST);
+  else glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
+  glLineWidth(1);
+  glBindVertexArray(0);
 }
 
 void GpuBackend::clear(const ClearRequest& request) {
   if (request.scissor) {
-    const int sh = height_ * ssaa_;
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(request.x0, sh - request.y1, std::max(request.x1 - request.x0, 0), std::max(request.y1 - request.y0, 0));
+    glEnable(GL_SCISSOR_TEST);  // (rows from the top: the framebuffer is upside down)
+    glScissor(request.x0, request.y0, std::max(request.x1 - request.x0, 0), std::max(request.y1 - request.y0, 0));
   }
   if (request.color) {
     const uint8_t k = request.color_mask;

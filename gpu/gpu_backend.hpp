@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -96,6 +97,10 @@ class GpuBackend final : public Backend {
   std::vector<PainterDraw> painter_draws_;
   std::vector<uint32_t> painter_faces_;
   GLuint painter_indices_ = 0, order_buffer_ = 0, order_texture_ = 0;
+  // pGL's path: its program, streamed arrays and samplers (by SamplerState).
+  GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[5] = {};
+  std::vector<uint32_t> batch_indices_;
+  std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
   FrameStats stats_;
   std::chrono::steady_clock::time_point t0_;
 

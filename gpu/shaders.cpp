@@ -301,6 +301,117 @@ GLuint build_mesh_program(bool affine, int primitive) {
                        head + kLightingGlsl + kMeshFragment);
 }
 
+// Pre-transformed primitives with OpenGL 1.x's per-fragment state (primitives.hpp, the
+// CPU's raster/shade_fixed-inl.h): texture environment, fog, alpha test in that order;
+// scissor, depth, blend and the colour mask are GL's own state. Clip-space y is negated
+// as the mesh program's projection is (the image is drawn upside down).
+const char* const kBatchVertex = R"(
+layout(location = 0) in vec4 a_position;
+layout(location = 1) in vec4 a_color;
+layout(location = 2) in vec4 a_texcoord;
+layout(location = 3) in float a_fog;
+uniform float u_point_size;
+out vec4 v_color;
+out vec3 v_texcoord;  // s, t, q: interpolated perspective-correct, divided per pixel
+out float v_fog;
+void main() {
+  gl_Position = vec4(a_position.x, -a_position.y, a_position.z, a_position.w);
+  gl_PointSize = u_point_size;
+  v_color = a_color;
+  v_texcoord = vec3(a_texcoord.x, a_texcoord.y, a_texcoord.w);
+  v_fog = a_fog;
+}
+)";
+
+const char* const kBatchFragment = R"(
+in vec4 v_color;
+in vec3 v_texcoord;
+in float v_fog;
+uniform bool u_textured;
+uniform int u_format;  // TexFormat: 0 RGBA, 1 RGB, 2 L, 3 LA, 4 A, 5 I
+uniform int u_env;     // TexEnvMode: 0 modulate, 1 replace, 2 decal, 3 blend, 4 add
+uniform vec4 u_env_color;
+uniform sampler2D u_texture;
+uniform bool u_fog;
+uniform int u_fog_mode;   // FogMode: 0 linear, 1 exp, 2 exp2
+uniform vec3 u_fog_params;  // start, end, density
+uniform vec4 u_fog_color;
+uniform bool u_alpha_test;
+uniform int u_alpha_func;  // CompareFunc
+uniform float u_alpha_ref;
+uniform bool u_offset;     // polygon offset, as the CPU applies it (PixelState)
+uniform vec2 u_offset_params;  // factor, units
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out uint o_id;
+
+bool compare(int f, float a, float b) {
+  if (f == 0) return false;
+  if (f == 1) return a < b;
+  if (f == 2) return a == b;
+  if (f == 3) return a <= b;
+  if (f == 4) return a > b;
+  if (f == 5) return a != b;
+  if (f == 6) return a >= b;
+  return true;
+}
+
+// OpenGL 1.x's table of texture functions (GL 1.5 table 3.22) by base format.
+vec4 environment(vec4 f, vec4 t) {
+  bool has_color = u_format != 4, has_alpha = u_format == 0 || u_format == 3 || u_format == 4;
+  if (u_format == 5) {  // intensity: I in every channel
+    if (u_env == 0) return f * t.r;
+    if (u_env == 1) return vec4(t.r);
+    if (u_env == 3) return f * (1.0 - t.r) + u_env_color * t.r;
+    if (u_env == 4) return clamp(f + vec4(t.r), 0.0, 1.0);
+    return f;
+  }
+  vec3 c = f.rgb;
+  float a = f.a;
+  if (u_env == 0) {
+    if (has_color) c = f.rgb * t.rgb;
+    if (has_alpha) a = f.a * t.a;
+  } else if (u_env == 1) {
+    if (has_color) c = t.rgb;
+    if (has_alpha) a = t.a;
+  } else if (u_env == 2) {
+    if (u_format == 0) c = mix(f.rgb, t.rgb, t.a);
+    else if (u_format == 1 || u_format == 2) c = t.rgb;
+  } else if (u_env == 3) {
+    if (has_color) c = f.rgb * (1.0 - t.rgb) + u_env_color.rgb * t.rgb;
+    if (has_alpha) a = f.a * t.a;
+  } else if (u_env == 4) {
+    if (has_color) c = clamp(f.rgb + t.rgb, 0.0, 1.0);
+    if (has_alpha) a = f.a * t.a;
+  }
+  return vec4(c, a);
+}
+
+void main() {
+  vec4 c = clamp(v_color, 0.0, 1.0);
+  if (u_textured) c = environment(c, texture(u_texture, v_texcoord.xy / v_texcoord.z));
+  if (u_fog) {
+    float z = v_fog, f;
+    if (u_fog_mode == 0) f = (u_fog_params.y - z) / (u_fog_params.y - u_fog_params.x);
+    else if (u_fog_mode == 1) f = exp(-u_fog_params.z * z);
+    else f = exp(-(u_fog_params.z * z) * (u_fog_params.z * z));
+    f = clamp(f, 0.0, 1.0);
+    c.rgb = f * c.rgb + (1.0 - f) * u_fog_color.rgb;
+  }
+  if (u_alpha_test && !compare(u_alpha_func, c.a, u_alpha_ref)) discard;
+  gl_FragDepth = gl_FragCoord.z;
+  if (u_offset) {
+    float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
+    gl_FragDepth = clamp(gl_FragCoord.z + u_offset_params.x * slope + u_offset_params.y * exp2(-24.0), 0.0, 1.0);
+  }
+  o_color = c;
+  o_id = 0u;
+}
+)";
+
+GLuint build_batch_program() {
+  return build_program(std::string(kVersion) + kBatchVertex, "", std::string(kVersion) + kBatchFragment);
+}
+
 GLuint build_lighting_test_program() {
   const std::string vs = std::string(kVersion) + kLightingGlsl + R"(
 layout(location = 0) in vec3 a_position;

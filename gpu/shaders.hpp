@@ -29,6 +29,9 @@ GLuint build_program(const std::string& vertex, const std::string& geometry, con
 // `primitive`: 0 triangles, 1 their edges, 2 their corners.
 GLuint build_mesh_program(bool affine, int primitive);
 
+// The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
+GLuint build_batch_program();
+
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.
 GLuint build_lighting_test_program();
