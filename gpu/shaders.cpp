@@ -375,7 +375,7 @@ vec4 environment(vec4 f, vec4 t) {
     if (has_alpha) a = t.a;
   } else if (u_env == 2) {
     if (u_format == 0) c = mix(f.rgb, t.rgb, t.a);
-    else if (u_format == 1 || u_format == 2) c = t.rgb;
+    else if (u_format == 1) c = t.rgb;  // (undefined for the other formats: left as it is, as Mesa and the CPU)
   } else if (u_env == 3) {
     if (has_color) c = f.rgb * (1.0 - t.rgb) + u_env_color.rgb * t.rgb;
     if (has_alpha) a = f.a * t.a;
