@@ -429,6 +429,32 @@ TEST(GpuErrors, ClearMessages) {
   r.options.ssaa = 1;
   r.render(Scene{});
   EXPECT_EQ(r.width(), 16);
+
+  // A texture wider than the device takes: an error that says so, and the renderer
+  // goes on drawing.
+  GLint max = 0;
+  {
+    gpu::Context c(false);
+    gpu::Current current(c);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  }
+  Image wide(max + 1, 1, 0xffc8c8c8u);
+  Material m;
+  m.texture = std::make_shared<const Texture>(wide);
+  Mesh mesh = make_sphere(8);
+  r.begin_frame(Camera{}, {}, Vec3{});
+  try {
+    r.draw(mesh, Mat4::identity(), &m, 1);
+    ADD_FAILURE() << "a texture over GL_MAX_TEXTURE_SIZE was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than the GPU takes"), std::string::npos) << e.what();
+  }
+  r.end_frame();
+
+  // More lights than the program holds.
+  std::vector<Light> lights(40, Light::directional({0, 0, -1}, {0.01f, 0.01f, 0.01f}));
+  EXPECT_THROW(r.begin_frame(Camera{}, lights, Vec3{}), Error);
+  r.render(Scene{});  // and the next frame is fine
 }
 
 }  // namespace
