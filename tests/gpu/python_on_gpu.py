@@ -1,4 +1,4 @@
-"""The Python module's depth and mask tests (python/tests) with every OffscreenRenderer
+"""The Python module's render, depth, mask and threads tests (python/tests) with every OffscreenRenderer
 on the GPU backend: the same assertions, the default backend switched to "gpu".
 
   python3 tests/gpu/python_on_gpu.py TEST_FILE...   (PYTHONPATH: the built module)
