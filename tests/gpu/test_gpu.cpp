@@ -96,7 +96,7 @@ TEST_P(Parity, MatchesTheCpuBackend) {
   size_t close = 0, both = 0;
   for (size_t i = 0; i < za.size(); ++i)
     if (za[i] > 0 && zb[i] > 0) both++, close += std::abs(za[i] - zb[i]) < 1e-3f * za[i];
-  if (c.shade != "wire") EXPECT_GE(double(close), 0.995 * double(both));
+  EXPECT_GE(double(close), 0.995 * double(both));
 }
 
 std::vector<ParityCase> cases() {
