@@ -178,7 +178,7 @@ void GpuBackend::resize(int w, int h, int k) {
 }
 
 GLuint GpuBackend::program(bool affine, int primitive) {
-  GLuint& p = programs_[(affine ? 3 : 0) + primitive];
+  GLuint& p = programs_[(affine ? 4 : 0) + primitive];
   if (!p) p = build_mesh_program(affine, primitive);
   return p;
 }
@@ -443,10 +443,11 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     else if (!override && !mesh.colors.empty()) base = kVertexColor;
     const Vec3 color = replace ? Vec3{1, 1, 1} : mat.color;
 
-    const int primitive = lines ? 1 : points ? 2 : 0;
+    const bool direct = (mode == kSmooth || mode == kPhong) && base != kFaceColor;
+    const int primitive = lines ? 1 : points ? 2 : direct ? 3 : 0;
     const GLuint p = program(options_.affine, primitive);
     glUseProgram(p);
-    const int which = (options_.affine ? 3 : 0) + primitive;
+    const int which = (options_.affine ? 4 : 0) + primitive;
     if (!lights_uploaded_[which]) upload_lights(p), lights_uploaded_[which] = true;
     upload_matrix(uniform(p, "u_mvp"), mvp);
     upload_matrix(uniform(p, "u_model_view"), model_view);
@@ -481,7 +482,7 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     }
     // Triangles are culled by GL (front faces clockwise: the flip); edges and corners
     // by the geometry shader.
-    if (cull && primitive == 0) glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
+    if (cull && (primitive == 0 || primitive == 3)) glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
     else glDisable(GL_CULL_FACE);
     if (!runs) {
       glUniform1i(uniform(p, "u_face_base"), GLint(begin));

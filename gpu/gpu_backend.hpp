@@ -81,7 +81,7 @@ class GpuBackend final : public Backend {
   int max_side_ = 0;
   GLint max_texture_ = 0;
   GLuint fbo_ = 0, renderbuffers_[3] = {}, empty_vao_ = 0;
-  GLuint programs_[6] = {};  // [affine * 3 + primitive]
+  GLuint programs_[8] = {};  // [affine * 4 + primitive]
   std::map<std::pair<GLuint, std::string>, GLint> uniforms_;
   std::unordered_map<const Mesh*, MeshEntry> meshes_;
   std::unordered_map<const Texture*, TextureEntry> textures_;
@@ -92,7 +92,7 @@ class GpuBackend final : public Backend {
   RenderOptions options_;
   Mat4 view_, projection_, view_projection_, flipped_view_projection_;
   shading::EyeLights lights_;
-  bool lights_uploaded_[6] = {};
+  bool lights_uploaded_[8] = {};
   Material default_material_;
   std::vector<PainterDraw> painter_draws_;
   std::vector<uint32_t> painter_faces_;

@@ -98,6 +98,52 @@ void main() {
 }
 )";
 
+// Gouraud and Phong without per-face colours need nothing per face: this vertex shader
+// does the geometry shader's per-corner work itself (the same lines), and the program
+// has no geometry stage, which software drivers run far slower.
+const char* const kMeshVertexDirect = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_color;
+uniform mat4 u_mvp;
+uniform mat4 u_model_view;
+uniform mat4 u_normal_matrix;
+uniform int u_mode;
+uniform int u_base_source;
+uniform bool u_lit;
+uniform bool u_unlit_vertex_colors;
+uniform bool u_uv_from_env;
+uniform bool u_two_sided;
+uniform vec3 u_material_color;
+out G {
+  INTERP vec3 eye;
+  INTERP vec3 normal;
+  INTERP vec2 uv;
+  INTERP vec3 front;
+  INTERP vec3 back;
+} g;
+flat out vec3 g_flat_front;
+flat out vec3 g_flat_back;
+void main() {
+  gl_Position = u_mvp * vec4(a_position, 1.0);
+  g.eye = (u_model_view * vec4(a_position, 1.0)).xyz;
+  g.normal = normalize((u_normal_matrix * vec4(a_normal, 0.0)).xyz);
+  vec3 base = u_unlit_vertex_colors || u_base_source == 2 ? a_color : u_material_color;
+  g.front = g.back = base;
+  if (u_mode == 1 && u_lit) {
+    Terms t = light(g.normal, g.eye);
+    g.front = clamp(base * t.diffuse + t.specular, 0.0, 1.0);
+    if (u_two_sided) {
+      t = light(-g.normal, g.eye);
+      g.back = clamp(base * t.diffuse + t.specular, 0.0, 1.0);
+    }
+  }
+  g.uv = u_uv_from_env ? vec2(0.5) + 0.5 * g.normal.xy : a_uv;
+  g_flat_front = g_flat_back = vec3(1.0);
+}
+)";
+
 // The triangle stage (triangle/mesh_job.cpp: corner, flat_color): per face, the base
 // colour (material, face or vertex colours), the flat colour lit by the face normal at
 // the centroid, Gouraud's clamped corner colours, the per-vertex sphere-map uv.
@@ -297,6 +343,7 @@ GLuint build_program(const std::string& vertex, const std::string& geometry, con
 GLuint build_mesh_program(bool affine, int primitive) {
   const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") +
                            "\n#define PRIMITIVE " + std::to_string(primitive) + "\n";
+  if (primitive == 3) return build_program(head + kLightingGlsl + kMeshVertexDirect, "", head + kLightingGlsl + kMeshFragment);
   return build_program(head + kLightingGlsl + kMeshVertex, head + kLightingGlsl + kMeshGeometry,
                        head + kLightingGlsl + kMeshFragment);
 }

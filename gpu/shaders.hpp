@@ -26,7 +26,8 @@ enum BaseSource : int { kMaterialColor = 0, kFaceColor = 1, kVertexColor = 2 };
 GLuint build_program(const std::string& vertex, const std::string& geometry, const std::string& fragment);
 
 // The mesh program; `affine`: varyings interpolated in screen space (RenderOptions::affine);
-// `primitive`: 0 triangles, 1 their edges, 2 their corners.
+// `primitive`: 0 triangles, 1 their edges, 2 their corners (those three with a geometry
+// shader), 3 triangles without one (Gouraud, Phong, unlit: no per-face colour).
 GLuint build_mesh_program(bool affine, int primitive);
 
 // The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
