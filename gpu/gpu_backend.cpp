@@ -241,8 +241,11 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
 }
 
 GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
-  const uint64_t key = fingerprint(mesh);
+  // Checked once a frame: a mesh stays unchanged until end_frame (Renderer::draw's rule),
+  // so its copies in the same frame cost no second pass over its bytes.
   auto it = meshes_.find(&mesh);
+  if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
+  const uint64_t key = fingerprint(mesh);
   if (it != meshes_.end() && it->second.fingerprint == key) {
     it->second.last_frame = frame_;
     return it->second;
@@ -321,8 +324,9 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
 }
 
 GLuint GpuBackend::texture(const Texture& t) {
-  const uint64_t key = fingerprint(t);
   auto it = textures_.find(&t);
+  if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
+  const uint64_t key = fingerprint(t);
   if (it != textures_.end() && it->second.fingerprint == key) {
     it->second.last_frame = frame_;
     return it->second.texture;
