@@ -400,6 +400,7 @@ void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   stats_.objects++;
   stats_.triangles += mesh.triangles.size();
   if (mesh.triangles.empty()) return;
+  context_->make_current();  // (a no-op unless another renderer's frame ran on this thread since)
   if (geometry::ViewVolume(view_projection_).outside(mesh, world)) return void(stats_.objects_culled++);
   MeshEntry& m = mesh_entry(mesh);
   if (options_.depth_mode == DepthMode::Painter) {
@@ -595,6 +596,7 @@ GLint gl_wrap(Wrap w) {
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
   stats_.objects++;
   if (primitives == 0) return;
+  context_->make_current();
   const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
   // The vertices of whole primitives whose indices are all in range (the rest are dropped).
   batch_indices_.clear();
@@ -734,6 +736,7 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
 }
 
 void GpuBackend::clear(const ClearRequest& request) {
+  context_->make_current();
   if (request.scissor) {
     glEnable(GL_SCISSOR_TEST);  // (rows from the top: the framebuffer is upside down)
     glScissor(request.x0, request.y0, std::max(request.x1 - request.x0, 0), std::max(request.y1 - request.y0, 0));
@@ -755,6 +758,7 @@ void GpuBackend::clear(const ClearRequest& request) {
 }
 
 const FrameStats& GpuBackend::end_frame() {
+  context_->make_current();
   if (!painter_draws_.empty()) draw_painter();
   // Read back every sample into the CPU framebuffer (its tiled layout).
   const int w = width_ * ssaa_, h = height_ * ssaa_;

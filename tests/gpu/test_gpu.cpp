@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "context.hpp"
 #include "gpu_backend.hpp"
@@ -192,6 +193,31 @@ TEST(GpuScenes, PaintersMode) {
   std::printf("[gpu-parity] painter psnr=%.2f (painter against z-buffer on the CPU: %.2f)\n", psnr, differs);
   EXPECT_LT(differs, 40.0);  // the scene tells the modes apart
   EXPECT_GE(psnr, 35.0);
+}
+
+// Two GPU renderers with frames open at once on one thread: each draws into its own
+// context, whatever ran in between.
+TEST(GpuScenes, TwoRenderersInterleaved) {
+  Mesh sphere = make_sphere(16), cube = make_cube(1.2f);
+  Material red, blue;
+  red.color = {0.9f, 0.2f, 0.1f}, blue.color = {0.1f, 0.3f, 0.9f}, blue.shading = Shading::Flat;
+  const Mat4 turn = rotate_y(0.5f);
+  Renderer a(96, 64, BackendChoice::Gpu), b(96, 64, BackendChoice::Gpu);
+  Renderer ca(96, 64, BackendChoice::Cpu), cb(96, 64, BackendChoice::Cpu);
+  a.begin_frame(Camera{}, {}, Vec3{0, 0, 0});
+  b.begin_frame(Camera{}, {}, Vec3{1, 1, 1});
+  a.draw(sphere, Mat4::identity(), &red, 1);
+  b.draw(cube, turn, &blue, 2);
+  b.end_frame();
+  a.end_frame();
+  for (auto [r, mesh, world, mat, bg] : {std::tuple{&ca, &sphere, Mat4::identity(), &red, Vec3{0, 0, 0}},
+                                         std::tuple{&cb, &cube, turn, &blue, Vec3{1, 1, 1}}}) {
+    r->begin_frame(Camera{}, {}, bg);
+    r->draw(*mesh, world, mat, 1);
+    r->end_frame();
+  }
+  EXPECT_GE(vref::compare(to_vref(a.color_image()), to_vref(ca.color_image())).psnr, 40.0);
+  EXPECT_GE(vref::compare(to_vref(b.color_image()), to_vref(cb.color_image())).psnr, 40.0);
 }
 
 TEST(GpuScenes, AffineTexturesAndNearest) {
