@@ -469,6 +469,7 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
     glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
     glUniform1i(uniform(p, "u_cull"), cull);
+    glUniform2f(uniform(p, "u_viewport_size"), float(width_ * ssaa_), float(height_ * ssaa_));
     glUniform1i(uniform(p, "u_textured"), textured);
     glUniform1i(uniform(p, "u_env"), phong && env);
     glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);

@@ -155,7 +155,8 @@ layout(triangles) in;
 #if PRIMITIVE == 0
 layout(triangle_strip, max_vertices = 3) out;
 #elif PRIMITIVE == 1
-layout(line_strip, max_vertices = 6) out;
+layout(triangle_strip, max_vertices = 12) out;
+uniform vec2 u_viewport_size;
 #else
 layout(points, max_vertices = 3) out;
 #endif
@@ -220,12 +221,38 @@ void main() {
   if (u_cull && det >= 0.0) return;
 #endif
 #if PRIMITIVE == 1
-  const int corners[6] = int[6](0, 1, 1, 2, 2, 0);
-  for (int k = 0; k < 6; ++k) {
-    int i = corners[k];
-#else
-  for (int i = 0; i < 3; ++i) {
+  // Each edge as the CPU draws a line (raster/coverage-inl.h, line_blocks): the pixels
+  // whose centres lie between the ends along the major axis and within half a pixel of
+  // the segment across it, i.e. a parallelogram one pixel high (x-major) or wide, cut
+  // at the near plane first (triangle/clip.cpp's clip_line).
+  for (int k = 0; k < 3; ++k) {
+    vec4 p = gl_in[k].gl_Position, q = gl_in[(k + 1) % 3].gl_Position;
+    float dp = p.z + p.w, dq = q.z + q.w;
+    if (dp < 0.0 && dq < 0.0) continue;
+    if (dp < 0.0) p = mix(p, q, dp / (dp - dq));
+    if (dq < 0.0) q = mix(q, p, dq / (dq - dp));
+    vec2 a = p.xy / p.w * 0.5 * u_viewport_size, b = q.xy / q.w * 0.5 * u_viewport_size;
+    vec2 d = b - a;
+    if (dot(d, d) == 0.0) continue;
+    vec2 across = abs(d.x) >= abs(d.y) ? vec2(0.0, 1.0 / u_viewport_size.y) : vec2(1.0 / u_viewport_size.x, 0.0);
+    // [line - 1/2, line + 1/2) across, moved by one 1/256-pixel snapping step (GL snaps as the
+    // CPU does), so
+    // that a centre exactly half a pixel away goes as the CPU's floor() sends it.
+    vec2 nudge = across * (1.0 / 128.0);
+    vec4 corners[4] = vec4[4](p + vec4((nudge - across) * p.w, 0.0, 0.0), p + vec4((nudge + across) * p.w, 0.0, 0.0),
+                              q + vec4((nudge - across) * q.w, 0.0, 0.0), q + vec4((nudge + across) * q.w, 0.0, 0.0));
+    for (int c = 0; c < 4; ++c) {
+      g.front = g.back = u_material_color;
+      g.eye = vec3(0.0), g.normal = vec3(0.0, 0.0, 1.0), g.uv = vec2(0.0);
+      g_flat_front = flat_front, g_flat_back = flat_back;
+      gl_Position = corners[c];
+      EmitVertex();
+    }
+    EndPrimitive();
+  }
+  return;
 #endif
+  for (int i = 0; i < 3; ++i) {
     vec3 base = u_unlit_vertex_colors ? v[i].color : base_color(i, face);
     g.front = g.back = base;
     if (u_mode == 1 && u_lit) {
@@ -238,9 +265,7 @@ void main() {
     g_flat_front = flat_front, g_flat_back = flat_back;
     gl_Position = gl_in[i].gl_Position;
     EmitVertex();
-#if PRIMITIVE == 1
-    if (k % 2 == 1) EndPrimitive();
-#elif PRIMITIVE == 2
+#if PRIMITIVE == 2
     EndPrimitive();
 #endif
   }

@@ -99,7 +99,9 @@ TEST_P(Parity, MatchesTheCpuBackend) {
   size_t close = 0, both = 0;
   for (size_t i = 0; i < za.size(); ++i)
     if (za[i] > 0 && zb[i] > 0) both++, close += std::abs(za[i] - zb[i]) < 1e-3f * za[i];
-  EXPECT_GE(double(close), 0.995 * double(both));
+  // (Wireframe: where a front and a back edge cross, which one a pixel shows is a
+  // near-tie, so its depth agrees on fewer pixels.)
+  EXPECT_GE(double(close), (c.shade == "wire" ? 0.98 : 0.995) * double(both));
 }
 
 std::vector<ParityCase> cases() {
@@ -117,6 +119,12 @@ std::vector<ParityCase> cases() {
   for (const char* shade : {"flat", "gouraud", "tex"}) v.push_back({"sphere:512", 1920, 1080, shade, shade[0] == 't' ? 35.0 : 40.0});
   v.push_back({obj, 640, 360, "gouraud", 40.0, 1, 5, 12});
   v.push_back({obj, 640, 360, "phong", 40.0, 1, 9, 12});
+  // Wireframe: edges drawn as the CPU draws lines (the pixel under the segment at each
+  // column or row centre). Below 40 dB: bright one-pixel lines on a dark ground, and
+  // near-ties (a segment within rounding of a pixel boundary) fall either side in about
+  // 1 pixel in 1000 (float arithmetic on the CPU, fixed point in GL).
+  for (const std::string& mesh : {std::string("sphere:24"), std::string("sphere:64"), obj})
+    v.push_back({mesh, 640, 360, "wire", 30.0});
   // Super-sampling: a larger framebuffer and the same box resolve.
   v.push_back({obj, 640, 360, "phong", 35.0, 3});
   v.push_back({"sphere:64", 320, 200, "tex", 35.0, 2});
