@@ -3,13 +3,8 @@
 #include <cstdio>
 #include <new>
 
-#include "context.hpp"
 #include "gpu_backend.hpp"
 #include "velocity/error.hpp"
-
-namespace velocity::gpu {
-const std::string& GpuBackend::description() const { return context_->description(); }
-}  // namespace velocity::gpu
 
 extern "C" __attribute__((visibility("default"))) velocity::Backend* velocity_gpu_make_backend(
     unsigned long abi, int width, int height, int hardware_only, char* message, size_t message_size) {

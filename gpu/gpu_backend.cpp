@@ -113,7 +113,6 @@ GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std
   Current current(*context_);
   glGenFramebuffers(1, &fbo_);
   glGenRenderbuffers(3, renderbuffers_);
-  glGenVertexArrays(1, &empty_vao_);
   GLint max_side = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
   max_side_ = std::min(int(max_side), kMaxFramebufferSide);
@@ -121,6 +120,8 @@ GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std
   check_gl("the GPU backend's set-up");
   resize(width, height, 1);
 }
+
+const std::string& GpuBackend::description() const { return context_->description(); }
 
 GpuBackend::~GpuBackend() {
   try {
@@ -132,7 +133,6 @@ GpuBackend::~GpuBackend() {
       if (p) glDeleteProgram(p);
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(3, renderbuffers_);
-    glDeleteVertexArrays(1, &empty_vao_);
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
     if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(5, batch_buffers_);

@@ -26,6 +26,7 @@ class GpuBackend final : public Backend {
   GpuBackend(int width, int height, bool hardware_only);
   ~GpuBackend() override;
 
+  // What drew: the GL version and renderer, and the EGL device or platform.
   const std::string& description() const;
 
   void resize(int w, int h) override { resize(w, h, ssaa_); }
@@ -80,7 +81,7 @@ class GpuBackend final : public Backend {
   int width_ = 0, height_ = 0, ssaa_ = 0;
   int max_side_ = 0;
   GLint max_texture_ = 0;
-  GLuint fbo_ = 0, renderbuffers_[3] = {}, empty_vao_ = 0;
+  GLuint fbo_ = 0, renderbuffers_[3] = {};
   GLuint programs_[8] = {};  // [affine * 4 + primitive]
   std::map<std::pair<GLuint, std::string>, GLint> uniforms_;
   std::unordered_map<const Mesh*, MeshEntry> meshes_;
