@@ -23,6 +23,9 @@
 #   python3-distributed              the batch renderer on a Dask cluster (and its tests)
 #   python3-pil                      PNG files of the batch runner; pyrender's textures as PIL images (velocity.pyrender)
 #   python3-tqdm                     the batch runner's progress bar
+#   libepoxy-dev                     the GPU backend (gpu/): OpenGL entry points, loaded at run time
+#   libegl-dev                       the GPU backend: EGL from libglvnd, a headless OpenGL context
+#   libegl-mesa0, libgl1-mesa-dri    the GPU backend's tests: Mesa's EGL driver and llvmpipe (surfaceless)
 #   libsdl2-dev                      the real-time window, input and sound (present/: view, fly, drive)
 #   xvfb                             a display for the window's test (present/tests/window_test.py)
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader
@@ -30,7 +33,8 @@
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
-  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed python3-pil python3-tqdm libsdl2-dev xvfb chromium "$@")
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed python3-pil python3-tqdm
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libsdl2-dev xvfb chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.
 command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()

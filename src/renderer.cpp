@@ -1,5 +1,6 @@
 // Renderer: the public promises (renderer.hpp), checked here once for every backend and
 // forwarded to the one that draws (velocity/backend.hpp).
+#include <memory>
 #include <string>
 
 #include "geometry/normals.hpp"
@@ -25,8 +26,14 @@ struct Renderer::NormalsPass {
   std::vector<Mesh> meshes;  // the draws' meshes with normals as colours
   std::unique_ptr<Backend> backend;
 
-  void run(int width, int height) {
-    if (!backend) backend = make_cpu_backend(width, height);
+  // `choice`: the frame's own backend's kind (Cpu or Gpu), so that the normals cover
+  // the same pixels as its depth.
+  void run(int width, int height, BackendChoice choice) {
+    if (!backend) {
+      BackendChoice drawn_by;
+      std::string reason;
+      backend = make_backend(choice, width, height, drawn_by, reason);
+    }
     backend->resize(width, height);
     RenderOptions o = options;
     o.object_ids = false;
@@ -44,7 +51,10 @@ struct Renderer::NormalsPass {
   }
 };
 
-Renderer::Renderer(int width, int height) : backend_(make_cpu_backend(width, height)) {}
+Renderer::Renderer(int width, int height, BackendChoice backend) : reason_(std::make_unique<std::string>()) {
+  backend_ = make_backend(backend, width, height, drawn_by_, *reason_);
+  stats_.backend = to_string(drawn_by_), stats_.backend_reason = reason_->c_str();
+}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
@@ -52,7 +62,7 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 void Renderer::resize(int width, int height) { backend_->resize(width, height); }
 int Renderer::width() const { return backend_->width(); }
 int Renderer::height() const { return backend_->height(); }
-const FrameStats& Renderer::stats() const { return backend_->stats(); }
+const FrameStats& Renderer::stats() const { return stats_; }
 
 void Renderer::begin_frame(const Camera& camera, const std::vector<Light>& lights, Vec3 clear_color) {
   FrameStart start;
@@ -95,9 +105,10 @@ void Renderer::clear(const ClearRequest& request) {
 const FrameStats& Renderer::end_frame() {
   if (!in_frame_) throw Error("Renderer::end_frame called without begin_frame");
   in_frame_ = false;
-  const FrameStats& stats = backend_->end_frame();
-  if (normals_ && normals_->active) normals_->run(width(), height());
-  return stats;
+  stats_ = backend_->end_frame();
+  stats_.backend = to_string(drawn_by_), stats_.backend_reason = reason_->c_str();
+  if (normals_ && normals_->active) normals_->run(width(), height(), drawn_by_);
+  return stats_;
 }
 
 const FrameStats& Renderer::render(const Scene& scene) {

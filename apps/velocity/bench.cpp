@@ -30,6 +30,7 @@ struct BenchArgs {
   bool affine = false;
   int ssaa = 1;
   bool verbose = false;
+  std::string backend = "cpu";
 };
 
 int run_bench(const BenchArgs& a) {
@@ -52,7 +53,9 @@ int run_bench(const BenchArgs& a) {
   look->options.threads = a.threads;
 
   Mesh mesh = bench::make_mesh(a.mesh);
-  Renderer renderer(w, h);
+  const std::optional<BackendChoice> backend = parse_backend(a.backend);
+  if (!backend) throw Error("--backend: expected cpu|gpu|auto, got '" + a.backend + "'");
+  Renderer renderer(w, h, *backend);
   renderer.options = look->options;
 
   std::vector<double> ms, vertex_ms, triangle_ms, tile_ms;
@@ -73,11 +76,13 @@ int run_bench(const BenchArgs& a) {
   double median = median_of(ms), total = 0;
   for (double x : ms) total += x;
   size_t tris = mesh.triangles.size() * size_t(a.copies);
-  std::printf("renderer=velocity mesh=%s tris=%zu size=%dx%d shade=%s frames=%d median_ms=%.3f fps=%.1f tris_per_s=%.3e\n",
+  std::printf("renderer=velocity mesh=%s tris=%zu size=%dx%d shade=%s frames=%d median_ms=%.3f fps=%.1f tris_per_s=%.3e%s%s\n",
               a.mesh.c_str(), tris, w, h, a.shade.c_str(), a.frames, median, 1000.0 / median,
-              double(tris) * a.frames / (total / 1000.0));
+              double(tris) * a.frames / (total / 1000.0), *backend == BackendChoice::Cpu ? "" : " backend=",
+              *backend == BackendChoice::Cpu ? "" : renderer.stats().backend);
   if (a.verbose) {
     const FrameStats& st = renderer.stats();
+    std::printf("backend=%s (%s)\n", st.backend, st.backend_reason);
     std::printf("simd=%s threads=%d objects=%zu culled=%zu triangles=%zu rejected=%zu clipped=%zu "
                 "backface_or_empty=%zu nonfinite=%zu rasterized=%zu lines=%zu points=%zu\n",
                 simd_target(), a.threads, st.objects, st.objects_culled, st.triangles, st.triangles_rejected,
@@ -106,6 +111,8 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--copies", args->copies, "Draw the mesh N times per frame, in a square grid")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();
   cmd->add_option("--out", args->out, "Write the first frame to this image");
+  cmd->add_option("--backend", args->backend, "What draws: cpu, gpu (OpenGL 3.3 through EGL) or auto (a hardware GPU, else cpu)")
+      ->capture_default_str();
   cmd->add_flag("--verbose", args->verbose, "Also print the instruction set, what the last frame did and the median time of each stage");
   return [args] { return run_bench(*args); };
 }

@@ -37,6 +37,7 @@ struct RenderArgs {
   int ssaa = 0;  // 0: 3 for the demo scene, 1 for anything else
   float point_size = 1.0f;
   int threads = 0;
+  std::string backend = "cpu";
   bool ortho = false, painter = false, no_cull = false, cull = false, verbose = false, swap_yz = true, affine = false;
   size_t max_memory = LoadOptions{}.max_memory;
 };
@@ -144,7 +145,9 @@ int run_render(const RenderArgs& a) {
   if (a.ortho) scene.camera.projection = Projection::Orthographic;
   if (!a.camera.empty()) apply_camera(a.camera, scene);
 
-  Renderer renderer(w, h);
+  const std::optional<BackendChoice> backend = parse_backend(a.backend);
+  if (!backend) throw Error("--backend: expected cpu|gpu|auto, got '" + a.backend + "'");
+  Renderer renderer(w, h, *backend);
   RenderOptions& o = renderer.options;
   if (!a.shade.empty()) {
     ShadeSpec spec = parse_shade(a.shade);
@@ -179,6 +182,7 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr, "velocity: nothing was drawn: %s\n", why.c_str());
   if (!a.depth_out.empty()) write_image(a.depth_out, renderer.depth_image());
   if (a.verbose) {
+    std::printf("backend=%s (%s)\n", st.backend, st.backend_reason);
     std::printf("size=%dx%d ssaa=%d samples=%dx%d framebuffer_bytes=%zu\n", w, h, o.ssaa, w * o.ssaa, h * o.ssaa,
                 renderer.framebuffer_bytes());
     std::printf("objects=%zu culled=%zu triangles=%zu rejected=%zu clipped=%zu backface_or_empty=%zu nonfinite=%zu "
@@ -222,6 +226,8 @@ std::function<int()> add_render_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Output image (.png or .ppm)")->capture_default_str();
   cmd->add_option("--depth", args->depth_out, "Also write the depth buffer as a greyscale image");
   cmd->add_option("--threads", args->threads, "Threads rasterizing tiles (0: every core)")->capture_default_str();
+  cmd->add_option("--backend", args->backend, "What draws: cpu, gpu (OpenGL 3.3 through EGL) or auto (a hardware GPU, else cpu)")
+      ->capture_default_str();
   cmd->add_flag("--verbose", args->verbose, "Print what the frame did");
   // With no subcommand at all, `velocity` runs this with its defaults.
   return [args] { return run_render(*args); };

@@ -2,7 +2,10 @@
 // depth buffer OSMesaGetDepthBuffer hands out, the current context (see context.hpp).
 #include "context.hpp"
 
+#include <cstdio>
 #include <cstdlib>
+
+#include "velocity/error.hpp"
 
 namespace velocity::gl {
 
@@ -15,6 +18,14 @@ int threads_from_environment() {
   char* end = nullptr;
   const long n = std::strtol(s, &end, 10);
   return end != s && n > 0 && n <= 1024 ? int(n) : 0;
+}
+
+// VELOCITY_BACKEND=cpu|gpu|auto picks what draws (docs/gpu.md); unset: the CPU.
+BackendChoice backend_from_environment() {
+  const char* s = std::getenv("VELOCITY_BACKEND");
+  if (!s || !*s) return BackendChoice::Cpu;
+  if (auto b = parse_backend(s)) return *b;
+  throw Error(std::string("VELOCITY_BACKEND: expected cpu, gpu or auto, got '") + s + "'");
 }
 }  // namespace
 
@@ -34,14 +45,15 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
   const bool first = !renderer_;
   try {
     if (!renderer_) {
-      renderer_ = std::make_unique<Renderer>(width, height);
+      renderer_ = std::make_unique<Renderer>(width, height, backend_from_environment());
       renderer_->options.threads = threads_from_environment();
       renderer_->options.cull_back_faces = false;
     } else if (width != width_ || height != height_) {
       renderer_->resize(width, height);
       first_frame_ = true;
     }
-  } catch (const std::exception&) {
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pGL: OSMesaMakeCurrent: %s\n", e.what());  // (GL reports only GL_FALSE)
     return false;
   }
   buffer_ = buffer;

@@ -1,7 +1,8 @@
 // What draws for a Renderer: every promise renderer.hpp makes, as one interface that an
-// implementation fills in. The CPU pipeline (src/frame.cpp) is the one there is; a
-// second (a GPU backend) can be added beside it without touching it. Calls are per
-// frame or per draw, never per pixel, so the virtual calls cost nothing measurable.
+// implementation fills in. The CPU pipeline (src/frame.cpp) is one; the GPU backend
+// (gpu/, OpenGL 3.3 through EGL, in its own shared library libvelocity-gpu, loaded by
+// make_backend only when asked for) is the other. Calls are per frame or per draw,
+// never per pixel, so the virtual calls cost nothing measurable.
 //
 // The Renderer checks its callers (a draw outside a frame, a batch whose indices do not
 // make whole primitives, a bad channel count) before it calls a backend: a backend may
@@ -11,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "velocity/image.hpp"
@@ -57,5 +59,23 @@ class Backend {
 
 // The CPU pipeline (src/frame.cpp) at width x height; throws as Renderer's constructor.
 std::unique_ptr<Backend> make_cpu_backend(int width, int height);
+
+// The backend for a choice (renderer.hpp's BackendChoice): Cpu, or the GPU backend from
+// libvelocity-gpu (src/backend_choice.cpp finds and loads it: VELOCITY_GPU_LIBRARY, else
+// the dynamic linker's path, the build tree and the install's library folder). `drawn_by`
+// becomes Cpu or Gpu and `reason` says why. Throws velocity::Error for Gpu when the
+// library or an OpenGL 3.3 context is missing; Auto then falls back to Cpu instead.
+std::unique_ptr<Backend> make_backend(BackendChoice choice, int width, int height, BackendChoice& drawn_by,
+                                      std::string& reason);
+
+// The entry point libvelocity-gpu exports (extern "C", looked up by name): a new GPU
+// backend, or null with a one-line reason in `message`. `hardware_only` (Auto) refuses a
+// software driver. `abi` must be kGpuBackendAbi: the library and the core library it is
+// loaded into were built from the same headers.
+inline constexpr unsigned long kGpuBackendAbi =
+    20261126ul * 7 + sizeof(RenderOptions) * 131 + sizeof(PixelState) * 17 + sizeof(FrameStats) + sizeof(Material) * 3;
+using GpuBackendEntry = Backend* (*)(unsigned long abi, int width, int height, int hardware_only, char* message,
+                                     size_t message_size);
+inline constexpr const char* kGpuBackendEntry = "velocity_gpu_make_backend";
 
 }  // namespace velocity

@@ -6,12 +6,18 @@
 //
 // A frame goes load -> scene -> transform (vertex lighting) -> cull and clip -> set-up
 // -> bin to 64x64 tiles -> rasterize and shade each tile -> framebuffer. See
-// docs/pipeline.md. What draws is a backend (velocity/backend.hpp): the CPU pipeline.
+// docs/pipeline.md. What draws is a backend (velocity/backend.hpp): the CPU pipeline,
+// or, when asked for, OpenGL 3.3 on a GPU (docs/gpu.md):
+//
+//   velocity::Renderer r(1280, 720, velocity::BackendChoice::Auto);  // a hardware GPU, else the CPU
+//   std::printf("%s: %s\n", r.stats().backend, r.stats().backend_reason);
 #pragma once
 
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "velocity/image.hpp"
@@ -24,6 +30,18 @@
 namespace velocity {
 
 class Backend;
+
+// What draws a Renderer's frames (docs/gpu.md).
+enum class BackendChoice {
+  Cpu,   // Velocity's own pipeline (src/frame.cpp)
+  Gpu,   // OpenGL 3.3 core through EGL, in libvelocity-gpu (loaded when asked for);
+         // velocity::Error when no such context can be made, naming what was missing
+  Auto,  // a hardware GPU when EGL reports one, never a software GL (Mesa's llvmpipe is
+         // slower than the CPU pipeline); else Cpu. stats() says which ran and why.
+};
+// "cpu", "gpu", "auto".
+const char* to_string(BackendChoice choice);
+std::optional<BackendChoice> parse_backend(std::string_view name);
 
 enum class DepthMode {
   ZBuffer,  // per-pixel depth test (LESS) and write
@@ -101,7 +119,12 @@ struct FrameStats {
   // Wall-clock time of end_frame's stages, in milliseconds (for benchmarks).
   double vertex_ms = 0;    // transform, project, light: every vertex
   double triangle_ms = 0;  // reject, cull, clip, set up, bin: every triangle (and the painter's sort)
-  double tile_ms = 0;      // clear, rasterize and shade: every tile
+  double tile_ms = 0;      // clear, rasterize and shade: every tile (GPU: draw and read back)
+  // The backend that drew ("cpu" or "gpu") and why it was chosen, e.g. "asked for" or
+  // "auto: only a software OpenGL driver (llvmpipe), the CPU pipeline is faster". Set
+  // from construction on, before any frame; valid while the Renderer lives.
+  const char* backend = "cpu";
+  const char* backend_reason = "asked for";
 };
 
 // The instruction set the pixel and vertex kernels run with on this processor, as
@@ -111,8 +134,9 @@ const char* simd_target();
 
 class Renderer {
  public:
-  // Throws velocity::Error unless 1 <= width, height <= 16384.
-  Renderer(int width, int height);
+  // Throws velocity::Error unless 1 <= width, height <= 16384, or when `backend` is Gpu
+  // and no OpenGL 3.3 context can be made (the message names what was missing).
+  Renderer(int width, int height, BackendChoice backend = BackendChoice::Cpu);
   ~Renderer();
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
@@ -183,8 +207,11 @@ class Renderer {
   size_t framebuffer_bytes() const;
 
  private:
-  // What draws (velocity/backend.hpp): the CPU pipeline.
+  // What draws (velocity/backend.hpp): the CPU pipeline or the GPU's.
   std::unique_ptr<Backend> backend_;
+  BackendChoice drawn_by_ = BackendChoice::Cpu;  // Cpu or Gpu, after Auto's choice
+  std::unique_ptr<std::string> reason_;          // stats_.backend_reason points into it (stable across moves)
+  FrameStats stats_;                             // the backend's, with which backend it was
   bool in_frame_ = false;
   std::vector<Mat4> world_;  // render()'s matrices, reused
   struct NormalsPass;        // options.normals: the second pass and its buffers

@@ -383,11 +383,18 @@ struct PyScene {
 };
 
 // ---------------------------------------------------------------- renderer
+// "cpu", "gpu" or "auto" (docs/gpu.md).
+BackendChoice backend_choice(const std::string& name) {
+  if (auto b = parse_backend(name)) return *b;
+  throw Error("backend must be 'cpu', 'gpu' or 'auto', got '" + name + "'");
+}
+
 struct PyRenderer {
   Renderer renderer;
   std::mutex mutex;
   std::shared_ptr<BufferPool> pool = std::make_shared<BufferPool>();
-  PyRenderer(int w, int h, int ssaa, int threads) : renderer(w, h) {
+  PyRenderer(int w, int h, int ssaa, int threads, const std::string& backend)
+      : renderer(w, h, backend_choice(backend)) {
     if (ssaa < 1 || ssaa > 4) throw Error("ssaa must be 1..4, got " + std::to_string(ssaa));
     if (threads < 0) throw Error("threads must be >= 0 (0: every core), got " + std::to_string(threads));
     renderer.options.ssaa = ssaa;
@@ -912,11 +919,12 @@ PYBIND11_MODULE(_velocity, m) {
   py::class_<PyRenderer>(m, "OffscreenRenderer",
       "Renders scenes to numpy arrays on the CPU (pyrender's OffscreenRenderer; no display, no GL). Many "
       "renderers may render at once from many threads; the GIL is released while one renders.")
-      .def(py::init<int, int, int, int>(), py::arg("viewport_width"), py::arg("viewport_height"),
-           py::arg("ssaa") = 1, py::arg("threads") = 0,
+      .def(py::init<int, int, int, int, const std::string&>(), py::arg("viewport_width"), py::arg("viewport_height"),
+           py::arg("ssaa") = 1, py::arg("threads") = 0, py::arg("backend") = "cpu",
            "viewport_width x viewport_height pixels (1..16384); ssaa: 1..4 samples per side per pixel (colour "
            "averaged; depth and mask from the nearest sample, never blended); threads: cores for one frame "
-           "(0: all).")
+           "(0: all); backend: 'cpu', 'gpu' (OpenGL 3.3 through EGL; an error naming what is missing) or "
+           "'auto' (a hardware GPU, else the CPU).")
       .def_property("viewport_width", [](PyRenderer& r) { return r.renderer.width(); },
                     [](PyRenderer& r, int w) {
                       py::gil_scoped_release release;  // never wait for the mutex holding the GIL

@@ -78,18 +78,20 @@ _SUPPORTED = (RenderFlags.DEPTH_ONLY | RenderFlags.OFFSCREEN | RenderFlags.ALL_W
 class OffscreenRenderer(_OffscreenRenderer):
     """Renders scenes to numpy arrays on the CPU (pyrender's OffscreenRenderer).
 
-    OffscreenRenderer(viewport_width, viewport_height, point_size=1.0, ssaa=1, threads=0):
-    ssaa is 1..4 samples per side per pixel (colour averaged; depth and mask from the
-    nearest sample, never blended); threads is the cores one frame may use (0: all).
+    OffscreenRenderer(viewport_width, viewport_height, point_size=1.0, ssaa=1, threads=0,
+    backend="cpu"): ssaa is 1..4 samples per side per pixel (colour averaged; depth and
+    mask from the nearest sample, never blended); threads is the cores one frame may use
+    (0: all); backend is "cpu", "gpu" (OpenGL through EGL) or "auto" (a hardware GPU,
+    else the CPU).
     Many renderers may render at once from many threads: the GIL is released while
     one renders. One renderer renders one frame at a time.
     """
 
     def __init__(self, viewport_width: int, viewport_height: int, point_size: float = 1.0, *,
-                 ssaa: int = 1, threads: int = 0) -> None:
+                 ssaa: int = 1, threads: int = 0, backend: str = "cpu") -> None:
         if point_size != 1.0:
             raise ValueError("point_size: only 1.0 is supported")
-        super().__init__(viewport_width, viewport_height, ssaa, threads)
+        super().__init__(viewport_width, viewport_height, ssaa, threads, backend)
 
     def render(self, scene: Scene, flags: Union[RenderFlags, int] = RenderFlags.NONE) -> Any:
         """Renders `scene` from its main camera.

@@ -13,6 +13,7 @@
 // that was asked for, and the renderer still works for the next frame.
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -229,10 +230,17 @@ void size(Bytes& in, int& w, int& h, int& ssaa) {
   while (ssaa > 1 && int64_t(w) * h * ssaa * ssaa > kMaxSamples) --ssaa;
 }
 
+// VELOCITY_BACKEND=gpu replays the inputs on the GPU backend (tests/gpu).
+BackendChoice backend() {
+  const char* s = std::getenv("VELOCITY_BACKEND");
+  return s && parse_backend(s) ? *parse_backend(s) : BackendChoice::Cpu;
+}
+
 void run(Bytes& in) {
   int w, h, ssaa;
   size(in, w, h, ssaa);
-  Renderer r(w, h);
+  static const BackendChoice choice = backend();
+  Renderer r(w, h, choice);
   RenderOptions& o = r.options;
   o.depth_mode = in.chance(50) ? DepthMode::Painter : DepthMode::ZBuffer;
   o.cull_back_faces = in.flag();

@@ -1,0 +1,842 @@
+// The GPU backend (velocity/backend.hpp) on OpenGL 3.3 core: the same frame as the CPU
+// pipeline (src/frame.cpp), drawn by the GPU into a framebuffer object of the sample
+// size (output x ssaa), then read back whole into a CPU Framebuffer, so that every
+// read-back (colour, the ssaa box resolve, view and window depth, object ids) is the CPU
+// pipeline's own code on the same samples.
+//
+// What is uploaded when (docs/gpu.md): a mesh the first frame it is drawn, again only
+// when its contents change (a 64-bit fingerprint of every array it has, computed at each
+// draw); a texture and its mip levels the first frame it is read, again when its texels
+// change (the same fingerprint); lights and camera every frame (uniforms). Entries not
+// used for kEvictFrames frames, and the least recently used ones beyond kCacheBudget
+// bytes, are deleted.
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "context.hpp"
+#include "framebuffer/framebuffer.hpp"
+#include "framebuffer/read_back.hpp"
+#include "framebuffer/resolve.hpp"
+#include "geometry/normals.hpp"
+#include "geometry/object_cull.hpp"
+#include "gpu_backend.hpp"
+#include "shaders.hpp"
+#include "shading/lighting.hpp"
+#include "velocity/error.hpp"
+
+namespace velocity::gpu {
+
+namespace {
+
+constexpr uint64_t kEvictFrames = 120;
+constexpr size_t kCacheBudget = size_t(1) << 30;  // 1 GiB of meshes and textures
+
+// A 64-bit fingerprint of bytes: four independent multiply-xor lanes (memory speed).
+struct Fingerprint {
+  uint64_t lane[4] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull, 0x27D4EB2F165667C5ull};
+  void add(const void* data, size_t bytes) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    size_t i = 0;
+    for (; i + 32 <= bytes; i += 32)
+      for (int k = 0; k < 4; ++k) {
+        uint64_t w;
+        std::memcpy(&w, p + i + 8 * k, 8);
+        lane[k] = (lane[k] ^ w) * 0x100000001B3ull;
+        lane[k] ^= lane[k] >> 29;
+      }
+    uint64_t tail = bytes;
+    for (; i < bytes; ++i) tail = (tail ^ p[i]) * 0x100000001B3ull;
+    lane[0] = (lane[0] ^ tail) * 0x9E3779B97F4A7C15ull;
+  }
+  template <class T>
+  void add(const std::vector<T>& v) {
+    const uint64_t n = v.size();
+    add(&n, sizeof n);
+    if (!v.empty()) add(v.data(), v.size() * sizeof(T));
+  }
+  uint64_t value() const { return lane[0] ^ (lane[1] * 3) ^ (lane[2] * 5) ^ (lane[3] * 7); }
+};
+
+uint64_t fingerprint(const Mesh& m) {
+  Fingerprint f;
+  f.add(m.positions), f.add(m.normals), f.add(m.uvs), f.add(m.colors), f.add(m.triangles);
+  f.add(m.face_colors), f.add(m.face_materials);
+  const uint64_t materials = m.materials.size();
+  f.add(&materials, sizeof materials);
+  return f.value();
+}
+
+uint64_t fingerprint(const Texture& t) {
+  Fingerprint f;
+  for (const Texture::Level& l : t.levels()) f.add(&l.width, sizeof l.width), f.add(&l.height, sizeof l.height), f.add(l.texels);
+  return f.value();
+}
+
+void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
+
+// The GL error, if any, as velocity::Error; an allocation the device refused names what.
+void check_gl(const char* what) {
+  GLenum e = glGetError(), first = e;
+  while (e != GL_NO_ERROR) e = glGetError();  // drain: GL may hold several
+  if (first == GL_OUT_OF_MEMORY) throw Error(std::string(what) + ": the GPU is out of memory");
+  if (first != GL_NO_ERROR) {
+    char s[64];
+    std::snprintf(s, sizeof s, ": OpenGL error 0x%04x", unsigned(first));
+    throw Error(std::string(what) + s);
+  }
+}
+
+}  // namespace
+
+struct GpuBackend::MeshEntry {
+  uint64_t fingerprint = 0, last_frame = 0;
+  size_t bytes = 0;
+  GLuint vao = 0, buffers[6] = {}, face_colors = 0;  // positions, normals, uvs, colours, indices, face colours
+  bool has_uvs = false, has_colors = false, has_face_colors = false;
+  // Faces reordered by material slot (triangle/mesh_job.cpp's slot_of): slot s draws
+  // faces [slot_begin[s], slot_begin[s + 1]); `face_of` maps back to the mesh's faces.
+  std::vector<uint32_t> slot_begin;
+  std::vector<uint32_t> face_of;
+};
+
+struct GpuBackend::TextureEntry {
+  uint64_t fingerprint = 0, last_frame = 0;
+  size_t bytes = 0;
+  GLuint texture = 0;
+};
+
+GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std::make_unique<Context>(hardware_only)) {
+  Current current(*context_);
+  glGenFramebuffers(1, &fbo_);
+  glGenRenderbuffers(3, renderbuffers_);
+  GLint max_side = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
+  max_side_ = std::min(int(max_side), kMaxFramebufferSide);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_);
+  check_gl("the GPU backend's set-up");
+  resize(width, height, 1);
+}
+
+const std::string& GpuBackend::description() const { return context_->description(); }
+
+GpuBackend::~GpuBackend() {
+  try {
+    Current current(*context_);
+    for (auto& [key, m] : meshes_) free(m);
+    for (auto& [key, t] : textures_) glDeleteTextures(1, &t.texture);
+    for (auto& [key, s] : samplers_) glDeleteSamplers(1, &s);
+    for (GLuint p : programs_)
+      if (p) glDeleteProgram(p);
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteRenderbuffers(3, renderbuffers_);
+    glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
+    for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
+    if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(5, batch_buffers_);
+  } catch (const Error&) {
+    // A context that cannot be made current any more: its objects go with it.
+  }
+}
+
+void GpuBackend::free(MeshEntry& m) {
+  glDeleteVertexArrays(1, &m.vao);
+  glDeleteBuffers(6, m.buffers);
+  glDeleteTextures(1, &m.face_colors);
+}
+
+void GpuBackend::resize(int w, int h, int k) {
+  if (k < 1 || k > 4) throw Error("super-sampling factor " + std::to_string(k) + " is out of range (1..4)");
+  if (w < 1 || h < 1 || w > kMaxFramebufferSide || h > kMaxFramebufferSide)
+    throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range (1.." +
+                std::to_string(kMaxFramebufferSide) + " a side)");
+  if (int64_t(w) * k > max_side_ || int64_t(h) * k > max_side_)
+    throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " with " + std::to_string(k) + "x" +
+                std::to_string(k) + " super-sampling needs a sample buffer over " + std::to_string(max_side_) +
+                " a side (the GPU's or the renderer's limit)");
+  if (w == width_ && h == height_ && k == ssaa_) return;
+  // The CPU copy first: when memory runs out nothing has changed.
+  samples_.resize(w * k, h * k);
+  Current current(*context_);
+  const int sw = w * k, sh = h * k;
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, sw, sh);
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, sw, sh);
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[2]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, renderbuffers_[1]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  check_gl("the GPU framebuffer");
+  if (status != GL_FRAMEBUFFER_COMPLETE) throw Error("the GPU framebuffer is incomplete at " + std::to_string(sw) + "x" + std::to_string(sh));
+  width_ = w, height_ = h, ssaa_ = k;
+}
+
+GLuint GpuBackend::program(bool affine, int primitive) {
+  GLuint& p = programs_[(affine ? 4 : 0) + primitive];
+  if (!p) p = build_mesh_program(affine, primitive);
+  return p;
+}
+
+GLint GpuBackend::uniform(GLuint program, const char* name) {
+  auto key = std::make_pair(program, std::string(name));
+  auto it = uniforms_.find(key);
+  if (it != uniforms_.end()) return it->second;
+  const GLint at = glGetUniformLocation(program, name);
+  uniforms_.emplace(std::move(key), at);
+  return at;
+}
+
+void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                             const RenderOptions& options) {
+  resize(width_, height_, options.ssaa);
+  options_ = options;
+  stats_ = {};
+  frame_++;
+  t0_ = std::chrono::steady_clock::now();
+  const int w = width_ * ssaa_, h = height_ * ssaa_;
+  view_ = camera.view();
+  projection_ = camera.projection_matrix(float(w) / float(h));
+  // Row 0 of the image at the top: the framebuffer is drawn upside down (y flipped,
+  // so front faces turn clockwise), and read back row 0 first.
+  Mat4 flip;
+  flip.m[1][1] = -1;
+  flipped_view_projection_ = flip * projection_ * view_;
+  view_projection_ = projection_ * view_;
+  shading::eye_lights(view_, lights, lights_);
+  if (lights_.directional.size() > size_t(kMaxLights) || lights_.point.size() > size_t(kMaxLights))
+    throw Error("the GPU backend takes at most " + std::to_string(kMaxLights) + " directional and " +
+                std::to_string(kMaxLights) + " point lights");
+  for (bool& u : lights_uploaded_) u = false;
+  painter_draws_.clear();
+
+  context_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  const GLenum outputs[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, outputs);
+  glViewport(0, 0, w, h);
+  glDisable(GL_SCISSOR_TEST), glDisable(GL_BLEND);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE), glDepthMask(GL_TRUE);
+  if (start.clear_color_buffer) {
+    const float c[4] = {start.color.x, start.color.y, start.color.z, start.color.w};
+    const GLuint zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, c);
+    glClearBufferuiv(GL_COLOR, 1, zero);
+  }
+  if (start.clear_depth_buffer) {
+    const float d = std::clamp(start.depth, 0.0f, 1.0f);
+    glClearBufferfv(GL_DEPTH, 0, &d);
+  }
+  glFrontFace(GL_CW);  // (the flip above)
+  if (options.depth_mode == DepthMode::Painter) {
+    glDisable(GL_DEPTH_TEST);
+  } else {
+    glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
+  }
+}
+
+GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
+  // Checked once a frame: a mesh stays unchanged until end_frame (Renderer::draw's rule),
+  // so its copies in the same frame cost no second pass over its bytes.
+  auto it = meshes_.find(&mesh);
+  if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
+  const uint64_t key = fingerprint(mesh);
+  if (it != meshes_.end() && it->second.fingerprint == key) {
+    it->second.last_frame = frame_;
+    return it->second;
+  }
+  if (it != meshes_.end()) free(it->second), cache_bytes_ -= it->second.bytes, meshes_.erase(it);
+  uploads_++;
+
+  MeshEntry m;
+  m.fingerprint = key, m.last_frame = frame_;
+  const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
+  // Faces by material slot, in mesh order within a slot.
+  const size_t slots = 1 + mesh.materials.size();
+  auto slot_of = [&](size_t f) -> uint32_t {
+    if (!mesh.face_materials.empty()) {
+      const uint32_t s = f < mesh.face_materials.size() ? mesh.face_materials[f] + 1 : 0;
+      return s < slots ? s : 0;
+    }
+    return mesh.materials.empty() ? 0 : 1;
+  };
+  m.slot_begin.assign(slots + 1, 0);
+  for (size_t f = 0; f < nt; ++f) m.slot_begin[slot_of(f) + 1]++;
+  for (size_t s = 0; s < slots; ++s) m.slot_begin[s + 1] += m.slot_begin[s];
+  m.face_of.resize(nt);
+  std::vector<uint32_t> next(m.slot_begin.begin(), m.slot_begin.end() - 1);
+  for (size_t f = 0; f < nt; ++f) m.face_of[next[slot_of(f)]++] = uint32_t(f);
+  std::vector<uint32_t> indices(nt * 3);
+  for (size_t i = 0; i < nt; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = mesh.triangles[m.face_of[i]].v[k];
+      indices[i * 3 + size_t(k)] = v < nv ? v : 0;
+    }
+
+  std::vector<Vec3> averaged;
+  const std::vector<Vec3>* normals = &mesh.normals;
+  if (mesh.normals.size() != nv) geometry::average_normals(mesh, averaged), normals = &averaged;
+
+  glGenVertexArrays(1, &m.vao);
+  glGenBuffers(6, m.buffers);
+  glBindVertexArray(m.vao);
+  auto attribute = [&](int slot, const void* data, size_t bytes, int components) {
+    glBindBuffer(GL_ARRAY_BUFFER, m.buffers[slot]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
+    glVertexAttribPointer(GLuint(slot), components, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(GLuint(slot));
+    m.bytes += bytes;
+  };
+  attribute(0, mesh.positions.data(), nv * sizeof(Vec3), 3);
+  attribute(1, normals->data(), nv * sizeof(Vec3), 3);
+  m.has_uvs = mesh.uvs.size() == nv && nv;
+  if (m.has_uvs) attribute(2, mesh.uvs.data(), nv * sizeof(Vec2), 2);
+  m.has_colors = mesh.colors.size() == nv && nv;
+  if (m.has_colors) attribute(3, mesh.colors.data(), nv * sizeof(Vec3), 3);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.buffers[4]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STATIC_DRAW);
+  m.bytes += indices.size() * 4;
+  glBindVertexArray(0);
+  m.has_face_colors = !mesh.face_colors.empty();
+  if (m.has_face_colors) {
+    std::vector<Vec3> colors(nt);
+    for (size_t i = 0; i < nt; ++i) colors[i] = m.face_of[i] < mesh.face_colors.size() ? mesh.face_colors[m.face_of[i]] : Vec3{};
+    glBindBuffer(GL_TEXTURE_BUFFER, m.buffers[5]);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(nt * sizeof(Vec3)), colors.data(), GL_STATIC_DRAW);
+    glGenTextures(1, &m.face_colors);
+    glBindTexture(GL_TEXTURE_BUFFER, m.face_colors);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, m.buffers[5]);
+    m.bytes += nt * sizeof(Vec3);
+  }
+  try {
+    check_gl(("uploading mesh '" + mesh.name + "' (" + std::to_string(m.bytes >> 20) + " MiB)").c_str());
+  } catch (const Error&) {
+    free(m);
+    throw;
+  }
+  cache_bytes_ += m.bytes;
+  return meshes_.emplace(&mesh, std::move(m)).first->second;
+}
+
+GLuint GpuBackend::texture(const Texture& t) {
+  auto it = textures_.find(&t);
+  if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
+  const uint64_t key = fingerprint(t);
+  if (it != textures_.end() && it->second.fingerprint == key) {
+    it->second.last_frame = frame_;
+    return it->second.texture;
+  }
+  if (it != textures_.end()) glDeleteTextures(1, &it->second.texture), cache_bytes_ -= it->second.bytes, textures_.erase(it);
+  if (t.width() > max_texture_ || t.height() > max_texture_)
+    throw Error("a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) +
+                " texture is larger than the GPU takes (" + std::to_string(max_texture_) + " a side)");
+  uploads_++;
+  TextureEntry e;
+  e.fingerprint = key, e.last_frame = frame_;
+  glGenTextures(1, &e.texture);
+  glBindTexture(GL_TEXTURE_2D, e.texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // The texture's own mip levels (Texture's box filter), not the driver's.
+  const auto& levels = t.levels();
+  for (size_t l = 0; l < levels.size(); ++l) {
+    glTexImage2D(GL_TEXTURE_2D, GLint(l), GL_RGBA8, levels[l].width, levels[l].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 levels[l].texels.data());
+    e.bytes += levels[l].texels.size() * 4;
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(levels.size()) - 1);
+  try {
+    check_gl("uploading a texture");
+  } catch (const Error&) {
+    glDeleteTextures(1, &e.texture);
+    throw;
+  }
+  cache_bytes_ += e.bytes;
+  return textures_.emplace(&t, e).first->second.texture;
+}
+
+GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
+  const int key = int(filter) * 8 + int(wrap);
+  auto it = samplers_.find(key);
+  if (it != samplers_.end()) return it->second;
+  GLuint s = 0;
+  glGenSamplers(1, &s);
+  const GLint mag = filter == Filter::Nearest ? GL_NEAREST : GL_LINEAR;
+  const GLint min = filter == Filter::Nearest ? GL_NEAREST : filter == Filter::Bilinear ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
+  const GLint w = wrap == Wrap::Repeat ? GL_REPEAT : wrap == Wrap::Clamp ? GL_CLAMP_TO_EDGE
+                  : wrap == Wrap::MirroredRepeat ? GL_MIRRORED_REPEAT : GL_CLAMP_TO_BORDER;
+  glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, mag), glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, min);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_S, w), glSamplerParameteri(s, GL_TEXTURE_WRAP_T, w);
+  samplers_.emplace(key, s);
+  return s;
+}
+
+void GpuBackend::upload_lights(GLuint p) {
+  const shading::EyeLights& l = lights_;
+  glUniform3f(uniform(p, "u_ambient"), l.ambient.x, l.ambient.y, l.ambient.z);
+  glUniform1i(uniform(p, "u_directional_count"), GLint(l.directional.size()));
+  glUniform1i(uniform(p, "u_point_count"), GLint(l.point.size()));
+  std::vector<Vec3> a, b, c;
+  for (const auto& d : l.directional) a.push_back(d.to_light), b.push_back(d.color);
+  if (!a.empty()) {
+    glUniform3fv(uniform(p, "u_directional_to_light"), GLsizei(a.size()), &a[0].x);
+    glUniform3fv(uniform(p, "u_directional_color"), GLsizei(b.size()), &b[0].x);
+  }
+  a.clear(), b.clear();
+  for (const auto& pl : l.point) a.push_back(pl.position), b.push_back(pl.color), c.push_back({pl.constant, pl.linear, pl.quadratic});
+  if (!a.empty()) {
+    glUniform3fv(uniform(p, "u_point_position"), GLsizei(a.size()), &a[0].x);
+    glUniform3fv(uniform(p, "u_point_color"), GLsizei(b.size()), &b[0].x);
+    glUniform3fv(uniform(p, "u_point_attenuation"), GLsizei(c.size()), &c[0].x);
+  }
+}
+
+void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) {
+  stats_.objects++;
+  stats_.triangles += mesh.triangles.size();
+  if (mesh.triangles.empty()) return;
+  context_->make_current();  // (a no-op unless another renderer's frame ran on this thread since)
+  if (geometry::ViewVolume(view_projection_).outside(mesh, world)) return void(stats_.objects_culled++);
+  MeshEntry& m = mesh_entry(mesh);
+  if (options_.depth_mode == DepthMode::Painter) {
+    painter_draws_.push_back({&mesh, &m, world, material, object_id});
+    return;
+  }
+  draw_mesh(mesh, m, world, material, object_id, nullptr);
+}
+
+// One mesh draw, every material slot; `faces`, in painter's mode, the sorted runs of
+// this draw's faces to draw instead of all (first: position in the frame's order, count).
+void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& world, const Material* override,
+                           uint32_t object_id, const std::vector<std::pair<uint32_t, uint32_t>>* runs) {
+  const Mat4 model_view = view_ * world;
+  const Mat4 mvp = flipped_view_projection_ * world, normals = normal_matrix(model_view);
+  glBindVertexArray(m.vao);
+  if (!m.has_uvs) glVertexAttrib2f(2, 0, 0);
+  if (!m.has_colors) glVertexAttrib3f(3, 0, 0, 0);
+  if (runs) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, painter_indices_);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_BUFFER, m.face_colors);
+  glActiveTexture(GL_TEXTURE3);
+  glBindTexture(GL_TEXTURE_BUFFER, order_texture_);
+
+  const size_t slots = m.slot_begin.size() - 1;
+  for (size_t slot = 0; slot < slots; ++slot) {
+    const uint32_t begin = m.slot_begin[slot], end = m.slot_begin[slot + 1];
+    if (begin == end) continue;
+    // The material as plan_mesh_draw reads it (geometry/draw_plan.cpp).
+    const Material& mat = override ? *override : slot == 0 ? default_material_ : mesh.materials[slot - 1];
+    const Shading shading = options_.shading.value_or(mat.shading);
+    const Texture* tex = options_.texture ? options_.texture.get() : mat.texture.get();
+    const Texture* env = options_.env_map ? options_.env_map.get() : mat.env_map.get();
+    const Filter filter = options_.filter.value_or(mat.filter);
+    const bool lines = shading == Shading::Wireframe, points = shading == Shading::Points;
+    const bool replace = tex && mat.texture_mode == TextureMode::Replace && !lines && !points;
+    const bool phong = !replace && (shading == Shading::Phong || shading == Shading::Pbr);
+    const int mode = replace || lines || points ? kSolid : shading == Shading::Flat ? kFlat : phong ? kPhong : kSmooth;
+    const bool lit = shading != Shading::Unlit;
+    const bool uv_from_env = !phong && !tex && env && !lines && !points;
+    const bool textured = !lines && !points && (tex || uv_from_env);
+    const bool cull = options_.cull_back_faces && !mat.two_sided;
+    int base = kMaterialColor;
+    if (!override && !mesh.face_colors.empty()) base = kFaceColor;
+    else if (!override && !mesh.colors.empty()) base = kVertexColor;
+    const Vec3 color = replace ? Vec3{1, 1, 1} : mat.color;
+
+    const bool direct = (mode == kSmooth || mode == kPhong) && base != kFaceColor;
+    const int primitive = lines ? 1 : points ? 2 : direct ? 3 : 0;
+    const GLuint p = program(options_.affine, primitive);
+    glUseProgram(p);
+    const int which = (options_.affine ? 4 : 0) + primitive;
+    if (!lights_uploaded_[which]) upload_lights(p), lights_uploaded_[which] = true;
+    upload_matrix(uniform(p, "u_mvp"), mvp);
+    upload_matrix(uniform(p, "u_model_view"), model_view);
+    upload_matrix(uniform(p, "u_normal_matrix"), normals);
+    glUniform1ui(uniform(p, "u_object_id"), object_id);
+    glUniform1i(uniform(p, "u_texture"), 0), glUniform1i(uniform(p, "u_env_map"), 1);
+    glUniform1i(uniform(p, "u_face_colors"), 2), glUniform1i(uniform(p, "u_order"), 3);
+    glUniform1i(uniform(p, "u_face_order"), runs ? 1 : 0);
+    glUniform1i(uniform(p, "u_mode"), mode);
+    glUniform1i(uniform(p, "u_base_source"), base);
+    glUniform1i(uniform(p, "u_lit"), lit);
+    glUniform1i(uniform(p, "u_vertex_light"), mode == kSmooth && lit);
+    glUniform1i(uniform(p, "u_unlit_vertex_colors"), shading == Shading::Unlit && !mesh.colors.empty() && mode == kSmooth);
+    glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
+    glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
+    glUniform1i(uniform(p, "u_cull"), cull);
+    glUniform2f(uniform(p, "u_viewport_size"), float(width_ * ssaa_), float(height_ * ssaa_));
+    glUniform1i(uniform(p, "u_textured"), textured);
+    glUniform1i(uniform(p, "u_env"), phong && env);
+    glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);
+    glUniform3f(uniform(p, "u_material_color"), color.x, color.y, color.z);
+    const shading::Specular s(mat.specular, mat.shininess);
+    glUniform3f(uniform(p, "u_specular"), s.ks, s.exponent, s.cutoff);
+    if (textured) {
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, texture(tex ? *tex : *env));
+      glBindSampler(0, sampler(filter, tex ? mat.wrap : Wrap::Clamp));  // environment maps: clamped
+    }
+    if (phong && env) {
+      glActiveTexture(GL_TEXTURE1);
+      glBindTexture(GL_TEXTURE_2D, texture(*env));
+      glBindSampler(1, sampler(filter, Wrap::Clamp));
+    }
+    // Triangles are culled by GL (front faces clockwise: the flip); edges and corners
+    // by the geometry shader.
+    if (cull && (primitive == 0 || primitive == 3)) glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
+    else glDisable(GL_CULL_FACE);
+    if (!runs) {
+      glUniform1i(uniform(p, "u_face_base"), GLint(begin));
+      glDrawElements(GL_TRIANGLES, GLsizei(end - begin) * 3, GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(uintptr_t(begin) * 12));
+      continue;
+    }
+    for (const auto& [first, count] : *runs) {
+      // A run is one slot's faces (the sort keeps slots apart): draw it with its slot.
+      const uint32_t face = painter_faces_[first];
+      if (face < begin || face >= end) continue;
+      glUniform1i(uniform(p, "u_face_base"), GLint(first));
+      glDrawElements(GL_TRIANGLES, GLsizei(count) * 3, GL_UNSIGNED_INT, reinterpret_cast<const void*>(uintptr_t(first) * 12));
+    }
+  }
+  if (runs) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.buffers[4]);  // the VAO's own again
+  glBindVertexArray(0);
+  stats_.triangles_rasterized += runs ? 0 : m.face_of.size();
+}
+
+// Painter's mode (raster/bins.cpp's bin_deferred): every face of the frame sorted by the
+// mean window depth of its corners, far to near, ties in submission order; drawn in
+// that order with the depth test off, in runs of one draw and material slot.
+void GpuBackend::draw_painter() {
+  struct Key {
+    float depth;
+    uint32_t draw, face;  // face: in the entry's slot order
+  };
+  std::vector<Key> keys;
+  for (uint32_t d = 0; d < painter_draws_.size(); ++d) {
+    const PainterDraw& pd = painter_draws_[d];
+    const Mesh& mesh = *pd.mesh;
+    const Mat4 mvp = view_projection_ * pd.world;
+    std::vector<float> z(mesh.positions.size());
+    for (size_t v = 0; v < z.size(); ++v) {
+      const Vec3 q = mesh.positions[v];
+      const Vec4 c = mvp * Vec4{q.x, q.y, q.z, 1.0f};
+      z[v] = c.w != 0 ? 0.5f * (c.z / c.w) + 0.5f : 1.0f;
+    }
+    for (uint32_t i = 0; i < pd.entry->face_of.size(); ++i) {
+      const Triangle& t = mesh.triangles[pd.entry->face_of[i]];
+      keys.push_back({(z[t.v[0]] + z[t.v[1]] + z[t.v[2]]) / 3.0f, d, i});
+    }
+  }
+  std::stable_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.depth > b.depth; });
+  // The frame's order: indices (3 a face) and, per position, the face in its entry.
+  std::vector<uint32_t> indices(keys.size() * 3);
+  painter_faces_.resize(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
+    const PainterDraw& pd = painter_draws_[keys[i].draw];
+    const Triangle& t = pd.mesh->triangles[pd.entry->face_of[keys[i].face]];
+    for (int k = 0; k < 3; ++k) indices[i * 3 + size_t(k)] = t.v[k] < pd.mesh->positions.size() ? t.v[k] : 0;
+    painter_faces_[i] = keys[i].face;
+  }
+  if (!painter_indices_) glGenBuffers(1, &painter_indices_), glGenBuffers(1, &order_buffer_), glGenTextures(1, &order_texture_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, painter_indices_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_TEXTURE_BUFFER, order_buffer_);
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(painter_faces_.size() * 4), painter_faces_.data(), GL_STREAM_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, order_texture_);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, order_buffer_);
+  // Runs of consecutive faces of one draw and one slot, each drawn by its draw in order.
+  size_t i = 0;
+  while (i < keys.size()) {
+    const uint32_t d = keys[i].draw;
+    const MeshEntry& m = *painter_draws_[d].entry;
+    auto slot = [&](uint32_t f) { return std::upper_bound(m.slot_begin.begin(), m.slot_begin.end(), f) - m.slot_begin.begin(); };
+    size_t j = i + 1;
+    while (j < keys.size() && keys[j].draw == d && slot(keys[j].face) == slot(keys[i].face)) ++j;
+    const std::vector<std::pair<uint32_t, uint32_t>> run = {{uint32_t(i), uint32_t(j - i)}};
+    const PainterDraw& pd = painter_draws_[d];
+    draw_mesh(*pd.mesh, m, pd.world, pd.material, pd.object_id, &run);
+    i = j;
+  }
+  for (const PainterDraw& pd : painter_draws_) stats_.triangles_rasterized += pd.entry->face_of.size();
+}
+
+namespace {
+
+GLenum gl_compare(CompareFunc f) { return GL_NEVER + GLenum(f); }  // the same order as GL's enums
+
+GLenum gl_factor(BlendFactor f) {
+  static const GLenum table[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
+                                 GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
+                                 GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE, GL_CONSTANT_COLOR,
+                                 GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA};
+  return table[size_t(f)];
+}
+
+GLenum gl_blend_op(BlendOp op) {
+  static const GLenum table[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+  return table[size_t(op)];
+}
+
+GLint gl_wrap(Wrap w) {
+  return w == Wrap::Repeat ? GL_REPEAT : w == Wrap::Clamp ? GL_CLAMP_TO_EDGE : w == Wrap::MirroredRepeat ? GL_MIRRORED_REPEAT
+                                                                                                    : GL_CLAMP_TO_BORDER;
+}
+
+}  // namespace
+
+// A batch of pre-transformed primitives (pGL's path), drawn at once in submission order
+// (painter's mode does not sort them). Vertex arrays are streamed per draw.
+void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
+  stats_.objects++;
+  if (primitives == 0) return;
+  context_->make_current();
+  const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
+  // The vertices of whole primitives whose indices are all in range (the rest are dropped).
+  batch_indices_.clear();
+  for (uint32_t p = 0; p < primitives; ++p) {
+    uint32_t v[3];
+    bool ok = true;
+    for (uint32_t i = 0; i < k; ++i) {
+      v[i] = batch.indices ? batch.indices[p * k + i] : p * k + i;
+      ok = ok && v[i] < batch.vertex_count;
+    }
+    if (ok) batch_indices_.insert(batch_indices_.end(), v, v + k);
+  }
+  if (batch_indices_.empty()) return;
+  if (k == 3) stats_.triangles += batch_indices_.size() / 3, stats_.triangles_rasterized += batch_indices_.size() / 3;
+  else if (k == 2) stats_.lines += batch_indices_.size() / 2;
+  else stats_.points += batch_indices_.size();
+
+  if (!batch_program_) {
+    batch_program_ = build_batch_program();
+    glGenVertexArrays(1, &batch_vao_);
+    glGenBuffers(5, batch_buffers_);
+  }
+  const GLuint p = batch_program_;
+  glUseProgram(p);
+  glBindVertexArray(batch_vao_);
+  const size_t n = batch.vertex_count;
+  auto stream = [&](GLuint index, const void* data, size_t bytes, int components, std::initializer_list<float> constant) {
+    if (!data) {
+      glDisableVertexAttribArray(index);
+      const float* c = constant.begin();
+      glVertexAttrib4f(index, c[0], c[1], c[2], c[3]);
+      return;
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, batch_buffers_[index]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, GL_STREAM_DRAW);
+    glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(index);
+  };
+  stream(0, batch.position, n * sizeof(Vec4), 4, {0, 0, 0, 1});
+  stream(1, batch.color, n * sizeof(Vec4), 4, {1, 1, 1, 1});
+  stream(2, batch.texcoord, n * sizeof(Vec4), 4, {0, 0, 0, 1});
+  stream(3, batch.fog, n * sizeof(float), 1, {0, 0, 0, 1});
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_buffers_[4]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(batch_indices_.size() * 4), batch_indices_.data(), GL_STREAM_DRAW);
+
+  // The viewport (rows from the top: the framebuffer is upside down, so GL's rows are
+  // the image's) and depth range, as plan_batch_draw bounds them.
+  const int fw = width_ * ssaa_, fh = height_ * ssaa_;
+  const Viewport& v = batch.viewport;
+  const int vw = v.width > 0 ? std::min(v.width, kMaxFramebufferSide) : fw;
+  const int vh = v.height > 0 ? std::min(v.height, kMaxFramebufferSide) : fh;
+  const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
+  glViewport(vx, vy, vw, vh);
+  glDepthRange(std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+
+  const TextureStage& t = state.texture;
+  glUniform1i(uniform(p, "u_textured"), t.texture != nullptr);
+  if (t.texture) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture(*t.texture));
+    const SamplerState& ss = t.sampler;
+    GLuint& sampler = batch_samplers_[{int(ss.mag), int(ss.min), int(ss.mip), int(ss.wrap_s), int(ss.wrap_t),
+                                       ss.border_color.x, ss.border_color.y, ss.border_color.z, ss.border_color.w}];
+    if (!sampler) {
+      glGenSamplers(1, &sampler);
+      const bool linear = ss.min == SamplerState::Texel::Linear;
+      const GLint min = ss.mip == SamplerState::Mip::None ? (linear ? GL_LINEAR : GL_NEAREST)
+                        : ss.mip == SamplerState::Mip::Nearest ? (linear ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST)
+                                                               : (linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR);
+      glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, min);
+      glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, ss.mag == SamplerState::Texel::Linear ? GL_LINEAR : GL_NEAREST);
+      glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(ss.wrap_s));
+      glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(ss.wrap_t));
+      glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, &ss.border_color.x);
+    }
+    glBindSampler(0, sampler);
+    glUniform1i(uniform(p, "u_texture"), 0);
+    glUniform1i(uniform(p, "u_format"), int(t.format));
+    glUniform1i(uniform(p, "u_env"), int(t.env));
+    glUniform4fv(uniform(p, "u_env_color"), 1, &t.env_color.x);
+  }
+  glUniform1i(uniform(p, "u_fog"), state.fog);
+  glUniform1i(uniform(p, "u_fog_mode"), int(state.fog_mode));
+  glUniform3f(uniform(p, "u_fog_params"), state.fog_start, state.fog_end, state.fog_density);
+  glUniform4fv(uniform(p, "u_fog_color"), 1, &state.fog_color.x);
+  glUniform1i(uniform(p, "u_alpha_test"), state.alpha_test);
+  glUniform1i(uniform(p, "u_alpha_func"), int(state.alpha_func));
+  glUniform1f(uniform(p, "u_alpha_ref"), state.alpha_ref);
+  glUniform1i(uniform(p, "u_offset"), state.polygon_offset);
+  glUniform2f(uniform(p, "u_offset_params"), state.offset_factor, state.offset_units);
+  glUniform1f(uniform(p, "u_point_size"), std::max(batch.point_size, 1.0f));
+
+  // GL's own per-fragment state: scissor, depth, blend, masks.
+  if (state.scissor) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(state.scissor_x0, state.scissor_y0, std::max(state.scissor_x1 - state.scissor_x0, 0),
+              std::max(state.scissor_y1 - state.scissor_y0, 0));
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
+  const bool painter = options_.depth_mode == DepthMode::Painter;
+  if (state.depth_test && !painter) glEnable(GL_DEPTH_TEST), glDepthFunc(gl_compare(state.depth_func));
+  else glDisable(GL_DEPTH_TEST);
+  glDepthMask(state.depth_write);
+  if (state.blend) {
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparate(gl_factor(state.blend_src_rgb), gl_factor(state.blend_dst_rgb), gl_factor(state.blend_src_alpha),
+                        gl_factor(state.blend_dst_alpha));
+    glBlendEquation(gl_blend_op(state.blend_op));
+    glBlendColor(state.blend_color.x, state.blend_color.y, state.blend_color.z, state.blend_color.w);
+  } else {
+    glDisablei(GL_BLEND, 0);
+  }
+  const uint8_t m = state.color_mask;
+  glColorMaski(0, m & 1, (m >> 1) & 1, (m >> 2) & 1, (m >> 3) & 1);
+  glColorMaski(1, m != 0, GL_FALSE, GL_FALSE, GL_FALSE);  // the id goes with the colour
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  if (k == 2) glLineWidth(std::max(batch.line_width, 1.0f));
+  const GLenum mode = k == 3 ? GL_TRIANGLES : k == 2 ? GL_LINES : GL_POINTS;
+  glDrawElements(mode, GLsizei(batch_indices_.size()), GL_UNSIGNED_INT, nullptr);
+  if (glGetError() == GL_INVALID_VALUE && k == 2)  // a core context may refuse wide lines
+    throw Error("the GPU backend's OpenGL context does not draw lines " + std::to_string(batch.line_width) + " pixels wide");
+
+  // Back to the mesh draws' state.
+  glViewport(0, 0, fw, fh);
+  glDepthRange(0, 1);
+  glDisable(GL_SCISSOR_TEST);
+  glDisablei(GL_BLEND, 0);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE), glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  if (painter) glDisable(GL_DEPTH_TEST);
+  else glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
+  glLineWidth(1);
+  glBindVertexArray(0);
+}
+
+void GpuBackend::clear(const ClearRequest& request) {
+  context_->make_current();
+  if (request.scissor) {
+    glEnable(GL_SCISSOR_TEST);  // (rows from the top: the framebuffer is upside down)
+    glScissor(request.x0, request.y0, std::max(request.x1 - request.x0, 0), std::max(request.y1 - request.y0, 0));
+  }
+  if (request.color) {
+    const uint8_t k = request.color_mask;
+    glColorMask(k & 1, (k >> 1) & 1, (k >> 2) & 1, (k >> 3) & 1);
+    const float c[4] = {request.color_value.x, request.color_value.y, request.color_value.z, request.color_value.w};
+    glClearBufferfv(GL_COLOR, 0, c);
+    const GLuint zero[4] = {0, 0, 0, 0};
+    glClearBufferuiv(GL_COLOR, 1, zero);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  if (request.depth && request.depth_write) {
+    const float d = std::clamp(request.depth_value, 0.0f, 1.0f);
+    glClearBufferfv(GL_DEPTH, 0, &d);
+  }
+  glDisable(GL_SCISSOR_TEST);
+}
+
+const FrameStats& GpuBackend::end_frame() {
+  context_->make_current();
+  if (!painter_draws_.empty()) draw_painter();
+  // Read back every sample into the CPU framebuffer (its tiled layout).
+  const int w = width_ * ssaa_, h = height_ * ssaa_;
+  samples_.keep_ids(options_.object_ids);
+  rows_.resize(size_t(w) * size_t(h));
+  depth_rows_.resize(size_t(w) * size_t(h));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
+  scatter(rows_.data(), samples_.color.data());
+  scatter(depth_rows_.data(), samples_.depth.data());
+  if (options_.object_ids) {
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, rows_.data());
+    scatter(rows_.data(), samples_.ids.data());
+  }
+  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
+  try {
+    check_gl("the GPU frame");
+    context_->check_lost("the GPU frame");
+  } catch (const Error&) {
+    context_->release();
+    throw;
+  }
+  evict();
+  context_->release();
+  stats_.tile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
+  return stats_;
+}
+
+// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks.
+template <class T>
+void GpuBackend::scatter(const T* rows, T* tiled) const {
+  const int w = samples_.width, h = samples_.height;
+  for (int y = 0; y < h; ++y) {
+    const T* row = rows + size_t(y) * size_t(w);
+    int x = 0;
+    for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
+    for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
+  }
+}
+
+// Drops what was not used for a while, and the least recently used beyond the budget.
+void GpuBackend::evict() {
+  for (auto it = meshes_.begin(); it != meshes_.end();) {
+    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > kCacheBudget && it->second.last_frame != frame_)) {
+      cache_bytes_ -= it->second.bytes;
+      free(it->second);
+      it = meshes_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  for (auto it = textures_.begin(); it != textures_.end();) {
+    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > kCacheBudget && it->second.last_frame != frame_)) {
+      cache_bytes_ -= it->second.bytes;
+      glDeleteTextures(1, &it->second.texture);
+      it = textures_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+Image GpuBackend::color_image() const { return resolve_color(samples_, ssaa_); }
+Image GpuBackend::depth_image() const { return resolve_depth(samples_, ssaa_); }
+void GpuBackend::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
+  velocity::read_color(samples_, ssaa_, nullptr, rgba, row_bytes, channels);
+}
+void GpuBackend::read_view_depth(float* out) const {
+  velocity::read_view_depth(samples_, ssaa_, nullptr, projection_, out);
+}
+void GpuBackend::read_window_depth(float* out) const { velocity::read_window_depth(samples_, ssaa_, nullptr, out); }
+std::vector<uint32_t> GpuBackend::object_ids() const { return resolve_object_ids(samples_, ssaa_); }
+size_t GpuBackend::framebuffer_bytes() const {
+  return samples_.color.size() * 4 + samples_.depth.size() * 4 + samples_.ids.size() * 4;
+}
+
+}  // namespace velocity::gpu

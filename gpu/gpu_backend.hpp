@@ -1,0 +1,113 @@
+// The GPU backend: velocity::Backend on OpenGL 3.3 core through EGL (gpu_backend.cpp).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "framebuffer/framebuffer.hpp"
+#include "shading/lighting.hpp"
+#include "velocity/backend.hpp"
+
+namespace velocity::gpu {
+
+class Context;
+
+class GpuBackend final : public Backend {
+ public:
+  // Throws velocity::Error (Context's) when no OpenGL 3.3 context can be made.
+  GpuBackend(int width, int height, bool hardware_only);
+  ~GpuBackend() override;
+
+  // What drew: the GL version and renderer, and the EGL device or platform.
+  const std::string& description() const;
+
+  void resize(int w, int h) override { resize(w, h, ssaa_); }
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  void begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
+                   const RenderOptions& options) override;
+  void draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) override;
+  void draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) override;
+  void clear(const ClearRequest& request) override;
+  const FrameStats& end_frame() override;
+  const FrameStats& stats() const override { return stats_; }
+
+  Image color_image() const override;
+  Image depth_image() const override;
+  void read_color(uint8_t* rgba, size_t row_bytes, int channels) const override;
+  void read_view_depth(float* out) const override;
+  void read_window_depth(float* out) const override;
+  std::vector<uint32_t> object_ids() const override;
+  size_t framebuffer_bytes() const override;
+
+  // Uploads so far (meshes and textures): a cached one is not uploaded again.
+  size_t uploads() const { return uploads_; }
+
+ private:
+  struct MeshEntry;
+  struct TextureEntry;
+  struct PainterDraw {
+    const Mesh* mesh;
+    const MeshEntry* entry;
+    Mat4 world;
+    const Material* material;
+    uint32_t object_id;
+  };
+
+  void resize(int w, int h, int k);
+  GLuint program(bool affine, int primitive);
+  GLint uniform(GLuint program, const char* name);
+  MeshEntry& mesh_entry(const Mesh& mesh);
+  GLuint texture(const Texture& t);
+  GLuint sampler(Filter filter, Wrap wrap);
+  void upload_lights(GLuint program);
+  void draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
+                 const std::vector<std::pair<uint32_t, uint32_t>>* runs);
+  void draw_painter();
+  void free(MeshEntry& m);
+  void evict();
+  template <class T>
+  void scatter(const T* rows, T* tiled) const;
+
+  std::unique_ptr<Context> context_;
+  int width_ = 0, height_ = 0, ssaa_ = 0;
+  int max_side_ = 0;
+  GLint max_texture_ = 0;
+  GLuint fbo_ = 0, renderbuffers_[3] = {};
+  GLuint programs_[8] = {};  // [affine * 4 + primitive]
+  std::map<std::pair<GLuint, std::string>, GLint> uniforms_;
+  std::unordered_map<const Mesh*, MeshEntry> meshes_;
+  std::unordered_map<const Texture*, TextureEntry> textures_;
+  std::unordered_map<int, GLuint> samplers_;
+  size_t cache_bytes_ = 0, uploads_ = 0;
+  uint64_t frame_ = 0;
+
+  RenderOptions options_;
+  Mat4 view_, projection_, view_projection_, flipped_view_projection_;
+  shading::EyeLights lights_;
+  bool lights_uploaded_[8] = {};
+  Material default_material_;
+  std::vector<PainterDraw> painter_draws_;
+  std::vector<uint32_t> painter_faces_;
+  GLuint painter_indices_ = 0, order_buffer_ = 0, order_texture_ = 0;
+  // pGL's path: its program, streamed arrays and samplers (by SamplerState).
+  GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[5] = {};
+  std::vector<uint32_t> batch_indices_;
+  std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
+  FrameStats stats_;
+  std::chrono::steady_clock::time_point t0_;
+
+  Framebuffer samples_;  // the last frame, read back
+  std::vector<uint32_t> rows_;
+  std::vector<float> depth_rows_;
+};
+
+}  // namespace velocity::gpu

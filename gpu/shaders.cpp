@@ -1,0 +1,503 @@
+// The GLSL sources. Each block says which CPU code it mirrors.
+#include "shaders.hpp"
+
+#include <vector>
+
+#include "velocity/error.hpp"
+
+namespace velocity::gpu {
+
+// shading/lighting.hpp: light() with detail::add_light<Highlight::Phong> and
+// detail::point_light, and apply(). Same terms, same order, same cut-off of the
+// highlight below Specular::cutoff, same attenuation floor (1e-6).
+const char* const kLightingGlsl = R"(
+uniform vec3 u_ambient;
+uniform int u_directional_count;
+uniform vec3 u_directional_to_light[16];
+uniform vec3 u_directional_color[16];
+uniform int u_point_count;
+uniform vec3 u_point_position[16];
+uniform vec3 u_point_color[16];
+uniform vec3 u_point_attenuation[16];  // constant, linear, quadratic
+uniform vec3 u_specular;               // ks, exponent, cutoff
+
+struct Terms { vec3 diffuse; vec3 specular; };
+
+void add_light(inout Terms t, vec3 n, vec3 to_light, vec3 color, vec3 to_eye) {
+  float nl = dot(n, to_light);
+  t.diffuse += color * max(nl, 0.0);
+  if (u_specular.x > 0.0) {
+    vec3 r = n * (2.0 * nl) - to_light;
+    float rv = dot(r, to_eye);
+    if (rv > u_specular.z) t.specular += color * (u_specular.x * pow(rv, u_specular.y));
+  }
+}
+
+Terms light(vec3 n, vec3 p) {
+  Terms t = Terms(u_ambient, vec3(0.0));
+  vec3 to_eye = u_specular.x > 0.0 ? normalize(-p) : vec3(0.0);
+  for (int i = 0; i < u_directional_count; ++i)
+    add_light(t, n, u_directional_to_light[i], u_directional_color[i], to_eye);
+  for (int i = 0; i < u_point_count; ++i) {
+    vec3 v = u_point_position[i] - p;
+    float dist = length(v);
+    vec3 a = u_point_attenuation[i];
+    float att = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-6);
+    vec3 to_light = dist > 0.0 ? v / dist : n;
+    add_light(t, n, to_light, u_point_color[i] * att, to_eye);
+  }
+  return t;
+}
+
+vec3 apply(Terms t, vec3 base) { return base * t.diffuse + t.specular; }
+)";
+
+namespace {
+
+const char* const kVersion = "#version 330 core\n";
+
+// The vertex stage (geometry/vertex_stage.cpp): clip position, eye position and unit
+// eye normal; for Gouraud, the light terms of both sides (the back's for two-sided).
+const char* const kMeshVertex = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_color;
+uniform mat4 u_mvp;
+uniform mat4 u_model_view;
+uniform mat4 u_normal_matrix;
+uniform bool u_vertex_light;
+uniform bool u_two_sided;
+out V {
+  vec3 object_position;
+  vec3 eye;
+  vec3 normal;
+  vec2 uv;
+  vec3 color;
+  vec3 diffuse;
+  vec3 specular;
+  vec3 back_diffuse;
+  vec3 back_specular;
+} v;
+void main() {
+  gl_Position = u_mvp * vec4(a_position, 1.0);
+  v.object_position = a_position;
+  v.eye = (u_model_view * vec4(a_position, 1.0)).xyz;
+  v.normal = normalize((u_normal_matrix * vec4(a_normal, 0.0)).xyz);
+  v.uv = a_uv;
+  v.color = a_color;
+  v.diffuse = vec3(0.0), v.specular = vec3(0.0), v.back_diffuse = vec3(0.0), v.back_specular = vec3(0.0);
+  if (u_vertex_light) {
+    Terms t = light(v.normal, v.eye);
+    v.diffuse = t.diffuse, v.specular = t.specular;
+    if (u_two_sided) {
+      t = light(-v.normal, v.eye);
+      v.back_diffuse = t.diffuse, v.back_specular = t.specular;
+    }
+  }
+}
+)";
+
+// Gouraud and Phong without per-face colours need nothing per face: this vertex shader
+// does the geometry shader's per-corner work itself (the same lines), and the program
+// has no geometry stage, which software drivers run far slower.
+const char* const kMeshVertexDirect = R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_color;
+uniform mat4 u_mvp;
+uniform mat4 u_model_view;
+uniform mat4 u_normal_matrix;
+uniform int u_mode;
+uniform int u_base_source;
+uniform bool u_lit;
+uniform bool u_unlit_vertex_colors;
+uniform bool u_uv_from_env;
+uniform bool u_two_sided;
+uniform vec3 u_material_color;
+out G {
+  INTERP vec3 eye;
+  INTERP vec3 normal;
+  INTERP vec2 uv;
+  INTERP vec3 front;
+  INTERP vec3 back;
+} g;
+flat out vec3 g_flat_front;
+flat out vec3 g_flat_back;
+void main() {
+  gl_Position = u_mvp * vec4(a_position, 1.0);
+  g.eye = (u_model_view * vec4(a_position, 1.0)).xyz;
+  g.normal = normalize((u_normal_matrix * vec4(a_normal, 0.0)).xyz);
+  vec3 base = u_unlit_vertex_colors || u_base_source == 2 ? a_color : u_material_color;
+  g.front = g.back = base;
+  if (u_mode == 1 && u_lit) {
+    Terms t = light(g.normal, g.eye);
+    g.front = clamp(base * t.diffuse + t.specular, 0.0, 1.0);
+    if (u_two_sided) {
+      t = light(-g.normal, g.eye);
+      g.back = clamp(base * t.diffuse + t.specular, 0.0, 1.0);
+    }
+  }
+  g.uv = u_uv_from_env ? vec2(0.5) + 0.5 * g.normal.xy : a_uv;
+  g_flat_front = g_flat_back = vec3(1.0);
+}
+)";
+
+// The triangle stage (triangle/mesh_job.cpp: corner, flat_color): per face, the base
+// colour (material, face or vertex colours), the flat colour lit by the face normal at
+// the centroid, Gouraud's clamped corner colours, the per-vertex sphere-map uv.
+const char* const kMeshGeometry = R"(
+layout(triangles) in;
+// PRIMITIVE 0: the triangle; 1: its edges (Shading::Wireframe); 2: its corners (Points).
+// Edges and corners are made here, not by glPolygonMode (llvmpipe draws a geometry
+// shader's triangles in line mode wrongly), so back faces are culled here for them.
+#if PRIMITIVE == 0
+layout(triangle_strip, max_vertices = 3) out;
+#elif PRIMITIVE == 1
+layout(triangle_strip, max_vertices = 12) out;
+uniform vec2 u_viewport_size;
+#else
+layout(points, max_vertices = 3) out;
+#endif
+uniform bool u_cull;
+in V {
+  vec3 object_position;
+  vec3 eye;
+  vec3 normal;
+  vec2 uv;
+  vec3 color;
+  vec3 diffuse;
+  vec3 specular;
+  vec3 back_diffuse;
+  vec3 back_specular;
+} v[];
+uniform int u_mode;
+uniform int u_base_source;
+uniform bool u_lit;
+uniform bool u_unlit_vertex_colors;  // Shading::Unlit with vertex colours: they win
+uniform bool u_uv_from_env;
+uniform bool u_two_sided;
+uniform vec3 u_material_color;
+uniform int u_face_base;
+uniform bool u_face_order;           // painter's mode: faces drawn in u_order's order
+uniform samplerBuffer u_face_colors;
+uniform isamplerBuffer u_order;
+uniform mat4 u_model_view;
+uniform mat4 u_normal_matrix;
+out G {
+  INTERP vec3 eye;
+  INTERP vec3 normal;
+  INTERP vec2 uv;
+  INTERP vec3 front;
+  INTERP vec3 back;
+} g;
+flat out vec3 g_flat_front;
+flat out vec3 g_flat_back;
+
+vec3 base_color(int i, int face) {
+  if (u_base_source == 1) return texelFetch(u_face_colors, face).rgb;
+  if (u_base_source == 2) return v[i].color;
+  return u_material_color;
+}
+
+void main() {
+  int face = u_face_base + gl_PrimitiveIDIn;
+  if (u_face_order) face = texelFetch(u_order, face).r;
+  vec3 flat_front = vec3(1.0), flat_back = vec3(1.0);
+  if (u_mode == 0) {
+    vec3 base = u_base_source == 2 ? (v[0].color + v[1].color + v[2].color) / 3.0 : base_color(0, face);
+    vec3 n = normalize((u_normal_matrix * vec4(normalize(cross(v[1].object_position - v[0].object_position, v[2].object_position - v[0].object_position)), 0.0)).xyz);
+    vec3 center = (u_model_view * vec4((v[0].object_position + v[1].object_position + v[2].object_position) / 3.0, 1.0)).xyz;
+    flat_front = apply(light(n, center), base);
+    if (u_two_sided) flat_back = apply(light(-n, center), base);
+  } else if (u_mode == 3) {
+    flat_front = flat_back = u_material_color;
+  }
+#if PRIMITIVE != 0
+  // Facing as the CPU's homogeneous test (triangle/cull.hpp), in the flipped frame.
+  vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position, p2 = gl_in[2].gl_Position;
+  float det = determinant(mat3(p0.xyw, p1.xyw, p2.xyw));
+  if (u_cull && det >= 0.0) return;
+#endif
+#if PRIMITIVE == 1
+  // Each edge as the CPU draws a line (raster/coverage-inl.h, line_blocks): the pixels
+  // whose centres lie between the ends along the major axis and within half a pixel of
+  // the segment across it, i.e. a parallelogram one pixel high (x-major) or wide, cut
+  // at the near plane first (triangle/clip.cpp's clip_line).
+  for (int k = 0; k < 3; ++k) {
+    vec4 p = gl_in[k].gl_Position, q = gl_in[(k + 1) % 3].gl_Position;
+    float dp = p.z + p.w, dq = q.z + q.w;
+    if (dp < 0.0 && dq < 0.0) continue;
+    if (dp < 0.0) p = mix(p, q, dp / (dp - dq));
+    if (dq < 0.0) q = mix(q, p, dq / (dq - dp));
+    vec2 a = p.xy / p.w * 0.5 * u_viewport_size, b = q.xy / q.w * 0.5 * u_viewport_size;
+    vec2 d = b - a;
+    if (dot(d, d) == 0.0) continue;
+    vec2 across = abs(d.x) >= abs(d.y) ? vec2(0.0, 1.0 / u_viewport_size.y) : vec2(1.0 / u_viewport_size.x, 0.0);
+    // [line - 1/2, line + 1/2) across, moved by one 1/256-pixel snapping step (GL snaps as the
+    // CPU does), so
+    // that a centre exactly half a pixel away goes as the CPU's floor() sends it.
+    vec2 nudge = across * (1.0 / 128.0);
+    vec4 corners[4] = vec4[4](p + vec4((nudge - across) * p.w, 0.0, 0.0), p + vec4((nudge + across) * p.w, 0.0, 0.0),
+                              q + vec4((nudge - across) * q.w, 0.0, 0.0), q + vec4((nudge + across) * q.w, 0.0, 0.0));
+    for (int c = 0; c < 4; ++c) {
+      g.front = g.back = u_material_color;
+      g.eye = vec3(0.0), g.normal = vec3(0.0, 0.0, 1.0), g.uv = vec2(0.0);
+      g_flat_front = flat_front, g_flat_back = flat_back;
+      gl_Position = corners[c];
+      EmitVertex();
+    }
+    EndPrimitive();
+  }
+  return;
+#endif
+  for (int i = 0; i < 3; ++i) {
+    vec3 base = u_unlit_vertex_colors ? v[i].color : base_color(i, face);
+    g.front = g.back = base;
+    if (u_mode == 1 && u_lit) {
+      g.front = clamp(base * v[i].diffuse + v[i].specular, 0.0, 1.0);
+      g.back = clamp(base * v[i].back_diffuse + v[i].back_specular, 0.0, 1.0);
+    }
+    g.eye = v[i].eye;
+    g.normal = v[i].normal;
+    g.uv = u_uv_from_env ? vec2(0.5) + 0.5 * v[i].normal.xy : v[i].uv;
+    g_flat_front = flat_front, g_flat_back = flat_back;
+    gl_Position = gl_in[i].gl_Position;
+    EmitVertex();
+#if PRIMITIVE == 2
+    EndPrimitive();
+#endif
+  }
+#if PRIMITIVE == 0
+  EndPrimitive();
+#endif
+}
+)";
+
+// The pixel kernels (raster/shade_mesh-inl.h): Flat, FlatTex, Smooth, SmoothTex and
+// the Phong family, and the object id of the draw.
+const char* const kMeshFragment = R"(
+in G {
+  INTERP vec3 eye;
+  INTERP vec3 normal;
+  INTERP vec2 uv;
+  INTERP vec3 front;
+  INTERP vec3 back;
+} g;
+flat in vec3 g_flat_front;
+flat in vec3 g_flat_back;
+uniform int u_mode;
+uniform bool u_two_sided;
+uniform bool u_textured;
+uniform bool u_env;
+uniform bool u_uv_from_env;
+uniform float u_env_mix;
+uniform sampler2D u_texture;
+uniform sampler2D u_env_map;
+uniform uint u_object_id;
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out uint o_id;
+void main() {
+  bool back = u_two_sided && !gl_FrontFacing;
+  vec3 c;
+  if (u_mode == 0 || u_mode == 3) {
+    c = back ? g_flat_back : g_flat_front;
+    if (u_textured) c = clamp(c, 0.0, 1.0) * texture(u_texture, g.uv).rgb;  // the flat colour is packed first
+  } else if (u_mode == 1) {
+    c = back ? g.back : g.front;
+    if (u_textured) c *= texture(u_texture, g.uv).rgb;
+  } else {
+    vec3 base = g.front;
+    vec3 n = normalize(g.normal);
+    if (back) n = -n;
+    if (u_textured && !u_uv_from_env) base *= texture(u_texture, g.uv).rgb;
+    if (u_env) base = mix(base, texture(u_env_map, vec2(0.5) + 0.5 * n.xy).rgb, u_env_mix);
+    c = apply(light(n, g.eye), base);
+  }
+  o_color = vec4(clamp(c, 0.0, 1.0), 1.0);
+  o_id = u_object_id;
+}
+)";
+
+GLuint compile(GLenum type, const std::string& source) {
+  GLuint s = glCreateShader(type);
+  const char* text = source.c_str();
+  glShaderSource(s, 1, &text, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint n = 0;
+    glGetShaderiv(s, GL_INFO_LOG_LENGTH, &n);
+    std::vector<char> log(size_t(std::max(n, 1)));
+    glGetShaderInfoLog(s, GLsizei(log.size()), nullptr, log.data());
+    glDeleteShader(s);
+    throw Error(std::string("the GPU backend's ") + (type == GL_VERTEX_SHADER ? "vertex" : type == GL_GEOMETRY_SHADER ? "geometry" : "fragment") + " shader did not compile: " + log.data());
+  }
+  return s;
+}
+
+GLuint link(std::initializer_list<GLuint> shaders, const char* const* feedback = nullptr, int feedback_count = 0) {
+  GLuint p = glCreateProgram();
+  for (GLuint s : shaders) glAttachShader(p, s);
+  if (feedback) glTransformFeedbackVaryings(p, feedback_count, feedback, GL_SEPARATE_ATTRIBS);
+  glLinkProgram(p);
+  for (GLuint s : shaders) glDetachShader(p, s), glDeleteShader(s);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint n = 0;
+    glGetProgramiv(p, GL_INFO_LOG_LENGTH, &n);
+    std::vector<char> log(size_t(std::max(n, 1)));
+    glGetProgramInfoLog(p, GLsizei(log.size()), nullptr, log.data());
+    glDeleteProgram(p);
+    throw Error(std::string("the GPU backend's program did not link: ") + log.data());
+  }
+  return p;
+}
+
+}  // namespace
+
+GLuint build_program(const std::string& vertex, const std::string& geometry, const std::string& fragment) {
+  if (geometry.empty()) return link({compile(GL_VERTEX_SHADER, vertex), compile(GL_FRAGMENT_SHADER, fragment)});
+  return link({compile(GL_VERTEX_SHADER, vertex), compile(GL_GEOMETRY_SHADER, geometry),
+               compile(GL_FRAGMENT_SHADER, fragment)});
+}
+
+GLuint build_mesh_program(bool affine, int primitive) {
+  const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") +
+                           "\n#define PRIMITIVE " + std::to_string(primitive) + "\n";
+  if (primitive == 3) return build_program(head + kLightingGlsl + kMeshVertexDirect, "", head + kLightingGlsl + kMeshFragment);
+  return build_program(head + kLightingGlsl + kMeshVertex, head + kLightingGlsl + kMeshGeometry,
+                       head + kLightingGlsl + kMeshFragment);
+}
+
+// Pre-transformed primitives with OpenGL 1.x's per-fragment state (primitives.hpp, the
+// CPU's raster/shade_fixed-inl.h): texture environment, fog, alpha test in that order;
+// scissor, depth, blend and the colour mask are GL's own state. Clip-space y is negated
+// as the mesh program's projection is (the image is drawn upside down).
+const char* const kBatchVertex = R"(
+layout(location = 0) in vec4 a_position;
+layout(location = 1) in vec4 a_color;
+layout(location = 2) in vec4 a_texcoord;
+layout(location = 3) in float a_fog;
+uniform float u_point_size;
+out vec4 v_color;
+out vec3 v_texcoord;  // s, t, q: interpolated perspective-correct, divided per pixel
+out float v_fog;
+void main() {
+  gl_Position = vec4(a_position.x, -a_position.y, a_position.z, a_position.w);
+  gl_PointSize = u_point_size;
+  v_color = a_color;
+  v_texcoord = vec3(a_texcoord.x, a_texcoord.y, a_texcoord.w);
+  v_fog = a_fog;
+}
+)";
+
+const char* const kBatchFragment = R"(
+in vec4 v_color;
+in vec3 v_texcoord;
+in float v_fog;
+uniform bool u_textured;
+uniform int u_format;  // TexFormat: 0 RGBA, 1 RGB, 2 L, 3 LA, 4 A, 5 I
+uniform int u_env;     // TexEnvMode: 0 modulate, 1 replace, 2 decal, 3 blend, 4 add
+uniform vec4 u_env_color;
+uniform sampler2D u_texture;
+uniform bool u_fog;
+uniform int u_fog_mode;   // FogMode: 0 linear, 1 exp, 2 exp2
+uniform vec3 u_fog_params;  // start, end, density
+uniform vec4 u_fog_color;
+uniform bool u_alpha_test;
+uniform int u_alpha_func;  // CompareFunc
+uniform float u_alpha_ref;
+uniform bool u_offset;     // polygon offset, as the CPU applies it (PixelState)
+uniform vec2 u_offset_params;  // factor, units
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out uint o_id;
+
+bool compare(int f, float a, float b) {
+  if (f == 0) return false;
+  if (f == 1) return a < b;
+  if (f == 2) return a == b;
+  if (f == 3) return a <= b;
+  if (f == 4) return a > b;
+  if (f == 5) return a != b;
+  if (f == 6) return a >= b;
+  return true;
+}
+
+// OpenGL 1.x's table of texture functions (GL 1.5 table 3.22) by base format.
+vec4 environment(vec4 f, vec4 t) {
+  bool has_color = u_format != 4, has_alpha = u_format == 0 || u_format == 3 || u_format == 4;
+  if (u_format == 5) {  // intensity: I in every channel
+    if (u_env == 0) return f * t.r;
+    if (u_env == 1) return vec4(t.r);
+    if (u_env == 3) return f * (1.0 - t.r) + u_env_color * t.r;
+    if (u_env == 4) return clamp(f + vec4(t.r), 0.0, 1.0);
+    return f;
+  }
+  vec3 c = f.rgb;
+  float a = f.a;
+  if (u_env == 0) {
+    if (has_color) c = f.rgb * t.rgb;
+    if (has_alpha) a = f.a * t.a;
+  } else if (u_env == 1) {
+    if (has_color) c = t.rgb;
+    if (has_alpha) a = t.a;
+  } else if (u_env == 2) {
+    if (u_format == 0) c = mix(f.rgb, t.rgb, t.a);
+    else if (u_format == 1) c = t.rgb;  // (undefined for the other formats: left as it is, as Mesa and the CPU)
+  } else if (u_env == 3) {
+    if (has_color) c = f.rgb * (1.0 - t.rgb) + u_env_color.rgb * t.rgb;
+    if (has_alpha) a = f.a * t.a;
+  } else if (u_env == 4) {
+    if (has_color) c = clamp(f.rgb + t.rgb, 0.0, 1.0);
+    if (has_alpha) a = f.a * t.a;
+  }
+  return vec4(c, a);
+}
+
+void main() {
+  vec4 c = clamp(v_color, 0.0, 1.0);
+  if (u_textured) c = environment(c, texture(u_texture, v_texcoord.xy / v_texcoord.z));
+  if (u_fog) {
+    float z = v_fog, f;
+    if (u_fog_mode == 0) f = (u_fog_params.y - z) / (u_fog_params.y - u_fog_params.x);
+    else if (u_fog_mode == 1) f = exp(-u_fog_params.z * z);
+    else f = exp(-(u_fog_params.z * z) * (u_fog_params.z * z));
+    f = clamp(f, 0.0, 1.0);
+    c.rgb = f * c.rgb + (1.0 - f) * u_fog_color.rgb;
+  }
+  if (u_alpha_test && !compare(u_alpha_func, c.a, u_alpha_ref)) discard;
+  gl_FragDepth = gl_FragCoord.z;
+  if (u_offset) {
+    float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
+    gl_FragDepth = clamp(gl_FragCoord.z + u_offset_params.x * slope + u_offset_params.y * exp2(-24.0), 0.0, 1.0);
+  }
+  o_color = c;
+  o_id = 0u;
+}
+)";
+
+GLuint build_batch_program() {
+  return build_program(std::string(kVersion) + kBatchVertex, "", std::string(kVersion) + kBatchFragment);
+}
+
+GLuint build_lighting_test_program() {
+  const std::string vs = std::string(kVersion) + kLightingGlsl + R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+out vec3 o_diffuse;
+out vec3 o_specular;
+void main() {
+  Terms t = light(a_normal, a_position);
+  o_diffuse = t.diffuse, o_specular = t.specular;
+  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+}
+)";
+  static const char* const outputs[] = {"o_diffuse", "o_specular"};
+  return link({compile(GL_VERTEX_SHADER, vs)}, outputs, 2);
+}
+
+}  // namespace velocity::gpu

@@ -1,0 +1,525 @@
+// The GPU backend against the CPU pipeline, on whatever OpenGL EGL offers (Mesa's
+// llvmpipe through the surfaceless platform on the project's machines): every golden
+// scene on both backends, compared by PSNR; object ids, depth, super-sampling, painter's
+// mode, per-face colours and materials, vertex colours, two-sided faces; the caches; the
+// GLSL lighting against the scalar model; the choice of backend and its errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <tuple>
+
+#include "context.hpp"
+#include "gpu_backend.hpp"
+#include "reference/compare.hpp"
+#include "reference/reference.hpp"
+#include "shaders.hpp"
+#include "shading/lighting.hpp"
+#include "velocity/bench_scene.hpp"
+#include "velocity/error.hpp"
+#include "velocity/load.hpp"
+#include "velocity/renderer.hpp"
+#include "velocity/view_setup.hpp"
+
+namespace {
+
+using namespace velocity;
+
+vref::Image to_vref(const Image& img) { return {img.width, img.height, img.pixels}; }
+
+struct ParityCase {
+  std::string mesh;
+  int width, height;
+  std::string shade;
+  double min_psnr;
+  int ssaa = 1;
+  int frame = 0, frames = 1;
+};
+
+std::string case_name(const ParityCase& c) {
+  std::string m = c.mesh.rfind("sphere:", 0) == 0 ? "sphere" + c.mesh.substr(7) : std::filesystem::path(c.mesh).stem().string();
+  std::string n = m + "_" + std::to_string(c.width) + "x" + std::to_string(c.height) + "_" + c.shade;
+  if (c.ssaa > 1) n += "_ssaa" + std::to_string(c.ssaa);
+  if (c.frame) n += "_f" + std::to_string(c.frame);
+  for (char& ch : n)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
+}
+
+// Both backends draw the frame with object ids on; returns the two renderers.
+void draw_both(const ParityCase& c, Renderer& cpu, Renderer& gpu) {
+  auto look = bench::make_look(c.shade);
+  ASSERT_TRUE(look.has_value());
+  Mesh mesh = bench::make_mesh(c.mesh);
+  for (Renderer* r : {&cpu, &gpu}) {
+    r->options = look->options;
+    r->options.ssaa = c.ssaa;
+    r->options.object_ids = true;
+    // bench::draw_frame's frame, with an object id (it draws with none).
+    r->begin_frame(Camera{}, {}, Vec3{0.1f, 0.1f, 0.15f});
+    r->draw(mesh, rotate_y(radians(360.0f * float(c.frame) / float(c.frames))), &look->material, 7);
+    r->end_frame();
+  }
+}
+
+class Parity : public ::testing::TestWithParam<ParityCase> {};
+
+// The images agree by PSNR; the object-id masks on at least 99.5% of pixels. Where they
+// differ is the silhouette: a pixel centre on a triangle's edge is decided by each
+// rasterizer's own fixed-point snapping (the CPU's 24.8 and top-left rule; the GPU's
+// subpixel precision), so a sample either side may land on the other object or on none.
+TEST_P(Parity, MatchesTheCpuBackend) {
+  const ParityCase& c = GetParam();
+  Renderer cpu(c.width, c.height, BackendChoice::Cpu), gpu(c.width, c.height, BackendChoice::Gpu);
+  ASSERT_STREQ(gpu.stats().backend, "gpu");
+  draw_both(c, cpu, gpu);
+  const vref::Image a = to_vref(cpu.color_image()), b = to_vref(gpu.color_image());
+  const vref::Diff d = vref::compare(a, b);
+  const std::vector<uint32_t> ia = cpu.object_ids(), ib = gpu.object_ids();
+  ASSERT_EQ(ia.size(), ib.size());
+  size_t same = 0, drawn = 0;
+  for (size_t i = 0; i < ia.size(); ++i) same += ia[i] == ib[i], drawn += ia[i] != 0;
+  const double agree = double(same) / double(ia.size());
+  std::printf("[gpu-parity] %-34s psnr=%.2f max_abs=%d ids_agree=%.4f%% drawn=%zu\n", case_name(c).c_str(), d.psnr,
+              d.max_abs, agree * 100, drawn);
+  EXPECT_GT(drawn, ia.size() / 50) << "the frame must draw something";
+  EXPECT_GE(agree, 0.995);
+  if (d.psnr < c.min_psnr) {
+    const std::string base = std::string(VELOCITY_GPU_OUT) + "/" + case_name(c);
+    std::filesystem::create_directories(VELOCITY_GPU_OUT);
+    vref::write_png(base + "_cpu.png", a), vref::write_png(base + "_gpu.png", b);
+    vref::write_png(base + "_diff.png", vref::diff_image(a, b));
+    ADD_FAILURE() << case_name(c) << ": PSNR " << d.psnr << " dB < " << c.min_psnr << " dB; images in " << base << "_*.png";
+  }
+  // Depth: the same surfaces at the same distances (window depth to float precision of
+  // two different pipelines; a pixel where both drew).
+  const std::vector<float> za = cpu.view_depth(), zb = gpu.view_depth();
+  size_t close = 0, both = 0;
+  for (size_t i = 0; i < za.size(); ++i)
+    if (za[i] > 0 && zb[i] > 0) both++, close += std::abs(za[i] - zb[i]) < 1e-3f * za[i];
+  // (Wireframe: where a front and a back edge cross, which one a pixel shows is a
+  // near-tie, so its depth agrees on fewer pixels.)
+  EXPECT_GE(double(close), (c.shade == "wire" ? 0.98 : 0.995) * double(both));
+}
+
+std::vector<ParityCase> cases() {
+  const std::string obj = std::string(VELOCITY_TEST_DATA) + "/models/wuson_x4.obj";
+  std::vector<ParityCase> v;
+  // The golden scenes (tests/golden/test_golden.cpp), each on both backends.
+  for (const std::string& mesh : {std::string("sphere:24"), std::string("sphere:64"), obj})
+    for (auto [w, h] : {std::pair{640, 360}, std::pair{1920, 1080}}) {
+      v.push_back({mesh, w, h, "flat", 40.0});
+      v.push_back({mesh, w, h, "gouraud", 40.0});
+      v.push_back({mesh, w, h, "phong", 40.0});
+      v.push_back({mesh, w, h, "tex", 35.0});
+      v.push_back({mesh, w, h, "env", 35.0});
+    }
+  for (const char* shade : {"flat", "gouraud", "tex"}) v.push_back({"sphere:512", 1920, 1080, shade, shade[0] == 't' ? 35.0 : 40.0});
+  v.push_back({obj, 640, 360, "gouraud", 40.0, 1, 5, 12});
+  v.push_back({obj, 640, 360, "phong", 40.0, 1, 9, 12});
+  // Wireframe: edges drawn as the CPU draws lines (the pixel under the segment at each
+  // column or row centre). Below 40 dB: bright one-pixel lines on a dark ground, and
+  // near-ties (a segment within rounding of a pixel boundary) fall either side in about
+  // 1 pixel in 1000 (float arithmetic on the CPU, fixed point in GL).
+  for (const std::string& mesh : {std::string("sphere:24"), std::string("sphere:64"), obj})
+    v.push_back({mesh, 640, 360, "wire", 30.0});
+  // Super-sampling: a larger framebuffer and the same box resolve.
+  v.push_back({obj, 640, 360, "phong", 35.0, 3});
+  v.push_back({"sphere:64", 320, 200, "tex", 35.0, 2});
+  v.push_back({"sphere:64", 320, 200, "env", 35.0, 4});
+  return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, Parity, ::testing::ValuesIn(cases()), [](const auto& p) { return case_name(p.param); });
+
+// Two renderers draw `scene` and the images must agree to `min_psnr`.
+double scene_psnr(const Scene& scene, const RenderOptions& options, int w = 320, int h = 240) {
+  Renderer cpu(w, h, BackendChoice::Cpu), gpu(w, h, BackendChoice::Gpu);
+  cpu.options = gpu.options = options;
+  cpu.render(scene), gpu.render(scene);
+  return vref::compare(to_vref(cpu.color_image()), to_vref(gpu.color_image())).psnr;
+}
+
+// An asymmetric scene: a cube with per-face colours, a torus with per-face materials (one
+// flat, one Phong, one textured), a sphere with vertex colours unlit, a two-sided plane
+// seen from behind, under a directional and a point light.
+Scene mixed_scene() {
+  Scene scene;
+  scene.camera.position = {0.3f, 0.4f, 4.0f};
+  scene.lights.push_back(Light::directional({-0.4f, -0.6f, -1.0f}, {0.9f, 0.85f, 0.8f}));
+  scene.lights.push_back(Light::point({1.5f, 1.0f, 1.5f}, {0.6f, 0.6f, 0.9f}));
+  Mesh cube = make_cube(0.8f);
+  for (size_t f = 0; f < cube.triangles.size(); ++f) cube.face_colors.push_back({float(f % 3) / 2, float(f % 5) / 4, 0.3f});
+  Mesh torus = make_torus(0.6f, 0.25f, 24, 12);
+  Material flat, phong, textured;
+  flat.shading = Shading::Flat, flat.color = {0.9f, 0.3f, 0.2f};
+  phong.shading = Shading::Phong, phong.color = {0.2f, 0.7f, 0.3f}, phong.specular = 0.6f, phong.shininess = 20;
+  textured.shading = Shading::Gouraud, textured.color = {1, 1, 1};
+  textured.texture = std::make_shared<const Texture>(make_checkerboard(64, 8));
+  textured.filter = Filter::Bilinear;
+  torus.materials = {flat, phong, textured};
+  for (size_t f = 0; f < torus.triangles.size(); ++f) torus.face_materials.push_back(uint32_t((f / 7) % 3));
+  Mesh sphere = make_sphere(24);
+  for (const Vec3& p : sphere.positions) sphere.colors.push_back({0.5f + 0.5f * p.x, 0.5f + 0.5f * p.y, 0.5f - 0.5f * p.z});
+  sphere.materials.push_back(Material{});
+  sphere.materials[0].shading = Shading::Unlit;
+  Mesh plane = make_plane_grid(1.0f, 2);
+  plane.materials.push_back(Material{});
+  plane.materials[0].two_sided = true, plane.materials[0].shading = Shading::Gouraud;
+  plane.materials[0].specular = 0.4f;
+  auto add = [&](Mesh m, Vec3 at, Vec3 turn) {
+    const ObjectId id = scene.add_object(m.name, std::make_shared<const Mesh>(std::move(m)));
+    scene.object(id).transform.translation = at, scene.object(id).transform.rotation = turn;
+  };
+  add(std::move(cube), {-1.2f, 0.6f, 0}, {0.4f, 0.7f, 0});
+  add(std::move(torus), {0.9f, 0.6f, -0.3f}, {1.1f, 0.2f, 0});
+  add(std::move(sphere), {-0.9f, -0.8f, 0.2f}, {0, 0.5f, 0});
+  add(std::move(plane), {0.9f, -0.8f, 0}, {-1.2f, 0.3f, 0});  // its back towards the camera
+  return scene;
+}
+
+TEST(GpuScenes, FaceColoursMaterialsVertexColoursTwoSided) {
+  const double psnr = scene_psnr(mixed_scene(), RenderOptions{});
+  std::printf("[gpu-parity] mixed scene psnr=%.2f\n", psnr);
+  EXPECT_GE(psnr, 35.0);
+}
+
+TEST(GpuScenes, PaintersMode) {
+  Scene scene = mixed_scene();
+  // A cube through the sphere: where they cross, the sort decides, not the depth test.
+  const ObjectId id = scene.add_object("through", std::make_shared<const Mesh>(make_cube(0.9f)));
+  scene.object(id).transform.translation = {-0.7f, -0.7f, 0.4f}, scene.object(id).transform.rotation = {0.3f, 0.8f, 0};
+  RenderOptions o;
+  o.depth_mode = DepthMode::Painter;
+  Renderer zbuffer(320, 240);
+  zbuffer.render(scene);
+  Renderer cpu(320, 240, BackendChoice::Cpu), gpu(320, 240, BackendChoice::Gpu);
+  cpu.options = gpu.options = o;
+  cpu.render(scene), gpu.render(scene);
+  const double differs = vref::compare(to_vref(zbuffer.color_image()), to_vref(cpu.color_image())).psnr;
+  const double psnr = vref::compare(to_vref(cpu.color_image()), to_vref(gpu.color_image())).psnr;
+  std::printf("[gpu-parity] painter psnr=%.2f (painter against z-buffer on the CPU: %.2f)\n", psnr, differs);
+  EXPECT_LT(differs, 40.0);  // the scene tells the modes apart
+  EXPECT_GE(psnr, 35.0);
+}
+
+// Two GPU renderers with frames open at once on one thread: each draws into its own
+// context, whatever ran in between.
+TEST(GpuScenes, TwoRenderersInterleaved) {
+  Mesh sphere = make_sphere(16), cube = make_cube(1.2f);
+  Material red, blue;
+  red.color = {0.9f, 0.2f, 0.1f}, blue.color = {0.1f, 0.3f, 0.9f}, blue.shading = Shading::Flat;
+  const Mat4 turn = rotate_y(0.5f);
+  Renderer a(96, 64, BackendChoice::Gpu), b(96, 64, BackendChoice::Gpu);
+  Renderer ca(96, 64, BackendChoice::Cpu), cb(96, 64, BackendChoice::Cpu);
+  a.begin_frame(Camera{}, {}, Vec3{0, 0, 0});
+  b.begin_frame(Camera{}, {}, Vec3{1, 1, 1});
+  a.draw(sphere, Mat4::identity(), &red, 1);
+  b.draw(cube, turn, &blue, 2);
+  b.end_frame();
+  a.end_frame();
+  for (auto [r, mesh, world, mat, bg] : {std::tuple{&ca, &sphere, Mat4::identity(), &red, Vec3{0, 0, 0}},
+                                         std::tuple{&cb, &cube, turn, &blue, Vec3{1, 1, 1}}}) {
+    r->begin_frame(Camera{}, {}, bg);
+    r->draw(*mesh, world, mat, 1);
+    r->end_frame();
+  }
+  EXPECT_GE(vref::compare(to_vref(a.color_image()), to_vref(ca.color_image())).psnr, 40.0);
+  EXPECT_GE(vref::compare(to_vref(b.color_image()), to_vref(cb.color_image())).psnr, 40.0);
+}
+
+TEST(GpuScenes, AffineTexturesAndNearest) {
+  RenderOptions o;
+  o.affine = true, o.filter = Filter::Nearest;
+  const double psnr = scene_psnr(mixed_scene(), o);
+  std::printf("[gpu-parity] affine nearest psnr=%.2f\n", psnr);
+  EXPECT_GE(psnr, 30.0);
+}
+
+TEST(GpuScenes, Points) {
+  RenderOptions o;
+  o.shading = Shading::Points;
+  const double psnr = scene_psnr(mixed_scene(), o);
+  std::printf("[gpu-parity] points psnr=%.2f\n", psnr);
+  EXPECT_GE(psnr, 35.0);
+}
+
+// The caches: a mesh and its texture are uploaded once, however many frames draw them;
+// a change to the mesh's contents is seen and uploaded again.
+TEST(GpuCache, UploadsOnceAndAgainOnChange) {
+  gpu::GpuBackend b(64, 64, false);
+  Mesh mesh = make_sphere(16);
+  Material m;
+  m.texture = std::make_shared<const Texture>(make_checkerboard(32, 4));
+  Camera camera;
+  for (int frame = 0; frame < 3; ++frame) {
+    b.begin_frame(camera, {}, FrameStart{}, RenderOptions{});
+    b.draw(mesh, Mat4::identity(), &m, 1);
+    b.end_frame();
+  }
+  EXPECT_EQ(b.uploads(), 2u);  // the mesh and the texture
+  mesh.positions[3].x += 0.25f;
+  b.begin_frame(camera, {}, FrameStart{}, RenderOptions{});
+  b.draw(mesh, Mat4::identity(), &m, 1);
+  b.end_frame();
+  EXPECT_EQ(b.uploads(), 3u);  // the mesh again, not the texture
+}
+
+// The GLSL lighting (gpu/shaders.cpp) is the scalar model (shading/lighting.hpp): the
+// same random normals, points and lights through both, by transform feedback.
+TEST(GpuLighting, GlslIsTheScalarModel) {
+  gpu::Context context(false);
+  gpu::Current current(context);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1, 1);
+  shading::EyeLights lights;
+  lights.ambient = {0.1f, 0.15f, 0.2f};
+  lights.directional.push_back({normalize(Vec3{0.3f, 0.5f, 1}), {0.9f, 0.8f, 0.7f}});
+  lights.directional.push_back({normalize(Vec3{-0.7f, 0.1f, 0.2f}), {0.2f, 0.3f, 0.6f}});
+  lights.point.push_back({{1, 2, -1}, {0.8f, 0.7f, 0.5f}, 1.0f, 0.2f, 0.05f});
+  const shading::Specular spec(0.5f, 24.0f);
+  const int n = 4096;
+  std::vector<Vec3> normals(n), points(n);
+  for (int i = 0; i < n; ++i) normals[size_t(i)] = normalize(Vec3{u(rng), u(rng), u(rng)}), points[size_t(i)] = {u(rng), u(rng), u(rng) - 3};
+
+  const GLuint p = gpu::build_lighting_test_program();
+  glUseProgram(p);
+  auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
+  glUniform3f(loc("u_ambient"), lights.ambient.x, lights.ambient.y, lights.ambient.z);
+  glUniform1i(loc("u_directional_count"), 2), glUniform1i(loc("u_point_count"), 1);
+  const Vec3 dir[2] = {lights.directional[0].to_light, lights.directional[1].to_light};
+  const Vec3 dcol[2] = {lights.directional[0].color, lights.directional[1].color};
+  glUniform3fv(loc("u_directional_to_light"), 2, &dir[0].x), glUniform3fv(loc("u_directional_color"), 2, &dcol[0].x);
+  glUniform3fv(loc("u_point_position"), 1, &lights.point[0].position.x);
+  glUniform3fv(loc("u_point_color"), 1, &lights.point[0].color.x);
+  glUniform3f(loc("u_point_attenuation"), 1.0f, 0.2f, 0.05f);
+  glUniform3f(loc("u_specular"), spec.ks, spec.exponent, spec.cutoff);
+  GLuint vao, buffers[4];
+  glGenVertexArrays(1, &vao), glGenBuffers(4, buffers);
+  glBindVertexArray(vao);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+  glBufferData(GL_ARRAY_BUFFER, n * 12, points.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr), glEnableVertexAttribArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[1]);
+  glBufferData(GL_ARRAY_BUFFER, n * 12, normals.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr), glEnableVertexAttribArray(1);
+  for (int k = 0; k < 2; ++k) {
+    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[2 + k]);
+    glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, n * 12, nullptr, GL_STATIC_READ);
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, GLuint(k), buffers[2 + k]);
+  }
+  // A framebuffer to be complete (a surfaceless context has none), though nothing is drawn.
+  GLuint fbo, rb;
+  glGenFramebuffers(1, &fbo), glGenRenderbuffers(1, &rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1, 1);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, n);
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  std::vector<Vec3> diffuse(n), specular(n);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[2]);
+  glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, n * 12, diffuse.data());
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[3]);
+  glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, n * 12, specular.data());
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  float worst = 0;
+  int lit_specular = 0;
+  for (int i = 0; i < n; ++i) {
+    const shading::LightTerms t = shading::light(lights, normals[size_t(i)], points[size_t(i)], spec);
+    const Vec3 dd = t.diffuse - diffuse[size_t(i)], ds = t.specular - specular[size_t(i)];
+    worst = std::max({worst, std::abs(dd.x), std::abs(dd.y), std::abs(dd.z), std::abs(ds.x), std::abs(ds.y), std::abs(ds.z)});
+    lit_specular += t.specular.x > 0.01f;
+  }
+  glDeleteBuffers(4, buffers), glDeleteVertexArrays(1, &vao), glDeleteProgram(p);
+  glDeleteFramebuffers(1, &fbo), glDeleteRenderbuffers(1, &rb);
+  EXPECT_LT(worst, 2e-4f);        // float rounding apart, the same numbers (1/20 of an 8-bit step)
+  EXPECT_GT(lit_specular, n / 20);  // and the highlight is exercised
+}
+
+// `auto` never takes a software OpenGL: on llvmpipe it draws on the CPU and says why.
+TEST(BackendChoice, AutoRefusesSoftwareGl) {
+  Renderer r(32, 32, BackendChoice::Auto);
+  const std::string reason = r.stats().backend_reason;
+  if (std::string(r.stats().backend) == "gpu") {
+    EXPECT_FALSE(gpu::is_software_renderer(reason)) << reason;
+  } else {
+    EXPECT_NE(reason.find("auto: "), std::string::npos) << reason;
+    gpu::Context software(false);  // a GL there is: then it must be a software one that was refused
+    EXPECT_TRUE(software.software()) << software.description();
+    EXPECT_NE(reason.find("software"), std::string::npos) << reason;
+  }
+  r.render(Scene{});
+  EXPECT_EQ(std::string(r.stats().backend_reason), reason);  // kept across frames
+}
+
+TEST(BackendChoice, NamesAndStats) {
+  EXPECT_EQ(parse_backend("gpu"), BackendChoice::Gpu);
+  EXPECT_EQ(parse_backend("GPU"), std::nullopt);
+  Renderer cpu(16, 16);
+  EXPECT_STREQ(cpu.stats().backend, "cpu");
+  EXPECT_STREQ(cpu.stats().backend_reason, "asked for");
+  Renderer gpu(16, 16, BackendChoice::Gpu);
+  EXPECT_STREQ(gpu.stats().backend, "gpu");
+  EXPECT_NE(std::string(gpu.stats().backend_reason).find("OpenGL"), std::string::npos);
+}
+
+// Real files: the seeds' 3D Studio ASC and PLG models (../shared/data), as `velocity
+// render` shows them (scene_from_model), Z-buffered and Gouraud, and in painter's mode
+// flat (seed 001's look), on both backends.
+TEST(GpuScenes, RealModels) {
+  const std::filesystem::path root = std::filesystem::path(VELOCITY_SHARED_DATA) / "models";
+  if (!std::filesystem::exists(root)) GTEST_SKIP() << root << " is absent";
+  int files = 0;
+  for (const char* folder : {"asc", "plg"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+      Scene scene;
+      try {
+        scene = scene_from_model(entry.path().string(), LoadOptions{}, false, 4.0f / 3.0f);
+      } catch (const Error&) {
+        continue;  // (the corpus holds files the loaders refuse on purpose)
+      }
+      for (DepthMode mode : {DepthMode::ZBuffer, DepthMode::Painter}) {
+        RenderOptions o;
+        o.depth_mode = mode;
+        if (mode == DepthMode::Painter) o.shading = Shading::Flat;
+        const double psnr = scene_psnr(scene, o, 320, 240);
+        EXPECT_GE(psnr, mode == DepthMode::Painter ? 40.0 : 35.0) << entry.path() << (mode == DepthMode::Painter ? " painter" : "");
+        std::printf("[gpu-parity] %-24s %-8s psnr=%.2f\n", entry.path().filename().c_str(),
+                    mode == DepthMode::Painter ? "painter" : "zbuffer", psnr);
+      }
+      files++;
+    }
+  EXPECT_GT(files, 10);
+}
+
+// pGL's path: pre-transformed batches with fixed-function pixel state, on both
+// backends. Asymmetric on purpose: every primitive is placed off-centre and coloured
+// per vertex, so that a flip or a swapped channel shows.
+struct BatchScene {
+  std::vector<Vec4> position, color, texcoord;
+  std::vector<float> fog;
+  std::shared_ptr<const Texture> texture = std::make_shared<const Texture>(make_checkerboard(16, 4));
+
+  // A quad (two triangles) from (x0, y0) to (x1, y1) in NDC at depth z.
+  void quad(float x0, float y0, float x1, float y1, float z, Vec4 c0, Vec4 c1) {
+    const Vec4 p[4] = {{x0, y0, z, 1}, {x1, y0, z, 1}, {x1, y1, z, 1}, {x0, y1, z, 1}};
+    const Vec4 t[4] = {{0, 0, 0, 1}, {2, 0, 0, 1}, {2, 2, 0, 1}, {0, 2, 0, 1}};
+    for (int i : {0, 1, 2, 0, 2, 3}) {
+      position.push_back(p[i]), texcoord.push_back(t[i]);
+      color.push_back(i < 2 ? c0 : c1), fog.push_back(float(i) * 0.5f);
+    }
+  }
+
+  BatchScene() {
+    quad(-0.9f, -0.8f, 0.2f, 0.6f, 0.2f, {1, 0.2f, 0.1f, 1}, {0.1f, 0.9f, 0.3f, 0.5f});        // 0: opaque
+    quad(-0.3f, -0.5f, 0.8f, 0.9f, 0.4f, {0.9f, 0.9f, 0.2f, 0.3f}, {0.2f, 0.3f, 1, 0.8f});      // 6: blended, behind
+    quad(-0.95f, 0.65f, 0.95f, 0.95f, 0.0f, {1, 1, 1, 1}, {0.5f, 0.5f, 1, 1});                  // 12: textured, fog
+    quad(0.3f, -0.95f, 0.95f, -0.2f, -0.1f, {0.8f, 0.4f, 0.9f, 0.2f}, {0.8f, 0.4f, 0.9f, 0.9f});  // 18: alpha test, scissor
+    quad(-0.6f, -0.2f, 0.6f, 0.1f, 0.1f, {0, 1, 1, 1}, {1, 0, 1, 1});                          // 24: masked
+    quad(-0.7f, -0.6f, -0.1f, 0.2f, 0.2f, {0, 0, 0, 1}, {1, 1, 1, 1});                        // 30: on quad 0, offset
+  }
+
+  // (The arrays stay unchanged until end_frame: the CPU backend reads them there.)
+  void draw(Renderer& r) {
+    r.begin_frame(Camera{}, {}, Vec3{0.2f, 0.1f, 0.3f});
+    PrimitiveBatch b;
+    PixelState s;
+    auto submit = [&](size_t first, size_t count, const PixelState& st, PrimitiveKind kind = PrimitiveKind::Triangles) {
+      b.kind = kind, b.position = &position[first], b.color = &color[first], b.texcoord = &texcoord[first];
+      b.fog = &fog[first], b.vertex_count = uint32_t(count);
+      r.draw(b, st);
+    };
+    submit(0, 6, s);
+    PixelState blend = s;
+    blend.blend = true, blend.blend_src_rgb = blend.blend_src_alpha = BlendFactor::SrcAlpha;
+    blend.blend_dst_rgb = blend.blend_dst_alpha = BlendFactor::OneMinusSrcAlpha;
+    submit(6, 6, blend);
+    PixelState tex = s;
+    tex.texture.texture = texture.get();
+    tex.texture.sampler.mag = tex.texture.sampler.min = SamplerState::Texel::Nearest;
+    tex.texture.sampler.mip = SamplerState::Mip::None;
+    tex.fog = true, tex.fog_mode = FogMode::Linear, tex.fog_start = 0, tex.fog_end = 3, tex.fog_color = {0.6f, 0.6f, 0.7f, 1};
+    submit(12, 6, tex);
+    PixelState cut = s;
+    cut.alpha_test = true, cut.alpha_func = CompareFunc::Greater, cut.alpha_ref = 0.5f;
+    cut.scissor = true, cut.scissor_x0 = 40, cut.scissor_y0 = 30, cut.scissor_x1 = 150, cut.scissor_y1 = 110;
+    submit(18, 6, cut);
+    PixelState mask = s;
+    mask.color_mask = 0x5, mask.depth_write = false, mask.depth_func = CompareFunc::LessEqual;
+    submit(24, 6, mask);
+    PixelState offset = s;  // in quad 0's plane: shown only by the offset towards the eye
+    offset.polygon_offset = true, offset.offset_units = -2;
+    submit(30, 6, offset);
+    PixelState points = s;  // quad 18's corners, 3 pixels wide, not depth tested
+    points.depth_test = false;
+    b.point_size = 3;
+    submit(18, 6, points, PrimitiveKind::Points);
+    r.end_frame();
+  }
+};
+
+TEST(GpuBatches, FixedFunctionStateMatchesTheCpu) {
+  BatchScene scene;
+  Renderer cpu(200, 150, BackendChoice::Cpu), gpu(200, 150, BackendChoice::Gpu);
+  scene.draw(cpu);
+  BatchScene again;
+  again.draw(gpu);
+  const vref::Image a = to_vref(cpu.color_image()), b = to_vref(gpu.color_image());
+  const vref::Diff d = vref::compare(a, b);
+  std::printf("[gpu-parity] batches psnr=%.2f max_abs=%d\n", d.psnr, d.max_abs);
+  if (d.psnr < 35.0) {
+    std::filesystem::create_directories(VELOCITY_GPU_OUT);
+    vref::write_png(std::string(VELOCITY_GPU_OUT) + "/batches_cpu.png", a);
+    vref::write_png(std::string(VELOCITY_GPU_OUT) + "/batches_gpu.png", b);
+  }
+  EXPECT_GE(d.psnr, 35.0);
+  const std::vector<float> za = cpu.window_depth(), zb = gpu.window_depth();
+  size_t close = 0;
+  for (size_t i = 0; i < za.size(); ++i) close += std::abs(za[i] - zb[i]) < 1e-4f;
+  EXPECT_GE(double(close), 0.99 * double(za.size()));
+}
+
+// Errors, not crashes: sizes the GPU backend cannot hold.
+TEST(GpuErrors, ClearMessages) {
+  Renderer r(16, 16, BackendChoice::Gpu);
+  EXPECT_THROW(r.resize(0, 10), Error);
+  r.options.ssaa = 5;
+  EXPECT_THROW(r.render(Scene{}), Error);
+  r.options.ssaa = 1;
+  r.render(Scene{});
+  EXPECT_EQ(r.width(), 16);
+
+  // A texture wider than the device takes: an error that says so, and the renderer
+  // goes on drawing.
+  GLint max = 0;
+  {
+    gpu::Context c(false);
+    gpu::Current current(c);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  }
+  Image wide(max + 1, 1, 0xffc8c8c8u);
+  Material m;
+  m.texture = std::make_shared<const Texture>(wide);
+  Mesh mesh = make_sphere(8);
+  r.begin_frame(Camera{}, {}, Vec3{});
+  try {
+    r.draw(mesh, Mat4::identity(), &m, 1);
+    ADD_FAILURE() << "a texture over GL_MAX_TEXTURE_SIZE was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than the GPU takes"), std::string::npos) << e.what();
+  }
+  r.end_frame();
+
+  // More lights than the program holds.
+  std::vector<Light> lights(40, Light::directional({0, 0, -1}, {0.01f, 0.01f, 0.01f}));
+  EXPECT_THROW(r.begin_frame(Camera{}, lights, Vec3{}), Error);
+  r.render(Scene{});  // and the next frame is fine
+}
+
+}  // namespace
