@@ -22,6 +22,11 @@ double midi_hz(int note) { return 440.0 * std::pow(2.0, (note - 69) / 12.0); }
 
 Synth::Synth(int sample_rate) : rate_(std::max(sample_rate, 8000)) {}
 
+void Synth::set_volume(float volume) {
+  std::lock_guard lock(mutex_);
+  if (std::isfinite(volume)) volume_ = std::clamp(volume, 0.0f, 1.0f);
+}
+
 void Synth::set_engine(bool on, float hz, float volume) {
   std::lock_guard lock(mutex_);
   engine_on_ = on;
@@ -98,7 +103,7 @@ float Synth::next_sample() {
 void Synth::render(int16_t* out, size_t count) {
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < count; ++i) {
-    float s = std::clamp(next_sample(), -1.0f, 1.0f);
+    float s = std::clamp(next_sample() * volume_, -1.0f, 1.0f);
     out[i] = int16_t(std::lrint(s * 32000.0f));
   }
 }

@@ -21,6 +21,8 @@ class Synth {
   // `volume` 0..1; the pitch glides to a new value over about 50 ms.
   void set_engine(bool on, float hz, float volume = 0.5f);
   void set_music(bool on);
+  // Everything together, 0 (silent) .. 1 (as made); the options screen's volume.
+  void set_volume(float volume);
   void play(Effect effect);
 
   // Renders `count` samples into `out` (the audio thread).
@@ -39,6 +41,7 @@ class Synth {
 
   mutable std::mutex mutex_;
   int rate_;
+  float volume_ = 1.0f;
   // Engine.
   bool engine_on_ = false;
   float engine_target_ = 60, engine_hz_ = 60, engine_volume_ = 0, engine_level_ = 0;
