@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "programs/drive.hpp"
+#include "programs/fly.hpp"
 #include "runtime/loop.hpp"
 #include "runtime/script.hpp"
 #include "runtime/shell.hpp"
@@ -586,4 +587,33 @@ TEST(Shell, AGamepadDrivesAndSteers) {
   run_scripted(shell, "", 3);
   EXPECT_GT(d.car().speed, 10.0f);
   EXPECT_GT(d.car().heading, heading + 0.2f);  // turned left
+}
+
+TEST(Shell, TheFlythroughResumesFromTheMenuToo) {
+  FlyOptions fo;
+  fo.objects = 10;
+  FlyProgram fly(fo);
+  Shell shell(fly, fly_shell_text());
+  shell.resize(320, 200);
+  run_scripted(shell, "0.3 press space\n0.8 press enter\n", 1.5);
+  ASSERT_EQ(shell.screen(), Shell::Screen::Game);
+  run_scripted(shell, "0 down a\n", 2);
+  const Vec3 flown = fly.position();
+  run_scripted(shell, "0 press esc\n", 1);
+  ASSERT_EQ(shell.screen(), Shell::Screen::Menu);
+  const Vec3 waiting = fly.position();
+  run_scripted(shell, "", 1);
+  EXPECT_EQ(fly.position(), waiting);  // the flight waits behind the menu
+  run_scripted(shell, "0 press enter\n", 0.5);  // RESUME
+  ASSERT_EQ(shell.screen(), Shell::Screen::Game);
+  EXPECT_LT(length(fly.position() - flown), 200.0f);  // not a new flight
+  EXPECT_GT(length(fly.position() - FlyProgram().position()), 50.0f);
+  // P pauses the flight; F1 shows its help.
+  run_scripted(shell, "0 press p\n", 0.5);
+  const Vec3 paused = fly.position();
+  run_scripted(shell, "", 0.5);
+  EXPECT_EQ(fly.position(), paused);
+  run_scripted(shell, "0 press p\n0.1 press f1\n", 0.3);
+  EXPECT_TRUE(shell.help_shown());
+  EXPECT_NE(fly.help().find("DIVE"), std::string::npos);
 }
