@@ -239,6 +239,7 @@ DriveProgram::DriveProgram(DriveOptions o)
     cars_.push_back(build_car("opponent ", nullptr, i % 2 ? Vec3{0.95f, 0.75f, 0.1f} : Vec3{0.1f, 0.25f, 0.8f}, true));
   ghost_ = build_car("ghost ", nullptr, {0.55f, 0.9f, 1.0f}, false);
   build_dashboard();
+  build_ground();
   // The best lap from disk, if it is one of this circuit's (a bad file is ignored with a
   // word: it is rewritten at the next best lap).
   if (!options_.best_lap_file.empty() && std::filesystem::exists(options_.best_lap_file)) {
@@ -284,9 +285,10 @@ std::string DriveProgram::help() const {
   return h;
 }
 
-void DriveProgram::build_world() {
+void DriveProgram::build_ground() {
   const Circuit& c = *circuit_;
-  // The ground in chunks (so that what is out of view is skipped whole).
+  // The ground in chunks (so that what is out of view is skipped whole), drawn last:
+  // what stands on it and the road over it hide most of it, and hidden pixels cost less.
   Material grass = textured(grass_texture());
   const int chunk = 15, cells = c.ground_cells();  // 90 cells across: 6 x 6 chunks
   static_assert(int(2 * Circuit::kGroundHalf / Circuit::kGroundCell) % 15 == 0);
@@ -296,6 +298,10 @@ void DriveProgram::build_world() {
       m->materials.push_back(grass);
       scene_.add_object("ground", m);
     }
+}
+
+void DriveProgram::build_world() {
+  const Circuit& c = *circuit_;
   // The road, kerbs in the bends and the start line.
   auto road = std::make_shared<Mesh>(road_strip(c, -Circuit::kHalfWidth, Circuit::kHalfWidth, 0.0f, 12.0f,
                                                 [](size_t) { return true; }));

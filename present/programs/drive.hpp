@@ -82,6 +82,7 @@ class DriveProgram : public Game {
     ObjectId wheels[4] = {0, 0, 0, 0};
   };
   void build_world();
+  void build_ground();
   CarModel build_car(const std::string& prefix, const DriveOptions* model, Vec3 paint, bool wheels);
   void build_dashboard();
   void pose_car(const CarModel& model, const CarState& state);
