@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 namespace velocity::realtime {
@@ -49,7 +51,7 @@ int Shell::option_rows() const { return kSettingRows + int(text_.bindings.size()
 Shell::Rect Shell::option_rect(int row) const {
   int s = ui_scale(height_);
   int h = 10 * s, w = std::min(width_ - 8 * s, 170 * s);
-  return {(width_ - w) / 2, 24 * s + row * (h + 2 * s), w, h};
+  return {(width_ - w) / 2, 28 * s + row * (h + 2 * s), w, h};
 }
 
 std::string Shell::option_text(int row) const {
@@ -181,6 +183,10 @@ void Shell::event(const InputEvent& e, const InputState& input) {
       break;
     case Screen::Options: options_event(e); break;
     case Screen::Game:
+      if (key && e.key == KeyF12) {
+        shot_ = true;
+        return;
+      }
       // F1 help and P pause stop the game; Esc goes to the menu (the game waits there).
       if (key && e.key == KeyF1) {
         help_ = !help_;
@@ -248,6 +254,14 @@ void Shell::sound(Synth& synth) {
 
 void Shell::frame(FrameDescription& out) {
   game_.frame(out);
+  if (shot_) {
+    // F12: the frame as shown, to the first free velocity_NNN.png here.
+    shot_ = false;
+    char name[32];
+    do std::snprintf(name, sizeof name, "velocity_%03d.png", ++shots_);
+    while (std::filesystem::exists(name) && shots_ < 999);
+    out.screenshot = name;
+  }
   DrawList& d = out.overlay;
   const int s = ui_scale(height_);
   if (screen_ != Screen::Game) {

@@ -105,6 +105,8 @@ class Shell : public Program {
   bool fading_out_ = false, quit_ = false, quit_after_fade_ = false;
   bool in_progress_ = false, restart_next_ = false, paused_ = false, help_ = false;
   bool binding_ = false;
+  bool shot_ = false;  // F12 asked for a screenshot of the next frame
+  int shots_ = 0;
   float fade_ = 1.0f;  // starts black and fades in
   int hot_ = -1, row_ = 0;
   double time_ = 0, credits_time_ = 0;
