@@ -134,7 +134,7 @@ Lap parse_lap(std::string_view text, float circuit_length, const std::string& na
   if (!next_line(text, pos, line)) bad(name, n, "expected 'ticks N'");
   Lap lap;
   lap.ticks = read_keyed(line, "ticks", 1, kMaxReplayTicks, name, n);
-  lap.poses.reserve(size_t(lap.ticks));
+  lap.poses.reserve(std::min(size_t(lap.ticks), text.size() / 12));  // what the text can hold
   while (long(lap.poses.size()) < lap.ticks) {
     ++n;
     float v[6];
@@ -170,7 +170,6 @@ Replay parse_replay(std::string_view text, const std::string& name) {
   if (!next_line(text, pos, line)) bad(name, n, "expected 'ticks N'");
   const long ticks = read_keyed(line, "ticks", 0, kMaxReplayTicks, name, n);
   Replay r;
-  r.ticks.reserve(size_t(ticks));
   while (next_line(text, pos, line)) {
     ++n;
     if (line.empty()) continue;

@@ -1,7 +1,8 @@
 // The sound: a synthesiser that the audio device pulls samples from (mono, signed
 // 16-bit). An engine note whose pitch the program sets, a few effects, and a tune for
 // the title screen, all generated: no sound files. Thread-safe: the program sets
-// parameters on its thread while the audio callback renders on the audio thread.
+// parameters on its thread (one thread) while the audio callback renders on the audio
+// thread; setting never waits for the audio thread.
 #pragma once
 
 #include <cstddef>
@@ -38,6 +39,15 @@ class Synth {
   };
   float next_sample();
   float music_sample();
+  void hand_over();
+
+  // What the program asked for (its thread only), handed to the fields below when the
+  // audio thread is not using them.
+  struct Wanted {
+    float volume = 1.0f, engine_target = 60, engine_volume = 0;
+    bool engine_on = false, music_on = false;
+    std::vector<Effect> effects;
+  } wanted_;
 
   mutable std::mutex mutex_;
   int rate_;
