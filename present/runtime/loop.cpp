@@ -200,7 +200,17 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
       program.event(e, input);
     }
     // A screen mode chosen on an options screen, as F2 would.
-    if (int asked = program.screen_mode(); asked >= 0 && asked <= 4 && asked != asked_mode) set_mode(asked);
+    if (int asked = program.screen_mode(); asked != asked_mode) {
+      if (asked >= 0 && asked <= 4) {
+        set_mode(asked);
+      } else if (asked == -1) {  // back to the size the run started with
+        mode = -1;
+        follow = o.follow_window && presenter;
+        if (follow) std::tie(width, height) = presenter->window_size();
+        else width = o.width, height = o.height;
+        program.resize(width, height);
+      }
+    }
     asked_mode = program.screen_mode();
     if (program.finished() || g_stop_signal) quit = true;
     if (quit) break;

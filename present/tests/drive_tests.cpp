@@ -573,6 +573,12 @@ TEST(Shell, TheOptionsScreenChangesQualitySoundAndKeys) {
   LoopResult r = run_loop(again, nullptr, lo);
   EXPECT_EQ(r.width, 320);
   EXPECT_EQ(r.height, 200);
+  // ... and back to the size it started with.
+  Shell third(d, drive_shell_text());
+  lo.script = parse_script("0.3 press space\n0.8 press o\n1.6 press right\n1.8 press left\n2.2 press esc\n");
+  r = run_loop(third, nullptr, lo);
+  EXPECT_EQ(r.width, 640);
+  EXPECT_EQ(r.height, 480);
 }
 
 TEST(Shell, AGamepadDrivesAndSteers) {
