@@ -121,7 +121,9 @@ TEST(Circuit, ClosedHillyBankedAndNeverRunsIntoItself) {
   EXPECT_LT(length(c.point(0) - c.point(c.length())), 1e-3f);
   // A left bend's outside (its right) is the higher side.
   for (const Circuit::Sample& s : c.samples())
-    if (s.curvature > 1 / 60.0f) EXPECT_GT(c.point(s.s, 5).y, c.point(s.s, -5).y) << s.s;
+    if (s.curvature > 1 / 60.0f) {
+      EXPECT_GT(c.point(s.s, 5).y, c.point(s.s, -5).y) << s.s;
+    }
   // The ground at a point on the road is the road's surface; locate finds it back.
   for (float s = 3; s < c.length(); s += 97) {
     Vec3 p = c.point(s, 2.5f);
@@ -379,7 +381,9 @@ TEST(Replay, PlaysTheRaceBackExactly) {
       seen[size_t(run)].push_back(d.race().car(1).state.position);
     });
     if (run == 0) recorded = d.recording();
-    if (run == 1) EXPECT_TRUE(d.finished());
+    if (run == 1) {
+      EXPECT_TRUE(d.finished());
+    }
   }
   ASSERT_EQ(recorded.ticks.size(), size_t(25 * 120));
   ASSERT_EQ(seen[0].size(), seen[1].size());
@@ -440,7 +444,9 @@ TEST(Drive, TheHudNeverOverlapsAtAnySize) {
   for (auto [w, h] : sizes) {
     d.resize(w, h);
     std::vector<HudPanel> panels = d.hud();
-    if (w >= 320) EXPECT_GE(panels.size(), 4u) << w << "x" << h;  // speed, lap, position, camera
+    if (w >= 320) {
+      EXPECT_GE(panels.size(), 4u) << w << "x" << h;  // speed, lap, position, camera
+    }
     for (size_t i = 0; i < panels.size(); ++i) {
       const HudPanel& a = panels[i];
       EXPECT_GE(a.x, 0);

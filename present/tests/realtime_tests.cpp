@@ -288,7 +288,7 @@ TEST(Menu, ReactsToMouseMoveAndClick) {
   FlyOptions fo;
   fo.objects = 10;
   FlyProgram fly(fo);
-  Shell shell(fly, {"TITLE", "SUB", "FLY", "*CREDITS\nNAME"});
+  Shell shell(fly, {"TITLE", "SUB", "FLY", "*CREDITS\nNAME", {}});
   shell.resize(640, 400);
   EXPECT_EQ(shell.screen(), Shell::Screen::Title);
   run_scripted(shell, "0.5 press space\n", 1.5);
