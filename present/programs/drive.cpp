@@ -226,7 +226,7 @@ float DriveProgram::engine_rpm(float speed) {
   float v = std::abs(speed);
   if (v < 1) return 900 + 2100 * v;
   for (int g = 0; g < 5; ++g)
-    if (v < kShift[g + 1]) return 3000 + 4000 * (v - kShift[g]) / (kShift[g + 1] - kShift[g]) * (g == 0 ? 1.0f : 1.0f);
+    if (v < kShift[g + 1]) return 3000 + 4000 * (v - kShift[g]) / (kShift[g + 1] - kShift[g]);
   return 7000;
 }
 

@@ -629,3 +629,36 @@ TEST(Shell, TheFlythroughResumesFromTheMenuToo) {
   EXPECT_TRUE(shell.help_shown());
   EXPECT_NE(fly.help().find("DIVE"), std::string::npos);
 }
+
+TEST(Drive, TheCockpitDashboardReadsSpeedAndRevs) {
+  DriveProgram d(no_disk());
+  d.resize(640, 400);
+  run_scripted(d, "0 press c\n0.1 down up\n", 4);
+  ASSERT_EQ(d.camera_mode(), DriveProgram::CameraMode::Cockpit);
+  FrameDescription f;
+  d.frame(f);
+  const Scene& s = f.scene;
+  // Seen from the driver's seat: the dials, not the body.
+  EXPECT_TRUE(s.object(*s.find("speedometer")).visible);
+  EXPECT_TRUE(s.object(*s.find("rev counter")).visible);
+  EXPECT_FALSE(s.object(*s.find("shell")).visible);
+  // The speedometer's scale: 0 km/h at 225 degrees, 240 km/h at -45, anticlockwise from +x.
+  const float kmh = d.car().speed * 3.6f;
+  ASSERT_GT(kmh, 60.0f);
+  const float pi = 3.14159265f;
+  EXPECT_NEAR(s.object(*s.find("speedometer needle")).transform.rotation.z, (225.0f - 270.0f * kmh / 240.0f) * pi / 180,
+              1e-3f);
+  const float rpm = DriveProgram::engine_rpm(d.car().speed);
+  EXPECT_GE(rpm, 3000.0f);
+  EXPECT_LE(rpm, 7000.0f);
+  EXPECT_NEAR(s.object(*s.find("rev counter needle")).transform.rotation.z, (225.0f - 270.0f * rpm / 8000.0f) * pi / 180,
+              1e-3f);
+  // The revs rise through a gear and drop at the change.
+  EXPECT_LT(DriveProgram::engine_rpm(5), DriveProgram::engine_rpm(11));
+  EXPECT_GT(DriveProgram::engine_rpm(11.9f), DriveProgram::engine_rpm(12.1f));
+  // From the chase camera the dashboard is not drawn.
+  run_scripted(d, "0 press c\n0.1 press c\n", 0.2);
+  FrameDescription g;
+  d.frame(g);
+  EXPECT_FALSE(g.scene.object(*g.scene.find("speedometer")).visible);
+}
