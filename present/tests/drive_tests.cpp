@@ -662,3 +662,21 @@ TEST(Drive, TheCockpitDashboardReadsSpeedAndRevs) {
   d.frame(g);
   EXPECT_FALSE(g.scene.object(*g.scene.find("speedometer")).visible);
 }
+
+TEST(Shell, AGamepadFliesTheFlythrough) {
+  FlyOptions fo;
+  fo.objects = 10;
+  FlyProgram fly(fo);
+  Shell shell(fly, fly_shell_text(), true);
+  GamepadState pad;
+  pad.connected = true;
+  pad.steer = 1;     // stick right: turn right
+  pad.pitch = 1;     // stick back: climb
+  pad.throttle = 1;  // faster
+  shell.set_gamepad(pad);
+  const float yaw = fly.yaw(), speed = fly.speed();
+  run_scripted(shell, "", 1);
+  EXPECT_LT(fly.yaw(), yaw - 0.5f);
+  EXPECT_GT(fly.pitch(), 0.1f);
+  EXPECT_GT(fly.speed(), speed + 20);
+}
