@@ -4,7 +4,11 @@
 # (render + program, no window) and, when Xvfb is installed, through an SDL window on
 # Xvfb (vsync off: Xvfb has no display to wait for). Each run drives or flies a fixed
 # script for FRAMES frames and prints the program's own statistics line (median and
-# 99th-percentile frame time).
+# 99th-percentile frame time). Drive races the circuit with its opponent and scenery
+# (no best lap read or kept). Then, under Xvfb: drive with SDL's disk audio driver
+# against --mute (does sound work hold the frame back?), and the viewer's CPU use
+# while idle. The load average is printed before and after: on a shared machine the
+# figures are only as good as the quiet they were taken in.
 #
 #   scripts/bench_realtime.sh [FRAMES]     default 600 (10 s of game time)
 set -euo pipefail
@@ -26,6 +30,20 @@ run() {  # label, then the command's arguments
 }
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+# CPU time a frame with one rasterizer thread (user + system over the whole run, start-up
+# included, divided by the frames): steadier than frame times on a busy machine.
+cpu_per_frame() {  # label, frames, then the command's arguments
+  local label="$1" n="$2" t
+  shift 2
+  t="$({ TIMEFORMAT='%U %S'; time "$@" --threads 1 >/dev/null 2>&1; } 2>&1 | tail -1)"
+  awk -v t="$t" -v n="$n" -v l="$label" 'BEGIN { split(t, a, " "); printf "%-34s %.2f ms CPU a frame (one thread)\n", l, 1000 * (a[1] + a[2]) / n }'
+}
+cpu_per_frame "drive 800x600 cpu" "$frames" "$velocity" drive --skip-menu --mute --no-best-lap --size 800x600 \
+  --frames "$frames" --script "$work/drive.txt" --headless
+cpu_per_frame "drive 800x600 --hq cpu" "$((frames / 4))" "$velocity" drive --skip-menu --mute --no-best-lap --hq \
+  --size 800x600 --frames "$((frames / 4))" --script "$work/drive.txt" --headless
 for mode in headless window; do
   extra=(--headless)
   if [[ $mode == window ]]; then
@@ -37,8 +55,30 @@ for mode in headless window; do
     extra=(--no-vsync --scale 1)
   fi
   for size in 320x200 800x600; do
-    run "drive $size $mode" "$velocity" drive --skip-menu --mute --size "$size" --frames "$frames" --script "$work/drive.txt" "${extra[@]}"
-    run "drive $size --hq $mode" "$velocity" drive --skip-menu --mute --hq --size "$size" --frames "$((frames / 4))" --script "$work/drive.txt" "${extra[@]}"
+    run "drive $size $mode" "$velocity" drive --skip-menu --mute --no-best-lap --size "$size" --frames "$frames" --script "$work/drive.txt" "${extra[@]}"
+    run "drive $size --hq $mode" "$velocity" drive --skip-menu --mute --no-best-lap --hq --size "$size" --frames "$((frames / 4))" --script "$work/drive.txt" "${extra[@]}"
     run "fly $size $mode" "$velocity" fly --skip-menu --mute --size "$size" --frames "$frames" --script "$work/fly.txt" "${extra[@]}"
   done
 done
+
+if [[ -n "${xvfb_pid:-}" ]]; then
+  # Sound through SDL's disk audio driver (it writes the samples to a file at the
+  # device's pace) against no sound, same window, same script.
+  run "drive 800x600 window, no sound" "$velocity" drive --skip-menu --mute --no-best-lap --size 800x600 \
+    --frames "$frames" --script "$work/drive.txt" --no-vsync --scale 1
+  SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE="$work/audio.raw" run "drive 800x600 window, disk audio" "$velocity" drive \
+    --skip-menu --no-best-lap --size 800x600 --frames "$frames" --script "$work/drive.txt" --no-vsync --scale 1
+  # The viewer left alone: CPU time (user + system) over 5 s once it has started.
+  "$velocity" view --mute &
+  view_pid=$!
+  sleep 2
+  ticks() { awk '{print $14 + $15}' "/proc/$view_pid/stat"; }
+  before=$(ticks)
+  sleep 5
+  after=$(ticks)
+  kill "$view_pid"
+  wait "$view_pid" 2>/dev/null || true
+  hz=$(getconf CLK_TCK)
+  awk -v t="$((after - before))" -v hz="$hz" 'BEGIN { printf "%-34s %.2f s CPU in 5 s = %.1f %% of a core\n", "view idle window", t / hz, 100 * t / hz / 5 }'
+fi
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -28,13 +28,15 @@
 #   libegl-mesa0, libgl1-mesa-dri    the GPU backend's tests: Mesa's EGL driver and llvmpipe (surfaceless)
 #   libsdl2-dev                      the real-time window, input and sound (present/: view, fly, drive)
 #   xvfb                             a display for the window's test (present/tests/window_test.py)
+#   xdotool, python3-gi,             a real X drag and drop onto the viewer (present/tests/drop_test.py):
+#   gir1.2-gtk-3.0                   xdotool moves the mouse, a GTK window is the drag source
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader
 #   nodejs, npm                      its pinned three.js from npm (tests/reference/threejs/package-lock.json);
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed python3-pil python3-tqdm
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libsdl2-dev xvfb chromium "$@")
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libsdl2-dev xvfb xdotool python3-gi gir1.2-gtk-3.0 chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.
 command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()

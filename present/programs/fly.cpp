@@ -164,12 +164,20 @@ void FlyProgram::update(double dt_d, const InputState& in) {
     climb = pos_.y < 50 ? 0.3f : pos_.y > 70 ? -0.3f : 0.0f;
     speed_ = kStartSpeed;
   } else {
-    if (in.held(KeyLeft)) turn += 1;
-    if (in.held(KeyRight)) turn -= 1;
-    if (in.held(KeyUp)) climb -= 1;  // dive
-    if (in.held(KeyDown)) climb += 1;
-    if (in.held(KeyCtrl) || in.held('a')) accel += 1;
-    if (in.held(KeyShift) || in.held('z')) accel -= 1;
+    auto held = [&](Action a) { return in.held(settings_.key(a)); };
+    if (held(Action::Left)) turn += 1;
+    if (held(Action::Right)) turn -= 1;
+    if (held(Action::Throttle)) climb -= 1;  // dive
+    if (held(Action::Brake)) climb += 1;
+    if (in.held(KeyCtrl) || held(Action::Faster)) accel += 1;
+    if (in.held(KeyShift) || held(Action::Slower)) accel -= 1;
+    // A game controller: the left stick steers and dives or climbs, the triggers
+    // change speed.
+    if (pad_.connected) {
+      if (std::abs(pad_.steer) > 0.08f) turn = std::clamp(-pad_.steer, -1.0f, 1.0f);
+      if (std::abs(pad_.pitch) > 0.08f) climb = std::clamp(pad_.pitch, -1.0f, 1.0f);
+      accel += pad_.throttle - pad_.brake;
+    }
   }
   yaw_ += turn * kTurnRate * dt;
   if (attract_) pitch_ = climb * 0.2f;
@@ -212,6 +220,8 @@ void FlyProgram::frame(FrameDescription& out) {
   out.scene = scene_;
   out.options.depth_mode = DepthMode::ZBuffer;
   out.options.shading = Shading::Flat;  // the seed's look: flat shading
+  out.options.ssaa = std::clamp(settings_.ssaa, 1, 3);
+  out.options.filter = settings_.filter;
 
   // Reject objects by their bounding sphere: behind the viewer, beyond the far plane or
   // outside the view cone (the sphere's distance to each side plane).
@@ -249,6 +259,15 @@ void FlyProgram::sound(Synth& synth) {
   for (; pending_crashes_ > 0; --pending_crashes_) synth.play(Effect::Crash);
 }
 
+std::string FlyProgram::help() const {
+  auto k = [&](Action a) { return key_label(settings_.key(a)); };
+  return "FLY\n\n" + k(Action::Left) + " / " + k(Action::Right) + "  TURN\n" + k(Action::Throttle) + "  DIVE     " +
+         k(Action::Brake) + "  CLIMB\n" + k(Action::Faster) + " OR CTRL  FASTER\n" + k(Action::Slower) +
+         " OR SHIFT  SLOWER\n\nP  PAUSE     ESC  MENU (RESUME, RESTART, OPTIONS)\n\n"
+         "FLY AMONG THE STATIONS AND THEIR MOONS.\nYOU CANNOT FLY THROUGH THEM.\n"
+         "GAMEPAD: STICK STEERS, TRIGGERS CHANGE SPEED";
+}
+
 ShellText fly_shell_text() {
   ShellText text;
   text.title = "VELOCITY FLIGHT";
@@ -257,10 +276,12 @@ ShellText fly_shell_text() {
   text.credits =
       "*VELOCITY FLIGHT\n\nA FLIGHT AMONG STATIONS AND MOONS\nIN THE STYLE OF 1990S 3D DEMOS\n\n\n"
       "*ENGINE\nVELOCITY SOFTWARE RENDERER\nEVERY PIXEL ON THE CPU\n\n\n"
-      "*CONTROLS\nLEFT / RIGHT  TURN\nUP  DIVE     DOWN  CLIMB\nA or CTRL  FASTER\nZ or SHIFT  SLOWER\nESC  MENU\n\n\n"
+      "*CONTROLS\nLEFT / RIGHT  TURN\nUP  DIVE     DOWN  CLIMB\nA or CTRL  FASTER\nZ or SHIFT  SLOWER\nP  PAUSE     F1  HELP     ESC  MENU\n\n\n"
       "*MODELS\nCUBES, PYRAMIDS AND TORI\nOR YOUR OWN PLG FILES\n\n\n"
       "*MUSIC AND SOUND\nSYNTHESISED AS YOU LISTEN\n\n\n"
       "*THANK YOU FOR FLYING\n";
+  text.bindings = {{Action::Throttle, "DIVE"},    {Action::Brake, "CLIMB"},  {Action::Left, "TURN LEFT"},
+                   {Action::Right, "TURN RIGHT"}, {Action::Faster, "FASTER"}, {Action::Slower, "SLOWER"}};
   return text;
 }
 

@@ -31,6 +31,9 @@ class FlyProgram : public Game {
   std::string title() const override { return "Velocity - flythrough"; }
   void set_attract(bool on) override { attract_ = on; }
   void restart() override;
+  std::string help() const override;
+  void set_gamepad(const GamepadState& pad) override { pad_ = pad; }
+  void set_settings(const Settings& s) override { settings_ = s; }
 
   // Flight state, for tests.
   Vec3 position() const { return pos_; }
@@ -76,6 +79,8 @@ class FlyProgram : public Game {
   int collisions_ = 0, pending_crashes_ = 0;
   size_t rejected_ = 0;
   float clearance_ = 1e30f;
+  GamepadState pad_;
+  Settings settings_;
 };
 
 // The title screen, menu and credits around the flight (plain words: no seed numbers).

@@ -62,4 +62,10 @@ void InputState::apply(const InputEvent& e) {
   }
 }
 
+std::string key_label(Key key) {
+  std::string s = key_name(key);
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
 }  // namespace velocity::realtime

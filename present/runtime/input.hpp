@@ -37,6 +37,8 @@ enum Key : int {
 // "left", "esc", "f11", "a", "+" ... to a Key (case-insensitive); nullopt if unknown.
 std::optional<Key> parse_key(std::string_view name);
 std::string key_name(Key key);
+// The key as the screens show it: "UP", "W", "PAGEUP".
+std::string key_label(Key key);
 
 enum class MouseButton { Left = 1, Middle = 2, Right = 3 };
 
@@ -47,6 +49,16 @@ struct InputEvent {
   int x = 0, y = 0;   // mouse position in frame pixels; Resize: the new window size
   float wheel = 0;    // Wheel: positive away from the user (zoom in)
   std::string path;   // Drop
+};
+
+// A game controller's sticks and triggers (SDL's GameController layout); its buttons
+// arrive as key events (the d-pad as arrows, A as Enter, B and Back as Esc, Start as P).
+struct GamepadState {
+  bool connected = false;
+  float steer = 0;     // left stick across: -1 left .. 1 right
+  float pitch = 0;     // left stick up and down: -1 up .. 1 down
+  float throttle = 0;  // right trigger 0..1
+  float brake = 0;     // left trigger 0..1
 };
 
 // What is held down now, kept up to date from the events.

@@ -73,7 +73,7 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
   f.overlay.draw(canvas);
   if (!job.stats_text.empty()) {
     int scale = std::max(1, job.height / 300);
-    int w = text_width(job.stats_text, scale) + 6 * scale, h = text_height(job.stats_text, scale) + 6 * scale;
+    int w = text_width(job.stats_text, scale) + 6 * scale, h = stats_band_height(job.height);
     fill_rect(canvas, 0, 0, w, h, {0, 0, 0, 150});
     draw_text(canvas, 3 * scale, 3 * scale + scale, job.stats_text, {255, 255, 120, 255}, scale);
   }
@@ -91,6 +91,11 @@ void install_stop_signals() {
 }
 
 int stop_signal() { return int(g_stop_signal); }
+
+int stats_band_height(int frame_height) {
+  int scale = std::max(1, frame_height / 300);
+  return text_height("0", scale) + 6 * scale;
+}
 
 double percentile(std::vector<double> samples, double fraction) {
   if (samples.empty()) return 0;
@@ -125,6 +130,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   program.resize(width, height);
   bool overlay = o.overlay;
   int mode = -1;  // index into kScreenModes once F2 is pressed; 4 = the window's size
+  int asked_mode = -1;  // the last mode the program asked for
 
   Renderer renderer(std::max(width, 1), std::max(height, 1));
   renderer.options.threads = o.threads;
@@ -174,17 +180,18 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     events.clear();
     if (presenter) presenter->poll(events);
     if (script) script->due(sim_time, events);
+    auto set_mode = [&](int m) {
+      mode = m;
+      follow = mode == 4 && presenter;
+      if (mode < 4) width = kScreenModes[mode].width, height = kScreenModes[mode].height;
+      else if (presenter) std::tie(width, height) = presenter->window_size();
+      program.resize(width, height);
+    };
     for (const InputEvent& e : events) {
       if (e.kind == InputEvent::Quit) quit = true;
       if (e.kind == InputEvent::KeyDown && e.key == KeyF11 && presenter) presenter->toggle_fullscreen();
       if (e.kind == InputEvent::KeyDown && e.key == KeyF3) overlay = !overlay;
-      if (e.kind == InputEvent::KeyDown && e.key == KeyF2) {
-        mode = (mode + 1) % 5;
-        follow = mode == 4 && presenter;
-        if (mode < 4) width = kScreenModes[mode].width, height = kScreenModes[mode].height;
-        else if (presenter) std::tie(width, height) = presenter->window_size();
-        program.resize(width, height);
-      }
+      if (e.kind == InputEvent::KeyDown && e.key == KeyF2) set_mode((mode + 1) % 5);
       if (e.kind == InputEvent::Resize && follow && e.x > 0 && e.y > 0) {
         width = std::min(e.x, 16384), height = std::min(e.y, 16384);
         program.resize(width, height);
@@ -192,8 +199,22 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
       input.apply(e);
       program.event(e, input);
     }
+    // A screen mode chosen on an options screen, as F2 would.
+    if (int asked = program.screen_mode(); asked != asked_mode) {
+      if (asked >= 0 && asked <= 4) {
+        set_mode(asked);
+      } else if (asked == -1) {  // back to the size the run started with
+        mode = -1;
+        follow = o.follow_window && presenter;
+        if (follow) std::tie(width, height) = presenter->window_size();
+        else width = o.width, height = o.height;
+        program.resize(width, height);
+      }
+    }
+    asked_mode = program.screen_mode();
     if (program.finished() || g_stop_signal) quit = true;
     if (quit) break;
+    program.set_gamepad(presenter ? presenter->gamepad() : GamepadState{});
 
     program.update(n > 0 ? dt : 0.0, input);
     if (o.synth) program.sound(*o.synth);

@@ -29,6 +29,8 @@ class Presenter {
   virtual void toggle_fullscreen() = 0;
   // The window's drawable size in pixels.
   virtual std::pair<int, int> window_size() const = 0;
+  // The first game controller's sticks and triggers (none: connected = false).
+  virtual GamepadState gamepad() const { return {}; }
 };
 
 // The seed's screen modes (F2 cycles them, then "the window's own size").
@@ -71,6 +73,10 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
 void install_stop_signals();
 // The signal that asked run_loop to stop; 0 when none.
 int stop_signal();
+
+// The height of the frame-rate overlay's band at the top of a frame this high (the
+// games keep their displays out of it).
+int stats_band_height(int frame_height);
 
 // The value below which `fraction` (0..1) of `samples` lie (nearest rank); 0 when empty.
 double percentile(std::vector<double> samples, double fraction);

@@ -46,6 +46,11 @@ class Program {
   // until input comes (in a window, when no fixed step or frame count is asked for).
   virtual bool changed() const { return true; }
   virtual std::string title() const = 0;
+  // The game controller's state, before each update (connected = false when there is none).
+  virtual void set_gamepad(const GamepadState&) {}
+  // A screen mode the program asks for (index into the loop's modes, 4 = the window's
+  // size); -1 for none. The loop switches when it changes, as F2 does.
+  virtual int screen_mode() const { return -1; }
 
   int width() const { return width_; }
   int height() const { return height_; }

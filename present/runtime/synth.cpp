@@ -22,21 +22,44 @@ double midi_hz(int note) { return 440.0 * std::pow(2.0, (note - 69) / 12.0); }
 
 Synth::Synth(int sample_rate) : rate_(std::max(sample_rate, 8000)) {}
 
+// The setters change the program's copy and hand it over when the audio thread is not
+// rendering. They never wait for it: on a busy machine the audio thread can be taken off
+// the processor while it holds the lock, and a frame that waited for it would wait for
+// the scheduler (tens of milliseconds). What is not handed over now goes with the next
+// call (the programs set their sound every frame).
+void Synth::set_volume(float volume) {
+  if (std::isfinite(volume)) wanted_.volume = std::clamp(volume, 0.0f, 1.0f);
+  hand_over();
+}
+
 void Synth::set_engine(bool on, float hz, float volume) {
-  std::lock_guard lock(mutex_);
-  engine_on_ = on;
-  if (std::isfinite(hz)) engine_target_ = std::clamp(hz, 20.0f, 2000.0f);
-  if (std::isfinite(volume)) engine_volume_ = std::clamp(volume, 0.0f, 1.0f);
+  wanted_.engine_on = on;
+  if (std::isfinite(hz)) wanted_.engine_target = std::clamp(hz, 20.0f, 2000.0f);
+  if (std::isfinite(volume)) wanted_.engine_volume = std::clamp(volume, 0.0f, 1.0f);
+  hand_over();
 }
 
 void Synth::set_music(bool on) {
-  std::lock_guard lock(mutex_);
-  music_on_ = on;
+  wanted_.music_on = on;
+  hand_over();
 }
 
 void Synth::play(Effect effect) {
-  std::lock_guard lock(mutex_);
-  if (voices_.size() < 16) voices_.push_back({effect, 0});
+  if (wanted_.effects.size() < 16) wanted_.effects.push_back(effect);
+  hand_over();
+}
+
+void Synth::hand_over() {
+  std::unique_lock lock(mutex_, std::try_to_lock);
+  if (!lock) return;
+  volume_ = wanted_.volume;
+  engine_on_ = wanted_.engine_on;
+  engine_target_ = wanted_.engine_target;
+  engine_volume_ = wanted_.engine_volume;
+  music_on_ = wanted_.music_on;
+  for (Effect e : wanted_.effects)
+    if (voices_.size() < 16) voices_.push_back({e, 0});
+  wanted_.effects.clear();
 }
 
 float Synth::engine_hz() const {
@@ -98,7 +121,7 @@ float Synth::next_sample() {
 void Synth::render(int16_t* out, size_t count) {
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < count; ++i) {
-    float s = std::clamp(next_sample(), -1.0f, 1.0f);
+    float s = std::clamp(next_sample() * volume_, -1.0f, 1.0f);
     out[i] = int16_t(std::lrint(s * 32000.0f));
   }
 }

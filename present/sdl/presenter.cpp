@@ -52,7 +52,29 @@ struct SdlPresenter::Impl {
   SDL_Texture* texture = nullptr;
   int tex_w = 0, tex_h = 0;
   bool fullscreen = false;
+  SDL_GameController* pad = nullptr;  // the first game controller, while connected
+  bool pads = false;                  // the game controller subsystem started
 };
+
+namespace {
+
+// A controller's buttons as keys: the d-pad as arrows, A as Enter, B and Back as Esc,
+// Start as P (pause).
+realtime::Key controller_key(int button) {
+  switch (button) {
+    case SDL_CONTROLLER_BUTTON_DPAD_UP: return realtime::KeyUp;
+    case SDL_CONTROLLER_BUTTON_DPAD_DOWN: return realtime::KeyDown;
+    case SDL_CONTROLLER_BUTTON_DPAD_LEFT: return realtime::KeyLeft;
+    case SDL_CONTROLLER_BUTTON_DPAD_RIGHT: return realtime::KeyRight;
+    case SDL_CONTROLLER_BUTTON_A: return realtime::KeyEnter;
+    case SDL_CONTROLLER_BUTTON_B:
+    case SDL_CONTROLLER_BUTTON_BACK: return realtime::KeyEscape;
+    case SDL_CONTROLLER_BUTTON_START: return realtime::Key('p');
+    default: return realtime::KeyNone;
+  }
+}
+
+}  // namespace
 
 SdlPresenter::SdlPresenter(const WindowOptions& o) : impl_(std::make_unique<Impl>()) {
   const bool chosen = SDL_GetHint(SDL_HINT_VIDEODRIVER) != nullptr;  // SDL_VIDEODRIVER
@@ -98,9 +120,28 @@ SdlPresenter::SdlPresenter(const WindowOptions& o) : impl_(std::make_unique<Impl
     throw Error("cannot draw to the window: " + why);
   }
   SDL_EventState(SDL_DROPFILE, SDL_ENABLE);
+  // Game controllers are optional: without the subsystem there is just no gamepad.
+  impl_->pads = SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0;
+}
+
+realtime::GamepadState SdlPresenter::gamepad() const {
+  realtime::GamepadState g;
+  SDL_GameController* pad = impl_->pad;
+  if (!pad || !SDL_GameControllerGetAttached(pad)) return g;
+  auto axis = [&](SDL_GameControllerAxis a) {
+    return std::clamp(float(SDL_GameControllerGetAxis(pad, a)) / 32767.0f, -1.0f, 1.0f);
+  };
+  g.connected = true;
+  g.steer = axis(SDL_CONTROLLER_AXIS_LEFTX);
+  g.pitch = axis(SDL_CONTROLLER_AXIS_LEFTY);
+  g.throttle = std::max(0.0f, axis(SDL_CONTROLLER_AXIS_TRIGGERRIGHT));
+  g.brake = std::max(0.0f, axis(SDL_CONTROLLER_AXIS_TRIGGERLEFT));
+  return g;
 }
 
 SdlPresenter::~SdlPresenter() {
+  if (impl_->pad) SDL_GameControllerClose(impl_->pad);
+  if (impl_->pads) SDL_QuitSubSystem(SDL_INIT_GAMECONTROLLER);
   if (impl_->texture) SDL_DestroyTexture(impl_->texture);
   SDL_DestroyRenderer(impl_->renderer);
   SDL_DestroyWindow(impl_->window);
@@ -121,6 +162,21 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
         if (e.key == realtime::KeyNone) continue;
         // Alt+Enter toggles fullscreen, as F11 does.
         if (e.key == realtime::KeyEnter && (ev.key.keysym.mod & KMOD_ALT)) e.key = realtime::KeyF11;
+        break;
+      case SDL_CONTROLLERDEVICEADDED:
+        if (!impl_->pad && SDL_IsGameController(ev.cdevice.which)) impl_->pad = SDL_GameControllerOpen(ev.cdevice.which);
+        continue;
+      case SDL_CONTROLLERDEVICEREMOVED:
+        if (impl_->pad && SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(impl_->pad)) == ev.cdevice.which) {
+          SDL_GameControllerClose(impl_->pad);
+          impl_->pad = nullptr;
+        }
+        continue;
+      case SDL_CONTROLLERBUTTONDOWN:
+      case SDL_CONTROLLERBUTTONUP:
+        e.kind = ev.type == SDL_CONTROLLERBUTTONDOWN ? InputEvent::KeyDown : InputEvent::KeyUp;
+        e.key = controller_key(ev.cbutton.button);
+        if (e.key == realtime::KeyNone) continue;
         break;
       case SDL_MOUSEMOTION:
         // With a logical size set, SDL gives positions in frame pixels.

@@ -36,6 +36,9 @@ class SdlPresenter : public realtime::Presenter {
   void set_title(const std::string& title) override;
   void toggle_fullscreen() override;
   std::pair<int, int> window_size() const override;
+  // The first game controller SDL knows (GameController API); its buttons come through
+  // poll() as keys (see runtime/input.hpp).
+  realtime::GamepadState gamepad() const override;
   // The video driver in use ("x11", "wayland", "dummy", ...) and the renderer's name.
   std::string driver() const;
   // Whether the window shows nowhere (SDL's dummy or offscreen driver, chosen with

@@ -244,7 +244,8 @@ TEST(Drive, ScriptedDriveSteersTheFrontWheelsAndSpinsAllFour) {
   EXPECT_LT(length(wheel - drive.car().position), 2.0f);
   EXPECT_GT(drive.car().speed, 10.0f);
   EXPECT_GT(drive.car().heading, 0.05f);  // turned left
-  EXPECT_EQ(drive.car().position.y, 0.0f);
+  // On the ground: the road's surface under the car.
+  EXPECT_NEAR(drive.car().position.y, drive.circuit().height(drive.car().position.x, drive.car().position.z), 0.05f);
 }
 
 TEST(Drive, PhysicsLimits) {
@@ -287,7 +288,7 @@ TEST(Menu, ReactsToMouseMoveAndClick) {
   FlyOptions fo;
   fo.objects = 10;
   FlyProgram fly(fo);
-  Shell shell(fly, {"TITLE", "SUB", "FLY", "*CREDITS\nNAME"});
+  Shell shell(fly, {"TITLE", "SUB", "FLY", "*CREDITS\nNAME", {}});
   shell.resize(640, 400);
   EXPECT_EQ(shell.screen(), Shell::Screen::Title);
   run_scripted(shell, "0.5 press space\n", 1.5);
@@ -321,7 +322,8 @@ TEST(Menu, ReactsToMouseMoveAndClick) {
   // Any key back to the menu; Enter on the highlighted START flies; Esc back; Quit.
   run_scripted(shell, "0 press x\n", 1.0);
   EXPECT_EQ(shell.screen(), Shell::Screen::Menu);
-  run_scripted(shell, "0 press down\n0.1 press up\n0.2 press up\n0.3 press enter\n", 1.2);
+  // (From CREDITS, the fourth button: down to QUIT, then up four to the first.)
+  run_scripted(shell, "0 press down\n0.1 press up\n0.15 press up\n0.2 press up\n0.25 press up\n0.3 press enter\n", 1.2);
   EXPECT_EQ(shell.screen(), Shell::Screen::Game);
   run_scripted(shell, "0 press esc\n", 1.0);
   EXPECT_EQ(shell.screen(), Shell::Screen::Menu);

@@ -20,7 +20,10 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_option("--scale", a.scale, "Window size as a multiple of the frame size (default: fits the screen)");
   cmd->add_flag("--fullscreen", a.fullscreen, "Start fullscreen (F11 or Alt+Enter toggles)");
   cmd->add_option("--frames", a.frames, "Stop after this many frames");
-  cmd->add_option("--record", a.record, "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step)");
+  cmd->add_option("--record", a.record,
+                  a.command == "drive" ? "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step); a name ending in "
+                                         ".replay records the race instead, for --replay"
+                                       : "Write every frame to DIR/frame_NNNNN.png (fixed 1/60 s step)");
   cmd->add_option("--script", a.script, "Timed key presses and mouse events (see present/runtime/script.hpp)");
   cmd->add_flag("--headless", a.headless, "No window; needs --frames N or --script FILE to end the run");
   cmd->add_flag("--mute", a.mute, "No sound");
@@ -44,7 +47,7 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   if (a.scale < 0 || a.scale > 16) throw Error("--scale must be 1..16");
   if (a.linger < 0 || a.linger > 3600) throw Error("--linger must be 0..3600 seconds");
   // Something must end a run nobody sees: --frames, or a script (it ends when played out).
-  const bool bounded = a.frames > 0 || !a.script.empty();
+  const bool bounded = a.frames > 0 || !a.script.empty() || a.ends_itself;
   if (a.headless && !bounded)
     throw Error("--headless runs until something ends it: give --frames N, or --script FILE (the run ends when "
                 "the script has played out)");
