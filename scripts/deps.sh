@@ -23,12 +23,17 @@
 #   python3-distributed              the batch renderer on a Dask cluster (and its tests)
 #   libsdl2-dev                      the real-time window, input and sound (present/: view, fly, drive)
 #   xvfb                             a display for the window's test (present/tests/window_test.py)
+#   libx11-dev, libxext-dev          the GLX vendor library (gl/glx/): Xlib, and MIT-SHM to show frames
+#   libglvnd-dev                     its interface to libglvnd (glvnd/libglxabi.h) and the system's
+#                                    libGL its tests link, as any GLX program does
+#   mesa-utils                       glxgears, run unmodified on the GLX vendor (gl/glx/tests)
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader
 #   nodejs, npm                      its pinned three.js from npm (tests/reference/threejs/package-lock.json);
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
-  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed libsdl2-dev xvfb chromium "$@")
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed libsdl2-dev xvfb
+  libx11-dev libxext-dev libglvnd-dev mesa-utils chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.
 command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()

@@ -61,6 +61,9 @@ class Context {
   int width() const { return width_; }
   int height() const { return height_; }
   bool y_up = true;
+  // A GLX context on a double-buffered drawable (gl/glx/): it draws into the back
+  // buffer, and glGet says so (GL_DOUBLEBUFFER, GL_DRAW_BUFFER GL_BACK).
+  bool double_buffered = false;
   int row_length = 0;
 
   // --- errors
