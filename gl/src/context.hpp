@@ -279,6 +279,7 @@ class Context {
   std::vector<Pending> submitted_;  // kept alive until the frame ends; reused
   size_t submitted_used_ = 0;
   std::vector<std::shared_ptr<const Texture>> frame_textures_;
+  size_t frame_texture_bytes_ = 0;  // their texels' size
   size_t frame_vertices_ = 0;
 };
 
