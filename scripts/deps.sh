@@ -27,13 +27,15 @@
 #   libglvnd-dev                     its interface to libglvnd (glvnd/libglxabi.h) and the system's
 #                                    libGL its tests link, as any GLX program does
 #   mesa-utils                       glxgears, run unmodified on the GLX vendor (gl/glx/tests)
+#   libwaffle-1-0, python3-mako,     what piglit's GL 1.x tests need to run (scripts/piglit.sh unpacks
+#   python3-six                      piglit itself from its package, without its 2 GB of shader tests)
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader
 #   nodejs, npm                      its pinned three.js from npm (tests/reference/threejs/package-lock.json);
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed libsdl2-dev xvfb
-  libx11-dev libxext-dev libglvnd-dev mesa-utils chromium "$@")
+  libx11-dev libxext-dev libglvnd-dev mesa-utils libwaffle-1-0 python3-mako python3-six chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.
 command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()
