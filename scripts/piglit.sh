@@ -18,8 +18,9 @@
 # mako) come from scripts/deps.sh.
 #
 # The run: a private Xvfb (-noreset: piglit opens and closes many connections),
-# PIGLIT_PLATFORM=glx, `piglit run -p glx -t 'spec@!opengl 1\.[0-5]@' quick_gl`, each
-# test at most 120 s, two at a time, VELOCITY_THREADS=1 per test.
+# PIGLIT_PLATFORM=glx, `piglit run -p glx -t 'spec@!opengl 1\.[0-5]@' quick_gl`, two
+# tests at a time, VELOCITY_THREADS=1 each, each at most 300 s (streaming-texture-leak,
+# 5000 textures, takes about 100 s).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(cd "${1:-$root/build}" && pwd)"
@@ -70,7 +71,7 @@ rm -rf "$results"
 start=$SECONDS
 env DISPLAY=":$display" PIGLIT_PLATFORM=glx "${env_vendor[@]}" VELOCITY_THREADS=1 LP_NUM_THREADS=1 \
   ${libdir:+LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"} \
-  "$piglit" run -p glx -j 2 --timeout 120 -t "$tests" -x "$exclude" quick_gl "$results" >"$results.log" 2>&1 || {
+  "$piglit" run -p glx -j 2 --timeout 300 -t "$tests" -x "$exclude" quick_gl "$results" >"$results.log" 2>&1 || {
   tail -20 "$results.log"; echo "piglit: the run failed" >&2; exit 1; }
 echo "piglit: $((SECONDS - start)) s on $vendor's GLX vendor"
 if [[ "$vendor" == velocity ]]; then
