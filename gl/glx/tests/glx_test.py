@@ -4,6 +4,8 @@ chooses it: __GLX_VENDOR_LIBRARY_NAME=velocity, the library on LD_LIBRARY_PATH.
 
     glx_test.py api GLX_CHECK LIBDIR WORKDIR   glx_check.c, with MIT-SHM and with
                                               VELOCITY_GLX_SHM=0 (XPutImage)
+    glx_test.py installed BUILD GLX_CHECK WORKDIR   the same checks on the copy
+                                              `cmake --install BUILD --prefix` installs
     glx_test.py gears LIBDIR WORKDIR           Debian's glxgears, unmodified: it says it
                                               runs on Velocity, counts frames, and its
                                               window shows the three gears (the screen
@@ -55,6 +57,15 @@ def api(check, libdir, work):
     return 0
 
 
+def installed(build, check, work):
+    prefix = os.path.join(work, "prefix")
+    subprocess.run(["cmake", "--install", build, "--prefix", prefix], check=True, stdout=subprocess.DEVNULL)
+    found = [d for d, _, files in os.walk(prefix) if "libGLX_velocity.so.0" in files]
+    assert found, "cmake --install did not install libGLX_velocity.so.0"
+    print(f"installed: {found[0]}/libGLX_velocity.so.0")
+    return api(check, found[0], work)
+
+
 def gears(libdir, work):
     glxgears = shutil.which("glxgears")
     if not glxgears:
@@ -103,6 +114,8 @@ def main():
     os.makedirs(work)
     if mode == "api":
         return api(sys.argv[2], sys.argv[3], work)
+    if mode == "installed":
+        return installed(sys.argv[2], sys.argv[3], work)
     return gears(sys.argv[2], work)
 
 
