@@ -10,6 +10,7 @@
 #   PIGLIT_CACHE=DIR     where Debian's piglit is unpacked when it is not installed
 #                        (default ~/.cache/velocity/piglit)
 #   PIGLIT_RESULTS=DIR   piglit's results (default BUILD_DIR/piglit)
+#   PIGLIT_FROM_PACKAGE=1  use the unpacked package even where piglit is installed
 #
 # piglit: the installed one (Debian's piglit package) if there is one. Otherwise the
 # package is downloaded with apt-get download (34 MB) and only what quick_gl's GL 1.x
@@ -31,7 +32,8 @@ tests='spec@!opengl 1\.[0-5]@'
 # uploads 4096x4096 textures of every internal format, minutes on 2 cores.
 exclude='spec@!opengl 1\.1@max-texture-size$'
 
-piglit="$(command -v piglit || true)"
+piglit=""
+[[ -n "${PIGLIT_FROM_PACKAGE:-}" ]] || piglit="$(command -v piglit || true)"
 libdir=""
 if [[ -z "$piglit" ]]; then
   cache="${PIGLIT_CACHE:-$HOME/.cache/velocity/piglit}"
