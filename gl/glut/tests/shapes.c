@@ -1,4 +1,4 @@
-/* GLUT's shapes, solid and wire, lit, each turned so that its asymmetries show: built
+/* GLUT's shapes (the teapot too), solid and wire, lit, each turned so that its asymmetries show: built
  * against Velocity's GLUT and against freeglut (on Mesa's GLX), each run writes its
  * frames (glReadPixels) as PPMs into the folder it is given, and velocity_gl_compare
  * holds them side by side (shapes_test.py). */
@@ -58,6 +58,31 @@ static void frame(int wire) {
   (wire ? glutWireIcosahedron : glutSolidIcosahedron)();
 }
 
+static void teapots(void) {
+  static const unsigned char texels[4 * 4 * 3] = {255, 40,  40,  40, 255, 40,  40, 40,  255, 255, 255, 40,
+                                                  40,  255, 255, 255, 40, 255, 200, 200, 200, 90,  90,  90,
+                                                  255, 128, 0,   0,  128, 255, 128, 0,   255, 0,   255, 128,
+                                                  250, 250, 250, 10, 10,  10,  128, 128, 128, 60,  200, 90};
+  glClearColor(0.1f, 0.1f, 0.15f, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  place(-2.0f, 0.9f);
+  glRotatef(70, 1, 0, 0);
+  glutSolidTeapot(0.9);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glEnable(GL_TEXTURE_2D);
+  place(1.6f, 0.9f);
+  glRotatef(40, 0, 0, 1);
+  glRotatef(70, 1, 0, 0);
+  glutSolidTeapot(0.9);
+  glDisable(GL_TEXTURE_2D);
+  place(-0.2f, -1.3f);
+  glRotatef(70, 1, 0, 0);
+  glutWireTeapot(1.0);
+}
+
 static void display(void) {
   const GLfloat pos[4] = {0.5f, 0.8f, 1.0f, 0}, diffuse[4] = {0.9f, 0.8f, 0.6f, 1};
   glViewport(0, 0, kWidth, kHeight);
@@ -77,6 +102,10 @@ static void display(void) {
   glDisable(GL_LIGHTING);
   frame(1);
   save("wire");
+  /* Teapots: solid (lit, then textured with its patches' coordinates) and wire. */
+  glEnable(GL_LIGHTING);
+  teapots();
+  save("teapot");
   exit(0);
 }
 

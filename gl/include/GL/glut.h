@@ -126,7 +126,7 @@ void glutTimerFunc(unsigned int milliseconds, void (*callback)(int value), int v
 void glutMainLoop(void);
 void glutLeaveMainLoop(void);
 
-/* Shapes, as freeglut draws them (the teapot is not here). */
+/* Shapes, as freeglut draws them. */
 void glutSolidSphere(double radius, GLint slices, GLint stacks);
 void glutWireSphere(double radius, GLint slices, GLint stacks);
 void glutSolidCone(double base, double height, GLint slices, GLint stacks);
@@ -143,6 +143,8 @@ void glutSolidOctahedron(void);
 void glutWireOctahedron(void);
 void glutSolidTetrahedron(void);
 void glutWireTetrahedron(void);
+void glutSolidTeapot(double size);
+void glutWireTeapot(double size);
 
 /* State */
 int glutGet(GLenum what);
