@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -46,11 +47,15 @@ void circle(int n, bool half, std::vector<float>& s, std::vector<float>& c) {
   else s[size_t(size)] = s[0], c[size_t(size)] = c[0];
 }
 
+// freeglut computes in float: a size beyond float's range (or NaN) draws nothing here
+// rather than being converted (which C++ leaves undefined).
+bool fits_float(double v) { return std::fabs(v) <= double(std::numeric_limits<float>::max()); }
+
 // Counts beyond what 16-bit indices reach draw nothing (freeglut's indices wrap there).
 bool too_many(long long vertices) { return vertices > 65535; }
 
 void sphere(double radius, int slices, int stacks, bool wire) {
-  if (slices <= 0 || stacks < 2 || too_many(1LL * slices * (stacks - 1) + 2)) return;
+  if (slices <= 0 || stacks < 2 || too_many(1LL * slices * (stacks - 1) + 2) || !fits_float(radius)) return;
   std::vector<float> s1, c1, s2, c2;
   circle(-slices, false, s1, c1);
   circle(stacks, true, s2, c2);
@@ -94,6 +99,7 @@ void sphere(double radius, int slices, int stacks, bool wire) {
 
 void cone(double base, double height, int slices, int stacks, bool wire) {
   if (slices <= 0 || stacks < 1 || too_many(1LL * slices * (stacks + 2) + 1)) return;
+  if (!fits_float(base) || !fits_float(height)) return;
   std::vector<float> s, c;
   circle(-slices, false, s, c);
   const float fb = float(base), fh = float(height);
@@ -132,7 +138,7 @@ void cone(double base, double height, int slices, int stacks, bool wire) {
 }
 
 void torus(double inner, double outer, int sides, int rings, bool wire) {
-  if (sides < 2 || rings < 2 || too_many(1LL * sides * rings)) return;
+  if (sides < 2 || rings < 2 || too_many(1LL * sides * rings) || !fits_float(inner) || !fits_float(outer)) return;
   std::vector<float> spsi, cpsi, sphi, cphi;
   circle(rings, false, spsi, cpsi);
   circle(-sides, false, sphi, cphi);
@@ -291,8 +297,12 @@ void glutSolidCone(double base, double height, GLint slices, GLint stacks) {
 void glutWireCone(double base, double height, GLint slices, GLint stacks) { cone(base, height, slices, stacks, true); }
 void glutSolidTorus(double inner, double outer, GLint sides, GLint rings) { torus(inner, outer, sides, rings, false); }
 void glutWireTorus(double inner, double outer, GLint sides, GLint rings) { torus(inner, outer, sides, rings, true); }
-void glutSolidCube(double size) { kCube.draw(float(size), false); }
-void glutWireCube(double size) { kCube.draw(float(size), true); }
+void glutSolidCube(double size) {
+  if (fits_float(size)) kCube.draw(float(size), false);
+}
+void glutWireCube(double size) {
+  if (fits_float(size)) kCube.draw(float(size), true);
+}
 void glutSolidDodecahedron(void) { kDodecahedron.draw(1, false); }
 void glutWireDodecahedron(void) { kDodecahedron.draw(1, true); }
 void glutSolidIcosahedron(void) { icosahedron().draw(1, false); }

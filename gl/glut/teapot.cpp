@@ -7,6 +7,7 @@
 #include <GL/glut.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -159,6 +160,8 @@ void put(const Grid& g, int k, bool texture) {
 }
 
 void teapot(double size, bool wire) {
+  // freeglut computes in float: a size beyond float's range (or NaN) draws nothing.
+  if (!(std::fabs(size) <= double(std::numeric_limits<float>::max()))) return;
   const int n = wire ? 10 : 8;
   const Grid g = build(float(size), n);
   const int patches = int(g.pos.size() / size_t(3 * n * n));

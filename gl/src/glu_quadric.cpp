@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <vector>
 
@@ -24,6 +25,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // GLU caps slices and stacks (a larger count is drawn at 239).
 constexpr int kMaxDivisions = 239;
+
+// GLU computes in float: a size or angle beyond float's range (or NaN) is refused, not
+// converted (which C++ leaves undefined).
+bool fits_float(double v) { return std::fabs(v) <= double(std::numeric_limits<float>::max()); }
 
 void report(GLUquadric* q, GLenum error) {
   if (q->error) q->error(error);
@@ -355,7 +360,7 @@ void gluQuadricDrawStyle(GLUquadric* q, GLenum style) {
 void gluSphere(GLUquadric* q, GLdouble radius, GLint slices, GLint stacks) {
   if (!q) return;
   slices = std::min(slices, kMaxDivisions), stacks = std::min(stacks, kMaxDivisions);
-  if (slices < 2 || stacks < 1 || !(radius >= 0.0) || !std::isfinite(radius))
+  if (slices < 2 || stacks < 1 || !(radius >= 0.0) || !fits_float(radius))
     return report(q, GLU_INVALID_VALUE);
   const Sphere s(*q, radius, slices, stacks);
   if (q->style == GLU_FILL) s.fill();
@@ -367,7 +372,7 @@ void gluCylinder(GLUquadric* q, GLdouble base, GLdouble top, GLdouble height, GL
   if (!q) return;
   slices = std::min(slices, kMaxDivisions);
   if (slices < 2 || stacks < 1 || !(base >= 0.0) || !(top >= 0.0) || !(height >= 0.0) ||
-      !std::isfinite(base + top + height))
+      !fits_float(base) || !fits_float(top) || !fits_float(height))
     return report(q, GLU_INVALID_VALUE);
   // A cylinder of no size has no normal (GLU: an error).
   const double length = std::hypot(base - top, height);
@@ -383,7 +388,7 @@ void gluPartialDisk(GLUquadric* q, GLdouble inner, GLdouble outer, GLint slices,
   if (!q) return;
   slices = std::min(slices, kMaxDivisions);
   if (slices < 2 || loops < 1 || !(outer > 0.0) || !(inner >= 0.0) || inner > outer ||
-      !std::isfinite(outer) || !std::isfinite(start) || std::isnan(sweep))
+      !fits_float(outer) || !fits_float(start) || std::isnan(sweep))
     return report(q, GLU_INVALID_VALUE);
   // GLU's sweep: at most a turn (below -360 counts as a full turn), negative turns back.
   if (sweep < -360.0 || sweep > 360.0) sweep = 360.0;
