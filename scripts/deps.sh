@@ -30,13 +30,21 @@
 #   xvfb                             a display for the window's test (present/tests/window_test.py)
 #   xdotool, python3-gi,             a real X drag and drop onto the viewer (present/tests/drop_test.py):
 #   gir1.2-gtk-3.0                   xdotool moves the mouse, a GTK window is the drag source
+#   libx11-dev, libxext-dev          the GLX vendor library (gl/glx/): Xlib, and MIT-SHM to show frames
+#   libglvnd-dev                     its interface to libglvnd (glvnd/libglxabi.h) and the system's
+#                                    libGL its tests link, as any GLX program does
+#   mesa-utils                       glxgears, run unmodified on the GLX vendor (gl/glx/tests)
+#   freeglut3-dev                    freeglut, whose shapes GLUT's are compared with (gl/glut/tests/shapes_test.py)
+#   libwaffle-1-0, python3-mako,     what piglit's GL 1.x tests need to run (scripts/piglit.sh unpacks
+#   python3-six                      piglit itself from its package, without its 2 GB of shader tests)
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader
 #   nodejs, npm                      its pinned three.js from npm (tests/reference/threejs/package-lock.json);
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed python3-pil python3-tqdm
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libsdl2-dev xvfb xdotool python3-gi gir1.2-gtk-3.0 chromium "$@")
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libsdl2-dev xvfb xdotool python3-gi gir1.2-gtk-3.0
+  libx11-dev libxext-dev libglvnd-dev mesa-utils freeglut3-dev libwaffle-1-0 python3-mako python3-six chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.
 command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()

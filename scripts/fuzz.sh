@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (tests/fuzz) with clang in build-fuzz and runs each for
 # SECONDS (default 30).
 #
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp pyconvert gl script race
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert gl glx script race
 #
 # Seeds: tests/fuzz/corpus/<target>, tests/fuzz/regressions/<target>, the project's own
 # test files for the format, and the real files under ../shared/data read in place when
@@ -28,7 +28,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-30}"
 [[ $# -gt 0 ]] && shift
-all_targets=(asc plg pcx obj image raster assimp pyconvert gl script race)
+all_targets=(asc plg pcx obj image raster assimp embedded pyconvert gl glx script race)
 targets=("$@")
 ((${#targets[@]})) || targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do

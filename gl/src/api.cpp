@@ -633,7 +633,7 @@ const GLubyte* glGetString(GLenum name) {
     case GL_EXTENSIONS:
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
-          "GL_SGIS_texture_edge_clamp";
+          "GL_SGIS_texture_edge_clamp ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

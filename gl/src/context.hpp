@@ -61,6 +61,9 @@ class Context {
   int width() const { return width_; }
   int height() const { return height_; }
   bool y_up = true;
+  // A GLX context on a double-buffered drawable (gl/glx/): it draws into the back
+  // buffer, and glGet says so (GL_DOUBLEBUFFER, GL_DRAW_BUFFER GL_BACK).
+  bool double_buffered = false;
   int row_length = 0;
 
   // --- errors
@@ -276,6 +279,7 @@ class Context {
   std::vector<Pending> submitted_;  // kept alive until the frame ends; reused
   size_t submitted_used_ = 0;
   std::vector<std::shared_ptr<const Texture>> frame_textures_;
+  size_t frame_texture_bytes_ = 0;  // their texels' size
   size_t frame_vertices_ = 0;
 };
 

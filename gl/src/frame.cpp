@@ -78,7 +78,8 @@ void Context::submit_pending() {
   if (kept.viewport.width == 0 || kept.viewport.height == 0) return;  // nothing is drawn in an empty viewport
   renderer_->draw(b, kept.state);
   frame_vertices_ += kept.index.size();
-  if (frame_vertices_ > kMaxVerticesPerFrame) run_frame();  // bounded memory in a frame never flushed
+  // Bounded memory in a frame never flushed: its vertices, and the textures it holds.
+  if (frame_vertices_ > kMaxVerticesPerFrame || frame_texture_bytes_ > kMaxTextureBytesPerFrame) run_frame();
 }
 
 void Context::run_frame() {
@@ -90,6 +91,7 @@ void Context::run_frame() {
   for (size_t i = 0; i < submitted_used_; ++i) submitted_[i].clear();
   submitted_used_ = 0;
   frame_textures_.clear();
+  frame_texture_bytes_ = 0;
   frame_vertices_ = 0;
   // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
   // buffer of the framebuffer's width takes the colour directly.

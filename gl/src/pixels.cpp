@@ -31,6 +31,12 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
   const size_t align = size_t(std::max(alignment, 1));
   const size_t row_bytes = (size_t(width) * comps * tsize + align - 1) / align * align;
   const uint8_t* src = static_cast<const uint8_t*>(data);
+  if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
+    // The common upload is already the texels' layout (byte 0 red): rows copied whole.
+    for (int y = 0; y < height; ++y)
+      std::memcpy(out.data() + size_t(y) * width, src + size_t(y) * row_bytes, size_t(width) * 4);
+    return out;
+  }
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const uint8_t* p = src + size_t(y) * row_bytes + size_t(x) * comps * tsize;

@@ -86,10 +86,11 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     // no stereo, no multisampling (all 0 until they exist, whatever the context asked for).
     case GL_STENCIL_BITS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
     case GL_ACCUM_ALPHA_BITS: case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
-    case GL_DOUBLEBUFFER: case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
+    case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
+    case GL_DOUBLEBUFFER: out = {double_buffered ? 1.0 : 0.0}; return true;
     case GL_RGBA_MODE: out = {1}; return true;
-    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = {double(GL_FRONT)}; return true;
+    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = {double(double_buffered ? GL_BACK : GL_FRONT)}; return true;
     // The rasterizer's: window coordinates snap to 24.8 fixed point; points and lines
     // are aliased, of a whole number of pixels (the size rounded), 1 to 64 (glPointSize,
     // glLineWidth clamp there). There is no antialiasing: the "smooth" ranges

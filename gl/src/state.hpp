@@ -46,6 +46,9 @@ constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
 constexpr int kMaxListNesting = 64;
 constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
 constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
+// Texel bytes a frame may keep alive (textures replaced or deleted while the frame that
+// draws with them is pending): more, and the frame is run, as for vertices.
+constexpr size_t kMaxTextureBytesPerFrame = size_t(256) << 20;
 constexpr size_t kMaxBatchVertices = size_t(1) << 20;     // more: the batch goes to the renderer
 // A strip, fan, loop or polygon longer than this (GL_OUT_OF_MEMORY; the rest is dropped).
 constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;

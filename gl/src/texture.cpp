@@ -211,7 +211,10 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     t.complete = true;
   }
   if (!t.built) return nullptr;
-  if (frame_textures_.empty() || frame_textures_.back() != t.built) frame_textures_.push_back(t.built);
+  if (frame_textures_.empty() || frame_textures_.back() != t.built) {
+    frame_textures_.push_back(t.built);
+    for (const Texture::Level& l : t.built->levels()) frame_texture_bytes_ += l.texels.size() * 4;
+  }
   return t.built.get();
 }
 

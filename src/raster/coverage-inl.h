@@ -159,8 +159,8 @@ HWY_INLINE int small_blocks(const RecordHeader& r, int tx, int ty, const TileBox
   return n;
 }
 
-// A line: per column (x-major) or row (y-major) of the tile whose centre lies in the
-// half-open range along the major axis, `width` pixels across, centred on the segment.
+// A line: per column (x-major) or row (y-major) of the tile whose centre lies between
+// its start (included) and end (excluded), `width` pixels across, centred on the segment.
 inline HWY_NOINLINE int line_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
   const LineShape& l = shape<LineShape>(r);
   // Most lines touch a few blocks of the tile: collect their masks in `out` directly,
@@ -170,18 +170,33 @@ inline HWY_NOINLINE int line_blocks(const RecordHeader& r, int tx, int ty, const
   uint8_t place[kMaxBlocks];
   int n = 0;
   const bool xm = l.x_major != 0;
-  float a0 = xm ? l.x0 : l.y0, a1 = xm ? l.x1 : l.y1;  // major axis
-  float b0 = xm ? l.y0 : l.x0, b1 = xm ? l.y1 : l.x1;  // minor axis
-  if (a1 < a0) std::swap(a0, a1), std::swap(b0, b1);
+  const float a0 = xm ? l.x0 : l.y0, a1 = xm ? l.x1 : l.y1;  // major axis, start to end
+  const float b0 = xm ? l.y0 : l.x0, b1 = xm ? l.y1 : l.x1;  // minor axis
   const float len = a1 - a0;
   const int origin_a = xm ? tx : ty, origin_b = xm ? ty : tx;
-  const int lo_a = std::max(int(std::ceil(a0 - 0.5f)), origin_a + (xm ? box.x0 : box.y0));
-  const int hi_a = std::min(int(std::ceil(a1 - 0.5f)) - 1, origin_a + (xm ? box.x1 : box.y1));
+  // GL's diamond-exit rule along the major axis: the pixels whose centres lie from the
+  // start (included: the line leaves that pixel) to the end (excluded), in the line's
+  // direction, so reversing a line moves its first and last pixel, as in Mesa.
+  const int first = len >= 0 ? int(std::ceil(a0 - 0.5f)) : int(std::floor(a1 - 0.5f)) + 1;
+  const int last = len >= 0 ? int(std::ceil(a1 - 0.5f)) - 1 : int(std::floor(a0 - 0.5f));
+  const int lo_a = std::max(first, origin_a + (xm ? box.x0 : box.y0));
+  const int hi_a = std::min(last, origin_a + (xm ? box.x1 : box.y1));
   const int lo_b = origin_b + (xm ? box.y0 : box.x0), hi_b = origin_b + (xm ? box.y1 : box.x1);
   const int half = (l.width - 1) / 2;
+  // A crossing exactly on a pixel boundary lights the pixel below or left of it (a
+  // line on the boundary with gluOrtho2D(0, w, 0, h) and integer coordinates), except
+  // for a rising x-major line, which lights the one above: where Mesa puts them.
+  const bool tie_up = xm && (b1 - b0) * len > 0;
+  const bool skip_tied_start = len < 0 && (xm ? b1 - b0 >= 0 : b1 - b0 < 0);
   for (int a = lo_a; a <= hi_a; ++a) {
-    const float s = len > 0 ? (float(a) + 0.5f - a0) / len : 0.0f;
-    const int centre = int(std::floor(b0 + s * (b1 - b0)));
+    const float s = len != 0 ? (float(a) + 0.5f - a0) / len : 0.0f;
+    const float v = b0 + s * (b1 - b0);
+    const float up = std::ceil(v);
+    const int centre = int(up) - 1 + (tie_up && up == v ? 1 : 0);
+    // A line going left (or down) that starts exactly on such a boundary, at a pixel
+    // centre, leaves out that first pixel when it goes up (x-major) or left (y-major),
+    // as Mesa does.
+    if (skip_tied_start && up == v && float(a) + 0.5f == a0) continue;
     for (int b = std::max(centre - half, lo_b); b <= std::min(centre - half + l.width - 1, hi_b); ++b) {
       const int x = (xm ? a : b) - tx, y = (xm ? b : a) - ty;
       const int block = (y >> 2) * kBlocksPerTileSide + (x >> 2);

@@ -1,5 +1,6 @@
 // Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
-// arguments. The input's bytes choose a context (1..96 pixels a side, any OSMesa
+// arguments (GLU's quadrics and, where libvelocity-glut is built, GLUT's shapes among
+// them: they need no window). The input's bytes choose a context (1..96 pixels a side, any OSMesa
 // format, with or without depth), then up to 512 calls among ~90 GL, GLU and OSMesa
 // entry points, with enums drawn from valid and invalid values and numbers that are
 // often NaN, infinite, huge or negative; glBegin/glEnd nesting, display lists
@@ -12,6 +13,9 @@
 #include <GL/gl.h>
 #include <GL/glu.h>
 #include <GL/osmesa.h>
+#ifdef VELOCITY_FUZZ_GLUT_SHAPES
+#include <GL/glut.h>
+#endif
 
 #include <cmath>
 #include <cstdint>
@@ -87,6 +91,54 @@ class Bytes {
   size_t n_;
 };
 
+int quadric_errors = 0;
+void GLAPIENTRY count_quadric_error(GLenum e) {
+  fuzz_check(e == GLU_INVALID_ENUM || e == GLU_INVALID_VALUE);
+  ++quadric_errors;
+}
+
+// GLU quadric calls on `q` (possibly null) with random state and sizes; the counts
+// stay below 300, the work any caller asks for being proportional to them.
+void quadric_call(Bytes& in, GLUquadric*& q, float a, float b, float c, float d, GLenum e1) {
+  const int n1 = in.below(255) - 2, n2 = in.below(255) - 2;
+  switch (in.below(12)) {
+    case 0: gluDeleteQuadric(q), q = gluNewQuadric(); break;
+    case 1: gluQuadricDrawStyle(q, in.u8() & 1 ? GLU_POINT + GLenum(in.below(4)) : e1); break;
+    case 2: gluQuadricNormals(q, in.u8() & 1 ? GLU_SMOOTH + GLenum(in.below(3)) : e1); break;
+    case 3: gluQuadricOrientation(q, in.u8() & 1 ? GLU_OUTSIDE + GLenum(in.below(2)) : e1); break;
+    case 4: gluQuadricTexture(q, GLboolean(in.u8())); break;
+    case 5:
+      gluQuadricCallback(q, in.u8() & 1 ? GLU_ERROR : e1,
+                         in.u8() & 1 ? reinterpret_cast<_GLUfuncptr>(count_quadric_error) : nullptr);
+      break;
+    case 6: gluSphere(q, a, n1, n2); break;
+    case 7: gluCylinder(q, a, b, c, n1, n2); break;
+    case 8: gluDisk(q, a, b, n1, n2); break;
+    case 9: gluPartialDisk(q, a, b, n1, n2, c, d); break;
+    case 10: gluDeleteQuadric(q), q = nullptr; break;
+    default: gluSphere(nullptr, a, n1, n2), gluQuadricDrawStyle(nullptr, e1); break;
+  }
+}
+
+#ifdef VELOCITY_FUZZ_GLUT_SHAPES
+// GLUT's shapes with random sizes and counts (below 255, as the quadrics').
+void shape_call(Bytes& in, float a, float b) {
+  const int n1 = in.below(255) - 2, n2 = in.below(255) - 2;
+  const bool wire = in.u8() & 1;
+  switch (in.below(9)) {
+    case 0: (wire ? glutWireSphere : glutSolidSphere)(a, n1, n2); break;
+    case 1: (wire ? glutWireCone : glutSolidCone)(a, b, n1, n2); break;
+    case 2: (wire ? glutWireTorus : glutSolidTorus)(a, b, n1, n2); break;
+    case 3: (wire ? glutWireCube : glutSolidCube)(a); break;
+    case 4: (wire ? glutWireTetrahedron : glutSolidTetrahedron)(); break;
+    case 5: (wire ? glutWireOctahedron : glutSolidOctahedron)(); break;
+    case 6: (wire ? glutWireDodecahedron : glutSolidDodecahedron)(); break;
+    case 7: (wire ? glutWireTeapot : glutSolidTeapot)(a); break;
+    default: (wire ? glutWireIcosahedron : glutSolidIcosahedron)(); break;
+  }
+}
+#endif
+
 bool valid_error(GLenum e) {
   return e == GL_NO_ERROR || (e >= GL_INVALID_ENUM && e <= GL_OUT_OF_MEMORY);
 }
@@ -116,6 +168,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % 97) / 96.0f;
   std::vector<float> out(96 * 96 * 4 + 16);
   GLuint names[4] = {0, 0, 0, 0};
+  GLUquadric* quadric = gluNewQuadric();
 
   for (int call = 0; call < 512 && !in.empty(); ++call) {
     const GLenum e1 = in.enumerant(), e2 = in.enumerant();
@@ -249,6 +302,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (OSMesaGetDepthBuffer(ctx, &ww, &hh, &bytes, &depth) && depth) {
           fuzz_check(ww == w && hh == h && bytes == 4);
         }
+        quadric_call(in, quadric, a, b, c, d, e1);
+#ifdef VELOCITY_FUZZ_GLUT_SHAPES
+        shape_call(in, a, b);
+#endif
         break;
       }
     }
@@ -265,6 +322,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   uint8_t px[4] = {0, 0, 0, 0};
   glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
   fuzz_check(glGetError() == GL_NO_ERROR);
+  gluDeleteQuadric(quadric);
   OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
   OSMesaDestroyContext(ctx);
   return 0;

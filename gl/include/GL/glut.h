@@ -126,6 +126,26 @@ void glutTimerFunc(unsigned int milliseconds, void (*callback)(int value), int v
 void glutMainLoop(void);
 void glutLeaveMainLoop(void);
 
+/* Shapes, as freeglut draws them. */
+void glutSolidSphere(double radius, GLint slices, GLint stacks);
+void glutWireSphere(double radius, GLint slices, GLint stacks);
+void glutSolidCone(double base, double height, GLint slices, GLint stacks);
+void glutWireCone(double base, double height, GLint slices, GLint stacks);
+void glutSolidTorus(double innerRadius, double outerRadius, GLint sides, GLint rings);
+void glutWireTorus(double innerRadius, double outerRadius, GLint sides, GLint rings);
+void glutSolidCube(double size);
+void glutWireCube(double size);
+void glutSolidDodecahedron(void);
+void glutWireDodecahedron(void);
+void glutSolidIcosahedron(void);
+void glutWireIcosahedron(void);
+void glutSolidOctahedron(void);
+void glutWireOctahedron(void);
+void glutSolidTetrahedron(void);
+void glutWireTetrahedron(void);
+void glutSolidTeapot(double size);
+void glutWireTeapot(double size);
+
 /* State */
 int glutGet(GLenum what);
 int glutGetModifiers(void);

@@ -1,0 +1,296 @@
+/* The GLX vendor library used as any GLX program uses the system's libGL (this file
+ * is built against the system's <GL/glx.h> and libglvnd's libGL, never against pGL):
+ * run with __GLX_VENDOR_LIBRARY_NAME=velocity under an X server (glx_test.py).
+ * Visuals and FBConfigs say what exists (depth, alpha, no stencil); a double-buffered
+ * window shows at glXSwapBuffers exactly what GL drew, a single-buffered one at
+ * glFlush; contexts are created, made current, destroyed and created again;
+ * GLX_ARB_create_context gives what pGL is and refuses the rest with X errors;
+ * glXGetProcAddress and swap control work; pbuffers hold pixels; misuse gives GLX's
+ * errors. Prints "ok ..." per check, exits 1 at the first failure. */
+#include <GL/gl.h>
+#include <GL/glx.h>
+#include <GL/glxext.h>
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static Display* dpy;
+static int x_errors, last_error;
+
+static int count_errors(Display* d, XErrorEvent* e) {
+  (void)d;
+  ++x_errors;
+  last_error = e->error_code;
+  return 0;
+}
+
+#define CHECK(cond, ...)                                    \
+  do {                                                      \
+    if (!(cond)) {                                          \
+      printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond); \
+      printf(__VA_ARGS__);                                  \
+      printf("\n");                                         \
+      exit(1);                                              \
+    }                                                       \
+  } while (0)
+
+/* The window's pixel at (x, y), y down, as 0xRRGGBB. */
+static unsigned long window_pixel(Window w, int x, int y) {
+  XImage* image = XGetImage(dpy, w, x, y, 1, 1, AllPlanes, ZPixmap);
+  CHECK(image, "XGetImage");
+  const unsigned long p = XGetPixel(image, 0, 0) & 0xffffff;
+  XDestroyImage(image);
+  return p;
+}
+
+static Window open_window(XVisualInfo* vis, int w, int h) {
+  XSetWindowAttributes a;
+  memset(&a, 0, sizeof a);
+  a.colormap = XCreateColormap(dpy, RootWindow(dpy, vis->screen), vis->visual, AllocNone);
+  a.background_pixel = 0x808080;
+  Window win = XCreateWindow(dpy, RootWindow(dpy, vis->screen), 0, 0, (unsigned)w, (unsigned)h, 0, vis->depth,
+                             InputOutput, vis->visual, CWColormap | CWBackPixel, &a);
+  XMapWindow(dpy, win);
+  XSync(dpy, False);
+  return win;
+}
+
+/* Blue background, red top-left quarter, green bottom-right quarter (GL's y is up). */
+static void draw_quarters(int w, int h) {
+  glViewport(0, 0, w, h);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, w, 0, h, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glColor3f(1, 0, 0);
+  glRecti(0, h / 2, w / 2, h);
+  glColor3f(0, 1, 0);
+  glRecti(w / 2, 0, w, h / 2);
+}
+
+/* Every pixel of the window equals what glReadPixels returns of the frame. */
+static void check_window_is_frame(Window win, int w, int h, const unsigned char* frame) {
+  XImage* image = XGetImage(dpy, win, 0, 0, (unsigned)w, (unsigned)h, AllPlanes, ZPixmap);
+  CHECK(image, "XGetImage");
+  int differ = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const unsigned long p = XGetPixel(image, x, y);
+      const unsigned char* f = frame + ((h - 1 - y) * w + x) * 4;
+      const unsigned long want = ((unsigned long)f[0] << 16) | ((unsigned long)f[1] << 8) | f[2];
+      differ += (p & 0xffffff) != want;
+    }
+  XDestroyImage(image);
+  CHECK(differ == 0, "%d of %d pixels differ from glReadPixels (top-left %06lx, frame %02x%02x%02x)", differ, w * h,
+        window_pixel(win, 0, 0), frame[(h - 1) * w * 4], frame[(h - 1) * w * 4 + 1], frame[(h - 1) * w * 4 + 2]);
+}
+
+static int config_attribute(GLXFBConfig c, int attribute) {
+  int v = -1;
+  CHECK(glXGetFBConfigAttrib(dpy, c, attribute, &v) == Success, "attribute 0x%x", attribute);
+  return v;
+}
+
+int main(void) {
+  dpy = XOpenDisplay(NULL);
+  if (!dpy) {
+    printf("no X display\n");
+    return 2;
+  }
+  XSetErrorHandler(count_errors);
+  const int screen = DefaultScreen(dpy);
+
+  /* --- configurations: what exists, and nothing that does not */
+  int n = 0;
+  GLXFBConfig* all = glXGetFBConfigs(dpy, screen, &n);
+  CHECK(all && n == 4, "%d configs", n);
+  XFree(all);
+  const int with_stencil[] = {GLX_STENCIL_SIZE, 1, None};
+  GLXFBConfig* none = glXChooseFBConfig(dpy, screen, with_stencil, &n);
+  CHECK(!none && n == 0, "a stencil buffer is offered (%d configs)", n);
+  const int with_accum[] = {GLX_ACCUM_RED_SIZE, 1, None};
+  none = glXChooseFBConfig(dpy, screen, with_accum, &n);
+  CHECK(!none && n == 0, "an accumulation buffer is offered");
+  const int wanted[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, GLX_DOUBLEBUFFER, True,
+                        GLX_RED_SIZE, 8, GLX_ALPHA_SIZE, 1, GLX_DEPTH_SIZE, 16, None};
+  GLXFBConfig* configs = glXChooseFBConfig(dpy, screen, wanted, &n);
+  CHECK(configs && n == 1, "%d double-buffered configs with depth", n);
+  GLXFBConfig config = configs[0];
+  XFree(configs);
+  CHECK(config_attribute(config, GLX_DEPTH_SIZE) == 24, "depth");
+  CHECK(config_attribute(config, GLX_ALPHA_SIZE) == 8, "alpha");
+  CHECK(config_attribute(config, GLX_STENCIL_SIZE) == 0, "stencil");
+  CHECK(config_attribute(config, GLX_DOUBLEBUFFER) == 1, "double");
+  CHECK(config_attribute(config, GLX_VISUAL_ID) != 0, "visual");
+  const int single_no_depth[] = {GLX_DOUBLEBUFFER, False, None};
+  configs = glXChooseFBConfig(dpy, screen, single_no_depth, &n);
+  CHECK(configs && n == 2 && config_attribute(configs[0], GLX_DEPTH_SIZE) == 0, "smaller depth first");
+  XFree(configs);
+  printf("ok configs: 4, depth 24 or none, alpha 8, no stencil or accumulation buffer\n");
+
+  int rgba_only[] = {GLX_RED_SIZE, 1, None};
+  CHECK(!glXChooseVisual(dpy, screen, rgba_only), "a colour-index visual");
+  int double_depth[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 1, GLX_DEPTH_SIZE, 1, None};
+  XVisualInfo* vis = glXChooseVisual(dpy, screen, double_depth);
+  CHECK(vis, "glXChooseVisual");
+  int v = 0;
+  CHECK(glXGetConfig(dpy, vis, GLX_DOUBLEBUFFER, &v) == 0 && v == 1, "GLX_DOUBLEBUFFER");
+  CHECK(glXGetConfig(dpy, vis, GLX_DEPTH_SIZE, &v) == 0 && v == 24, "GLX_DEPTH_SIZE");
+  CHECK(glXGetConfig(dpy, vis, GLX_STENCIL_SIZE, &v) == 0 && v == 0, "GLX_STENCIL_SIZE");
+  CHECK(glXGetConfig(dpy, vis, GLX_USE_GL, &v) == 0 && v == 1, "GLX_USE_GL");
+  printf("ok glXChooseVisual, glXGetConfig\n");
+
+  /* --- a double-buffered window: the swap shows exactly the frame */
+  const int w = 70, h = 46;
+  Window win = open_window(vis, w, h);
+  GLXContext ctx = glXCreateContext(dpy, vis, NULL, True);
+  CHECK(ctx, "glXCreateContext");
+  CHECK(glXMakeCurrent(dpy, win, ctx), "glXMakeCurrent");
+  CHECK(strstr((const char*)glGetString(GL_RENDERER), "Velocity"), "renderer %s", glGetString(GL_RENDERER));
+  GLint iv[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_VIEWPORT, iv);
+  CHECK(iv[2] == w && iv[3] == h, "viewport %d %d", iv[2], iv[3]);
+  glGetIntegerv(GL_DOUBLEBUFFER, iv);
+  CHECK(iv[0] == 1, "GL_DOUBLEBUFFER %d", iv[0]);
+  glGetIntegerv(GL_DRAW_BUFFER, iv);
+  CHECK(iv[0] == GL_BACK, "GL_DRAW_BUFFER 0x%x", iv[0]);
+  glGetIntegerv(GL_DEPTH_BITS, iv);
+  CHECK(iv[0] == 24, "GL_DEPTH_BITS %d", iv[0]);
+  glGetIntegerv(GL_STENCIL_BITS, iv);
+  CHECK(iv[0] == 0, "GL_STENCIL_BITS %d", iv[0]);
+  draw_quarters(w, h);
+  static unsigned char frame[70 * 46 * 4];
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, frame);
+  const unsigned long before = window_pixel(win, 5, 5);
+  CHECK(before == 0x808080, "the back buffer showed before the swap: %06lx", before);
+  glXSwapBuffers(dpy, win);
+  check_window_is_frame(win, w, h, frame);
+  CHECK(window_pixel(win, 5, 5) == 0xff0000 && window_pixel(win, w - 5, h - 5) == 0x00ff00 &&
+            window_pixel(win, w - 5, 5) == 0x0000ff,
+        "quarters");
+  printf("ok double-buffered window: shown at glXSwapBuffers, exactly the frame\n");
+
+  /* --- destroyed and created again, from an FBConfig this time */
+  CHECK(glXMakeCurrent(dpy, None, NULL), "release");
+  glXDestroyContext(dpy, ctx);
+  ctx = glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, NULL, True);
+  CHECK(ctx, "glXCreateNewContext");
+  CHECK(glXMakeContextCurrent(dpy, win, win, ctx), "glXMakeContextCurrent");
+  CHECK(glXGetCurrentContext() == ctx && glXGetCurrentDrawable() == win, "current");
+  glClearColor(1, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy, win);
+  CHECK(window_pixel(win, 5, 5) == 0xffff00, "second context: %06lx", window_pixel(win, 5, 5));
+  printf("ok contexts destroyed and created again\n");
+
+  /* --- glXGetProcAddress: GL and GLX functions */
+  PFNGLXCREATECONTEXTATTRIBSARBPROC create_attribs =
+      (PFNGLXCREATECONTEXTATTRIBSARBPROC)glXGetProcAddress((const GLubyte*)"glXCreateContextAttribsARB");
+  void (*clear_color)(GLfloat, GLfloat, GLfloat, GLfloat) =
+      (void (*)(GLfloat, GLfloat, GLfloat, GLfloat))glXGetProcAddress((const GLubyte*)"glClearColor");
+  CHECK(create_attribs && clear_color, "glXGetProcAddress");
+  clear_color(0, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy, win);
+  CHECK(window_pixel(win, 5, 5) == 0x00ffff, "glClearColor by address");
+  const char* extensions = glXQueryExtensionsString(dpy, screen);
+  CHECK(extensions && strstr(extensions, "GLX_ARB_create_context") && strstr(extensions, "GLX_EXT_swap_control"),
+        "extensions %s", extensions ? extensions : "(none)");
+  printf("ok glXGetProcAddress\n");
+
+  /* --- GLX_ARB_create_context: compatibility 1.x; 3.2 core and bad attributes refused */
+  const int v14[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 4,
+                     GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB, None};
+  GLXContext c14 = create_attribs(dpy, config, NULL, True, v14);
+  CHECK(c14, "a 1.4 context");
+  XSync(dpy, False);
+  x_errors = 0;
+  const int v32[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 2,
+                     GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
+  CHECK(!create_attribs(dpy, config, NULL, True, v32), "a 3.2 core context");
+  XSync(dpy, False);
+  CHECK(x_errors == 1 && last_error == BadMatch, "3.2: %d errors, last %d", x_errors, last_error);
+  const int bad[] = {0x7777, 1, None};
+  CHECK(!create_attribs(dpy, config, NULL, True, bad), "an unknown attribute");
+  XSync(dpy, False);
+  CHECK(x_errors == 2 && last_error == BadValue, "unknown attribute: %d errors, last %d", x_errors, last_error);
+  CHECK(glXMakeCurrent(dpy, win, c14), "make the 1.4 context current");
+  glClearColor(1, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy, win);
+  CHECK(window_pixel(win, 5, 5) == 0xff00ff, "1.4 context draws");
+  printf("ok GLX_ARB_create_context\n");
+
+  /* --- swap control */
+  PFNGLXSWAPINTERVALEXTPROC swap_interval =
+      (PFNGLXSWAPINTERVALEXTPROC)glXGetProcAddress((const GLubyte*)"glXSwapIntervalEXT");
+  CHECK(swap_interval, "glXSwapIntervalEXT");
+  unsigned interval = 99, most = 0;
+  glXQueryDrawable(dpy, win, GLX_SWAP_INTERVAL_EXT, &interval);
+  CHECK(interval == 0, "default interval %u", interval);
+  swap_interval(dpy, win, 2);
+  glXQueryDrawable(dpy, win, GLX_SWAP_INTERVAL_EXT, &interval);
+  glXQueryDrawable(dpy, win, GLX_MAX_SWAP_INTERVAL_EXT, &most);
+  CHECK(interval == 2 && most >= 2, "interval %u max %u", interval, most);
+  PFNGLXSWAPINTERVALMESAPROC interval_mesa =
+      (PFNGLXSWAPINTERVALMESAPROC)glXGetProcAddress((const GLubyte*)"glXSwapIntervalMESA");
+  PFNGLXGETSWAPINTERVALMESAPROC get_interval_mesa =
+      (PFNGLXGETSWAPINTERVALMESAPROC)glXGetProcAddress((const GLubyte*)"glXGetSwapIntervalMESA");
+  CHECK(interval_mesa && get_interval_mesa && get_interval_mesa() == 2, "MESA interval");
+  CHECK(interval_mesa(0) == 0 && get_interval_mesa() == 0, "MESA interval 0");
+  x_errors = 0;
+  swap_interval(dpy, win, -1);
+  XSync(dpy, False);
+  CHECK(x_errors == 1 && last_error == BadValue, "interval -1: %d errors", x_errors);
+  printf("ok swap control\n");
+
+  /* --- a single-buffered window shows at glFlush */
+  int single[] = {GLX_RGBA, GLX_RED_SIZE, 1, None};
+  XVisualInfo* svis = glXChooseVisual(dpy, screen, single);
+  CHECK(svis && svis->visualid != vis->visualid, "single-buffered visual");
+  CHECK(glXGetConfig(dpy, svis, GLX_DOUBLEBUFFER, &v) == 0 && v == 0, "single");
+  Window swin = open_window(svis, 33, 21);
+  GLXContext sctx = glXCreateContext(dpy, svis, NULL, True);
+  CHECK(sctx && glXMakeCurrent(dpy, swin, sctx), "single-buffered context");
+  glGetIntegerv(GL_DRAW_BUFFER, iv);
+  CHECK(iv[0] == GL_FRONT, "GL_DRAW_BUFFER 0x%x", iv[0]);
+  draw_quarters(33, 21);
+  glFlush();
+  CHECK(window_pixel(swin, 2, 2) == 0xff0000 && window_pixel(swin, 30, 18) == 0x00ff00, "flush shows");
+  printf("ok single-buffered window: shown at glFlush\n");
+
+  /* --- a pbuffer */
+  const int pb_attributes[] = {GLX_PBUFFER_WIDTH, 16, GLX_PBUFFER_HEIGHT, 8, None};
+  GLXPbuffer pb = glXCreatePbuffer(dpy, config, pb_attributes);
+  CHECK(pb, "glXCreatePbuffer");
+  CHECK(glXMakeContextCurrent(dpy, pb, pb, c14), "pbuffer current");
+  unsigned pw = 0;
+  glXQueryDrawable(dpy, pb, GLX_WIDTH, &pw);
+  CHECK(pw == 16, "pbuffer width %u", pw);
+  draw_quarters(16, 8);
+  unsigned char px[4] = {0, 0, 0, 0};
+  glReadPixels(15, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  CHECK(px[0] == 0 && px[1] == 255 && px[2] == 0, "pbuffer pixel %d %d %d", px[0], px[1], px[2]);
+  printf("ok pbuffer\n");
+
+  /* --- misuse: GLX's errors, no crash */
+  CHECK(glXMakeCurrent(dpy, None, NULL), "release");
+  glXDestroyContext(dpy, c14);
+  x_errors = 0;
+  CHECK(!glXMakeContextCurrent(dpy, win, swin, ctx), "a different read drawable");
+  XSync(dpy, False);
+  CHECK(x_errors == 1 && last_error == BadMatch, "read != draw: %d errors %d", x_errors, last_error);
+  glXDestroyPbuffer(dpy, pb);
+  glXDestroyContext(dpy, ctx);
+  glXDestroyContext(dpy, sctx);
+  XFree(vis);
+  XFree(svis);
+  XCloseDisplay(dpy);
+  printf("ok errors; all GLX checks passed\n");
+  return 0;
+}
