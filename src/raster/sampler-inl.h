@@ -43,6 +43,19 @@ HWY_INLINE Rgba unpack255(VU t) {
   return {channel<0>(t), channel<1>(t), channel<2>(t), kAlpha ? channel<3>(t) : hn::Set(DF(), 255.0f)};
 }
 
+// The same through an sRGB decode table (SamplerView::decode): linear light * 255.
+template <bool kAlpha = true>
+HWY_INLINE Rgba unpack255(VU t, const float* decode) {
+  if (!decode) return unpack255<kAlpha>(t);
+  const DF d;
+  const DI di;
+  auto lin = [&](int shift) {
+    const VI byte = hn::BitCast(di, hn::And(hn::ShiftRightSame(t, shift), hn::Set(DU(), 0xffu)));
+    return hn::GatherIndex(d, decode, byte);
+  };
+  return {lin(0), lin(8), lin(16), kAlpha ? channel<3>(t) : hn::Set(d, 255.0f)};  // alpha is linear
+}
+
 HWY_INLINE Rgba scale(const Rgba& c, float k) {
   const VF v = hn::Set(DF(), k);
   return {hn::Mul(c.r, v), hn::Mul(c.g, v), hn::Mul(c.b, v), hn::Mul(c.a, v)};
@@ -121,7 +134,7 @@ HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v)
   MI outside = hn::FirstN(di, 0);
   const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside);
   const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside);
-  Rgba c = unpack255<kAlpha>(fetch(l, ix, iy));
+  Rgba c = unpack255<kAlpha>(fetch(l, ix, iy), s.decode);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border);
   return c;
 }
@@ -140,8 +153,8 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
   const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1);
   const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1);
-  Rgba t00 = unpack255<kAlpha>(fetch(l, x0, y0)), t10 = unpack255<kAlpha>(fetch(l, x1, y0));
-  Rgba t01 = unpack255<kAlpha>(fetch(l, x0, y1)), t11 = unpack255<kAlpha>(fetch(l, x1, y1));
+  Rgba t00 = unpack255<kAlpha>(fetch(l, x0, y0), s.decode), t10 = unpack255<kAlpha>(fetch(l, x1, y0), s.decode);
+  Rgba t01 = unpack255<kAlpha>(fetch(l, x0, y1), s.decode), t11 = unpack255<kAlpha>(fetch(l, x1, y1), s.decode);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
     t00 = with_border(t00, hn::Or(out0, outy0), s.border), t10 = with_border(t10, hn::Or(out1, outy0), s.border);
     t01 = with_border(t01, hn::Or(out0, outy1), s.border), t11 = with_border(t11, hn::Or(out1, outy1), s.border);

@@ -109,3 +109,151 @@ TEST(Appearance, PointLightInverseSquareWithRange) {
     EXPECT_NEAR(channel(img, i, size / 2), want, 1.0f) << "x " << i;
   }
 }
+
+namespace {
+
+// sRGB's encoding (IEC 61966-2-1), written out for the tests.
+float encode(float x) {
+  x = std::clamp(x, 0.0f, 1.0f);
+  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1 / 2.4f) - 0.055f;
+}
+
+Material pbr(Vec3 base, float metallic, float roughness) {
+  Material m;
+  m.shading = Shading::Pbr;
+  m.color = base;
+  m.color_space = ColorSpace::Linear;
+  m.pbr.metallic = metallic, m.pbr.roughness = roughness;
+  return m;
+}
+
+Image draw_one(int w, int h, const Camera& cam, const std::vector<Light>& lights, const Mesh& mesh, const Material& m,
+               RenderOptions o = {}) {
+  Renderer r(w, h);
+  r.options = o;
+  r.begin_frame(cam, lights, {0, 0, 0});
+  r.draw(mesh, Mat4::identity(), &m);
+  r.end_frame();
+  return r.color_image();
+}
+
+}  // namespace
+
+// glTF's colour factors are linear: an unlit material with baseColorFactor 0.5 shows
+// sRGB 188, in the Linear pipeline (Auto picks it for a Pbr frame) and in Display.
+TEST(Appearance, UnlitGltfBaseColorHalfShows188) {
+  Material m = pbr({0.5f, 0.5f, 0.5f}, 0, 1);
+  m.pbr.unlit = true;
+  for (ColorPipeline c : {ColorPipeline::Auto, ColorPipeline::Linear, ColorPipeline::Display}) {
+    RenderOptions o;
+    o.color = c;
+    const Image img = draw_one(32, 32, ortho(10), {}, grid(10, -5, 1), m, o);
+    EXPECT_EQ(channel(img, 16, 16), 188) << int(c);
+  }
+}
+
+// The linear pipeline: a 50% grey (linear) lit head-on at full intensity comes out
+// 188 in Phong; an sRGB colour keeps its value through decode, light and encode; the
+// Display pipeline lights the 8-bit value as it is.
+TEST(Appearance, LinearPipelineLightsInLinearLight) {
+  const Light sun = Light::directional({0, 0, 1}, {1, 1, 1});
+  Material m;
+  m.shading = Shading::Phong;
+  m.color = {0.5f, 0.5f, 0.5f};
+  RenderOptions linear;
+  linear.color = ColorPipeline::Linear;
+  m.color_space = ColorSpace::Linear;
+  EXPECT_EQ(channel(draw_one(32, 32, ortho(10), {sun}, grid(10, -5, 1), m, linear), 16, 16), 188);
+  m.color_space = ColorSpace::Srgb;  // 127.5 through the tables: either side
+  EXPECT_NEAR(channel(draw_one(32, 32, ortho(10), {sun}, grid(10, -5, 1), m, linear), 16, 16), 128, 1);
+  // Half the light: linear 0.5 * 0.214 = 0.107 -> sRGB 92, where Display gives 64.
+  const Light half = Light::directional({0, 0, 1}, {0.5f, 0.5f, 0.5f});
+  EXPECT_NEAR(channel(draw_one(32, 32, ortho(10), {half}, grid(10, -5, 1), m, linear), 16, 16),
+              255 * encode(0.5f * 0.21404114f), 1);
+  EXPECT_EQ(channel(draw_one(32, 32, ortho(10), {half}, grid(10, -5, 1), m), 16, 16), 64);  // Auto: Display
+}
+
+// A point light 2 units in front of a 10x10 quad, lit per pixel (the example,
+// where Gouraud on two triangles gave 2/255 at the centre): a PBR grey of 0.5 under
+// radiance 1 is 0.5 / pi, sRGB 112, at the centre.
+TEST(Appearance, PointLightInFrontOfAQuadPerPixel) {
+  Material m = pbr({0.5f, 0.5f, 0.5f}, 0, 1);
+  Light point = Light::point({0, 0, -3}, {1, 1, 1});
+  const Image img = draw_one(64, 64, ortho(10), {point}, grid(10, -5, 1), m);
+  EXPECT_NEAR(channel(img, 32, 32), 255 * encode(0.5f / float(M_PI)), 3);
+  EXPECT_LT(channel(img, 0, 0), channel(img, 32, 32) - 40);
+}
+
+// Colour textures are decoded from sRGB before they are filtered: halfway between a
+// black and a white texel is linear 0.5, sRGB 188 (filtering the 8-bit values would
+// give 128).
+TEST(Appearance, SrgbTexturesDecodeBeforeFiltering) {
+  Image tex(2, 1);
+  const uint8_t px[8] = {0, 0, 0, 255, 255, 255, 255, 255};
+  std::copy(px, px + 8, tex.pixels.begin());
+  Material m = pbr({1, 1, 1}, 0, 1);
+  m.pbr.unlit = true;
+  m.texture = std::make_shared<Texture>(tex);
+  m.filter = Filter::Bilinear;
+  m.wrap = Wrap::Clamp;
+  Mesh quad = grid(10, -5, 1);
+  for (size_t i = 0; i < quad.positions.size(); ++i)
+    quad.uvs.push_back({quad.positions[i].x / 10 + 0.5f, 0.5f - quad.positions[i].y / 10});
+  const int size = 64;
+  const Image img = draw_one(size, size, ortho(10), {}, quad, m);
+  for (int i = 0; i < size; ++i) {
+    const float u = (float(i) + 0.5f) / float(size);
+    const float lin = std::clamp(u * 2 - 0.5f, 0.0f, 1.0f);
+    EXPECT_NEAR(channel(img, i, size / 2), 255 * encode(lin), 1.0f) << "x " << i;
+  }
+}
+
+// glTF 2.0's BRDF (Appendix B) at known pixels of a sphere under one directional light,
+// computed here from the specification's formulas: the ray through each pixel's centre
+// meets the unit sphere, whose normal there the mesh interpolates.
+TEST(Appearance, PbrSphereMatchesTheClosedFormBrdf) {
+  const int w = 96, h = 96;
+  Camera cam;
+  cam.position = {0, 0, 0};
+  cam.near = 0.5f, cam.far = 20;
+  const Vec3 centre{0, 0, -4};
+  const Vec3 to_light = normalize(Vec3{0.4f, 0.6f, 1.0f});
+  const Vec3 radiance{3.0f, 2.5f, 2.0f};
+  Mesh sphere = make_sphere(192);
+  for (Vec3& p : sphere.positions) p = p + centre;
+  const Vec3 base{0.8f, 0.4f, 0.2f};
+  struct Case {
+    float metallic, roughness;
+  };
+  for (Case c : {Case{0, 0.5f}, Case{1, 0.3f}, Case{0.4f, 0.8f}}) {
+    const Image img = draw_one(w, h, cam, {Light::directional(to_light, radiance)}, sphere, pbr(base, c.metallic, c.roughness));
+    const float t = std::tan(cam.fov_y / 2);
+    int checked = 0;
+    for (int j = 20; j < 80; j += 7)
+      for (int i = 20; i < 80; i += 9) {
+        const Vec3 dir = normalize(Vec3{((float(i) + 0.5f) / float(w) * 2 - 1) * t, (1 - (float(j) + 0.5f) / float(h) * 2) * t, -1});
+        const float b = dot(dir, centre), disc = b * b - (dot(centre, centre) - 1);
+        if (disc < 0.05f) continue;  // off the sphere, or at its rim (tessellation)
+        const Vec3 p = dir * (b - std::sqrt(disc));
+        const Vec3 n = normalize(p - centre), v = normalize(-p), l = to_light;
+        const Vec3 hv = normalize(l + v);
+        const float nl = std::max(dot(n, l), 0.0f), nv = std::max(dot(n, v), 1e-4f);
+        const float nh = std::max(dot(n, hv), 0.0f), vh = std::max(dot(v, hv), 0.0f);
+        const float a = c.roughness * c.roughness, a2 = a * a;
+        const float dd = nh * nh * (a2 - 1) + 1;
+        const float D = a2 / (float(M_PI) * dd * dd);
+        const float Vis = 0.5f / (nl * std::sqrt(nv * nv * (1 - a2) + a2) + nv * std::sqrt(nl * nl * (1 - a2) + a2));
+        const float bc[3] = {base.x, base.y, base.z}, rad[3] = {radiance.x, radiance.y, radiance.z};
+        for (int k = 0; k < 3; ++k) {
+          const float cdiff = bc[k] * (1 - c.metallic), f0 = 0.04f * (1 - c.metallic) + bc[k] * c.metallic;
+          const float F = f0 + (1 - f0) * std::pow(1 - vh, 5.0f);
+          const float f = (1 - F) * cdiff / float(M_PI) + F * D * Vis;
+          const float want = 255 * encode(f * rad[k] * nl);
+          EXPECT_NEAR(channel(img, i, j, k), want, 2.0f) << "m " << c.metallic << " r " << c.roughness << " at " << i << ","
+                                                        << j << " channel " << k;
+        }
+        ++checked;
+      }
+    EXPECT_GT(checked, 30);
+  }
+}
