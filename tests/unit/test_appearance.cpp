@@ -3,6 +3,7 @@
 // glTF 2.0's metallic-roughness BRDF at known pixels.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "image_test_util.hpp"
@@ -256,4 +257,115 @@ TEST(Appearance, PbrSphereMatchesTheClosedFormBrdf) {
       }
     EXPECT_GT(checked, 30);
   }
+}
+
+// Alpha as glTF says: MASK keeps the pixels at or over the cut-off (and only they write
+// depth); BLEND mixes over what is there, farthest draw first whatever the order of the
+// calls, without writing depth.
+TEST(Appearance, AlphaMaskAndBlend) {
+  Material m = pbr({1, 1, 1}, 0, 1);
+  m.pbr.unlit = true;
+  m.alpha_mode = AlphaMode::Mask;
+  m.alpha_cutoff = 0.5f;
+  m.alpha = 0.4f;
+  EXPECT_EQ(channel(draw_one(16, 16, ortho(10), {}, grid(10, -5, 1), m), 8, 8), 0);
+  m.alpha = 0.6f;
+  EXPECT_EQ(channel(draw_one(16, 16, ortho(10), {}, grid(10, -5, 1), m), 8, 8), 255);
+  // Blending: red at 50% over blue at 50% over black, drawn near first.
+  Material red = pbr({1, 0, 0}, 0, 1), blue = pbr({0, 0, 1}, 0, 1);
+  for (Material* x : {&red, &blue}) x->pbr.unlit = true, x->alpha_mode = AlphaMode::Blend, x->alpha = 0.5f;
+  const Mesh near_quad = grid(10, -3, 1), far_quad = grid(10, -6, 1);
+  Renderer r(16, 16);
+  r.begin_frame(ortho(10), {}, {0, 0, 0});
+  r.draw(near_quad, Mat4::identity(), &red);
+  r.draw(far_quad, Mat4::identity(), &blue);
+  r.end_frame();
+  const Image img = r.color_image();
+  // Blue over black: 255 * 0.5 = 127.5; then red over it: r = 127.5, b = 63.75.
+  EXPECT_NEAR(channel(img, 8, 8, 0), 128, 1);
+  EXPECT_NEAR(channel(img, 8, 8, 2), 64, 1);
+  // No depth written by either: the depth image stays clear.
+  EXPECT_EQ(r.depth_image().pixel(8, 8)[0], 0);
+}
+
+// A normal map tilts the normal in the tangent frame glTF defines: +x along u, +y up
+// the image (v decreasing), with tangents generated for a mesh that has none. A map
+// leaning right (+x) is brighter under a light from the right; one leaning up (+y)
+// under a light from above; the flat map is lit the same from either side.
+TEST(Appearance, NormalMapFollowsTheTangentFrame) {
+  Mesh quad = grid(10, -5, 1);
+  for (const Vec3& p : quad.positions) quad.uvs.push_back({p.x / 10 + 0.5f, 0.5f - p.y / 10});  // upright
+  auto lit = [&](Vec3 map_normal, Vec3 light_dir) {
+    Image tex(1, 1);
+    tex.pixels = {uint8_t(std::lround(127.5f * (map_normal.x + 1))), uint8_t(std::lround(127.5f * (map_normal.y + 1))),
+                  uint8_t(std::lround(127.5f * (map_normal.z + 1))), 255};
+    Material m = pbr({0.5f, 0.5f, 0.5f}, 0, 1);
+    m.pbr.normal.texture = std::make_shared<Texture>(tex);
+    return channel(draw_one(16, 16, ortho(10), {Light::directional(light_dir, {3, 3, 3})}, quad, m), 8, 8);
+  };
+  const Vec3 right{0.6f, 0, 0.8f}, up{0, 0.6f, 0.8f}, flat{0, 0, 1};
+  EXPECT_GT(lit(right, {1, 0, 1}), lit(right, {-1, 0, 1}) + 30);
+  EXPECT_GT(lit(up, {0, 1, 1}), lit(up, {0, -1, 1}) + 30);
+  EXPECT_NEAR(lit(flat, {0, 1, 1}), lit(flat, {0, -1, 1}), 1);
+  // Given tangents win over generated ones: a tangent along -x mirrors the map.
+  quad.tangents.assign(quad.positions.size(), {-1, 0, 0, 1});
+  EXPECT_LT(lit(right, {1, 0, 1}), lit(right, {-1, 0, 1}) - 30);
+}
+
+// Tone mapping and exposure (Linear only), against the curves written out here:
+// three.js's ACESFilmicToneMapping and Khronos PBR Neutral, of an unlit colour.
+TEST(Appearance, ToneMappingAcesAndNeutral) {
+  const float in[3] = {2.0f, 0.6f, 0.1f};
+  Material m = pbr({in[0], in[1], in[2]}, 0, 1);
+  m.pbr.unlit = true;
+  auto aces = [](const float c[3], float exposure) {
+    float v[3];
+    for (int k = 0; k < 3; ++k) v[k] = c[k] * exposure / 0.6f;
+    const float i[3] = {0.59719f * v[0] + 0.35458f * v[1] + 0.04823f * v[2], 0.07600f * v[0] + 0.90834f * v[1] + 0.01566f * v[2],
+                        0.02840f * v[0] + 0.13383f * v[1] + 0.83777f * v[2]};
+    float f[3];
+    for (int k = 0; k < 3; ++k)
+      f[k] = (i[k] * (i[k] + 0.0245786f) - 0.000090537f) / (i[k] * (0.983729f * i[k] + 0.4329510f) + 0.238081f);
+    return std::array<float, 3>{1.60475f * f[0] - 0.53108f * f[1] - 0.07367f * f[2],
+                                -0.10208f * f[0] + 1.10813f * f[1] - 0.00605f * f[2],
+                                -0.00327f * f[0] - 0.07276f * f[1] + 1.07602f * f[2]};
+  };
+  auto neutral = [](const float c[3], float exposure) {
+    std::array<float, 3> v{c[0] * exposure, c[1] * exposure, c[2] * exposure};
+    const float x = std::min({v[0], v[1], v[2]});
+    const float offset = x < 0.08f ? x - 6.25f * x * x : 0.04f;
+    for (float& e : v) e -= offset;
+    const float peak = std::max({v[0], v[1], v[2]});
+    if (peak < 0.76f) return v;
+    const float d = 0.24f, new_peak = 1 - d * d / (peak + d - 0.76f);
+    const float g = 1 - 1 / (0.15f * (peak - new_peak) + 1);
+    for (float& e : v) e = e * new_peak / peak * (1 - g) + new_peak * g;
+    return v;
+  };
+  for (float exposure : {1.0f, 0.7f}) {
+    for (ToneMap tm : {ToneMap::Aces, ToneMap::KhronosNeutral}) {
+      RenderOptions o;
+      o.tone_map = tm, o.exposure = exposure;
+      const Image img = draw_one(8, 8, ortho(10), {}, grid(10, -5, 1), m, o);
+      const std::array<float, 3> want = tm == ToneMap::Aces ? aces(in, exposure) : neutral(in, exposure);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(channel(img, 4, 4, k), 255 * encode(want[k]), 1) << int(tm) << " " << k;
+    }
+  }
+  // Off by default: the colour clipped.
+  EXPECT_EQ(channel(draw_one(8, 8, ortho(10), {}, grid(10, -5, 1), m), 4, 4, 0), 255);
+}
+
+// Emission adds to the light; occlusion darkens the ambient light only.
+TEST(Appearance, EmissiveAndOcclusion) {
+  Material m = pbr({0.5f, 0.5f, 0.5f}, 0, 1);
+  m.pbr.emissive = {0.2f, 0, 0};
+  Image grey(1, 1);
+  grey.pixels = {64, 64, 64, 255};
+  m.pbr.occlusion.texture = std::make_shared<Texture>(grey);
+  m.pbr.occlusion_strength = 1;
+  const Light ambient = Light::ambient({0.4f, 0.4f, 0.4f});
+  const Image img = draw_one(8, 8, ortho(10), {ambient}, grid(10, -5, 1), m);
+  const float ao = 64.0f / 255.0f;  // occlusion reads the texture's linear R
+  EXPECT_NEAR(channel(img, 4, 4, 0), 255 * encode(0.5f * 0.4f * ao + 0.2f), 1);
+  EXPECT_NEAR(channel(img, 4, 4, 1), 255 * encode(0.5f * 0.4f * ao), 1);
 }
