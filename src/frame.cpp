@@ -276,8 +276,7 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   tiles.orthographic = r.orthographic;
   if (r.plan.linear) {
     const RenderOptions& o = r.plan.options;
-    tiles.output = {true, std::isfinite(o.exposure) && o.exposure >= 0 ? o.exposure : 1.0f, o.tone_map,
-                    color::srgb_tables().encode};
+    tiles.output = {true, std::isfinite(o.exposure) && o.exposure >= 0 ? o.exposure : 1.0f, o.tone_map};
   }
   tiles.depth_test = !painter;
   tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;

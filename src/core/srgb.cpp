@@ -19,10 +19,7 @@ float linear_to_srgb(float c) {
 const SrgbTables& srgb_tables() {
   static const SrgbTables tables = [] {
     SrgbTables t;
-    for (int i = 0; i < 256; ++i) {
-      t.decode[i] = srgb_to_linear(float(i) / 255.0f);
-      t.decode255[i] = 255.0f * t.decode[i];
-    }
+    for (int i = 0; i < 256; ++i) t.decode[i] = srgb_to_linear(float(i) / 255.0f);
     for (int i = 0; i < SrgbTables::kEncodeSize; ++i)
       t.encode[i] = uint32_t(std::lround(255.0f * linear_to_srgb(float(i) / float(SrgbTables::kEncodeSize - 1))));
     return t;

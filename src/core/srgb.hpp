@@ -1,7 +1,7 @@
 // sRGB's transfer function (IEC 61966-2-1) and the tables the pipeline uses: a
-// 256-entry decode of 8-bit sRGB values (textures, the framebuffer under blending and
-// super-sampling) and an encode of linear light to 8 bits indexed by the value's
-// 4096ths (the kernels' output; docs/appearance.md).
+// 256-entry decode of 8-bit sRGB values (super-sampling's resolve) and an encode of
+// linear light to 8 bits indexed by the value's 4096ths (the kernels' output;
+// docs/appearance.md). Textures are decoded by arithmetic (raster/sampler-inl.h).
 #pragma once
 
 #include <cstdint>
@@ -14,8 +14,7 @@ float linear_to_srgb(float c);
 
 struct SrgbTables {
   static constexpr int kEncodeSize = 4096;
-  float decode[256];     // 8-bit sRGB value -> linear [0, 1]
-  float decode255[256];  // the same times 255 (the sampler works in 0..255)
+  float decode[256];  // 8-bit sRGB value -> linear [0, 1]
   // Linear x in [0, 1] -> round(255 * linear_to_srgb(x)), at index round(x * 4095).
   // One index step moves the output by under 0.81 of an 8-bit step (the steepest part,
   // near black); above linear 0.03 by under 0.25.

@@ -168,13 +168,11 @@ void finish_color_plan(DrawList& plan, std::vector<raster::DrawState>& states) {
   for (const SlotPlan& s : plan.slots) pbr = pbr || s.shading == Shading::Pbr;
   const ColorPipeline c = plan.options.color;
   plan.linear = c == ColorPipeline::Linear || (c == ColorPipeline::Auto && pbr);
-  const color::SrgbTables& srgb = color::srgb_tables();
   for (SlotPlan& s : plan.slots) {
     const Material& mat = *s.material;
     raster::DrawState& st = states[s.draw_state];
     // Colour textures (base, environment, emissive) are sRGB-encoded in every format.
-    const float* decode = plan.linear ? srgb.decode255 : nullptr;
-    st.texture.decode = st.env_map.decode = st.pbr.emissive_map.decode = decode;
+    st.texture.srgb = st.env_map.srgb = st.pbr.emissive_map.srgb = plan.linear;
     if (mat.color_space == ColorSpace::Linear) {  // lines are display values
       const Vec3 l = pipeline_color(mat.color, ColorSpace::Linear, false);
       s.line_color = raster::pack_rgba(l.x, l.y, l.z);

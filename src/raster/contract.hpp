@@ -241,9 +241,9 @@ struct SamplerView {
   SamplerState::Texel mag = SamplerState::Texel::Linear, min = SamplerState::Texel::Linear;
   SamplerState::Mip mip = SamplerState::Mip::Linear;
   float border[4] = {0, 0, 0, 0};
-  // sRGB-encoded texels: each 8-bit value -> linear * 255 (core/srgb.hpp), applied
-  // before filtering, as a GPU's sRGB texture; null: the values as they are.
-  const float* decode = nullptr;
+  // sRGB-encoded texels, decoded to linear light before filtering as a GPU's sRGB
+  // texture is (sampler-inl.h); false: the values as they are.
+  bool srgb = false;
 
   SamplerView() = default;
   // The mesh path: a Filter and one wrap mode for both axes.
@@ -289,12 +289,11 @@ struct DrawState {
 
 // How the mesh kernels turn the light they compute into pixels (docs/appearance.md):
 // Display writes values as they are (clamped); Linear scales by the exposure, tone
-// maps and encodes to sRGB (SrgbTables::encode).
+// maps and encodes to sRGB (raster/output-inl.h).
 struct OutputTransform {
   bool linear = false;
   float exposure = 1;
   ToneMap tone_map = ToneMap::None;
-  const uint32_t* encode = nullptr;  // Linear: core/srgb.hpp's table
 };
 
 // Everything the tiles read, immutable while they run.

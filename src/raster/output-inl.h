@@ -1,7 +1,6 @@
 // The mesh kernels' last step (OutputTransform, contract.hpp): light to pixels. Display
 // packs the values as they are; Linear multiplies by the exposure, tone maps (none,
-// ACES as three.js's ACESFilmicToneMapping, Khronos PBR Neutral) and encodes to sRGB
-// through core/srgb.hpp's table.
+// ACES as three.js's ACESFilmicToneMapping, Khronos PBR Neutral) and encodes to sRGB.
 #if defined(VELOCITY_RASTER_OUTPUT_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef VELOCITY_RASTER_OUTPUT_INL_H_
 #undef VELOCITY_RASTER_OUTPUT_INL_H_
@@ -9,7 +8,6 @@
 #define VELOCITY_RASTER_OUTPUT_INL_H_
 #endif
 
-#include "core/srgb.hpp"
 #include "raster/contract.hpp"
 #include "simd/simd-inl.h"
 
@@ -66,12 +64,24 @@ HWY_INLINE V3 tone_map_neutral(V3 c) {
   return {one(c.x), one(c.y), one(c.z)};
 }
 
-// Linear [0, 1] to 8-bit sRGB, through the table: a gather per channel.
-HWY_INLINE VU encode_srgb(const uint32_t* table, VF x) {
+// Linear [0, 1] to 8-bit sRGB: the linear segment near black, above it a degree-6
+// polynomial in sqrt(x) fitted (least squares) to 1.055 x^(1/2.4) - 0.055 over
+// [0.0031308, 1], within 0.09 of an 8-bit step before rounding. Cheaper than a table
+// (a gather per channel) or pow's log and exp.
+HWY_INLINE VU encode_srgb(VF x) {
   const DF d;
   const DI di;
-  const VI i = hn::ConvertTo(di, hn::MulAdd(saturate(x), hn::Set(d, float(color::SrgbTables::kEncodeSize - 1)), hn::Set(d, 0.5f)));
-  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(table), i));
+  x = saturate(x);
+  const VF s = hn::Sqrt(x);
+  VF p = hn::Set(d, -0.904863438f);
+  p = hn::MulAdd(p, s, hn::Set(d, 3.23747163f));
+  p = hn::MulAdd(p, s, hn::Set(d, -4.72147221f));
+  p = hn::MulAdd(p, s, hn::Set(d, 3.6933027f));
+  p = hn::MulAdd(p, s, hn::Set(d, -1.8270792f));
+  p = hn::MulAdd(p, s, hn::Set(d, 1.56393955f));
+  p = hn::MulAdd(p, s, hn::Set(d, -0.0416483619f));
+  const VF e = hn::IfThenElse(hn::Le(x, hn::Set(d, 0.0031308f)), hn::Mul(x, hn::Set(d, 12.92f)), p);
+  return hn::BitCast(DU(), hn::ConvertTo(di, hn::MulAdd(e, hn::Set(d, 255.0f), hn::Set(d, 0.5f))));
 }
 
 // Light (or display values) to RGBA8, as the frame's OutputTransform says.
@@ -86,8 +96,8 @@ HWY_INLINE VU finish(const OutputTransform& o, VF r, VF g, VF b, VF a) {
   if (o.tone_map == ToneMap::Aces) c = tone_map_aces(c);
   else if (o.tone_map == ToneMap::KhronosNeutral) c = tone_map_neutral(c);
   const VU alpha = hn::BitCast(DU(), hn::ConvertTo(DI(), hn::MulAdd(saturate(a), hn::Set(d, 255.0f), hn::Set(d, 0.5f))));
-  return hn::Or(hn::Or(encode_srgb(o.encode, c.x), hn::ShiftLeft<8>(encode_srgb(o.encode, c.y))),
-                hn::Or(hn::ShiftLeft<16>(encode_srgb(o.encode, c.z)), hn::ShiftLeft<24>(alpha)));
+  return hn::Or(hn::Or(encode_srgb(c.x), hn::ShiftLeft<8>(encode_srgb(c.y))),
+                hn::Or(hn::ShiftLeft<16>(encode_srgb(c.z)), hn::ShiftLeft<24>(alpha)));
 }
 HWY_INLINE VU finish(const OutputTransform& o, VF r, VF g, VF b) { return finish(o, r, g, b, hn::Set(DF(), 1.0f)); }
 
