@@ -11,7 +11,7 @@ namespace velocity::cli {
 void add_appearance_options(CLI::App* cmd, AppearanceArgs& a) {
   cmd->add_option("--color", a.color,
                   "Colour pipeline: linear (sRGB decoded, lit in linear light, encoded), display (8-bit values as they "
-                  "are, the seed's look), auto (linear when a material is PBR)")
+                  "are, as OpenGL 1.x lights them), auto (linear when a material is PBR)")
       ->capture_default_str();
   cmd->add_option("--tone-map", a.tone_map, "Tone mapping in the linear pipeline: none|aces|neutral")->capture_default_str();
   cmd->add_option("--exposure", a.exposure, "Linear light is multiplied by this before tone mapping")->capture_default_str();
