@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace velocity {
@@ -33,5 +34,8 @@ void write_ppm(const std::string& path, const Image& image);
 // Reads a PNG, JPEG, TGA, BMP, GIF or binary PPM file as RGBA8. Throws velocity::Error
 // naming the file and the reason on failure.
 Image read_image(const std::string& path);
+// The same from bytes in memory (an image embedded in a model file), with the same
+// checks and size bounds; `name` says where the bytes came from in error messages.
+Image decode_image(std::string_view bytes, const std::string& name);
 
 }  // namespace velocity

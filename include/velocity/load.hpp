@@ -91,15 +91,21 @@ Model load_obj(const std::string& path, const LoadOptions& options = {});
 // damaged files included).
 // One ModelNode per node of the file, the root included, parents first, `local` its
 // matrix; a node's meshes (a glTF mesh's primitives) merged into one Mesh with one
-// Material per primitive material (base-colour factor or diffuse colour, specular,
-// two-sidedness, flat / Phong / unlit shading) and per-face material indices. Normals
-// from the file when it has usable ones, else compute_normals(); uvs from channel 0;
-// per-vertex colours (glTF COLOR_0, PLY red/green/blue) as the file has them. Vertices
-// keep the file's indexing (STL: three per triangle; 3D Studio: three per face).
-// Triangles only: points and lines are dropped with a warning. glTF cameras
-// (perspective and orthographic) become NamedCameras placed by their node; 3D Studio
-// cameras are not converted (Assimp 5.2 loses their target). Lights, textures, skins,
-// animations and morph targets are not converted (meshes come in their bind pose).
+// Material per primitive material and per-face material indices. glTF materials are
+// Shading::Pbr in ColorSpace::Linear with everything glTF 2.0's metallic-roughness
+// model, KHR_materials_unlit, KHR_texture_transform and KHR_materials_emissive_strength
+// say, their images decoded (inside the file or beside it; docs/appearance.md); the
+// other formats' are the diffuse colour, specular, two-sidedness and flat / Phong /
+// unlit shading, with the texture file named. Normals from the file when it has usable
+// ones, else compute_normals(); uvs from channels 0 and 1 in the engine's convention
+// (v = 0 at the image's top row); glTF tangents; per-vertex colours and alphas (glTF
+// COLOR_0, PLY red/green/blue) as the file has them. Vertices keep the file's indexing
+// (STL: three per triangle; 3D Studio: three per face). Triangles only: points and
+// lines are dropped with a warning. glTF cameras (perspective and orthographic) become
+// NamedCameras placed by their node, KHR_lights_punctual lights Lights (intensity times
+// colour, inverse-square falloff with the range); 3D Studio cameras are not converted
+// (Assimp 5.2 loses their target), nor are 3D Studio lights. Skins, animations and
+// morph targets are not converted (meshes come in their bind pose).
 // Throws velocity::Error naming the file for a missing or malformed file (what
 // Velocity's own checks before Assimp found, with the line or byte offset: PLY whole,
 // ASCII STL whole, 3D Studio chunks, glTF JSON and node trees; else Assimp's message),

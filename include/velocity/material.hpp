@@ -51,6 +51,9 @@ struct UvTransform {
 struct TextureRef {
   std::shared_ptr<const Texture> texture;
   UvTransform uv;
+  // The file a model file names for it, as written (OBJ/MTL): load_model loads it
+  // into `texture` as it does Material::texture_file.
+  std::string file;
   explicit operator bool() const { return texture != nullptr; }
 };
 
@@ -90,9 +93,12 @@ struct Material {
   // file that is missing or unreadable leaves `texture` empty, with a warning.
   std::string texture_file;
   TextureMode texture_mode = TextureMode::Modulate;
+  // A file whose values are the surface's alpha (MTL map_d): load_model puts them in
+  // the base texture's alpha channel (a white texture when there is none).
+  std::string alpha_file;
   // Sphere environment map, addressed by the eye-space normal: u = 0.5 + 0.5 Nx,
-  // v = 0.5 + 0.5 Ny (seed 000). Per vertex in flat and Gouraud shading, per pixel in
-  // Phong. The base colour becomes mix(base, environment, env_mix).
+  // v = 0.5 - 0.5 Ny, the image's top row at Ny = 1 (seed 000). Per vertex in flat and
+  // Gouraud shading, per pixel in Phong. The base colour becomes mix(base, environment, env_mix).
   std::shared_ptr<const Texture> env_map;
   float env_mix = 1.0f;
   Filter filter = Filter::Trilinear;

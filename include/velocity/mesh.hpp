@@ -79,7 +79,8 @@ void normalize_to_unit_sphere(Mesh& mesh);
 // Generated models, all centred on the origin, with normals and uvs, CCW outwards.
 Mesh make_cube(float size = 1.0f);
 // UV sphere of radius 1: `segments` around (u along longitude), `segments / 2` rings,
-// v = 1 at the north pole (+Y); 2 * segments * rings triangles, poles included as
+// v = 0 (the image's top row) at the north pole (+Y), as ../shared/tools/glref's
+// sphere:SEGS shows it (its v = 1 there, in OBJ's convention); 2 * segments * rings triangles, poles included as
 // degenerate quads, the same vertex layout as the benchmark convention. segments >= 3.
 Mesh make_sphere(int segments);
 // Torus about the Y axis: ring radius `major`, tube radius `minor`.

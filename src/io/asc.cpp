@@ -467,7 +467,10 @@ Mesh build_mesh(AscObject& o, bool swap_yz) {
   m.name = o.name;
   m.positions = std::move(o.positions);
   for (Vec3& p : m.positions) p = to_velocity(p, swap_yz);
+  // 3D Studio's V is 0 at the image's bottom row, the engine's at the top: the one
+  // place ASC's uvs are converted (v' = 1 - v; a vertex without uvs keeps (0, 0)'s).
   m.uvs = std::move(o.uvs);
+  for (Vec2& uv : m.uvs) uv.y = 1 - uv.y;
   m.triangles = std::move(o.triangles);
 
   if (o.any_material) {

@@ -39,9 +39,11 @@
 // Z-up to Y-up turn there), in depth-first order so parents come first; a node's
 // aiMeshes (a glTF mesh's primitives, one material each) are merged into one Mesh with
 // per-face materials, shared between nodes that use the same aiMeshes. Normals come from
-// the file when every one is usable, else compute_normals(); uvs from channel 0;
-// colours from colour set 0 (rgb, as the file has them: a glTF material's base colour is
-// not multiplied in). Faces with fewer than three corners (points, lines) are dropped.
+// the file when every one is usable, else compute_normals(); uvs from channels 0 and 1
+// (see engine_uv), tangents with glTF's handedness; colours and alphas from colour set
+// 0 (as the file has them: a glTF material's base colour is not multiplied in). A glTF
+// file's materials and lights are read from its JSON (io/gltf_appearance.hpp), the
+// other formats' materials from Assimp's. Faces with fewer than three corners (points, lines) are dropped.
 // Assimp and Velocity both take counter-clockwise triangles as front; under a node
 // whose world matrix mirrors (negative determinant) the winding is reversed, as glTF
 // specifies.
@@ -55,16 +57,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "io/gltf_appearance.hpp"
 #include "io/gltf_check.hpp"
 #include "io/ply_check.hpp"
 #include "io/read_file.hpp"
@@ -178,14 +183,21 @@ std::string format_name(const std::string& path) {
 // The checks before Assimp: existence, type and size (detail::read_file, with clearer
 // messages than Assimp's "Unable to open file"), then the format checks, which need
 // the bytes (Assimp reads the whole file anyway, so reading it once more is cheap).
-// Returns what Assimp is to read instead of the file, if anything (a glTF file).
-std::shared_ptr<const std::string> check_file(const std::string& path, size_t max_memory) {
+// Returns what Assimp is to read instead of the file, if anything (a glTF file), and a
+// glTF file's materials and lights (read from the JSON: io/gltf_appearance.hpp).
+std::shared_ptr<const std::string> check_file(const std::string& path, const LoadOptions& options,
+                                              std::optional<detail::GltfAppearance>& appearance) {
+  const size_t max_memory = options.max_memory;
   const std::string bytes = detail::read_file(path, max_memory);
   const std::string ext = detail::lower_extension(path);
   if (detail::looks_like_ply(bytes)) detail::check_ply(bytes, path);
   if (ext == "stl" && detail::is_ascii_stl(bytes)) detail::check_ascii_stl(bytes, path);
   if (ext == "3ds") detail::check_3ds(bytes, path);
-  if (ext == "gltf" || ext == "glb") return std::make_shared<const std::string>(detail::prepare_gltf(bytes, path, max_memory));
+  if (ext == "gltf" || ext == "glb") {
+    auto prepared = std::make_shared<const std::string>(detail::prepare_gltf(bytes, path, max_memory));
+    appearance = detail::read_gltf_appearance(bytes, path, options);
+    return prepared;
+  }
   return nullptr;
 }
 
@@ -295,11 +307,24 @@ Material convert_material(const aiMaterial& in) {
   return m;
 }
 
+// The vertex arrays a node's merged mesh has: each filled for every part when one part
+// has it (tangents only when every part has them: there is no default tangent).
+struct Channels {
+  bool uvs = false, uvs1 = false, colors = false, alphas = false, tangents = true;
+};
+
+// Texture coordinates: Assimp gives every format's with v = 0 at the image's bottom row
+// (OpenGL's convention: it flips glTF's, whose v = 0 is the top row; 3D Studio's and
+// PLY's are v up already). The engine's v = 0 is the top row (Mesh::uvs), so this is
+// the one place that turns them for glTF, 3D Studio and PLY: v' = 1 - v.
+Vec2 engine_uv(const aiVector3D& t) {
+  return {std::isfinite(t.x) ? t.x : 0.0f, std::isfinite(t.y) ? 1.0f - t.y : 0.0f};
+}
+
 // One aiMesh as a Velocity mesh: its triangles, its vertices, normals computed when the
-// file's are missing or unusable. `with_uvs` / `with_colors`: fill the array even when
-// this part has none, because a sibling part of the same node has them.
-Mesh convert_part(const aiMesh& in, const Material& material, bool with_uvs, bool with_colors,
-                  const std::string& path) {
+// file's are missing or unusable. `with`: the arrays to fill even when this part has
+// none, because a sibling part of the same node has them.
+Mesh convert_part(const aiMesh& in, const Material& material, const Channels& with, const std::string& path) {
   Mesh part;
   part.name = in.mName.C_Str();
   for (unsigned f = 0; f < in.mNumFaces; ++f) {
@@ -323,21 +348,39 @@ Mesh convert_part(const aiMesh& in, const Material& material, bool with_uvs, boo
     part.normals.resize(nv);
     for (unsigned v = 0; v < nv; ++v) part.normals[v] = normalize(to_vec3(in.mNormals[v]));
   }
-  if (with_uvs) {
+  if (with.uvs) {
     part.uvs.resize(nv);
     if (in.mTextureCoords[0])
-      for (unsigned v = 0; v < nv; ++v) {
-        const aiVector3D& t = in.mTextureCoords[0][v];
-        part.uvs[v] = {std::isfinite(t.x) ? t.x : 0.0f, std::isfinite(t.y) ? t.y : 0.0f};
-      }
+      for (unsigned v = 0; v < nv; ++v) part.uvs[v] = engine_uv(in.mTextureCoords[0][v]);
   }
-  if (with_colors) {
+  if (with.uvs1) {
+    part.uvs1.resize(nv);
+    if (in.mTextureCoords[1])
+      for (unsigned v = 0; v < nv; ++v) part.uvs1[v] = engine_uv(in.mTextureCoords[1][v]);
+  }
+  if (with.colors) {
     part.colors.assign(nv, material.color);
     if (in.mColors[0])
       for (unsigned v = 0; v < nv; ++v) {
         const aiColor4D& c = in.mColors[0][v];
         part.colors[v] = {clamp01(c.r), clamp01(c.g), clamp01(c.b)};
       }
+  }
+  if (with.alphas) {
+    part.alphas.assign(nv, 1.0f);
+    if (in.mColors[0])
+      for (unsigned v = 0; v < nv; ++v) part.alphas[v] = std::isnan(in.mColors[0][v].a) ? 1.0f : clamp01(in.mColors[0][v].a);
+  }
+  if (with.tangents && normals_ok) {
+    // glTF's TANGENT is xyz and a handedness w; Assimp keeps xyz and makes the
+    // bitangent (N x T) w, so w is the sign of B . (N x T).
+    part.tangents.resize(nv);
+    for (unsigned v = 0; v < nv; ++v) {
+      const Vec3 n = part.normals[v], t = to_vec3(in.mTangents[v]);
+      const Vec3 b = in.mBitangents ? to_vec3(in.mBitangents[v]) : cross(n, t);
+      const Vec3 tn = finite(t) && dot(t, t) > 1e-12f ? normalize(t) : Vec3{1, 0, 0};
+      part.tangents[v] = {tn.x, tn.y, tn.z, dot(b, cross(n, t)) < 0 ? -1.0f : 1.0f};
+    }
   }
   if (!normals_ok) compute_normals(part);
   return part;
@@ -348,7 +391,10 @@ void append(Mesh& to, const Mesh& part, uint32_t material) {
   to.positions.insert(to.positions.end(), part.positions.begin(), part.positions.end());
   to.normals.insert(to.normals.end(), part.normals.begin(), part.normals.end());
   to.uvs.insert(to.uvs.end(), part.uvs.begin(), part.uvs.end());
+  to.uvs1.insert(to.uvs1.end(), part.uvs1.begin(), part.uvs1.end());
+  to.tangents.insert(to.tangents.end(), part.tangents.begin(), part.tangents.end());
   to.colors.insert(to.colors.end(), part.colors.begin(), part.colors.end());
+  to.alphas.insert(to.alphas.end(), part.alphas.begin(), part.alphas.end());
   for (Triangle t : part.triangles) {
     for (uint32_t& v : t.v) v += base;
     to.triangles.push_back(t);
@@ -365,13 +411,16 @@ std::shared_ptr<Mesh> convert_node_meshes(const aiScene& scene, const aiNode& no
     return false;
   };
   std::vector<const aiMesh*> parts;
-  bool any_uvs = false, any_colors = false;
+  Channels with;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh* m = scene.mMeshes[node.mMeshes[i]];
     if (!has_triangles(*m)) continue;
     parts.push_back(m);
-    any_uvs |= m->mTextureCoords[0] != nullptr;
-    any_colors |= m->mColors[0] != nullptr;
+    with.uvs |= m->mTextureCoords[0] != nullptr;
+    with.uvs1 |= m->mTextureCoords[1] != nullptr;
+    with.colors |= m->mColors[0] != nullptr;
+    with.tangents &= m->mTangents != nullptr;
+    for (unsigned v = 0; m->mColors[0] && v < m->mNumVertices && !with.alphas; ++v) with.alphas = m->mColors[0][v].a < 1;
   }
   if (parts.empty()) return nullptr;
 
@@ -381,11 +430,13 @@ std::shared_ptr<Mesh> convert_node_meshes(const aiScene& scene, const aiNode& no
   for (const aiMesh* m : parts) {
     auto [it, added] = slot_of.try_emplace(m->mMaterialIndex, uint32_t(mesh->materials.size()));
     if (added) mesh->materials.push_back(materials[m->mMaterialIndex]);
-    Mesh part = convert_part(*m, mesh->materials[it->second], any_uvs, any_colors, path);
+    Mesh part = convert_part(*m, mesh->materials[it->second], with, path);
     // Normals are all from the file or all computed per part: compute_normals may have
     // split vertices, so the arrays are appended as they are now.
     append(*mesh, part, it->second);
   }
+  // A part whose normals were computed has no tangents (the file's would not fit them).
+  if (mesh->tangents.size() != mesh->positions.size()) mesh->tangents.clear();
   if (mesh->materials.size() == 1) mesh->face_materials.clear();
   if (mirrored)
     for (Triangle& t : mesh->triangles) std::swap(t.v[1], t.v[2]);
@@ -447,12 +498,26 @@ NamedCamera convert_camera(const aiCamera& in, const aiNode* node, const Mat4& w
   return out;
 }
 
-Model convert_scene(const aiScene& scene, const std::string& path) {
+Model convert_scene(const aiScene& scene, const std::string& path, const detail::GltfAppearance* gltf_appearance) {
   Model model;
   model.path = path;
   std::vector<Material> materials;
-  for (unsigned i = 0; i < scene.mNumMaterials; ++i)
-    materials.push_back(scene.mMaterials[i] ? convert_material(*scene.mMaterials[i]) : Material{});
+  for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
+    if (gltf_appearance) {
+      // The material Velocity read, by the index prepare_gltf put in its name (Assimp's
+      // order is its own); Assimp's default material has no such name.
+      const auto& own = gltf_appearance->materials;
+      const std::string name = scene.mMaterials[i] ? scene.mMaterials[i]->GetName().C_Str() : "";
+      const std::string_view tag = detail::kMaterialTag;
+      size_t index = own.size() - 1;
+      if (name.size() > tag.size() && name.compare(0, tag.size(), tag) == 0)
+        index = std::min<size_t>(std::strtoull(name.c_str() + tag.size(), nullptr, 10), own.size() - 1);
+      materials.push_back(own[index]);
+    } else {
+      materials.push_back(scene.mMaterials[i] ? convert_material(*scene.mMaterials[i]) : Material{});
+    }
+  }
+  if (gltf_appearance) model.lights = gltf_appearance->lights;
 
   // Depth first, parents before children; world matrices for the winding and cameras.
   struct Pending {
@@ -513,9 +578,6 @@ Model convert_scene(const aiScene& scene, const std::string& path) {
     Mat4 m = it == index_of.end() ? Mat4::identity() : world[it->second];
     model.cameras.push_back(convert_camera(*scene.mCameras[i], node, m, gltf));
   }
-  // TODO(lights): aiScene::mLights (glTF KHR_lights_punctual, 3DS omni and spot lights)
-  // are not converted: glTF gives intensities in candela, which need a scale to mean
-  // anything to Velocity's unit-intensity lights.
   return model;
 }
 
@@ -527,7 +589,8 @@ Model load_with_assimp(const std::string& path, const LoadOptions& options) {
   const std::string ext = detail::lower_extension(path);
   if (ext != "gltf" && ext != "glb" && ext != "3ds" && ext != "ply" && ext != "stl")
     throw Error(path + ": '" + ext + "' is not a format read through Assimp (expected .gltf, .glb, .3ds, .ply or .stl)");
-  std::shared_ptr<const std::string> replacement = check_file(path, options.max_memory);
+  std::optional<detail::GltfAppearance> appearance;
+  std::shared_ptr<const std::string> replacement = check_file(path, options, appearance);
   const std::string format = format_name(path);
   try {
     Assimp::Importer importer;
@@ -546,7 +609,7 @@ Model load_with_assimp(const std::string& path, const LoadOptions& options) {
     check_scene(*scene, path, options.max_memory);
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
     if (!scene) throw Error(path + ": cannot triangulate: " + std::string(importer.GetErrorString()));
-    return convert_scene(*scene, path);
+    return convert_scene(*scene, path, appearance ? &*appearance : nullptr);
   } catch (const Error&) {
     throw;
   } catch (const std::bad_alloc&) {

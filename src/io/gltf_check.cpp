@@ -173,6 +173,12 @@ bool kept_extension(const std::string& name) {
          name == "KHR_mesh_quantization" || name == "KHR_draco_mesh_compression";
 }
 
+// The extensions Velocity reads from the JSON itself (io/gltf_appearance.hpp), which
+// Assimp's copy goes without.
+bool read_by_velocity(const std::string& name) {
+  return name == "KHR_texture_transform" || name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength";
+}
+
 // Removes "extras" (free-form application data) and the extensions not kept, and
 // checks that every array holds values of one type, as every array of the glTF schema
 // does: Debian builds Assimp's JSON library with its assertions on, so reading a
@@ -199,7 +205,7 @@ void check_required_extensions(const json& root, const std::string& path) {
   const json* required = member(root, "extensionsRequired", json::value_t::array, "", path);
   if (!required) return;
   for (const json& name : *required)
-    if (!name.is_string() || !kept_extension(name.get<std::string>()))
+    if (!name.is_string() || !(kept_extension(name.get<std::string>()) || read_by_velocity(name.get<std::string>())))
       throw Error(path + ": the file requires glTF extension " + name.dump() + ", which Velocity does not read");
 }
 
@@ -405,7 +411,15 @@ void check_primitives(const json& root, const std::vector<uint64_t>& accessor_co
 // draw lines from model files, and Assimp 5.2.5 crashes (a null pointer) on a LINE_LOOP
 // primitive (mode 2) whose first index is out of range, while it drops such indices in
 // a LINE_STRIP (mode 3): line loops are given to it as line strips.
+//
+// Assimp 5.2.5 numbers a glTF file's materials in the order primitives first use them,
+// not the file's: each material is named by its index in the file instead
+// (kMaterialTag + index), so that the adapter finds the material Velocity read from the
+// JSON (io/gltf_appearance.hpp).
 void remove_what_velocity_does_not_draw(json& root) {
+  if (root.contains("materials") && root["materials"].is_array())
+    for (size_t i = 0; i < root["materials"].size(); ++i)
+      if (root["materials"][i].is_object()) root["materials"][i]["name"] = kMaterialTag + std::to_string(i);
   root.erase("skins");
   root.erase("animations");
   if (json* nodes = root.contains("nodes") ? &root["nodes"] : nullptr)

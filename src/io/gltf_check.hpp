@@ -30,7 +30,7 @@ namespace velocity::detail {
 // Checks `bytes` (a .gltf file, or a .glb file: "glTF" magic, then the JSON chunk) and
 // returns the file Assimp is to read in its place: the same JSON without "skins",
 // "animations", nodes' "skin" and "weights", meshes' "weights", primitives' "targets",
-// any "extras", and extensions other than KHR_materials_unlit,
+// any "extras", every material's name (kMaterialTag + its index), and extensions other than KHR_materials_unlit,
 // KHR_materials_pbrSpecularGlossiness, KHR_mesh_quantization and
 // KHR_draco_mesh_compression, with line loops made line strips (mode 2 -> 3); as a
 // .gltf or a .glb like the input (a .glb's binary chunk kept as it is). Throws
@@ -43,6 +43,9 @@ namespace velocity::detail {
 // chunk or their data URI, buffer views inside their buffer, accessors (and sparse
 // accessors' indices and values) inside their view, and accessors Assimp must allocate
 // itself (no bufferView, or sparse) within `max_memory` / 4.
+// The name each material has in the copy Assimp reads: this, then its index in the file.
+inline constexpr const char* kMaterialTag = "velocity-gltf-material-";
+
 std::string prepare_gltf(std::string_view bytes, const std::string& path, size_t max_memory);
 
 }  // namespace velocity::detail

@@ -47,6 +47,8 @@ void check_image(const std::string& path, const Image& image) {
 // Most pixels read_image accepts: 8192x8192 (256 MiB as RGBA8), a bound on what a small
 // file can make the decoder allocate.
 constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
+// Most bytes of one image file (or embedded image) read.
+constexpr size_t kMaxImageFileBytes = size_t(256) << 20;
 
 // stb_image 2.27 (Debian 12's libstb) trusts the 16 code-length counts of a JPEG DHT
 // table: counts adding up to more than 256 make stbi__build_huffman write past its
@@ -133,7 +135,13 @@ void write_image(const std::string& path, const Image& image) {
 Image read_image(const std::string& path) {
   // Through read_file: a missing file, a directory, a device or a FIFO gets a clear
   // error, and the size is bounded (as read_pcx's).
-  std::string bytes = detail::read_file(path, size_t(256) << 20);
+  return decode_image(detail::read_file(path, kMaxImageFileBytes), path);
+}
+
+Image decode_image(std::string_view bytes, const std::string& path) {
+  if (bytes.size() > kMaxImageFileBytes)
+    throw Error(path + ": image data of " + std::to_string(bytes.size()) + " bytes is more than the limit of " +
+                std::to_string(kMaxImageFileBytes >> 20) + " MiB");
   const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
   if (!jpeg_huffman_counts_ok(p, bytes.size()))
     throw Error(path + ": cannot read image (corrupt JPEG: a Huffman table has more than 256 codes)");

@@ -1,4 +1,5 @@
 // Choosing a reader by file extension, Model's counts, and putting a model in a scene.
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -23,35 +24,65 @@ Model read_model(const std::string& path, const LoadOptions& options) {
   throw Error(path + ": unknown model extension '" + ext + "' (expected .asc, .plg, .plx, .obj, .gltf, .glb, .3ds, .ply or .stl)");
 }
 
-// Loads the texture files the materials name, each file once, found next to the model
-// (case-insensitively: files copied from DOS and Windows rarely keep their case). A
-// missing or unreadable texture is not a broken model: the material keeps its colour
-// and a warning says which file was wanted.
+// The values of an alpha map (MTL map_d) as the alpha of `base` (or of a white image
+// of the map's size when there is no base): the map's own alpha where it has one, else
+// its grey level; sampled at the nearest texel where the sizes differ.
+std::shared_ptr<const Texture> with_alpha(const std::shared_ptr<const Texture>& base, const Texture& map) {
+  const Texture::Level& a = map.levels()[0];
+  bool has_alpha = false;
+  for (uint32_t t : a.texels) has_alpha |= (t >> 24) != 255;
+  const int w = base ? base->width() : a.width, h = base ? base->height() : a.height;
+  Image out(w, h, 0xffffffffu);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint32_t t = a.texels[size_t(int64_t(y) * a.height / h) * size_t(a.width) + size_t(int64_t(x) * a.width / w)];
+      const uint32_t value = has_alpha ? t >> 24 : ((t & 0xff) + ((t >> 8) & 0xff) + ((t >> 16) & 0xff)) / 3;
+      uint8_t* p = out.pixel(x, y);
+      if (base) {
+        const uint32_t b = base->levels()[0].texels[size_t(y) * size_t(w) + size_t(x)];
+        p[0] = uint8_t(b), p[1] = uint8_t(b >> 8), p[2] = uint8_t(b >> 16);
+        p[3] = uint8_t((b >> 24) * value / 255);
+      } else {
+        p[3] = uint8_t(value);
+      }
+    }
+  return std::make_shared<const Texture>(out);
+}
+
+// Loads the texture files the materials name (the base texture, the PBR maps, an alpha
+// map), each file once, found next to the model (case-insensitively: files copied from
+// DOS and Windows rarely keep their case). A missing or unreadable texture is not a
+// broken model: the material keeps its colour and a warning says which file was wanted.
 void load_textures(Model& model, const LoadOptions& options) {
   std::map<std::string, std::shared_ptr<const Texture>> loaded;  // by the name as written
   size_t budget = options.max_memory;
+  auto load = [&](const std::string& name) {
+    auto [it, fresh] = loaded.try_emplace(name);
+    if (!fresh) return it->second;
+    std::string file = resolve_texture_path(model.path, name);
+    if (file.empty()) {
+      warn(model.path + ": texture '" + name + "' not found next to the model");
+      return it->second;
+    }
+    try {
+      it->second = load_texture(file);
+      size_t bytes = it->second->memory_bytes();
+      if (bytes > budget) throw Error(file + ": textures exceed the memory limit");
+      budget -= bytes;
+    } catch (const Error& e) {
+      warn(std::string(e.what()) + " (texture of " + model.path + ")");
+      it->second = nullptr;
+    }
+    return it->second;
+  };
   for (ModelNode& node : model.nodes) {
     if (!node.mesh) continue;
     for (Material& m : node.mesh->materials) {
-      if (m.texture_file.empty() || m.texture) continue;
-      auto [it, fresh] = loaded.try_emplace(m.texture_file);
-      if (fresh) {
-        std::string file = resolve_texture_path(model.path, m.texture_file);
-        if (file.empty()) {
-          warn(model.path + ": texture '" + m.texture_file + "' not found next to the model");
-        } else {
-          try {
-            it->second = load_texture(file);
-            size_t bytes = it->second->memory_bytes();
-            if (bytes > budget) throw Error(file + ": textures exceed the memory limit");
-            budget -= bytes;
-          } catch (const Error& e) {
-            warn(std::string(e.what()) + " (texture of " + model.path + ")");
-            it->second = nullptr;
-          }
-        }
-      }
-      m.texture = it->second;
+      if (!m.texture_file.empty() && !m.texture) m.texture = load(m.texture_file);
+      for (TextureRef* ref : {&m.pbr.metallic_roughness, &m.pbr.normal, &m.pbr.occlusion, &m.pbr.emissive_map})
+        if (!ref->file.empty() && !ref->texture) ref->texture = load(ref->file);
+      if (!m.alpha_file.empty())
+        if (auto map = load(m.alpha_file)) m.texture = with_alpha(m.texture, *map);
     }
   }
 }

@@ -6,6 +6,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <unordered_map>
 #include <sstream>
@@ -18,17 +19,84 @@ namespace velocity {
 
 namespace {
 
+// Material names may hold spaces ("01 - Default", 3ds Max's default name), which
+// tinyobjloader cuts at the first space in `usemtl` (but not in `newmtl`), so a face's
+// material is lost. Before parsing, the spaces in both are replaced by kNameSpace, and
+// put back in the names afterwards. Trailing white space (a '\r') is not part of a name.
+constexpr char kNameSpace = '\x1f';
+
+std::string protect_material_names(std::string text) {
+  size_t line = 0;
+  while (line < text.size()) {
+    size_t end = text.find('\n', line);
+    if (end == std::string::npos) end = text.size();
+    size_t at = text.find_first_not_of(" \t", line);
+    if (at < end && (text.compare(at, 7, "usemtl ") == 0 || text.compare(at, 7, "newmtl ") == 0 ||
+                     text.compare(at, 7, "usemtl\t") == 0 || text.compare(at, 7, "newmtl\t") == 0)) {
+      size_t first = text.find_first_not_of(" \t", at + 7), last = end;
+      while (last > first && (text[last - 1] == ' ' || text[last - 1] == '\t' || text[last - 1] == '\r')) --last;
+      for (size_t i = first; i < last; ++i)
+        if (text[i] == ' ' || text[i] == '\t') text[i] = kNameSpace;
+    }
+    line = end + 1;
+  }
+  return text;
+}
+
+std::string restore_spaces(std::string name) {
+  std::replace(name.begin(), name.end(), kNameSpace, ' ');
+  return name;
+}
+
+// An MTL texture's -o (offset) and -s (scale) as a UvTransform in the engine's uvs: MTL
+// applies u' = s u + o to OBJ's uvs (v up); with v = 1 - v_obj on both sides, the v
+// offset becomes 1 - s - o.
+UvTransform uv_transform(const tinyobj::texture_option_t& t) {
+  UvTransform uv;
+  uv.scale = {t.scale[0], t.scale[1]};
+  uv.offset = {t.origin_offset[0], 1 - t.scale[1] - t.origin_offset[1]};
+  if (!std::isfinite(uv.scale.x) || !std::isfinite(uv.scale.y) || !std::isfinite(uv.offset.x) ||
+      !std::isfinite(uv.offset.y))
+    return {};
+  return uv;
+}
+
+// MTL as Velocity's material: Kd, map_Kd (with -s, -o, -clamp), Ks and Ns as the Phong
+// highlight, d (or 1 - Tr) and map_d as alpha; and, for Shading::Pbr on request, the
+// PBR parameters (docs/appearance.md): Pm metallic, Pr roughness (else from Ns), Ke
+// emissive, map_Bump / bump / norm the normal map (-bm its scale).
 Material material_from(const tinyobj::material_t& m) {
   Material mat;
-  mat.name = m.name;
+  mat.name = restore_spaces(m.name);
   mat.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
   mat.texture_file = m.diffuse_texname;  // map_Kd
+  mat.texture_uv = uv_transform(m.diffuse_texopt);
+  if (m.diffuse_texopt.clamp) mat.wrap = Wrap::Clamp;
   float ks = std::max({m.specular[0], m.specular[1], m.specular[2]});
   if (ks > 0) {
     mat.specular = ks;
     mat.shininess = m.shininess > 0 ? m.shininess : 32.0f;
     mat.shading = Shading::Phong;
   }
+  if (std::isfinite(m.dissolve) && m.dissolve < 1) {
+    mat.alpha = std::max(0.0f, float(m.dissolve));
+    mat.alpha_mode = AlphaMode::Blend;
+  }
+  mat.alpha_file = m.alpha_texname;  // map_d
+  if (!mat.alpha_file.empty()) mat.alpha_mode = AlphaMode::Blend;
+  auto unit = [](float x, float fallback) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : fallback; };
+  mat.pbr.metallic = unit(m.metallic, 0);
+  // Blinn-Phong's exponent n and GGX's alpha = roughness^2 match at alpha^2 = 2 / (n + 2).
+  const float ns = std::isfinite(m.shininess) ? std::max(0.0f, float(m.shininess)) : 0.0f;
+  mat.pbr.roughness = m.roughness > 0 ? unit(m.roughness, 1) : std::sqrt(std::sqrt(2 / (ns + 2)));
+  mat.pbr.emissive = {unit(m.emission[0], 0), unit(m.emission[1], 0), unit(m.emission[2], 0)};
+  const bool norm = !m.normal_texname.empty();
+  const tinyobj::texture_option_t& normal_opt = norm ? m.normal_texopt : m.bump_texopt;
+  mat.pbr.normal.file = norm ? m.normal_texname : m.bump_texname;  // norm, else map_Bump / bump
+  mat.pbr.normal.uv = uv_transform(normal_opt);
+  if (std::isfinite(normal_opt.bump_multiplier)) mat.pbr.normal_scale = normal_opt.bump_multiplier;
+  mat.pbr.emissive_map.file = m.emissive_texname;  // map_Ke
+  mat.pbr.emissive_map.uv = uv_transform(m.emissive_texopt);
   return mat;
 }
 
@@ -50,7 +118,7 @@ class BoundedMaterialReader : public tinyobj::MaterialReader {
       return false;
     }
     budget_ -= text.size();
-    std::istringstream in(std::move(text));
+    std::istringstream in(protect_material_names(std::move(text)));
     tinyobj::LoadMtl(map, materials, &in, warn, err);
     return true;
   }
@@ -81,7 +149,7 @@ Model load_obj(const std::string& path, const LoadOptions& options) {
   size_t slash = path.find_last_of('/');
   BoundedMaterialReader mtl_reader(slash == std::string::npos ? "" : path.substr(0, slash + 1),
                                    options.max_memory - text.size());
-  std::istringstream in(std::move(text));
+  std::istringstream in(protect_material_names(std::move(text)));
   tinyobj::attrib_t at;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> obj_materials;
@@ -128,10 +196,12 @@ Model load_obj(const std::string& path, const LoadOptions& options) {
             mesh->normals.push_back(normalize({fetch(at.normals, i.normal_index, 3, 0),
                                                fetch(at.normals, i.normal_index, 3, 1),
                                                fetch(at.normals, i.normal_index, 3, 2)}));
+          // OBJ's `vt` has v = 0 at the image's bottom row, the engine's at the top: the
+          // one place OBJ's uvs are converted (v' = 1 - v).
           if (any_uv)
             mesh->uvs.push_back(i.texcoord_index >= 0 ? Vec2{fetch(at.texcoords, i.texcoord_index, 2, 0),
-                                                             fetch(at.texcoords, i.texcoord_index, 2, 1)}
-                                                      : Vec2{});
+                                                             1 - fetch(at.texcoords, i.texcoord_index, 2, 1)}
+                                                      : Vec2{0, 1});
           if (has_colors)
             mesh->colors.push_back({fetch(at.colors, i.vertex_index, 3, 0), fetch(at.colors, i.vertex_index, 3, 1),
                                     fetch(at.colors, i.vertex_index, 3, 2)});

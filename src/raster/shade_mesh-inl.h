@@ -143,7 +143,8 @@ struct SmoothTexShader {
 };
 
 // Per-pixel lighting (shading/lighting-inl.h); optionally a base texture (uv) and a
-// sphere environment map addressed by the normal: u = 0.5 + 0.5 Nx, v = 0.5 + 0.5 Ny.
+// sphere environment map addressed by the normal: u = 0.5 + 0.5 Nx, v = 0.5 - 0.5 Ny
+// (the image's top row at Ny = 1).
 template <bool kTex, bool kEnv>
 struct PhongShader {
   static constexpr bool kConstant = false;
@@ -164,7 +165,7 @@ struct PhongShader {
   void env_uv(float x, float y, float& u, float& v) const {
     constexpr int n0 = varying::kNormal + 1;  // planes: 1/w first
     Vec3 n = normalize({in.p.value(n0, x, y), in.p.value(n0 + 1, x, y), in.p.value(n0 + 2, x, y)});
-    u = 0.5f + 0.5f * n.x, v = 0.5f + 0.5f * n.y;
+    u = 0.5f + 0.5f * n.x, v = 0.5f - 0.5f * n.y;
   }
 
   void begin_block(float fx, float fy) {
@@ -193,7 +194,7 @@ struct PhongShader {
     }
     if constexpr (kEnv) {
       const VF half = hn::Set(d, 0.5f);
-      Rgba e = sample<false>(draw.env_map, env_level, hn::MulAdd(half, nx, half), hn::MulAdd(half, ny, half));
+      Rgba e = sample<false>(draw.env_map, env_level, hn::MulAdd(half, nx, half), hn::NegMulAdd(half, ny, half));
       const VF mix = hn::Set(d, draw.env_mix);
       br = hn::MulAdd(hn::Sub(e.r, br), mix, br), bg = hn::MulAdd(hn::Sub(e.g, bg), mix, bg);
       bb = hn::MulAdd(hn::Sub(e.b, bb), mix, bb);

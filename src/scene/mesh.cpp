@@ -179,7 +179,7 @@ Mesh make_cube(float size) {
     for (const auto& c : corner) {
       m.positions.push_back((f[0] + f[1] * c[0] + f[2] * c[1]) * h);
       m.normals.push_back(f[0]);
-      m.uvs.push_back({(c[0] + 1) / 2, (c[1] + 1) / 2});
+      m.uvs.push_back({(c[0] + 1) / 2, (1 - c[1]) / 2});  // the image upright on each face
     }
     m.triangles.push_back({{base, base + 1, base + 2}});
     m.triangles.push_back({{base, base + 2, base + 3}});
@@ -201,7 +201,7 @@ Mesh make_sphere(int segments) {
       Vec3 p{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
       m.positions.push_back(p);
       m.normals.push_back(p);
-      m.uvs.push_back({u, 1.0f - v});
+      m.uvs.push_back({u, v});  // v = 0, the image's top row, at the north pole
     }
   }
   for (int r = 0; r < rings; ++r)
@@ -247,7 +247,7 @@ Mesh make_plane_grid(float size, int cells) {
       float u = float(x) / float(cells), v = float(z) / float(cells);
       m.positions.push_back({(u - 0.5f) * size, 0, (v - 0.5f) * size});
       m.normals.push_back({0, 1, 0});
-      m.uvs.push_back({u, 1 - v});
+      m.uvs.push_back({u, v});  // the image's top row at -Z: upright seen from above
     }
   for (int z = 0; z < cells; ++z)
     for (int x = 0; x < cells; ++x) {

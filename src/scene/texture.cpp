@@ -90,8 +90,8 @@ Image make_environment_map(int size) {
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       // The texel's normal on the mirror ball: (nx, ny) from its position, v = 0 is the
-      // top row, which the convention maps to ny = -1 (v = 0.5 + 0.5 ny).
-      float nx = (x + 0.5f) / size * 2 - 1, ny = (y + 0.5f) / size * 2 - 1;
+      // top row, which the convention maps to ny = 1 (v = 0.5 - 0.5 ny).
+      float nx = (x + 0.5f) / size * 2 - 1, ny = 1 - (y + 0.5f) / size * 2;
       float r2 = nx * nx + ny * ny;
       float nz = std::sqrt(std::max(0.0f, 1 - r2));
       // Reflect the view direction (0, 0, -1) about n: the direction the mirror shows.

@@ -170,7 +170,7 @@ class MeshTriangles {
     if (s.uv_from_env) {
       Vec3 n = eye_normal(v);
       if (flip) n = -n;
-      uv = {0.5f + 0.5f * n.x, 0.5f + 0.5f * n.y};  // seed 000's sphere map, per vertex
+      uv = {0.5f + 0.5f * n.x, 0.5f - 0.5f * n.y};  // seed 000's sphere map (top row at Ny = 1), per vertex
     } else {
       uv = transform_uv(corner_uv(v, mat.texture_uv.uv_set), mat.texture_uv);
     }

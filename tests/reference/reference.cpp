@@ -419,7 +419,15 @@ void Renderer::State::setup_texture() {
   glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  // Images are stored top row first; OpenGL's t = 0 is the first row it is given, and the
+  // convention's t = 0 is the image's bottom row (OBJ's and 3D Studio's v; the sphere
+  // map's too, whose top row shows at Ny = 1): the rows go up bottom first, as in
+  // ../shared/tools/glref.
+  const size_t row = size_t(img.width) * 4;
+  std::vector<uint8_t> upright(img.rgba.size());
+  for (int y = 0; y < img.height; ++y)
+    std::memcpy(&upright[size_t(y) * row], &img.rgba[size_t(img.height - 1 - y) * row], row);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, upright.data());
   scene.texture = Image{};  // GL holds its own copy now
 }
 

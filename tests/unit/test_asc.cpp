@@ -170,8 +170,9 @@ TEST(Asc, HeaderVariantsOfOtherWriters) {
   const Mesh& mesh = only_mesh(parse_asc(text, "t.asc", no_swap()));
   ASSERT_EQ(mesh.uvs.size(), 3u);
   EXPECT_FLOAT_EQ(mesh.uvs[0].x, 0.25f);
-  EXPECT_FLOAT_EQ(mesh.uvs[0].y, -0.4271f);
+  EXPECT_FLOAT_EQ(mesh.uvs[0].y, 1.4271f);  // V up in the file: 1 - V in the engine's uvs
   EXPECT_FLOAT_EQ(mesh.uvs[1].x, 10.0f);
+  EXPECT_FLOAT_EQ(mesh.uvs[1].y, 0.0f);
   EXPECT_FLOAT_EQ(mesh.positions[0].z, -33.8284f);
   EXPECT_EQ(mesh.materials.at(0).color, (Vec3{1, 1, 1}));
 }
