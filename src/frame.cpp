@@ -13,15 +13,18 @@
 // the image is the same for any number of threads.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <deque>
 #include <new>
 
+#include "core/srgb.hpp"
 #include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/object_cull.hpp"
+#include "geometry/tangents.hpp"
 #include "geometry/vertex_jobs.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
@@ -83,6 +86,9 @@ class CpuBackend final : public Backend {
   std::vector<triangle::Job> jobs;
   std::deque<std::vector<Vec3>> averaged_normals;  // for meshes that bring none, reused (stable addresses)
   size_t averaged_used = 0;
+  std::deque<std::vector<Vec4>> generated_tangents;  // for normal-mapped meshes that bring none, likewise
+  size_t tangents_used = 0;
+  bool orthographic = false;
   Material default_material;
   Mat4 view, projection, view_projection;
   FrameStart start;
@@ -128,6 +134,7 @@ class CpuBackend final : public Backend {
   }
 
   const FrameStats& run_frame(bool painter);
+  void order_blended_draws();
 };
 
 const char* simd_target() { return raster::simd_target(); }
@@ -162,6 +169,8 @@ void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
   r.draw_states.clear();
   r.jobs.clear();
   r.averaged_used = 0;
+  r.tangents_used = 0;
+  r.orthographic = camera.projection == Projection::Orthographic;
   r.start = start;
   r.stats_ = {};
 }
@@ -188,6 +197,21 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
     d.normals = &n;  // normalised when transformed to eye space
   }
   geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
+  if (d.needs_tangents) {
+    if (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty()) {
+      d.tangents = &mesh.tangents;
+    } else {
+      if (r.tangents_used == r.generated_tangents.size()) r.generated_tangents.emplace_back();
+      std::vector<Vec4>& t = r.generated_tangents[r.tangents_used++];
+      int uv_set = 0;
+      for (uint32_t i = 0; i < d.slot_count; ++i)
+        if (p.slots[d.slot_begin + i].pbr_tangents) uv_set = p.slots[d.slot_begin + i].uv_set;
+      const std::vector<Vec2>& uvs = uv_set == 1 && !mesh.uvs1.empty() ? mesh.uvs1 : mesh.uvs;
+      geometry::generate_tangents(mesh, *d.normals, uvs.empty() ? std::vector<Vec2>(mesh.positions.size()) : uvs, t);
+      d.tangents = &t;
+    }
+  }
+  if (d.blend) d.centre = d.model_view.transform_point(mesh.bounding_sphere().center);
   const uint32_t index = uint32_t(p.meshes.size());
   p.meshes.push_back(d);
   const size_t nt = mesh.triangles.size();
@@ -238,6 +262,8 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const Clock::time_point t0 = Clock::now();
+  geometry::finish_color_plan(r.plan, r.draw_states);
+  r.order_blended_draws();
   r.vertex_stage.run(pool, r.plan);
   const Clock::time_point t1 = Clock::now();
   r.triangle_stage.run(pool, r.bins, r.plan, r.jobs, r.framebuffer.width, r.framebuffer.height, painter);
@@ -248,6 +274,11 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   tiles.bins = &r.bins;
   tiles.draws = &r.draw_states;
   tiles.lights = &r.plan.lights;
+  tiles.orthographic = r.orthographic;
+  if (r.plan.linear) {
+    const RenderOptions& o = r.plan.options;
+    tiles.output = {true, std::isfinite(o.exposure) && o.exposure >= 0 ? o.exposure : 1.0f, o.tone_map};
+  }
   tiles.depth_test = !painter;
   tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
   tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
@@ -261,6 +292,22 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   r.triangle_stage.add_stats(r.stats_);
   r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
   return r.stats_;
+}
+
+// glTF's BLEND materials: their draws go after the opaque ones, farthest first (by the
+// eye-space depth of their bounding sphere's centre), each between the clears it was
+// recorded between; their own triangles keep their order.
+void CpuBackend::order_blended_draws() {
+  auto blended = [&](const triangle::Job& j) { return j.kind == triangle::Job::Kind::Mesh && plan.meshes[j.draw].blend; };
+  if (std::none_of(jobs.begin(), jobs.end(), blended)) return;
+  for (auto begin = jobs.begin(); begin != jobs.end();) {
+    auto end = std::find_if(begin, jobs.end(), [](const triangle::Job& j) { return j.kind == triangle::Job::Kind::Clear; });
+    auto mid = std::stable_partition(begin, end, [&](const triangle::Job& j) { return !blended(j); });
+    std::stable_sort(mid, end, [&](const triangle::Job& a, const triangle::Job& b) {
+      return plan.meshes[a.draw].centre.z < plan.meshes[b.draw].centre.z;  // more negative: farther
+    });
+    begin = end == jobs.end() ? end : end + 1;
+  }
 }
 
 }  // namespace velocity

@@ -31,6 +31,7 @@ struct BenchArgs {
   int ssaa = 1;
   bool verbose = false;
   std::string backend = "cpu";
+  AppearanceArgs appearance;
 };
 
 int run_bench(const BenchArgs& a) {
@@ -41,7 +42,8 @@ int run_bench(const BenchArgs& a) {
   if (a.threads < 0) throw Error("--threads must be 0 (every core) or more");
   std::shared_ptr<const Texture> texture = a.tex.empty() ? nullptr : load_texture(a.tex);
   auto look = bench::make_look(a.shade, texture);
-  if (!look) throw Error("--shade: expected flat|gouraud|phong|wire|tex|env, got '" + a.shade + "'");
+  if (!look) throw Error("--shade: expected flat|gouraud|phong|wire|tex|env|pbr|pbrtex, got '" + a.shade + "'");
+  apply_appearance(a.appearance, look->options);
   if (a.ssaa < 1 || a.ssaa > 4) throw Error("--ssaa must be 1..4");
   if (!a.filter.empty()) {
     auto f = parse_filter(a.filter);
@@ -103,7 +105,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--mesh", args->mesh, "sphere:SEGS or FILE.obj")->capture_default_str();
   cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
   cmd->add_option("--frames", args->frames, "Frames to render (the median is quoted)")->capture_default_str();
-  cmd->add_option("--shade", args->shade, "flat|gouraud|phong|wire|tex|env")->capture_default_str();
+  cmd->add_option("--shade", args->shade, "flat|gouraud|phong|wire|tex|env|pbr|pbrtex")->capture_default_str();
   cmd->add_option("--tex", args->tex, "Texture for tex and env (default: the 256x256 checkerboard)");
   cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear (default trilinear)");
   cmd->add_flag("--affine", args->affine, "Affine (screen-linear) interpolation: cheaper, bends on large polygons");
@@ -113,6 +115,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Write the first frame to this image");
   cmd->add_option("--backend", args->backend, "What draws: cpu, gpu (OpenGL 3.3 through EGL) or auto (a hardware GPU, else cpu)")
       ->capture_default_str();
+  add_appearance_options(cmd, args->appearance);
   cmd->add_flag("--verbose", args->verbose, "Also print the instruction set, what the last frame did and the median time of each stage");
   return [args] { return run_bench(*args); };
 }

@@ -6,10 +6,21 @@
 #include <functional>
 #include <string>
 
+#include "velocity/renderer.hpp"
+
 namespace velocity::cli {
 
 // Parses "WxH" into width and height (1..16384 each); throws CLI::ValidationError.
 void parse_size(const std::string& text, int& width, int& height);
+
+// --color, --tone-map and --exposure (apps/velocity/appearance.cpp), and how they set
+// the RenderOptions (throws velocity::Error naming the flag on a bad value).
+struct AppearanceArgs {
+  std::string color = "auto", tone_map = "none";
+  float exposure = 1.0f;
+};
+void add_appearance_options(CLI::App* cmd, AppearanceArgs& a);
+void apply_appearance(const AppearanceArgs& a, RenderOptions& o);
 
 // Each registers its subcommand on `app` and returns a function that runs it (exit code).
 std::function<int()> add_render_command(CLI::App& app);

@@ -40,6 +40,7 @@ struct RenderArgs {
   std::string backend = "cpu";
   bool ortho = false, painter = false, no_cull = false, cull = false, verbose = false, swap_yz = true, affine = false;
   size_t max_memory = LoadOptions{}.max_memory;
+  AppearanceArgs appearance;
 };
 
 // --shade: a shading mode, optionally "+tex" and/or "+env" ("phong+env"); "tex" alone is
@@ -65,7 +66,7 @@ ShadeSpec parse_shade(const std::string& text) {
       spec.shading = s;
     } else {
       throw Error("--shade: unknown mode '" + text +
-                  "' (flat, gouraud, phong, unlit, wire, points, tex, env, or a mode with +tex / +env)");
+                  "' (flat, gouraud, phong, unlit, wire, points, pbr, tex, env, or a mode with +tex / +env)");
     }
     first = false;
   }
@@ -174,6 +175,7 @@ int run_render(const RenderArgs& a) {
   o.threads = a.threads;
   o.depth_mode = a.painter ? DepthMode::Painter : DepthMode::ZBuffer;
   o.cull_back_faces = !a.no_cull;
+  apply_appearance(a.appearance, o);
   const FrameStats& st = renderer.render(scene);
   write_image(a.out, renderer.color_image());
   // Never silently empty: say why nothing was drawn.
@@ -204,7 +206,8 @@ std::function<int()> add_render_command(CLI::App& app) {
                   "Model file (.asc, .plg, .obj, ...) or cube|sphere|torus; none: the demo scene");
   cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
   cmd->add_option("--shade", args->shade,
-                  "Override shading: flat|gouraud|phong|unlit|wire|points|tex|env, or MODE+tex, MODE+env, MODE+tex+env");
+                  "Override shading: flat|gouraud|phong|unlit|wire|points|pbr|tex|env, or MODE+tex, MODE+env, MODE+tex+env");
+  add_appearance_options(cmd, args->appearance);
   cmd->add_option("--texture", args->texture, "Base texture for every material (PNG, JPEG, TGA, BMP, GIF, PCX)");
   cmd->add_option("--env", args->env, "Sphere environment map for every material");
   cmd->add_option("--filter", args->filter, "Texture filter: nearest|bilinear|trilinear");

@@ -31,8 +31,10 @@ struct Look {
 // for anything else): material colour (0.8, 0.7, 0.6); "phong" adds white specular 0.5
 // with exponent 32; "wire" is (0.9, 0.9, 0.9), unculled; "tex" is Gouraud lighting of a
 // white material modulating `texture` (trilinear); "env" is "phong" with the base colour
-// from `texture` used as a sphere environment map. A null `texture` means the
-// convention's 256x256 checkerboard.
+// from `texture` used as a sphere environment map. Velocity's own rows: "pbr" is glTF's
+// metallic-roughness (metallic 0.3, roughness 0.5), per pixel in the linear pipeline;
+// "pbrtex" adds `texture` as its base colour texture. A null
+// `texture` means the convention's 256x256 checkerboard.
 std::optional<Look> make_look(std::string_view shade, std::shared_ptr<const Texture> texture = nullptr);
 
 // Draws frame `frame` of `frames`: camera at (0, 0, 3) looking down -Z, 45 degrees,

@@ -2,6 +2,9 @@
 #include "geometry/draw_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "core/srgb.hpp"
 
 #include "velocity/error.hpp"
 
@@ -15,6 +18,11 @@ using raster::KernelId;
 void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool replace, Filter filter) {
   auto with = [&](KernelId k) { return raster::kernel_with_filter(k, filter); };
   s.flat = false;
+  if (s.shading == Shading::Pbr) {
+    s.kernel = raster::pbr_kernel(s.pbr_tangents, s.pbr_colors, filter);
+    s.num_varyings = raster::pbr_varyings(s.pbr_tangents, s.pbr_colors);
+    return;
+  }
   if (tex && replace) {
     s.kernel = with(KernelId::FlatTex), s.num_varyings = raster::kFlatTexVaryings, s.white = true, s.flat = true;
     return;
@@ -31,7 +39,6 @@ void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool rep
       else s.kernel = uint8_t(KernelId::Smooth), s.num_varyings = raster::kSmoothVaryings;
       return;
     case Shading::Phong:
-    case Shading::Pbr:  // until the PBR kernel exists (issue 17): Phong
       s.kernel = tex && env ? with(KernelId::PhongTexEnv)
                  : tex      ? with(KernelId::PhongTex)
                  : env      ? with(KernelId::PhongEnv)
@@ -42,6 +49,41 @@ void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool rep
       s.kernel = uint8_t(KernelId::Flat), s.num_varyings = 0;
       return;
   }
+}
+
+raster::UvAffine uv_affine(const UvTransform& t) {
+  // KHR_texture_transform: T(offset) R(rotation) S(scale), R = [cos -sin; sin cos].
+  const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+  return {c * t.scale.x, -s * t.scale.y, t.offset.x, s * t.scale.x, c * t.scale.y, t.offset.y};
+}
+
+// glTF's metallic-roughness parameters as the Pbr kernels read them (colours are put
+// into the pipeline's space by finish_color_plan).
+void plan_pbr(const Material& mat, Filter filter, raster::PbrState& p) {
+  const PbrParams& m = mat.pbr;
+  p.metallic = m.metallic, p.roughness = m.roughness;
+  p.normal_scale = m.normal_scale, p.occlusion_strength = m.occlusion_strength;
+  p.alpha_mode = mat.alpha_mode, p.alpha_cutoff = mat.alpha_cutoff;
+  p.unlit = m.unlit;
+  auto view = [&](const TextureRef& t, raster::SamplerView& v, raster::UvAffine& a) {
+    if (!t) return;
+    v = raster::SamplerView(*t.texture, filter, mat.wrap);
+    a = uv_affine(t.uv);
+  };
+  view(m.metallic_roughness, p.metallic_roughness, p.mr_uv);
+  view(m.normal, p.normal, p.normal_uv);
+  view(m.occlusion, p.occlusion, p.occlusion_uv);
+  view(m.emissive_map, p.emissive_map, p.emissive_uv);
+  p.base_uv = uv_affine(mat.texture_uv);
+}
+
+// The uv set a Pbr material's textures read: the base colour texture's, else the
+// first other texture's (one set per material).
+int pbr_uv_set(const Material& mat) {
+  if (mat.texture) return mat.texture_uv.uv_set;
+  for (const TextureRef* t : {&mat.pbr.metallic_roughness, &mat.pbr.normal, &mat.pbr.occlusion, &mat.pbr.emissive_map})
+    if (*t) return t->uv.uv_set;
+  return 0;
 }
 
 bool same_specular(const shading::Specular& a, const shading::Specular& b) { return a.ks == b.ks && a.exponent == b.exponent; }
@@ -71,7 +113,16 @@ void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, Mesh
     const Texture* tex = o.texture ? o.texture.get() : mat.texture.get();
     const Texture* env = o.env_map ? o.env_map.get() : mat.env_map.get();
     const Filter filter = o.filter.value_or(mat.filter);
-    choose_kernel(s, tex, env, mat.texture_mode == TextureMode::Replace, filter);
+    if (s.shading == Shading::Pbr) {
+      s.pbr_tangents = bool(mat.pbr.normal);
+      s.pbr_colors = !mesh.colors.empty();
+      s.blend = mat.alpha_mode == AlphaMode::Blend;
+      s.uv_set = pbr_uv_set(mat);
+      s.cull = o.cull_back_faces && !mat.two_sided;
+      d.needs_tangents = d.needs_tangents || s.pbr_tangents;
+      d.blend = d.blend || s.blend;
+    }
+    choose_kernel(s, tex, env, mat.texture_mode == TextureMode::Replace && s.shading != Shading::Pbr, filter);
 
     raster::DrawState st;
     st.object_id = d.object_id;
@@ -80,6 +131,7 @@ void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, Mesh
     // Environment maps are addressed by the normal: clamped, never wrapped.
     if (env) st.env_map = raster::SamplerView(*env, filter, Wrap::Clamp);
     st.env_mix = mat.env_mix;
+    if (s.shading == Shading::Pbr) plan_pbr(mat, filter, st.pbr);
     s.draw_state = uint32_t(states.size());
     states.push_back(st);
 
@@ -103,6 +155,39 @@ void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, Mesh
     plan.slots.push_back(s);
   }
   d.vertex_specular_terms = d.light && !d.vertex_color && d.vertex_specular.ks > 0;
+}
+
+Vec3 pipeline_color(Vec3 c, ColorSpace space, bool linear) {
+  if (linear == (space == ColorSpace::Linear)) return c;
+  if (linear) return {color::srgb_to_linear(c.x), color::srgb_to_linear(c.y), color::srgb_to_linear(c.z)};
+  return {color::linear_to_srgb(c.x), color::linear_to_srgb(c.y), color::linear_to_srgb(c.z)};
+}
+
+void finish_color_plan(DrawList& plan, std::vector<raster::DrawState>& states) {
+  bool pbr = false;
+  for (const SlotPlan& s : plan.slots) pbr = pbr || s.shading == Shading::Pbr;
+  const ColorPipeline c = plan.options.color;
+  plan.linear = c == ColorPipeline::Linear || (c == ColorPipeline::Auto && pbr);
+  for (SlotPlan& s : plan.slots) {
+    const Material& mat = *s.material;
+    raster::DrawState& st = states[s.draw_state];
+    // Colour textures (base, environment, emissive) are sRGB-encoded in every format.
+    st.texture.srgb = st.env_map.srgb = st.pbr.emissive_map.srgb = plan.linear;
+    if (mat.color_space == ColorSpace::Linear) {  // lines are display values
+      const Vec3 l = pipeline_color(mat.color, ColorSpace::Linear, false);
+      s.line_color = raster::pack_rgba(l.x, l.y, l.z);
+    }
+    if (s.shading != Shading::Pbr) continue;
+    const Vec3 base = pipeline_color(mat.color, mat.color_space, plan.linear);
+    const Vec3 em = pipeline_color(mat.pbr.emissive, mat.color_space, plan.linear);
+    st.pbr.base[0] = base.x, st.pbr.base[1] = base.y, st.pbr.base[2] = base.z, st.pbr.base[3] = mat.alpha;
+    st.pbr.emissive[0] = em.x, st.pbr.emissive[1] = em.y, st.pbr.emissive[2] = em.z;
+  }
+  for (MeshDrawPlan& d : plan.meshes) {
+    if (!d.vertex_color) continue;
+    const SlotPlan& s = plan.slots[d.slot_begin + (d.slot_count > 1 ? 1 : 0)];
+    d.uniform_color = pipeline_color(d.uniform_color, s.material->color_space, plan.linear);
+  }
 }
 
 BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawState>& states, const PrimitiveBatch& batch,

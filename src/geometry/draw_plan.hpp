@@ -30,6 +30,9 @@ struct SlotPlan {
   bool vertex_light_ok = false;  // the vertex stage's light terms were computed for this material
   bool vertex_color = false;     // ... and its lit colour (MeshDrawPlan::vertex_color)
   shading::Specular specular;
+  // Pbr: the kernel's inputs (raster::pbr_kernel), the uv set its textures read, blended.
+  bool pbr_tangents = false, pbr_colors = false, blend = false;
+  int uv_set = 0;
   uint32_t draw_state = 0;  // index into the frame's DrawStates
   uint32_t line_color = 0;  // RGBA8 for wireframe and points
 };
@@ -41,6 +44,7 @@ struct MeshDrawPlan {
   uint32_t object_id = 0;
   Mat4 model_view, mvp, normal_matrix;
   const std::vector<Vec3>* normals = nullptr;  // the mesh's, or averaged for this draw
+  const std::vector<Vec4>* tangents = nullptr; // the mesh's, or generated, when a material maps normals
   uint32_t slot_begin = 0, slot_count = 0;     // into the frame's slots
   size_t vertex_base = 0;                      // into the frame's vertex arrays
   bool light = false, normal = false, eye = false;  // which vertex outputs are needed
@@ -50,6 +54,9 @@ struct MeshDrawPlan {
   bool vertex_color = false, vertex_specular_terms = false;
   Vec3 uniform_color;
   bool cull_all = true;   // every material culls back faces
+  bool needs_tangents = false;  // a Pbr material has a normal map
+  bool blend = false;           // a material blends (AlphaMode::Blend): drawn after the opaque draws
+  Vec3 centre;                  // the bounding sphere's centre, eye space (blended draws' order)
   bool fill_only = true;  // no material draws wireframe or points
   shading::Specular vertex_specular;                   // what the vertex stage lit with
 };
@@ -86,6 +93,9 @@ struct DrawList {
   ViewportMap viewport{};     // the whole framebuffer, for meshes
   shading::EyeLights lights;
   RenderOptions options;
+  // The frame's colour pipeline (RenderOptions::color resolved, finish_color_plan):
+  // colours decoded to linear light and the output encoded to sRGB.
+  bool linear = false;
   SetupParams mesh_setup;
   std::vector<MeshDrawPlan> meshes;
   std::vector<BatchDrawPlan> batches;
@@ -98,6 +108,14 @@ struct DrawList {
 // vertex outputs the draw needs. `default_material` is slot 0 when there is no override.
 void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, MeshDrawPlan& d, const Material* override,
                     const Material& default_material);
+
+// At end_frame, once every draw is known: resolves ColorPipeline::Auto (Linear when a
+// slot is Pbr) into plan.linear and puts each draw's colours and textures into that
+// pipeline's space (uniform colours, line colours, base colour factors, sRGB decoding).
+void finish_color_plan(DrawList& plan, std::vector<raster::DrawState>& states);
+
+// A colour given in `space`, in the pipeline's: linear light, or display values.
+Vec3 pipeline_color(Vec3 c, ColorSpace space, bool linear);
 
 // Plans a Renderer::draw(batch, state) of `primitives` primitives: its kernel, its
 // viewport (within the guard band's reach of the framebuffer), the pixels set-up may

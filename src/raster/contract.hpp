@@ -24,7 +24,9 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "shading/lighting.hpp"
+#include "velocity/material.hpp"
 #include "velocity/primitives.hpp"
+#include "velocity/renderer.hpp"
 #include "velocity/texture.hpp"
 
 namespace velocity::raster {
@@ -45,7 +47,7 @@ inline constexpr float kGuardBandPixels = 16384.0f;
 static_assert(kGuardBandPixels == float(kMaxFramebufferSide));
 
 // Per-vertex values interpolated across a primitive (colour, normal, eye position, ...).
-inline constexpr int kMaxVaryings = 12;
+inline constexpr int kMaxVaryings = 16;
 
 // A linear function of the pixel position, value = c + dx * (x - x0) + dy * (y - y0),
 // where (x0, y0) is the centre of the record's first bounding-box pixel (min_x, min_y).
@@ -164,6 +166,10 @@ inline uint32_t pack_rgba(float r, float g, float b, float a = 1.0f) {
 //   PhongTex<F>, PhongEnv<F>, PhongTexEnv<F>
 //                 as Phong, plus 9-10 uv for the base texture; the environment map is
 //                 addressed per pixel by the normal
+//   Pbr<T, C, F>  glTF 2.0 metallic-roughness, per pixel: 0-2 eye-space normal, 3-5
+//                 eye-space position, 6-7 uv (the material's uv set), then with a
+//                 normal map (T) 4 more: the eye-space tangent and its handedness, then
+//                 with vertex colours (C) 4 more: r, g, b, a (linear)
 //   Fixed<T, G>   the fixed-function (OpenGL) kernel: 0-3 RGBA, then with a texture
 //                 (T) 3 more: s, t, q (the texture reads s/q, t/q), then with fog (G)
 //                 the fog coordinate; the rest of PixelState is read per draw.
@@ -177,7 +183,8 @@ enum class KernelId : uint8_t {
   PhongTex,        // + filter
   PhongEnv = PhongTex + 3,
   PhongTexEnv = PhongEnv + 3,
-  Fixed = PhongTexEnv + 3,  // + 2 * textured + fog (4 ids)
+  Pbr = PhongTexEnv + 3,    // + 6 * tangents + 3 * vertex colours + filter (12 ids)
+  Fixed = Pbr + 12,         // + 2 * textured + fog (4 ids)
   Count = Fixed + 4,
 };
 // The varying layouts above, by name: the triangle stage writes them
@@ -191,20 +198,29 @@ inline constexpr int kEye = 6;          // Phong*: eye-space position x, y, z
 inline constexpr int kPhongUv = 9;      // PhongTex*: u, v
 inline constexpr int kFixedColor = 0;   // Fixed: r, g, b, a
 inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q
+inline constexpr int kPbrNormal = 0;    // Pbr: eye-space normal
+inline constexpr int kPbrEye = 3;       // Pbr: eye-space position
+inline constexpr int kPbrUv = 6;        // Pbr: u, v
+inline constexpr int kPbrTangent = 8;   // Pbr with a normal map: tangent x, y, z, handedness
 }  // namespace varying
+inline constexpr int pbr_varyings(bool tangents, bool colors) { return 8 + (tangents ? 4 : 0) + (colors ? 4 : 0); }
+inline constexpr uint8_t pbr_kernel(bool tangents, bool colors, Filter f) {
+  return uint8_t(uint8_t(KernelId::Pbr) + 6 * tangents + 3 * colors + uint8_t(f));
+}
 inline constexpr int kSmoothVaryings = 3;
 inline constexpr int kSmoothTexVaryings = 5;
 inline constexpr int kFlatTexVaryings = 2;
 inline constexpr int kPhongVaryings = 9;
 inline constexpr int kPhongTexVaryings = 11;
 // The family of a kernel id: Flat, Smooth, FlatTex, SmoothTex, Phong (untextured), or
-// PhongTex for any textured or environment-mapped Phong, or Fixed.
+// PhongTex for any textured or environment-mapped Phong, Pbr, or Fixed.
 inline constexpr KernelId kernel_family(uint8_t id) {
   if (id < uint8_t(KernelId::FlatTex)) return KernelId(id);
   if (id < uint8_t(KernelId::SmoothTex)) return KernelId::FlatTex;
   if (id < uint8_t(KernelId::Phong)) return KernelId::SmoothTex;
   if (id == uint8_t(KernelId::Phong)) return KernelId::Phong;
-  if (id < uint8_t(KernelId::Fixed)) return KernelId::PhongTex;
+  if (id < uint8_t(KernelId::Pbr)) return KernelId::PhongTex;
+  if (id < uint8_t(KernelId::Fixed)) return KernelId::Pbr;
   return KernelId::Fixed;
 }
 inline constexpr uint8_t kernel_with_filter(KernelId k, Filter f) { return uint8_t(uint8_t(k) + uint8_t(f)); }
@@ -225,6 +241,9 @@ struct SamplerView {
   SamplerState::Texel mag = SamplerState::Texel::Linear, min = SamplerState::Texel::Linear;
   SamplerState::Mip mip = SamplerState::Mip::Linear;
   float border[4] = {0, 0, 0, 0};
+  // sRGB-encoded texels, decoded to linear light before filtering as a GPU's sRGB
+  // texture is (sampler-inl.h); false: the values as they are.
+  bool srgb = false;
 
   SamplerView() = default;
   // The mesh path: a Filter and one wrap mode for both axes.
@@ -234,6 +253,25 @@ struct SamplerView {
   explicit operator bool() const { return level_count > 0; }
 };
 
+// A texture's KHR_texture_transform as an affine map of the kernel's uv:
+// u' = a u + b v + c, v' = d u + e v + f.
+struct UvAffine {
+  float a = 1, b = 0, c = 0, d = 0, e = 1, f = 0;
+};
+
+// What the Pbr kernels read per draw: glTF's metallic-roughness parameters, linear.
+struct PbrState {
+  float base[4] = {1, 1, 1, 1};  // base colour factor, rgba
+  float metallic = 1, roughness = 1, normal_scale = 1, occlusion_strength = 1;
+  float emissive[3] = {0, 0, 0};
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;
+  bool unlit = false;
+  // The textures (DrawState::texture is the base colour) and their uv maps.
+  SamplerView metallic_roughness, normal, occlusion, emissive_map;
+  UvAffine base_uv, mr_uv, normal_uv, occlusion_uv, emissive_uv;
+};
+
 // Per-draw parameters the per-pixel kernels need.
 struct DrawState {
   uint32_t object_id = 0;
@@ -241,6 +279,7 @@ struct DrawState {
   shading::Specular specular;
   SamplerView texture, env_map;
   float env_mix = 1;
+  PbrState pbr;  // Pbr kernels
   // The fixed-function kernel (PrimitiveBatch draws).
   PixelState pixel;
   // 0..1 multipliers the kernel uses for the texture environment, per TexFormat (see
@@ -248,11 +287,22 @@ struct DrawState {
   float tex_rgb = 1, tex_alpha = 1;
 };
 
+// How the mesh kernels turn the light they compute into pixels (docs/appearance.md):
+// Display writes values as they are (clamped); Linear scales by the exposure, tone
+// maps and encodes to sRGB (raster/output-inl.h).
+struct OutputTransform {
+  bool linear = false;
+  float exposure = 1;
+  ToneMap tone_map = ToneMap::None;
+};
+
 // Everything the tiles read, immutable while they run.
 struct TileInputs {
   const Bins* bins = nullptr;
   const std::vector<DrawState>* draws = nullptr;
   const shading::EyeLights* lights = nullptr;
+  OutputTransform output;
+  bool orthographic = false;  // the eye direction is +z everywhere (else towards the origin)
   bool depth_test = true;       // false: painter's mode (meshes: no depth test, no depth write)
   bool clear_color_buffer = true, clear_depth_buffer = true;
   uint32_t color = 0;           // the clear values

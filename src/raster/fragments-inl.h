@@ -101,18 +101,18 @@ class Fragments {
       VU c;
       switch (family_) {
         case KernelId::Flat: c = hn::Load(du, flat_ + base); break;
-        case KernelId::Smooth: c = opaque(in(0), in(1), in(2)); break;
+        case KernelId::Smooth: c = finish(frame.output, in(0), in(1), in(2)); break;
         case KernelId::FlatTex: {
           const SamplerView& tex = st.texture ? st.texture : st.env_map;
           const Rgba t = sample<false>(tex, level_, in(varying::kFlatUv), in(varying::kFlatUv + 1), hn::Load(d, frac_ + base));
           const Rgba f = unpack(hn::Load(du, flat_ + base));
-          c = opaque(hn::Mul(f.r, t.r), hn::Mul(f.g, t.g), hn::Mul(f.b, t.b));
+          c = finish(frame.output, hn::Mul(f.r, t.r), hn::Mul(f.g, t.g), hn::Mul(f.b, t.b));
           break;
         }
         default: {  // SmoothTex
           const SamplerView& tex = st.texture ? st.texture : st.env_map;
           const Rgba t = sample<false>(tex, level_, in(varying::kSmoothUv), in(varying::kSmoothUv + 1), hn::Load(d, frac_ + base));
-          c = opaque(hn::Mul(in(0), t.r), hn::Mul(in(1), t.g), hn::Mul(in(2), t.b));
+          c = finish(frame.output, hn::Mul(in(0), t.r), hn::Mul(in(1), t.g), hn::Mul(in(2), t.b));
           break;
         }
       }

@@ -25,7 +25,7 @@ const KernelFn* phong_kernels() {
       mesh_kernel<PhongShader<false, true>>, mesh_kernel<PhongShader<false, true>>, mesh_kernel<PhongShader<false, true>>,
       mesh_kernel<PhongShader<true, true>>,  mesh_kernel<PhongShader<true, true>>,  mesh_kernel<PhongShader<true, true>>,
   };
-  static_assert(sizeof(table) / sizeof(table[0]) == size_t(KernelId::Fixed) - size_t(KernelId::Phong));
+  static_assert(sizeof(table) / sizeof(table[0]) == size_t(KernelId::Pbr) - size_t(KernelId::Phong));
   return table;
 }
 

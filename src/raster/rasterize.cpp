@@ -48,9 +48,11 @@ void clear_box(const RecordHeader& r, const TileBox& b, const TileTarget& t) {
 HWY_INLINE KernelFn kernel(uint8_t id) {
   static const KernelFn* const basic = basic_kernels();
   static const KernelFn* const phong = phong_kernels();
+  static const KernelFn* const pbr = pbr_kernels();
   static const KernelFn* const fixed = fixed_kernels();
   if (id < uint8_t(KernelId::Phong)) return basic[id];
-  if (id < uint8_t(KernelId::Fixed)) return phong[id - uint8_t(KernelId::Phong)];
+  if (id < uint8_t(KernelId::Pbr)) return phong[id - uint8_t(KernelId::Phong)];
+  if (id < uint8_t(KernelId::Fixed)) return pbr[id - uint8_t(KernelId::Pbr)];
   return fixed[id - uint8_t(KernelId::Fixed)];
 }
 

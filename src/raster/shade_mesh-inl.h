@@ -9,6 +9,7 @@
 #define VELOCITY_RASTER_SHADE_MESH_INL_H_
 #endif
 
+#include "raster/output-inl.h"
 #include "raster/rasterize.hpp"
 #include "raster/sampler-inl.h"
 #include "shading/lighting-inl.h"
@@ -62,7 +63,6 @@ struct Perspective {
   }
 };
 
-HWY_INLINE VU opaque(VF r, VF g, VF b) { return pack_colors(r, g, b, hn::Set(DF(), 1.0f)); }
 
 struct FlatShader {
   static constexpr bool kConstant = true;
@@ -75,11 +75,12 @@ struct FlatShader {
 struct SmoothShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothVaryings> in;
-  SmoothShader(const RecordHeader& r, const DrawState&, const TileInputs&) { in.load(r); }
+  const OutputTransform& out;
+  SmoothShader(const RecordHeader& r, const DrawState&, const TileInputs& f) : out(f.output) { in.load(r); }
   void begin_block(float fx, float fy) { in.begin(fx, fy); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
-    return opaque(in(varying::kColor, v), in(varying::kColor + 1, v), in(varying::kColor + 2, v));
+    return finish(out, in(varying::kColor, v), in(varying::kColor + 1, v), in(varying::kColor + 2, v));
   }
 };
 
@@ -105,9 +106,10 @@ struct FlatTexShader {
   static constexpr bool kConstant = false;
   Perspective<kFlatTexVaryings> in;
   UvTexture<kFlatTexVaryings> tex;
+  const OutputTransform& out;
   float r, g, b;
-  FlatTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs&)
-      : tex{d.texture ? d.texture : d.env_map, varying::kFlatUv} {
+  FlatTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs& f)
+      : tex{d.texture ? d.texture : d.env_map, varying::kFlatUv}, out(f.output) {
     in.load(rec);
     r = float(rec.flat_color & 0xff) / 255.0f, g = float((rec.flat_color >> 8) & 0xff) / 255.0f;
     b = float((rec.flat_color >> 16) & 0xff) / 255.0f;
@@ -117,7 +119,7 @@ struct FlatTexShader {
     const DF d;
     in.at_vector(v);
     Rgba t = tex(in, v);
-    return opaque(hn::Mul(hn::Set(d, r), t.r), hn::Mul(hn::Set(d, g), t.g), hn::Mul(hn::Set(d, b), t.b));
+    return finish(out, hn::Mul(hn::Set(d, r), t.r), hn::Mul(hn::Set(d, g), t.g), hn::Mul(hn::Set(d, b), t.b));
   }
 };
 
@@ -126,14 +128,16 @@ struct SmoothTexShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothTexVaryings> in;
   UvTexture<kSmoothTexVaryings> tex;
-  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs&) : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv} {
+  const OutputTransform& out;
+  SmoothTexShader(const RecordHeader& rec, const DrawState& d, const TileInputs& f)
+      : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv}, out(f.output) {
     in.load(rec);
   }
   void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
     Rgba t = tex(in, v);
-    return opaque(hn::Mul(in(varying::kColor, v), t.r), hn::Mul(in(varying::kColor + 1, v), t.g),
+    return finish(out, hn::Mul(in(varying::kColor, v), t.r), hn::Mul(in(varying::kColor + 1, v), t.g),
                   hn::Mul(in(varying::kColor + 2, v), t.b));
   }
 };
@@ -150,9 +154,10 @@ struct PhongShader {
   const shading::EyeLights& lights;
   UvTexture<N> tex;
   LevelChoice env_level{};
+  const OutputTransform& out;
 
   PhongShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
-      : draw(d), lights(*f.lights), tex{d.texture, varying::kPhongUv} {
+      : draw(d), lights(*f.lights), tex{d.texture, varying::kPhongUv}, out(f.output) {
     in.load(r);
   }
 
@@ -199,7 +204,7 @@ struct PhongShader {
     V3 p{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
     if (s.ks > 0 || !lights.point.empty()) p = {in(varying::kEye, v), in(varying::kEye + 1, v), in(varying::kEye + 2, v)};
     const V3 c = lit::apply(lit::light(lights, {nx, ny, nz}, p, s), {br, bg, bb});
-    return opaque(c.x, c.y, c.z);
+    return finish(out, c.x, c.y, c.z);
   }
 };
 

@@ -1,7 +1,8 @@
 // What a tile's shading kernels share: where the tile's pixels are, and the kernel
 // tables, one per translation unit (so that the heavy kernels compile in parallel):
 // kernels_basic.cpp (flat, smooth and their per-vertex-textured forms),
-// kernels_phong.cpp (per-pixel lighting, textures, environment maps) and
+// kernels_phong.cpp (per-pixel lighting, textures, environment maps), kernels_pbr.cpp
+// (glTF's metallic-roughness) and
 // kernels_fixed.cpp (the fixed-function kernel). Per instruction set, like the rest.
 #if defined(VELOCITY_RASTER_TILE_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef VELOCITY_RASTER_TILE_INL_H_
@@ -37,7 +38,8 @@ using KernelFn = void (*)(const RecordHeader&, const Block*, int, const TileTarg
 
 // The kernels of each translation unit, indexed from the first KernelId it holds.
 const KernelFn* basic_kernels();  // KernelId::Flat .. Phong (exclusive)
-const KernelFn* phong_kernels();  // KernelId::Phong .. Fixed (exclusive)
+const KernelFn* phong_kernels();  // KernelId::Phong .. Pbr (exclusive)
+const KernelFn* pbr_kernels();    // KernelId::Pbr .. Fixed (exclusive)
 const KernelFn* fixed_kernels();  // KernelId::Fixed .. Count (exclusive)
 
 // The depth test and the writes of the mesh kernels: LESS before shading (none in

@@ -68,6 +68,12 @@ std::optional<Look> make_look(std::string_view shade, std::shared_ptr<const Text
   } else if (shade == "env") {
     m.shading = Shading::Phong, m.specular = 0.5f, m.shininess = 32.0f;
     m.env_map = textured(), m.env_mix = 1.0f, m.filter = Filter::Trilinear;
+  } else if (shade == "pbr" || shade == "pbrtex") {
+    // glTF's metallic-roughness, per pixel; "pbrtex" with a base colour texture (sRGB).
+    m.shading = Shading::Pbr, m.pbr.metallic = 0.3f, m.pbr.roughness = 0.5f;
+    if (shade == "pbrtex") {
+      m.color = {1, 1, 1}, m.texture = textured(), m.filter = Filter::Trilinear;
+    }
   } else {
     return std::nullopt;
   }

@@ -25,6 +25,38 @@ struct LightTermsN {
   V3 specular;  // sum of specular, already scaled by Ks
 };
 
+// detail::punctual of lighting.hpp: a point or spot light's attenuation at N points, and
+// the unit directions to it.
+HWY_INLINE VF punctual(const EyeLights::Point& l, const V3& p, const V3& n, V3& to_light) {
+  const DF d;
+  const V3 v{hn::Sub(hn::Set(d, l.position.x), p.x), hn::Sub(hn::Set(d, l.position.y), p.y),
+             hn::Sub(hn::Set(d, l.position.z), p.z)};
+  const VF d2 = dot(v, v);
+  const VF il = rsqrt(d2);
+  // A light at the surface point lights it along the normal.
+  const MF here = hn::Eq(d2, hn::Zero(d));
+  to_light = {hn::IfThenElse(here, n.x, hn::Mul(v.x, il)), hn::IfThenElse(here, n.y, hn::Mul(v.y, il)),
+              hn::IfThenElse(here, n.z, hn::Mul(v.z, il))};
+  VF att;
+  if (l.inverse_square) {
+    att = hn::Div(hn::Set(d, 1.0f), hn::Max(d2, hn::Set(d, 0.01f)));
+  } else {
+    const VF dist = hn::Mul(d2, il);
+    att = hn::MulAdd(hn::MulAdd(hn::Set(d, l.quadratic), dist, hn::Set(d, l.linear)), dist, hn::Set(d, l.constant));
+    att = hn::Div(hn::Set(d, 1.0f), hn::Max(att, hn::Set(d, 1e-6f)));
+  }
+  if (l.inv_range4 > 0) {
+    const VF w = saturate(hn::NegMulAdd(hn::Mul(d2, d2), hn::Set(d, l.inv_range4), hn::Set(d, 1.0f)));
+    att = hn::Mul(att, hn::Mul(w, w));
+  }
+  if (l.spot) {
+    const V3 axis{hn::Set(d, l.spot_axis.x), hn::Set(d, l.spot_axis.y), hn::Set(d, l.spot_axis.z)};
+    const VF a = saturate(hn::MulAdd(hn::Neg(dot(axis, to_light)), hn::Set(d, l.spot_scale), hn::Set(d, l.spot_offset)));
+    att = hn::Mul(att, hn::Mul(a, a));
+  }
+  return att;
+}
+
 // `n` unit normals and `p` positions, eye space. `p` is read only for the specular term
 // (s.ks > 0) and point lights; otherwise it may be left zero.
 HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular& s) {
@@ -58,17 +90,8 @@ HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular
     add_light({hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)}, hn::Set(d, l.color.x),
               hn::Set(d, l.color.y), hn::Set(d, l.color.z));
   for (const auto& l : lights.point) {
-    const V3 v{hn::Sub(hn::Set(d, l.position.x), p.x), hn::Sub(hn::Set(d, l.position.y), p.y),
-               hn::Sub(hn::Set(d, l.position.z), p.z)};
-    const VF d2 = dot(v, v);
-    const VF il = rsqrt(d2);
-    const VF dist = hn::Mul(d2, il);
-    VF att = hn::MulAdd(hn::MulAdd(hn::Set(d, l.quadratic), dist, hn::Set(d, l.linear)), dist, hn::Set(d, l.constant));
-    att = hn::Div(hn::Set(d, 1.0f), hn::Max(att, hn::Set(d, 1e-6f)));
-    // A light at the surface point lights it along the normal.
-    const MF here = hn::Eq(d2, hn::Zero(d));
-    const V3 dir{hn::IfThenElse(here, n.x, hn::Mul(v.x, il)), hn::IfThenElse(here, n.y, hn::Mul(v.y, il)),
-                 hn::IfThenElse(here, n.z, hn::Mul(v.z, il))};
+    V3 dir;
+    const VF att = punctual(l, p, n, dir);
     add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
               hn::Mul(hn::Set(d, l.color.z), att));
   }

@@ -2,6 +2,7 @@
 // per instruction set and dispatched at run time, as the kernels are).
 #include "shading/lighting.hpp"
 
+#include <cmath>
 #include <cstring>
 
 #undef HWY_TARGET_INCLUDE
@@ -69,10 +70,20 @@ void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& o
         out.directional.push_back({normalize(view.transform_vector(light.direction)), light.color});
         break;
       case LightType::Point:
-      case LightType::Spot:  // the cone is the PBR model's (issue 17); here, a point light
-        out.point.push_back({view.transform_point(light.position), light.color, light.constant, light.linear,
-                             light.quadratic});
+      case LightType::Spot: {
+        EyeLights::Point p;
+        p.position = view.transform_point(light.position), p.color = light.color;
+        p.constant = light.constant, p.linear = light.linear, p.quadratic = light.quadratic;
+        p.inverse_square = light.falloff == Falloff::InverseSquare;
+        if (light.range > 0 && std::isfinite(light.range)) p.inv_range4 = 1.0f / (light.range * light.range * light.range * light.range);
+        if (light.type == LightType::Spot) {
+          p.spot = true;
+          p.spot_axis = normalize(view.transform_vector(-light.direction));  // direction is towards the light
+          detail::spot_cone(light.inner_cone, light.outer_cone, p.spot_scale, p.spot_offset);
+        }
+        out.point.push_back(p);
         break;
+      }
     }
   }
 }

@@ -32,10 +32,18 @@ struct EyeLights {
     Vec3 to_light;  // unit, eye space
     Vec3 color;
   };
+  // A point light, or a spot light (spot: its cone).
   struct Point {
     Vec3 position;  // eye space
     Vec3 color;
-    float constant, linear, quadratic;
+    float constant = 1, linear = 0, quadratic = 0;  // Falloff::Attenuation
+    bool inverse_square = false;                    // Falloff::InverseSquare: 1 / max(d^2, 0.01)
+    float inv_range4 = 0;                           // 1 / range^4; 0: no range
+    bool spot = false;
+    Vec3 spot_axis;  // unit, eye space: where the spot points (from the light)
+    // The cone: saturate(cos * spot_scale + spot_offset)^2, cos the angle's between the
+    // axis and the direction from the light to the point.
+    float spot_scale = 0, spot_offset = 1;
   };
   Vec3 ambient;
   std::vector<Directional> directional;
@@ -108,6 +116,36 @@ inline float point_light(Vec3 position, Vec3 p, Vec3 n, float constant, float li
   to_light = dist > 0 ? v / dist : n;
   return att;
 }
+
+// KHR_lights_punctual's spot cone, as its sample code writes it: a smooth falloff from
+// full intensity at cos(inner) to none at cos(outer), saturate(cos * scale + offset)^2
+// (three.js uses a smoothstep instead; the spec's is the one here).
+inline void spot_cone(float inner, float outer, float& scale, float& offset) {
+  scale = 1.0f / std::max(0.001f, std::cos(inner) - std::cos(outer));
+  offset = -std::cos(outer) * scale;
+}
+
+inline float saturate(float x) { return x > 0 ? (x < 1 ? x : 1) : 0; }
+
+// A point or spot light seen from `p`: its attenuation (falloff, range window and cone)
+// and `to_light`, in the order the SIMD form computes them. A light at the point
+// itself lights it along `n`.
+inline float punctual(const EyeLights::Point& l, Vec3 p, Vec3 n, Vec3& to_light) {
+  const Vec3 v = l.position - p;
+  const float d2 = dot(v, v), dist = std::sqrt(d2);
+  to_light = d2 > 0 ? v / dist : n;
+  float att = l.inverse_square ? 1.0f / std::max(d2, 0.01f)
+                               : 1.0f / std::max(l.constant + (l.quadratic * dist + l.linear) * dist, 1e-6f);
+  if (l.inv_range4 > 0) {
+    const float w = saturate(1.0f - d2 * d2 * l.inv_range4);
+    att *= w * w;
+  }
+  if (l.spot) {
+    const float a = saturate(-dot(l.spot_axis, to_light) * l.spot_scale + l.spot_offset);
+    att *= a * a;
+  }
+  return att;
+}
 }  // namespace detail
 
 // `n` unit normal and `p` position, eye space.
@@ -118,7 +156,7 @@ inline LightTerms light(const EyeLights& lights, Vec3 n, Vec3 p, const Specular&
     detail::add_light<Highlight::Phong>(t, n, d.to_light, {{}, d.color, d.color}, to_eye, s);
   for (const auto& pl : lights.point) {
     Vec3 to_light;
-    float att = detail::point_light(pl.position, p, n, pl.constant, pl.linear, pl.quadratic, to_light);
+    const float att = detail::punctual(pl, p, n, to_light);
     Vec3 color = pl.color * att;
     detail::add_light<Highlight::Phong>(t, n, to_light, {{}, color, color}, to_eye, s);
   }

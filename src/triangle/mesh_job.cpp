@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/srgb.hpp"
+
 #include "triangle/clip.hpp"
 #include "triangle/cull.hpp"
 #include "triangle/setup.hpp"
@@ -37,6 +39,7 @@ class MeshTriangles {
     if (draw.vertex_specular_terms) specular_ = va.specular.data() + draw.vertex_base;
     if (draw.normal) normal_ = va.normal.data() + draw.vertex_base;
     if (draw.eye) eye_ = va.eye.data() + draw.vertex_base;
+    if (plan.linear) srgb_ = &color::srgb_tables();
   }
 
   void run(uint32_t begin, uint32_t end) {
@@ -92,20 +95,41 @@ class MeshTriangles {
     return d_.mvp * Vec4{p.x, p.y, p.z, 1.0f};
   }
 
+  // The base colour of a corner, in the frame's pipeline (geometry::pipeline_color).
   Vec3 base_color(uint32_t v, uint32_t f, const Material& mat) const {
+    return geometry::pipeline_color(file_color(v, f, mat), mat.color_space, plan_.linear);
+  }
+  Vec3 file_color(uint32_t v, uint32_t f, const Material& mat) const {
     if (d_.override_material) return mat.color;
     if (!mesh_.face_colors.empty()) return mesh_.face_colors[f];
     if (!mesh_.colors.empty()) return mesh_.colors[v];
     return mat.color;
   }
 
+  // A colour as the flat kernel writes it: linear light encoded to sRGB in a Linear
+  // frame (the textured flat kernel multiplies it first: light, not encoded).
+  uint32_t pack_flat(Vec3 c, bool encode) const {
+    if (!srgb_ || !encode) return raster::pack_rgba(c.x, c.y, c.z);
+    return uint32_t(color::encode8(*srgb_, c.x)) | uint32_t(color::encode8(*srgb_, c.y)) << 8 |
+           uint32_t(color::encode8(*srgb_, c.z)) << 16 | 0xff000000u;
+  }
+
+  // The texture coordinates of a corner: the uv set and KHR_texture_transform the
+  // material names (the Pbr kernel applies each texture's transform per pixel).
+  Vec2 corner_uv(uint32_t v, int uv_set) const {
+    const std::vector<Vec2>& uvs = uv_set == 1 && !mesh_.uvs1.empty() ? mesh_.uvs1 : mesh_.uvs;
+    return uvs.empty() ? Vec2{} : uvs[v];
+  }
+
   // Varyings of one corner, in the layout of the slot's kernel (raster/rasterize.hpp);
   // `flip` lights the back of a two-sided face.
   void corner(const geometry::SlotPlan& s, uint32_t v, uint32_t f, bool flip, float* out) const {
     const Material& mat = *s.material;
-    const Vec3 base =
-        s.shading == Shading::Unlit && !mesh_.colors.empty() ? mesh_.colors[v] : base_color(v, f, mat);
     const raster::KernelId k = raster::kernel_family(s.kernel);
+    if (k == raster::KernelId::Pbr) return pbr_corner(s, v, flip, out);
+    const Vec3 base = s.shading == Shading::Unlit && !mesh_.colors.empty()
+                          ? geometry::pipeline_color(mesh_.colors[v], mat.color_space, plan_.linear)
+                          : base_color(v, f, mat);
     int uv_at = -1;
     switch (k) {
       case raster::KernelId::Smooth:
@@ -141,14 +165,38 @@ class MeshTriangles {
       Vec3 n = eye_normal(v);
       if (flip) n = -n;
       uv = {0.5f + 0.5f * n.x, 0.5f - 0.5f * n.y};  // seed 000's sphere map (top row at Ny = 1), per vertex
-    } else if (mat.texture_uv.identity()) {
-      if (!mesh_.uvs.empty()) uv = mesh_.uvs[v];
     } else {
-      // The base texture's uv set and KHR_texture_transform (or MTL -s / -o).
-      const std::vector<Vec2>& set = mat.texture_uv.uv_set == 1 && !mesh_.uvs1.empty() ? mesh_.uvs1 : mesh_.uvs;
-      if (!set.empty()) uv = transform_uv(mat.texture_uv, set[v]);
+      uv = transform_uv(mat.texture_uv, corner_uv(v, mat.texture_uv.uv_set));
     }
     out[uv_at] = uv.x, out[uv_at + 1] = uv.y;
+  }
+
+  // The Pbr kernels' varyings (raster/contract.hpp): normal, position, uv, and the
+  // tangent and vertex colour when the kernel reads them; a back face of a
+  // double-sided material flips its whole tangent frame, as three.js does.
+  void pbr_corner(const geometry::SlotPlan& s, uint32_t v, bool flip, float* out) const {
+    using namespace raster::varying;
+    Vec3 n = eye_normal(v);
+    if (flip) n = -n;
+    const Vec3 e = eye_position(v);
+    const Vec2 uv = corner_uv(v, s.uv_set);
+    out[kPbrNormal] = n.x, out[kPbrNormal + 1] = n.y, out[kPbrNormal + 2] = n.z;
+    out[kPbrEye] = e.x, out[kPbrEye + 1] = e.y, out[kPbrEye + 2] = e.z;
+    out[kPbrUv] = uv.x, out[kPbrUv + 1] = uv.y;
+    int at = kPbrTangent;
+    if (s.pbr_tangents) {
+      const Vec4 t = (*d_.tangents)[v];
+      Vec3 te = normalize(d_.model_view.transform_vector(t.xyz()));
+      float w = t.w < 0 ? -1.0f : 1.0f;
+      if (flip) te = -te, w = -w;
+      out[at] = te.x, out[at + 1] = te.y, out[at + 2] = te.z, out[at + 3] = w;
+      at += 4;
+    }
+    if (s.pbr_colors) {
+      const Vec3 c = geometry::pipeline_color(mesh_.colors[v], s.material->color_space, plan_.linear);
+      out[at] = c.x, out[at + 1] = c.y, out[at + 2] = c.z;
+      out[at + 3] = mesh_.alphas.empty() ? 1.0f : mesh_.alphas[v];
+    }
   }
 
   // One colour per face: lit by the face normal at the centroid.
@@ -158,13 +206,15 @@ class MeshTriangles {
     if (s.white) return 0xffffffffu;
     Vec3 base = d_.override_material || !mesh_.face_colors.empty() || mesh_.colors.empty()
                     ? base_color(t.v[0], f, mat)
-                    : (mesh_.colors[t.v[0]] + mesh_.colors[t.v[1]] + mesh_.colors[t.v[2]]) / 3.0f;
-    if (!s.lit) return raster::pack_rgba(base.x, base.y, base.z);
+                    : geometry::pipeline_color((mesh_.colors[t.v[0]] + mesh_.colors[t.v[1]] + mesh_.colors[t.v[2]]) / 3.0f,
+                                               mat.color_space, plan_.linear);
+    const bool encode = s.kernel == uint8_t(raster::KernelId::Flat);
+    if (!s.lit) return pack_flat(base, encode);
     Vec3 n = normalize(d_.normal_matrix.transform_vector(face_normal(mesh_, t)));
     if (flip) n = -n;
     Vec3 centroid = (mesh_.positions[t.v[0]] + mesh_.positions[t.v[1]] + mesh_.positions[t.v[2]]) / 3.0f;
     Vec3 c = apply(light(plan_.lights, n, d_.model_view.transform_point(centroid), s.specular), base);
-    return raster::pack_rgba(c.x, c.y, c.z);
+    return pack_flat(c, encode);
   }
 
   void triangle(uint32_t f) {
@@ -308,6 +358,7 @@ class MeshTriangles {
   const geometry::ProjectedVertex* projected_ = nullptr;
   const uint32_t* codes_ = nullptr;
   const Vec3 *diffuse_ = nullptr, *specular_ = nullptr, *normal_ = nullptr, *eye_ = nullptr;
+  const color::SrgbTables* srgb_ = nullptr;  // a Linear frame
   bool marks_ready_ = false;  // cx_.marks cleared for this job
 };
 

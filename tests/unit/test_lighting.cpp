@@ -3,6 +3,7 @@
 // highlight.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -23,7 +24,20 @@ TEST(Lighting, SimdFormIsTheScalarForm) {
   EyeLights lights;
   lights.ambient = {0.1f, 0.2f, 0.15f};
   for (int i = 0; i < 2; ++i) lights.directional.push_back({dir(), {pos(rng), pos(rng), pos(rng)}});
-  lights.point.push_back({{u(rng), u(rng), u(rng) - 2}, {pos(rng), pos(rng), pos(rng)}, 1.0f, 0.2f, 0.05f});
+  EyeLights::Point point;
+  point.position = {u(rng), u(rng), u(rng) - 2}, point.color = {pos(rng), pos(rng), pos(rng)};
+  point.linear = 0.2f, point.quadratic = 0.05f;
+  lights.point.push_back(point);
+  // A spot light with the physical falloff and a range, and one with OpenGL's falloff.
+  EyeLights::Point spot;
+  spot.position = {0.3f, 0.5f, -1.0f}, spot.color = {2.0f, 1.5f, 1.0f};
+  spot.inverse_square = true, spot.inv_range4 = 1.0f / 81.0f;  // range 3
+  spot.spot = true, spot.spot_axis = normalize(Vec3{-0.1f, -0.2f, -1.0f});
+  detail::spot_cone(0.3f, 0.7f, spot.spot_scale, spot.spot_offset);
+  lights.point.push_back(spot);
+  spot.inverse_square = false, spot.inv_range4 = 0, spot.linear = 0.3f;
+  spot.position = {-0.5f, 0.0f, -0.5f};
+  lights.point.push_back(spot);
   const int n = 1000;
   std::vector<Vec3> normals(n), points(n);
   for (int i = 0; i < n; ++i) normals[size_t(i)] = dir(), points[size_t(i)] = {u(rng), u(rng), u(rng) - 3};
@@ -45,4 +59,37 @@ TEST(Lighting, SimdFormIsTheScalarForm) {
       EXPECT_NEAR(got.specular.z, want.specular.z, tol) << i << " ks " << s.ks;
     }
   }
+}
+
+// KHR_lights_punctual's spot cone and range window, from the extension's formulas
+// written out here: full intensity inside the inner cone, none outside the outer one,
+// saturate(cos * scale + offset)^2 between; 1 / d^2 windowed by (1 - (d/range)^4)^2.
+TEST(Lighting, SpotConeAndRangeFollowKhrLightsPunctual) {
+  const float inner = 0.2f, outer = 0.6f;
+  Camera cam;
+  cam.position = {0, 0, 0};
+  EyeLights lights;
+  Light spot = Light::spot({0, 0, 0}, {0, 0, 1}, {1, 1, 1}, inner, outer);  // points down -z
+  spot.falloff = Falloff::InverseSquare;
+  spot.range = 10;
+  eye_lights(cam.view(), {spot}, lights);
+  ASSERT_EQ(lights.point.size(), 1u);
+  const EyeLights::Point& l = lights.point[0];
+  const Vec3 n{0, 0, 1};
+  auto att_at_angle = [&](float angle, float d) {
+    Vec3 to_light;
+    const Vec3 p{d * std::sin(angle), 0, -d * std::cos(angle)};
+    return detail::punctual(l, p, n, to_light);
+  };
+  const float d = 4;
+  const float window = (1 - std::pow(d / 10, 4.0f)) * (1 - std::pow(d / 10, 4.0f));
+  EXPECT_NEAR(att_at_angle(0, d), window / (d * d), 1e-6f);
+  EXPECT_NEAR(att_at_angle(inner * 0.9f, d), window / (d * d), 1e-6f);
+  EXPECT_EQ(att_at_angle(outer * 1.01f, d), 0.0f);
+  const float mid = std::acos(0.5f * (std::cos(inner) + std::cos(outer)));  // halfway in cosine
+  EXPECT_NEAR(att_at_angle(mid, d), 0.25f * window / (d * d), 1e-5f);
+  EXPECT_EQ(att_at_angle(0, 10.5f), 0.0f);  // past the range
+  // Without a range: the plain inverse square.
+  lights.point[0].inv_range4 = 0;
+  EXPECT_NEAR(att_at_angle(0, 7), 1.0f / 49.0f, 1e-7f);
 }

@@ -1,0 +1,282 @@
+// glTF 2.0's metallic-roughness material, per pixel, N pixels at a time: the BRDF of
+// the specification's Appendix B — Lambert diffuse and a GGX / Trowbridge-Reitz
+// specular lobe with Smith's height-correlated visibility and Schlick's Fresnel, f0 =
+// 0.04 mixed to the base colour by metallic:
+//
+//   c_diff = base (1 - metallic)        f0 = 0.04 (1 - metallic) + base metallic
+//   a = roughness^2                     F = f0 + (1 - f0) (1 - V.H)^5
+//   D = a^2 / (pi ((N.H)^2 (a^2 - 1) + 1)^2)
+//   Vis = 0.5 / (N.L sqrt((N.V)^2 (1 - a^2) + a^2) + N.V sqrt((N.L)^2 (1 - a^2) + a^2))
+//   colour = sum_i ((1 - F) c_diff / pi + F D Vis) radiance_i N.L_i
+//          + ambient c_diff occlusion + emissive
+//
+// with the lights of shading/lighting.hpp (radiance: the light's colour times its
+// falloff and cone, detail::punctual). The ambient light is a uniform radiance (so
+// Lambert returns c_diff times it), the only light occlusion darkens, as glTF says.
+// Roughness is clamped to 0.0525 as three.js clamps it (a = 0 is a mirror no point
+// light can be seen in). Base colour = factor x vertex colour x texture (sRGB-decoded
+// in a Linear frame); metallic and roughness = factors x the texture's B and G; the
+// normal map's xy scaled by normal_scale in the tangent frame; each texture through
+// its own KHR_texture_transform of the material's uv set.
+#if defined(VELOCITY_RASTER_SHADE_PBR_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_RASTER_SHADE_PBR_INL_H_
+#undef VELOCITY_RASTER_SHADE_PBR_INL_H_
+#else
+#define VELOCITY_RASTER_SHADE_PBR_INL_H_
+#endif
+
+#include "raster/output-inl.h"
+#include "raster/rasterize.hpp"
+#include "raster/sampler-inl.h"
+#include "raster/shade_mesh-inl.h"
+#include "raster/tile-inl.h"
+#include "shading/lighting-inl.h"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::raster {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+namespace lit = velocity::shading::HWY_NAMESPACE;
+
+// What the Pbr shader returns: linear light (or display values) and alpha.
+struct PbrOut {
+  VF r, g, b, a;
+};
+
+// One PBR texture of a draw: its view, uv map and the levels chosen for the block.
+struct PbrTexture {
+  const SamplerView* view = nullptr;
+  UvAffine uv;
+  LevelChoice level{};
+  explicit operator bool() const { return view != nullptr; }
+  void begin(float u, float dudx, float dudy, float v, float dvdx, float dvdy) {
+    (void)u, (void)v;
+    level = choose_levels(*view, level_of_detail(*view, uv.a * dudx + uv.b * dvdx, uv.d * dudx + uv.e * dvdx,
+                                                 uv.a * dudy + uv.b * dvdy, uv.d * dudy + uv.e * dvdy));
+  }
+  template <bool kAlpha>
+  HWY_INLINE Rgba operator()(VF u, VF v) const {
+    const DF d;
+    const VF tu = hn::MulAdd(hn::Set(d, uv.a), u, hn::MulAdd(hn::Set(d, uv.b), v, hn::Set(d, uv.c)));
+    const VF tv = hn::MulAdd(hn::Set(d, uv.d), u, hn::MulAdd(hn::Set(d, uv.e), v, hn::Set(d, uv.f)));
+    return sample<kAlpha>(*view, level, tu, tv);
+  }
+};
+
+template <bool kTangent, bool kColor>
+struct PbrShader {
+  static constexpr int N = pbr_varyings(kTangent, kColor);
+  static constexpr int kCol = varying::kPbrTangent + (kTangent ? 4 : 0);
+  Perspective<N> in;
+  const PbrState& m;
+  const shading::EyeLights& lights;
+  const bool ortho;
+  PbrTexture base, mr, normal, occlusion, emissive;
+
+  PbrShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
+      : m(d.pbr), lights(*f.lights), ortho(f.orthographic) {
+    in.load(r);
+    auto use = [](PbrTexture& t, const SamplerView& v, const UvAffine& a) {
+      if (v) t.view = &v, t.uv = a;
+    };
+    use(base, d.texture, m.base_uv);
+    if (!m.unlit) {
+      use(mr, m.metallic_roughness, m.mr_uv);
+      if (kTangent) use(normal, m.normal, m.normal_uv);
+      use(occlusion, m.occlusion, m.occlusion_uv);
+      use(emissive, m.emissive_map, m.emissive_uv);
+    }
+  }
+
+  void begin_block(float fx, float fy) {
+    in.begin(fx, fy);
+    if (!base && !mr && !normal && !occlusion && !emissive) return;
+    float u, ux, uy, v, vx, vy;
+    in.derivatives(varying::kPbrUv, u, ux, uy);
+    in.derivatives(varying::kPbrUv + 1, v, vx, vy);
+    for (PbrTexture* t : {&base, &mr, &normal, &occlusion, &emissive})
+      if (*t) t->begin(u, ux, uy, v, vx, vy);
+  }
+
+  HWY_INLINE V3 unit(V3 a) const {
+    const VF il = rsqrt(dot(a, a));
+    return {hn::Mul(a.x, il), hn::Mul(a.y, il), hn::Mul(a.z, il)};
+  }
+
+  HWY_INLINE PbrOut shade(int v) {
+    const DF d;
+    in.at_vector(v);
+    const VF one = hn::Set(d, 1.0f);
+    const VF u = in(varying::kPbrUv, v), tv = in(varying::kPbrUv + 1, v);
+    // Base colour and alpha.
+    V3 c{hn::Set(d, m.base[0]), hn::Set(d, m.base[1]), hn::Set(d, m.base[2])};
+    VF alpha = hn::Set(d, m.base[3]);
+    if constexpr (kColor) {
+      c = {hn::Mul(c.x, in(kCol, v)), hn::Mul(c.y, in(kCol + 1, v)), hn::Mul(c.z, in(kCol + 2, v))};
+      alpha = hn::Mul(alpha, in(kCol + 3, v));
+    }
+    if (base) {
+      const Rgba t = base.operator()<true>(u, tv);
+      c = {hn::Mul(c.x, t.r), hn::Mul(c.y, t.g), hn::Mul(c.z, t.b)};
+      alpha = hn::Mul(alpha, t.a);
+    }
+    if (m.unlit) return {c.x, c.y, c.z, alpha};
+
+    // The normal (w cancels in normalising), through the normal map.
+    constexpr int n0 = varying::kPbrNormal + 1;  // planes: 1/w first
+    V3 n = unit({in.p.at(n0, v), in.p.at(n0 + 1, v), in.p.at(n0 + 2, v)});
+    if constexpr (kTangent) {
+      if (normal) {
+        const Rgba t = normal.operator()<false>(u, tv);
+        const VF two = hn::Set(d, 2.0f), s = hn::Set(d, m.normal_scale);
+        const VF tx = hn::Mul(hn::MulSub(t.r, two, one), s), ty = hn::Mul(hn::MulSub(t.g, two, one), s);
+        const VF tz = hn::MulSub(t.b, two, one);
+        constexpr int t0 = varying::kPbrTangent;
+        V3 tan{in(t0, v), in(t0 + 1, v), in(t0 + 2, v)};
+        const VF nt = dot(n, tan);
+        tan = unit({hn::NegMulAdd(n.x, nt, tan.x), hn::NegMulAdd(n.y, nt, tan.y), hn::NegMulAdd(n.z, nt, tan.z)});
+        const VF w = hn::IfThenElse(hn::Lt(in(t0 + 3, v), hn::Zero(d)), hn::Set(d, -1.0f), one);
+        const V3 bit{hn::Mul(w, hn::MulSub(n.y, tan.z, hn::Mul(n.z, tan.y))),
+                     hn::Mul(w, hn::MulSub(n.z, tan.x, hn::Mul(n.x, tan.z))),
+                     hn::Mul(w, hn::MulSub(n.x, tan.y, hn::Mul(n.y, tan.x)))};
+        n = unit({hn::MulAdd(tan.x, tx, hn::MulAdd(bit.x, ty, hn::Mul(n.x, tz))),
+                  hn::MulAdd(tan.y, tx, hn::MulAdd(bit.y, ty, hn::Mul(n.y, tz))),
+                  hn::MulAdd(tan.z, tx, hn::MulAdd(bit.z, ty, hn::Mul(n.z, tz)))});
+      }
+    }
+    // Metallic and roughness.
+    VF metal = hn::Set(d, m.metallic), rough = hn::Set(d, m.roughness);
+    if (mr) {
+      const Rgba t = mr.operator()<false>(u, tv);
+      metal = hn::Mul(metal, t.b), rough = hn::Mul(rough, t.g);
+    }
+    metal = saturate(metal);
+    rough = hn::Min(hn::Max(rough, hn::Set(d, 0.0525f)), one);
+    const VF a = hn::Mul(rough, rough), a2 = hn::Mul(a, a), one_a2 = hn::Sub(one, a2);
+    const VF dielectric = hn::Sub(one, metal);
+    const V3 cdiff{hn::Mul(c.x, dielectric), hn::Mul(c.y, dielectric), hn::Mul(c.z, dielectric)};
+    const VF f0d = hn::Mul(hn::Set(d, 0.04f), dielectric);
+    const V3 f0{hn::MulAdd(c.x, metal, f0d), hn::MulAdd(c.y, metal, f0d), hn::MulAdd(c.z, metal, f0d)};
+
+    // The eye-space position and the direction to the eye.
+    const V3 p{in(varying::kPbrEye, v), in(varying::kPbrEye + 1, v), in(varying::kPbrEye + 2, v)};
+    const V3 view = ortho ? V3{hn::Zero(d), hn::Zero(d), one} : unit({hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)});
+    const VF nv = hn::Max(dot(n, view), hn::Set(d, 1e-4f));
+    const VF nv_term = hn::Sqrt(hn::MulAdd(hn::Mul(nv, nv), one_a2, a2));
+
+    // Ambient, darkened by occlusion.
+    VF ao = one;
+    if (occlusion) {
+      const Rgba t = occlusion.operator()<false>(u, tv);
+      ao = hn::MulAdd(hn::Set(d, m.occlusion_strength), hn::Sub(t.r, one), one);
+    }
+    V3 out{hn::Mul(hn::Mul(cdiff.x, hn::Set(d, lights.ambient.x)), ao),
+           hn::Mul(hn::Mul(cdiff.y, hn::Set(d, lights.ambient.y)), ao),
+           hn::Mul(hn::Mul(cdiff.z, hn::Set(d, lights.ambient.z)), ao)};
+
+    constexpr float kInvPi = 0.318309886f;
+    auto add_light = [&](const V3& l, VF rr, VF rg, VF rb) {
+      const VF nl = dot(n, l);
+      const MF lit_m = hn::Gt(nl, hn::Zero(d));
+      if (hn::AllFalse(d, lit_m)) return;
+      const VF nlc = hn::ZeroIfNegative(nl);
+      const V3 h = unit({hn::Add(l.x, view.x), hn::Add(l.y, view.y), hn::Add(l.z, view.z)});
+      const VF nh = saturate(dot(n, h)), vh = saturate(dot(view, h));
+      const VF q = hn::Sub(one, vh), q2 = hn::Mul(q, q), q5 = hn::Mul(hn::Mul(q2, q2), q);
+      const VF dn = hn::MulAdd(hn::Mul(nh, nh), hn::Neg(one_a2), one);  // (N.H)^2 (a^2 - 1) + 1
+      const VF dist = hn::Div(hn::Mul(a2, hn::Set(d, kInvPi)), hn::Max(hn::Mul(dn, dn), hn::Set(d, 1e-12f)));
+      const VF den = hn::MulAdd(nlc, nv_term, hn::Mul(nv, hn::Sqrt(hn::MulAdd(hn::Mul(nlc, nlc), one_a2, a2))));
+      const VF spec = hn::Div(hn::Mul(hn::Set(d, 0.5f), dist), hn::Max(den, hn::Set(d, 1e-12f)));
+      auto channel_of = [&](VF f0c, VF cd, VF radiance, VF acc) {
+        const VF f = hn::MulAdd(hn::Sub(one, f0c), q5, f0c);  // Schlick
+        const VF brdf = hn::MulAdd(f, spec, hn::Mul(hn::Sub(one, f), hn::Mul(cd, hn::Set(d, kInvPi))));
+        return hn::MulAdd(brdf, hn::Mul(radiance, nlc), acc);
+      };
+      out = {channel_of(f0.x, cdiff.x, rr, out.x), channel_of(f0.y, cdiff.y, rg, out.y), channel_of(f0.z, cdiff.z, rb, out.z)};
+    };
+    for (const auto& l : lights.directional)
+      add_light({hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)}, hn::Set(d, l.color.x),
+                hn::Set(d, l.color.y), hn::Set(d, l.color.z));
+    for (const auto& l : lights.point) {
+      V3 dir;
+      const VF att = lit::punctual(l, p, n, dir);
+      add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
+                hn::Mul(hn::Set(d, l.color.z), att));
+    }
+    // Emission.
+    V3 e{hn::Set(d, m.emissive[0]), hn::Set(d, m.emissive[1]), hn::Set(d, m.emissive[2])};
+    if (emissive) {
+      const Rgba t = emissive.operator()<false>(u, tv);
+      e = {hn::Mul(e.x, t.r), hn::Mul(e.y, t.g), hn::Mul(e.z, t.b)};
+    }
+    return {hn::Add(out.x, e.x), hn::Add(out.y, e.y), hn::Add(out.z, e.z), alpha};
+  }
+};
+
+// The Pbr kernels' depth test and writes: LESS before shading; MASK drops the pixels
+// whose alpha is under the cut-off (before the depth write); BLEND mixes the finished
+// colour over the pixel's by alpha (over: in the output's encoding, as three.js does
+// drawing to a canvas) and leaves depth alone, as glTF's BLEND materials are drawn.
+template <class Shader>
+HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
+  const DF d;
+  const DU du;
+  const DrawState& draw = (*t.frame.draws)[r.draw];
+  Shader shader(r, draw, t.frame);
+  const bool depth_test = t.frame.depth_test;
+  const AlphaMode mode = draw.pbr.alpha_mode;
+  const VF cutoff = hn::Set(d, draw.pbr.alpha_cutoff);
+  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const VU id = hn::Set(du, draw.object_id);
+  const OutputTransform& output = t.frame.output;
+  for (int b = 0; b < n; ++b) {
+    const Block& blk = blocks[b];
+    float fx, fy;
+    block_origin(r, t, blk.index, fx, fy);
+    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    shader.begin_block(fx, fy);
+    const size_t at = size_t(blk.index) * 16;
+    for (int v = 0; v < kVectorsPerBlock; ++v) {
+      MF m = lane_mask(blk.mask, v);
+      if (kVectorsPerBlock > 1 && hn::AllFalse(d, m)) continue;
+      float* zp = t.depth + at + v * kLanes;
+      const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
+      if (depth_test) {
+        m = hn::And(m, hn::Lt(z, hn::Load(d, zp)));
+        if (hn::AllFalse(d, m)) continue;
+      }
+      const PbrOut c = shader.shade(v);
+      if (mode == AlphaMode::Mask) {
+        m = hn::And(m, hn::Ge(c.a, cutoff));
+        if (hn::AllFalse(d, m)) continue;
+      }
+      uint32_t* cp = t.color + at + v * kLanes;
+      VU px;
+      if (mode == AlphaMode::Blend) {
+        const VF a = saturate(c.a);
+        const VU src = finish(output, c.r, c.g, c.b);
+        const VU dst = hn::Load(du, cp);
+        auto mix = [&](VF s, VF dd) { return hn::MulAdd(hn::Sub(s, dd), a, dd); };
+        const VF k = hn::Set(d, 1.0f / 255.0f);
+        px = pack_colors(hn::Mul(mix(channel<0>(src), channel<0>(dst)), k), hn::Mul(mix(channel<1>(src), channel<1>(dst)), k),
+                         hn::Mul(mix(channel<2>(src), channel<2>(dst)), k),
+                         hn::MulAdd(hn::Mul(channel<3>(dst), k), hn::Sub(hn::Set(d, 1.0f), a), a));
+      } else {
+        if (depth_test) hn::BlendedStore(z, m, d, zp);
+        px = finish(output, c.r, c.g, c.b);
+      }
+      const auto mu = hn::RebindMask(du, m);
+      hn::BlendedStore(px, mu, du, cp);
+      if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
+    }
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::raster
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_RASTER_SHADE_PBR_INL_H_ toggle
