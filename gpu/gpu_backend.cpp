@@ -388,11 +388,20 @@ void GpuBackend::upload_lights(GLuint p) {
     glUniform3fv(uniform(p, "u_directional_color"), GLsizei(b.size()), &b[0].x);
   }
   a.clear(), b.clear();
-  for (const auto& pl : l.point) a.push_back(pl.position), b.push_back(pl.color), c.push_back({pl.constant, pl.linear, pl.quadratic});
+  std::vector<Vec3> falloff, axis;
+  std::vector<Vec2> cone;
+  for (const auto& pl : l.point) {
+    a.push_back(pl.position), b.push_back(pl.color), c.push_back({pl.constant, pl.linear, pl.quadratic});
+    falloff.push_back({pl.inverse_square ? 1.0f : 0.0f, pl.inv_range4, pl.spot ? 1.0f : 0.0f});
+    axis.push_back(pl.spot_axis), cone.push_back({pl.spot_scale, pl.spot_offset});
+  }
   if (!a.empty()) {
     glUniform3fv(uniform(p, "u_point_position"), GLsizei(a.size()), &a[0].x);
     glUniform3fv(uniform(p, "u_point_color"), GLsizei(b.size()), &b[0].x);
     glUniform3fv(uniform(p, "u_point_attenuation"), GLsizei(c.size()), &c[0].x);
+    glUniform3fv(uniform(p, "u_point_falloff"), GLsizei(falloff.size()), &falloff[0].x);
+    glUniform3fv(uniform(p, "u_point_spot_axis"), GLsizei(axis.size()), &axis[0].x);
+    glUniform2fv(uniform(p, "u_point_spot_cone"), GLsizei(cone.size()), &cone[0].x);
   }
 }
 
@@ -469,7 +478,6 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
     glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
     glUniform1i(uniform(p, "u_cull"), cull);
-    glUniform2f(uniform(p, "u_viewport_size"), float(width_ * ssaa_), float(height_ * ssaa_));
     glUniform1i(uniform(p, "u_textured"), textured);
     glUniform1i(uniform(p, "u_env"), phong && env);
     glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);

@@ -19,6 +19,9 @@ uniform int u_point_count;
 uniform vec3 u_point_position[16];
 uniform vec3 u_point_color[16];
 uniform vec3 u_point_attenuation[16];  // constant, linear, quadratic
+uniform vec3 u_point_falloff[16];      // inverse square (0 or 1), 1 / range^4 (0: no range), spot (0 or 1)
+uniform vec3 u_point_spot_axis[16];    // unit, eye space: where a spot points
+uniform vec2 u_point_spot_cone[16];    // the cone's scale and offset (shading::detail::spot_cone)
 uniform vec3 u_specular;               // ks, exponent, cutoff
 
 struct Terms { vec3 diffuse; vec3 specular; };
@@ -41,9 +44,19 @@ Terms light(vec3 n, vec3 p) {
   for (int i = 0; i < u_point_count; ++i) {
     vec3 v = u_point_position[i] - p;
     float dist = length(v);
-    vec3 a = u_point_attenuation[i];
-    float att = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-6);
+    vec3 a = u_point_attenuation[i], f = u_point_falloff[i];
+    float d2 = dot(v, v);
+    // shading::detail::punctual: falloff, range window, spot cone, in that order.
+    float att = f.x > 0.5 ? 1.0 / max(d2, 0.01) : 1.0 / max(a.x + (a.z * dist + a.y) * dist, 1e-6);
     vec3 to_light = dist > 0.0 ? v / dist : n;
+    if (f.y > 0.0) {
+      float w = clamp(1.0 - d2 * d2 * f.y, 0.0, 1.0);
+      att *= w * w;
+    }
+    if (f.z > 0.5) {
+      float c = clamp(-dot(u_point_spot_axis[i], to_light) * u_point_spot_cone[i].x + u_point_spot_cone[i].y, 0.0, 1.0);
+      att *= c * c;
+    }
     add_light(t, n, to_light, u_point_color[i] * att, to_eye);
   }
   return t;
@@ -139,7 +152,7 @@ void main() {
       g.back = clamp(base * t.diffuse + t.specular, 0.0, 1.0);
     }
   }
-  g.uv = u_uv_from_env ? vec2(0.5) + 0.5 * g.normal.xy : a_uv;
+  g.uv = u_uv_from_env ? vec2(0.5) + vec2(0.5, -0.5) * g.normal.xy : a_uv;
   g_flat_front = g_flat_back = vec3(1.0);
 }
 )";
@@ -155,8 +168,7 @@ layout(triangles) in;
 #if PRIMITIVE == 0
 layout(triangle_strip, max_vertices = 3) out;
 #elif PRIMITIVE == 1
-layout(triangle_strip, max_vertices = 12) out;
-uniform vec2 u_viewport_size;
+layout(line_strip, max_vertices = 6) out;
 #else
 layout(points, max_vertices = 3) out;
 #endif
@@ -221,38 +233,12 @@ void main() {
   if (u_cull && det >= 0.0) return;
 #endif
 #if PRIMITIVE == 1
-  // Each edge as the CPU draws a line (raster/coverage-inl.h, line_blocks): the pixels
-  // whose centres lie between the ends along the major axis and within half a pixel of
-  // the segment across it, i.e. a parallelogram one pixel high (x-major) or wide, cut
-  // at the near plane first (triangle/clip.cpp's clip_line).
-  for (int k = 0; k < 3; ++k) {
-    vec4 p = gl_in[k].gl_Position, q = gl_in[(k + 1) % 3].gl_Position;
-    float dp = p.z + p.w, dq = q.z + q.w;
-    if (dp < 0.0 && dq < 0.0) continue;
-    if (dp < 0.0) p = mix(p, q, dp / (dp - dq));
-    if (dq < 0.0) q = mix(q, p, dq / (dq - dp));
-    vec2 a = p.xy / p.w * 0.5 * u_viewport_size, b = q.xy / q.w * 0.5 * u_viewport_size;
-    vec2 d = b - a;
-    if (dot(d, d) == 0.0) continue;
-    vec2 across = abs(d.x) >= abs(d.y) ? vec2(0.0, 1.0 / u_viewport_size.y) : vec2(1.0 / u_viewport_size.x, 0.0);
-    // [line - 1/2, line + 1/2) across, moved by one 1/256-pixel snapping step (GL snaps as the
-    // CPU does), so
-    // that a centre exactly half a pixel away goes as the CPU's floor() sends it.
-    vec2 nudge = across * (1.0 / 128.0);
-    vec4 corners[4] = vec4[4](p + vec4((nudge - across) * p.w, 0.0, 0.0), p + vec4((nudge + across) * p.w, 0.0, 0.0),
-                              q + vec4((nudge - across) * q.w, 0.0, 0.0), q + vec4((nudge + across) * q.w, 0.0, 0.0));
-    for (int c = 0; c < 4; ++c) {
-      g.front = g.back = u_material_color;
-      g.eye = vec3(0.0), g.normal = vec3(0.0, 0.0, 1.0), g.uv = vec2(0.0);
-      g_flat_front = flat_front, g_flat_back = flat_back;
-      gl_Position = corners[c];
-      EmitVertex();
-    }
-    EndPrimitive();
-  }
-  return;
-#endif
+  const int corners[6] = int[6](0, 1, 1, 2, 2, 0);
+  for (int k = 0; k < 6; ++k) {
+    int i = corners[k];
+#else
   for (int i = 0; i < 3; ++i) {
+#endif
     vec3 base = u_unlit_vertex_colors ? v[i].color : base_color(i, face);
     g.front = g.back = base;
     if (u_mode == 1 && u_lit) {
@@ -261,11 +247,13 @@ void main() {
     }
     g.eye = v[i].eye;
     g.normal = v[i].normal;
-    g.uv = u_uv_from_env ? vec2(0.5) + 0.5 * v[i].normal.xy : v[i].uv;
+    g.uv = u_uv_from_env ? vec2(0.5) + vec2(0.5, -0.5) * v[i].normal.xy : v[i].uv;
     g_flat_front = flat_front, g_flat_back = flat_back;
     gl_Position = gl_in[i].gl_Position;
     EmitVertex();
-#if PRIMITIVE == 2
+#if PRIMITIVE == 1
+    if (k % 2 == 1) EndPrimitive();
+#elif PRIMITIVE == 2
     EndPrimitive();
 #endif
   }
@@ -312,7 +300,7 @@ void main() {
     vec3 n = normalize(g.normal);
     if (back) n = -n;
     if (u_textured && !u_uv_from_env) base *= texture(u_texture, g.uv).rgb;
-    if (u_env) base = mix(base, texture(u_env_map, vec2(0.5) + 0.5 * n.xy).rgb, u_env_mix);
+    if (u_env) base = mix(base, texture(u_env_map, vec2(0.5) + vec2(0.5, -0.5) * n.xy).rgb, u_env_mix);
     c = apply(light(n, g.eye), base);
   }
   o_color = vec4(clamp(c, 0.0, 1.0), 1.0);

@@ -48,7 +48,9 @@ struct UvTransform {
 };
 
 // `uv` transformed as `t` says (the uv set is the caller's choice): scale, then rotate,
-// then offset, as KHR_texture_transform's matrix T * R * S with R = [cos sin; -sin cos].
+// then offset, as KHR_texture_transform's matrix T * R * S with R = [cos sin; -sin cos]
+// (rows): the direction three.js and the extension's TextureTransformTest sample agree on
+// (a quarter turn with offset [0, 1] maps u' = v, v' = 1 - u).
 Vec2 transform_uv(const UvTransform& t, Vec2 uv);
 
 // A texture as a material uses it.

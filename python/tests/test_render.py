@@ -80,11 +80,14 @@ def test_from_file_project_models(name):
     assert (depth > 0).sum() > 5
 
 
-def test_engine_warnings_are_python_warnings():
-    # Embedded textures ("*0") are not read: the engine warns, and Python hears it.
-    with pytest.warns(RuntimeWarning, match=r"BoxTextured.glb: texture '\*0' not found"):
-        mesh = velocity.Mesh.from_file("/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb")
-    assert mesh.triangle_count == 12
+def test_engine_warnings_are_python_warnings(tmp_path):
+    # A texture the material names but the folder lacks: the engine warns, and Python hears it.
+    (tmp_path / "quad.mtl").write_text("newmtl skin\nKd 1 1 1\nmap_Kd missing.png\n")
+    (tmp_path / "quad.obj").write_text("mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                                       "usemtl skin\nf 1/1 2/2 3/3\n")
+    with pytest.warns(RuntimeWarning, match=r"missing\.png"):
+        mesh = velocity.Mesh.from_file(str(tmp_path / "quad.obj"))
+    assert mesh.triangle_count == 1
 
 
 def test_from_file_plg():

@@ -51,10 +51,10 @@ void choose_kernel(SlotPlan& s, const Texture* tex, const Texture* env, bool rep
   }
 }
 
+// velocity::transform_uv (material.hpp) as an affine map: u' = a u + b v + c, v' = d u + e v + f.
 raster::UvAffine uv_affine(const UvTransform& t) {
-  // KHR_texture_transform: T(offset) R(rotation) S(scale), R = [cos -sin; sin cos].
   const float c = std::cos(t.rotation), s = std::sin(t.rotation);
-  return {c * t.scale.x, -s * t.scale.y, t.offset.x, s * t.scale.x, c * t.scale.y, t.offset.y};
+  return {c * t.scale.x, s * t.scale.y, t.offset.x, -s * t.scale.x, c * t.scale.y, t.offset.y};
 }
 
 // glTF's metallic-roughness parameters as the Pbr kernels read them (colours are put

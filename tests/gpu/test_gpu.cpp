@@ -119,12 +119,10 @@ std::vector<ParityCase> cases() {
   for (const char* shade : {"flat", "gouraud", "tex"}) v.push_back({"sphere:512", 1920, 1080, shade, shade[0] == 't' ? 35.0 : 40.0});
   v.push_back({obj, 640, 360, "gouraud", 40.0, 1, 5, 12});
   v.push_back({obj, 640, 360, "phong", 40.0, 1, 9, 12});
-  // Wireframe: edges drawn as the CPU draws lines (the pixel under the segment at each
-  // column or row centre). Below 40 dB: bright one-pixel lines on a dark ground, and
-  // near-ties (a segment within rounding of a pixel boundary) fall either side in about
-  // 1 pixel in 1000 (float arithmetic on the CPU, fixed point in GL).
+  // Wireframe: edges as GL lines; the CPU's lines follow GL's diamond-exit rule as Mesa
+  // draws them (raster/coverage-inl.h), so the two agree but for a few ties.
   for (const std::string& mesh : {std::string("sphere:24"), std::string("sphere:64"), obj})
-    v.push_back({mesh, 640, 360, "wire", 30.0});
+    v.push_back({mesh, 640, 360, "wire", 40.0});
   // Super-sampling: a larger framebuffer and the same box resolve.
   v.push_back({obj, 640, 360, "phong", 35.0, 3});
   v.push_back({"sphere:64", 320, 200, "tex", 35.0, 2});
@@ -278,7 +276,17 @@ TEST(GpuLighting, GlslIsTheScalarModel) {
   lights.ambient = {0.1f, 0.15f, 0.2f};
   lights.directional.push_back({normalize(Vec3{0.3f, 0.5f, 1}), {0.9f, 0.8f, 0.7f}});
   lights.directional.push_back({normalize(Vec3{-0.7f, 0.1f, 0.2f}), {0.2f, 0.3f, 0.6f}});
-  lights.point.push_back({{1, 2, -1}, {0.8f, 0.7f, 0.5f}, 1.0f, 0.2f, 0.05f});
+  shading::EyeLights::Point point;
+  point.position = {1, 2, -1}, point.color = {0.8f, 0.7f, 0.5f};
+  point.constant = 1.0f, point.linear = 0.2f, point.quadratic = 0.05f;
+  lights.point.push_back(point);
+  // A spot light with KHR_lights_punctual's inverse square and range (lighting.hpp).
+  shading::EyeLights::Point spot;
+  spot.position = {-0.5f, 1.0f, -1.5f}, spot.color = {2.0f, 1.5f, 1.0f};
+  spot.inverse_square = true, spot.inv_range4 = 1.0f / std::pow(4.0f, 4.0f);
+  spot.spot = true, spot.spot_axis = normalize(Vec3{0.2f, -1.0f, -0.6f});
+  shading::detail::spot_cone(0.3f, 0.9f, spot.spot_scale, spot.spot_offset);
+  lights.point.push_back(spot);
   const shading::Specular spec(0.5f, 24.0f);
   const int n = 4096;
   std::vector<Vec3> normals(n), points(n);
@@ -288,13 +296,17 @@ TEST(GpuLighting, GlslIsTheScalarModel) {
   glUseProgram(p);
   auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
   glUniform3f(loc("u_ambient"), lights.ambient.x, lights.ambient.y, lights.ambient.z);
-  glUniform1i(loc("u_directional_count"), 2), glUniform1i(loc("u_point_count"), 1);
+  glUniform1i(loc("u_directional_count"), 2), glUniform1i(loc("u_point_count"), 2);
   const Vec3 dir[2] = {lights.directional[0].to_light, lights.directional[1].to_light};
   const Vec3 dcol[2] = {lights.directional[0].color, lights.directional[1].color};
   glUniform3fv(loc("u_directional_to_light"), 2, &dir[0].x), glUniform3fv(loc("u_directional_color"), 2, &dcol[0].x);
-  glUniform3fv(loc("u_point_position"), 1, &lights.point[0].position.x);
-  glUniform3fv(loc("u_point_color"), 1, &lights.point[0].color.x);
-  glUniform3f(loc("u_point_attenuation"), 1.0f, 0.2f, 0.05f);
+  const Vec3 ppos[2] = {point.position, spot.position}, pcol[2] = {point.color, spot.color};
+  const Vec3 patt[2] = {{1.0f, 0.2f, 0.05f}, {1.0f, 0.0f, 0.0f}};
+  const Vec3 pfall[2] = {{0, 0, 0}, {1.0f, spot.inv_range4, 1.0f}}, paxis[2] = {{}, spot.spot_axis};
+  const Vec2 pcone[2] = {{0, 1}, {spot.spot_scale, spot.spot_offset}};
+  glUniform3fv(loc("u_point_position"), 2, &ppos[0].x), glUniform3fv(loc("u_point_color"), 2, &pcol[0].x);
+  glUniform3fv(loc("u_point_attenuation"), 2, &patt[0].x), glUniform3fv(loc("u_point_falloff"), 2, &pfall[0].x);
+  glUniform3fv(loc("u_point_spot_axis"), 2, &paxis[0].x), glUniform2fv(loc("u_point_spot_cone"), 2, &pcone[0].x);
   glUniform3f(loc("u_specular"), spec.ks, spec.exponent, spec.cutoff);
   GLuint vao, buffers[4];
   glGenVertexArrays(1, &vao), glGenBuffers(4, buffers);
