@@ -15,6 +15,7 @@
 #include "runtime/canvas.hpp"
 #include "runtime/loop.hpp"
 #include "runtime/script.hpp"
+#include "scripted.hpp"
 #include "runtime/shell.hpp"
 #include "runtime/synth.hpp"
 #include "velocity/error.hpp"
@@ -25,29 +26,7 @@ using namespace velocity::realtime;
 
 namespace {
 
-// Runs `program` for `seconds` at the fixed step, feeding the script's events, and
-// calls `each` after every step.
-template <typename F>
-void run_scripted(Program& program, const std::string& script, double seconds, F&& each) {
-  ScriptPlayer player(parse_script(script));
-  InputState input;
-  std::vector<InputEvent> events;
-  const int steps = int(std::lround(seconds / kFixedStep));
-  for (int n = 0; n <= steps; ++n) {
-    events.clear();
-    player.due(n * kFixedStep, events);
-    for (const InputEvent& e : events) {
-      input.apply(e);
-      program.event(e, input);
-    }
-    program.update(n ? kFixedStep : 0.0, input);
-    each(n);
-  }
-}
-
-void run_scripted(Program& program, const std::string& script, double seconds) {
-  run_scripted(program, script, seconds, [](int) {});
-}
+using test::run_scripted;
 
 }  // namespace
 
