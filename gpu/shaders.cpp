@@ -69,9 +69,8 @@ namespace {
 
 const char* const kVersion = "#version 330 core\n";
 
-// The vertex stage (geometry/vertex_stage.cpp): clip position, eye position and unit
-// eye normal; for Gouraud, the light terms of both sides (the back's for two-sided).
-const char* const kMeshVertex = R"(
+// What both mesh vertex shaders read: the mesh's arrays and its matrices.
+const char* const kMeshVertexInputs = R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
@@ -79,6 +78,11 @@ layout(location = 3) in vec3 a_color;
 uniform mat4 u_mvp;
 uniform mat4 u_model_view;
 uniform mat4 u_normal_matrix;
+)";
+
+// The vertex stage (geometry/vertex_stage.cpp): clip position, eye position and unit
+// eye normal; for Gouraud, the light terms of both sides (the back's for two-sided).
+const char* const kMeshVertex = R"(
 uniform bool u_vertex_light;
 uniform bool u_two_sided;
 out V {
@@ -115,13 +119,6 @@ void main() {
 // does the geometry shader's per-corner work itself (the same lines), and the program
 // has no geometry stage, which software drivers run far slower.
 const char* const kMeshVertexDirect = R"(
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_uv;
-layout(location = 3) in vec3 a_color;
-uniform mat4 u_mvp;
-uniform mat4 u_model_view;
-uniform mat4 u_normal_matrix;
 uniform int u_mode;
 uniform int u_base_source;
 uniform bool u_lit;
@@ -356,8 +353,8 @@ GLuint build_program(const std::string& vertex, const std::string& geometry, con
 GLuint build_mesh_program(bool affine, int primitive) {
   const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") +
                            "\n#define PRIMITIVE " + std::to_string(primitive) + "\n";
-  if (primitive == 3) return build_program(head + kLightingGlsl + kMeshVertexDirect, "", head + kLightingGlsl + kMeshFragment);
-  return build_program(head + kLightingGlsl + kMeshVertex, head + kLightingGlsl + kMeshGeometry,
+  if (primitive == 3) return build_program(head + kLightingGlsl + kMeshVertexInputs + kMeshVertexDirect, "", head + kLightingGlsl + kMeshFragment);
+  return build_program(head + kLightingGlsl + kMeshVertexInputs + kMeshVertex, head + kLightingGlsl + kMeshGeometry,
                        head + kLightingGlsl + kMeshFragment);
 }
 
