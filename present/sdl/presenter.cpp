@@ -269,6 +269,19 @@ bool SdlPresenter::invisible() const { return is_invisible_driver(SDL_GetCurrent
 namespace {
 
 void audio_callback(void* user, Uint8* stream, int len) {
+  // SDL starts its audio thread at TIME_CRITICAL priority, which on Linux is nice -20
+  // where the process may raise it (root, CAP_SYS_NICE). With the scheduler's groups
+  // (autogroup, cgroups) the process's threads share one weight, split between the
+  // processors by the weight of the threads there: a nice -20 thread, even one that
+  // sleeps 99 % of the time, draws the group's share to its processor and starves the
+  // rasterizer's threads on the other one. On a loaded machine the frame took twice as
+  // long (p99 180-230 ms against 65-80 ms muted). The synthesiser needs about 0.1 ms a
+  // buffer (23 ms), so a normal priority is plenty: set once, from the audio thread.
+  thread_local bool normal_priority = false;
+  if (!normal_priority) {
+    SDL_SetThreadPriority(SDL_THREAD_PRIORITY_NORMAL);
+    normal_priority = true;
+  }
   static_cast<realtime::Synth*>(user)->render(reinterpret_cast<int16_t*>(stream), size_t(len) / 2);
 }
 
