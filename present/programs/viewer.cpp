@@ -88,9 +88,13 @@ void ViewerProgram::open(const std::string& path) {
     scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_));
     name_ = std::filesystem::path(path).filename().string();
   }
-  triangles_ = 0;
+  triangles_ = points_ = 0;
   for (const Object& obj : scene.objects())
-    if (obj.mesh) triangles_ += obj.mesh->triangle_count();
+    if (obj.mesh)
+      for (const Triangle& t : obj.mesh->triangles) {
+        const bool point = t.v[0] == t.v[1] && t.v[1] == t.v[2];
+        points_ += point, triangles_ += !point;
+      }
   Sphere b = scene.bounds();
   home_target_ = b.center;
   radius_ = std::max(b.radius, 1e-3f);
@@ -255,6 +259,12 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
           say("OPENING VIEW");
           break;
         case ' ': spin_ = !spin_; break;
+        case '[':
+        case ']':
+          // Points are squares this many pixels a side, whatever the super-sampling.
+          options_.point_size = std::clamp(options_.point_size + (e.key == Key(']') ? 1.0f : -1.0f), 1.0f, 16.0f);
+          say("POINTS " + std::to_string(int(options_.point_size)) + " PIXELS");
+          break;
         case 'x':
           show_axes_ = !show_axes_;
           say(show_axes_ ? "AXES: X RED, Y GREEN, Z BLUE" : "NO AXES");
@@ -325,7 +335,9 @@ void ViewerProgram::frame(FrameDescription& out) {
   const int room = std::max(width_ - 6 * s, 1);
   std::vector<std::string> items = {
       ellipsize(upper(name_), room / 2, s),
-      std::to_string(triangles_) + " TRIANGLES",
+      points_ && !triangles_ ? std::to_string(points_) + " POINTS"
+      : points_ ? std::to_string(triangles_) + " TRIANGLES, " + std::to_string(points_) + " POINTS"
+                : std::to_string(triangles_) + " TRIANGLES",
       wire_      ? std::string("WIREFRAME")
       : shading_ ? "SHADING: " + upper(to_string(kShadings[shading_ - 1]))
                  : std::string("SHADING: AS THE MODEL SAYS"),
@@ -333,6 +345,7 @@ void ViewerProgram::frame(FrameDescription& out) {
       "SSAA " + std::to_string(options_.ssaa) + "X" + std::to_string(options_.ssaa),
       options_.affine ? "AFFINE TEXTURES" : "PERSPECTIVE TEXTURES",
       "H: HELP"};
+  if (points_) items.insert(items.end() - 1, "POINTS " + std::to_string(int(options_.point_size)) + " PX");
   std::vector<std::string> lines(1);
   for (const std::string& item : items) {
     std::string joined = lines.back().empty() ? item : lines.back() + "  " + item;
@@ -362,6 +375,7 @@ void ViewerProgram::frame(FrameDescription& out) {
         "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
+        "[ ]: POINT SIZE\n"
         "C or F12: SCREENSHOT   SHIFT+F12: WITH THIS TEXT\n"
         "F2: SCREEN MODE   F3: FPS\n"
         "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";

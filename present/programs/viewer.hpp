@@ -42,6 +42,7 @@ class ViewerProgram : public Program {
   bool axes_shown() const { return show_axes_; }
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
+  size_t points() const { return points_; }
   // The direction towards the key light (the first directional one); zero if none.
   Vec3 light_direction() const {
     for (const Light& l : scene_.lights)
@@ -58,7 +59,7 @@ class ViewerProgram : public Program {
   ViewerOptions o_;
   Scene scene_;
   std::string name_;
-  size_t triangles_ = 0;
+  size_t triangles_ = 0, points_ = 0;  // points: triangles (v, v, v) of a point cloud
   Vec3 target_, initial_dir_{0.6f, 0.45f, 1.0f};
   Vec3 home_target_;           // the opening view, which R returns to
   float home_distance_ = 3;

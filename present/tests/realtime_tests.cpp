@@ -7,7 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+
+#include <unistd.h>
 
 #include "programs/drive.hpp"
 #include "programs/fly.hpp"
@@ -685,4 +688,54 @@ TEST(Viewer, AxesAtTheOrigin) {
   EXPECT_GT(red, 5);
   EXPECT_GT(green, 5);
   EXPECT_GT(blue, 5);
+}
+
+// Issue 21: a point cloud (a PLY file with vertices and no faces) opens in the viewer,
+// the status bar counts points, and ] / [ make the points bigger and smaller in pixels:
+// the rendered frame lights about size² pixels a point.
+TEST(Viewer, PointCloudsWithAPointSizeKey) {
+  namespace fs = std::filesystem;
+  const fs::path path = fs::temp_directory_path() / ("velocity_viewer_cloud_" + std::to_string(::getpid()) + ".ply");
+  {
+    std::ofstream f(path);
+    // Five points well apart (an asymmetric cross), so their squares never overlap.
+    f << "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+         "end_header\n0 0 0\n1 0 0\n-1 0 0\n0 1.5 0\n0 -0.7 0.3\n";
+  }
+  ViewerOptions o;
+  o.model = path.string();
+  ViewerProgram v(o);
+  fs::remove(path);
+  v.resize(200, 150);
+  EXPECT_EQ(v.points(), 5u);
+  auto lit = [&] {
+    FrameDescription f;
+    v.frame(f);
+    Renderer r(200, 150);
+    r.options = f.options;
+    r.render(f.scene);
+    std::vector<uint8_t> px(200 * 150 * 4);
+    r.read_color(px.data(), 200 * 4, 4);
+    const Vec3 bg = f.scene.background;
+    int n = 0;
+    for (size_t i = 0; i < px.size(); i += 4) n += std::abs(px[i] - int(std::lround(bg.x * 255))) > 40;
+    return n;
+  };
+  run_scripted(v, "0 wheel -4\n", 0);  // back a little: the framing puts points at the edge
+  EXPECT_EQ(v.render_options().point_size, 1.0f);
+  const int one = lit();
+  EXPECT_EQ(one, 5) << "one pixel a point";
+  run_scripted(v, "0 press ]\n0.1 press ]\n0.2 press ]\n", 0.3);
+  EXPECT_EQ(v.render_options().point_size, 4.0f);
+  EXPECT_EQ(lit(), 5 * 16) << "4x4 pixels a point";
+  FrameDescription f;
+  v.frame(f);
+  std::string bar;
+  for (const DrawOp& op : f.overlay.ops()) bar += op.text + "|";
+  EXPECT_NE(bar.find("5 POINTS"), std::string::npos) << bar;
+  EXPECT_NE(bar.find("POINTS 4 PX"), std::string::npos) << bar;
+  run_scripted(v, "0 press [\n", 0.1);
+  EXPECT_EQ(v.render_options().point_size, 3.0f);
+  for (int i = 0; i < 20; ++i) run_scripted(v, "0 press [\n", 0.02);
+  EXPECT_EQ(v.render_options().point_size, 1.0f) << "never below one pixel";
 }
