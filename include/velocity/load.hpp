@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "velocity/animation.hpp"
 #include "velocity/image.hpp"
 #include "velocity/mesh.hpp"
 #include "velocity/scene.hpp"
@@ -54,6 +55,8 @@ struct Model {
   std::vector<ModelNode> nodes;
   std::vector<Light> lights;
   std::vector<NamedCamera> cameras;
+  // glTF node animations (translation, rotation, scale), moving `nodes` by index.
+  std::vector<Animation> animations;
 
   size_t vertex_count() const;
   size_t triangle_count() const;
@@ -106,8 +109,10 @@ Model load_obj(const std::string& path, const LoadOptions& options = {});
 // warning. glTF cameras (perspective and orthographic) become
 // NamedCameras placed by their node, KHR_lights_punctual lights Lights (intensity times
 // colour, inverse-square falloff with the range); 3D Studio cameras are not converted
-// (Assimp 5.2 loses their target), nor are 3D Studio lights. Skins, animations and
-// morph targets are not converted (meshes come in their bind pose).
+// (Assimp 5.2 loses their target), nor are 3D Studio lights. glTF node animations
+// (translation, rotation, scale; float keys) are read by Velocity from the JSON into
+// Model::animations; skins and morph targets are not converted (meshes come in their
+// bind pose).
 // Throws velocity::Error naming the file for a missing or malformed file (what
 // Velocity's own checks before Assimp found, with the line or byte offset: PLY whole,
 // ASCII STL whole, 3D Studio chunks, glTF JSON and node trees; else Assimp's message),

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "velocity/load.hpp"
 #include "velocity/renderer.hpp"
@@ -30,8 +31,11 @@ void add_default_lights(Scene& scene);
 // Loads `path` into a new scene: every material two-sided unless `cull_back_faces`,
 // the default light (add_default_lights), and the camera framing the model for an
 // image of `aspect` (width / height) from the front right and a little above, a
-// three-quarter view that shows a model's shape. Throws velocity::Error.
-Scene scene_from_model(const std::string& path, const LoadOptions& options, bool cull_back_faces, float aspect);
+// three-quarter view that shows a model's shape (in the rest pose). With `animations`,
+// the file's animations go there, each NodeAnimation::node an ObjectId of the scene.
+// Throws velocity::Error.
+Scene scene_from_model(const std::string& path, const LoadOptions& options, bool cull_back_faces, float aspect,
+                       std::vector<Animation>* animations = nullptr);
 
 // Why a frame drew nothing, from its statistics, as the end of a sentence that begins
 // "nothing was drawn: " ("" when something was drawn). `cull_back_faces`: whether the

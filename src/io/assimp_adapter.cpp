@@ -568,11 +568,23 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
   std::map<const aiNode*, size_t> index_of;
   std::map<std::pair<std::vector<unsigned>, bool>, std::shared_ptr<Mesh>> built;  // shared instances
   size_t dropped = 0;
+  std::map<size_t, size_t> model_node_of_gltf;  // animated nodes
   while (!stack.empty()) {
     auto [node, parent] = stack.back();
     stack.pop_back();
     ModelNode out;
     out.name = node->mName.C_Str();
+    // A node an animation moves: its glTF index and its own name (prepare_gltf's tag).
+    if (const std::string_view tag = detail::kNodeTag;
+        gltf_appearance && out.name.size() > tag.size() && out.name.compare(0, tag.size(), tag) == 0) {
+      char* end = nullptr;
+      const size_t gltf_index = std::strtoull(out.name.c_str() + tag.size(), &end, 10);
+      if (end && *end == ':') {
+        model_node_of_gltf[gltf_index] = model.nodes.size();
+        out.name = end + 1;
+        if (out.name.empty()) out.name = "node " + std::to_string(gltf_index);
+      }
+    }
     out.local = to_mat4(node->mTransformation);
     out.parent = parent;
     world.push_back(parent < 0 ? out.local : world[size_t(parent)] * out.local);
@@ -599,6 +611,18 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
                          : std::string()));
   if (dropped)
     warn(path + ": " + std::to_string(dropped) + " lines dropped (Velocity draws triangles and points only)");
+
+  // Animations, moving Model nodes (a node outside the scene shown is not moved).
+  if (gltf_appearance)
+    for (Animation a : gltf_appearance->animations) {
+      std::erase_if(a.nodes, [&](NodeAnimation& n) {
+        auto it = model_node_of_gltf.find(n.node);
+        if (it == model_node_of_gltf.end()) return true;
+        n.node = it->second;
+        return false;
+      });
+      if (!a.nodes.empty()) model.animations.push_back(std::move(a));
+    }
 
   const std::string ext = detail::lower_extension(path);
   const bool gltf = ext == "gltf" || ext == "glb";

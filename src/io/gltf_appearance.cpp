@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <optional>
@@ -107,6 +108,85 @@ class Reader {
     out.color_space = ColorSpace::Linear;
     out.color = {1, 1, 1};
     out.pbr.metallic = out.pbr.roughness = 1;
+    return out;
+  }
+
+  // The file's animations: each channel's keys (float accessors), grouped by the node
+  // they move, with the node's rest translation, rotation and scale. Morph target
+  // weights and channels of other component types are left out with a warning.
+  std::vector<Animation> animations() {
+    std::vector<Animation> out;
+    const json& anims = list("animations");
+    const json& nodes = list("nodes");
+    bool warned = false;
+    auto skip = [&](const std::string& why) {
+      if (!warned) warn(path_ + ": " + why + " (Velocity plays node translation, rotation and scale)");
+      warned = true;
+    };
+    for (size_t a = 0; a < anims.size(); ++a) {
+      const std::string where = "animation " + std::to_string(a) + ": ";
+      const json& anim = at(anims, a, where);
+      Animation result;
+      if (const json* name = member(anim, "name", json::value_t::string, where)) result.name = name->get<std::string>();
+      const json* channels = member(anim, "channels", json::value_t::array, where);
+      const json* samplers = member(anim, "samplers", json::value_t::array, where);
+      if (!channels || !samplers) fail(where + "expected \"channels\" and \"samplers\"");
+      std::map<size_t, NodeAnimation> by_node;
+      for (size_t c = 0; c < channels->size(); ++c) {
+        const std::string w = where + "channel " + std::to_string(c) + ": ";
+        const json& channel = at(*channels, c, w);
+        const json* target = member(channel, "target", json::value_t::object, w);
+        const json* path = target ? member(*target, "path", json::value_t::string, w + "target: ") : nullptr;
+        if (!path) fail(w + "expected a \"target\" with a \"path\"");
+        const std::string what = path->get<std::string>();
+        if (what == "weights") {
+          skip("morph target weights are not animated");
+          continue;
+        }
+        if (what != "translation" && what != "rotation" && what != "scale")
+          fail(w + "target path \"" + what + "\", expected translation, rotation, scale or weights");
+        if (!target->contains("node")) continue;  // the spec allows it (an extension's target)
+        const size_t n = index((*target)["node"], nodes.size(), w + "target node");
+        const json& sampler = at(*samplers, index(channel.value("sampler", json(-1)), samplers->size(), w + "sampler"),
+                                 w + "sampler: ");
+        const std::string mode = sampler.value("interpolation", std::string("LINEAR"));
+        if (mode != "LINEAR" && mode != "STEP" && mode != "CUBICSPLINE")
+          fail(w + "interpolation \"" + mode + "\", expected LINEAR, STEP or CUBICSPLINE");
+        const size_t width = what == "rotation" ? 4 : 3;
+        std::vector<float> times, values;
+        if (!floats(sampler.value("input", json(-1)), 1, times, w + "input") ||
+            !floats(sampler.value("output", json(-1)), width, values, w + "output")) {
+          skip(w + "keys that are not 32-bit floats in a buffer view are not read");
+          continue;
+        }
+        const size_t per_key = mode == "CUBICSPLINE" ? 3 : 1;  // in-tangent, value, out-tangent
+        if (values.size() != times.size() * width * per_key)
+          fail(w + std::to_string(times.size()) + " key times but " + std::to_string(values.size() / width) +
+               " values (expected " + std::to_string(times.size() * per_key) + ")");
+        for (size_t k = 0; k < times.size(); ++k)
+          if (!std::isfinite(times[k]) || times[k] < 0 || (k && times[k] <= times[k - 1]))
+            fail(w + "key time " + std::to_string(k) + " is " + std::to_string(times[k]) +
+                 ", expected a finite time after the one before");
+        auto [it, first] = by_node.try_emplace(n);
+        NodeAnimation& node = it->second;
+        if (first) rest_pose(at(nodes, n, w + "target node: "), node, w + "target node: ");
+        node.node = n;
+        const Interpolation interp = mode == "STEP" ? Interpolation::Step : Interpolation::Linear;
+        auto value = [&](size_t k, size_t i) { return values[(k * per_key + (per_key == 3)) * width + i]; };
+        if (what == "rotation") {
+          node.rotation = {times, {}, interp};
+          for (size_t k = 0; k < times.size(); ++k)
+            node.rotation.values.push_back({value(k, 0), value(k, 1), value(k, 2), value(k, 3)});
+        } else {
+          Keys<Vec3>& keys = what == "translation" ? node.translation : node.scale;
+          keys = {times, {}, interp};
+          for (size_t k = 0; k < times.size(); ++k) keys.values.push_back({value(k, 0), value(k, 1), value(k, 2)});
+        }
+        if (!times.empty()) result.duration = std::max(result.duration, times.back());
+      }
+      for (auto& [n, node] : by_node) result.nodes.push_back(std::move(node));
+      if (!result.nodes.empty()) out.push_back(std::move(result));
+    }
     return out;
   }
 
@@ -340,6 +420,40 @@ class Reader {
     return it->second;
   }
 
+  // Accessor `v` as floats, `width` a element (SCALAR 1, VEC3 3, VEC4 4): false when it
+  // is not plain 32-bit floats in a buffer view (gltf_check made sure it lies inside it).
+  bool floats(const json& v, size_t width, std::vector<float>& out, const std::string& where) {
+    const json& acc = at(list("accessors"), index(v, list("accessors").size(), where + " accessor"), where + ": ");
+    static const char* kTypes[] = {"", "SCALAR", "", "VEC3", "VEC4"};
+    if (acc.value("type", std::string()) != kTypes[width])
+      fail(where + ": accessor type " + acc.value("type", json()).dump() + ", expected " + kTypes[width]);
+    if (acc.value("componentType", 0) != 5126 || !acc.contains("bufferView") || acc.contains("sparse")) return false;
+    const uint64_t count = whole(acc, "count", 0, where + ": ");
+    const size_t view_index = index(acc["bufferView"], list("bufferViews").size(), where + ": bufferView");
+    const std::string_view bytes = buffer_view(view_index, path_);
+    const uint64_t offset = whole(acc, "byteOffset", 0, where + ": ");
+    const uint64_t stride = whole(at(list("bufferViews"), view_index, where + ": "), "byteStride", width * 4, where + ": ");
+    if (count == 0) return true;
+    if (stride < width * 4 || offset > bytes.size() || (count - 1) > (bytes.size() - offset) / stride ||
+        offset + (count - 1) * stride + width * 4 > bytes.size())
+      fail(where + ": accessor runs past the end of its buffer view");
+    out.resize(size_t(count) * width);
+    for (size_t k = 0; k < count; ++k)
+      std::memcpy(&out[k * width], bytes.data() + offset + k * stride, width * 4);  // glTF is little-endian, as we are
+    return true;
+  }
+
+  // An animated node's rest translation, rotation and scale (an animated node has no
+  // "matrix", says the spec; one that has is decomposed no further: identity rest).
+  void rest_pose(const json& node, NodeAnimation& out, const std::string& where) const {
+    const std::vector<float> t = numbers(node, "translation", {0, 0, 0}, -1e30f, 1e30f, where);
+    const std::vector<float> q = numbers(node, "rotation", {0, 0, 0, 1}, -1, 1, where);
+    const std::vector<float> s = numbers(node, "scale", {1, 1, 1}, -1e30f, 1e30f, where);
+    out.rest_translation = {t[0], t[1], t[2]};
+    out.rest_rotation = {q[0], q[1], q[2], q[3]};
+    out.rest_scale = {s[0], s[1], s[2]};
+  }
+
   // A node's matrix: "matrix" (column-major) or translation * rotation * scale.
   Mat4 local_matrix(const json& node, const std::string& where) const {
     Mat4 m;
@@ -463,6 +577,7 @@ GltfAppearance read_gltf_appearance(std::string_view bytes, const std::string& p
     for (size_t i = 0; i < it->size(); ++i) out.materials.push_back(reader.material(i));
   out.materials.push_back(Reader::default_material());
   out.lights = reader.lights();
+  out.animations = reader.animations();
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "velocity/animation.hpp"
 #include "velocity/load.hpp"
 #include "velocity/material.hpp"
 #include "velocity/scene.hpp"
@@ -25,6 +26,9 @@ struct GltfAppearance {
   std::vector<Material> materials;
   // KHR_lights_punctual lights placed by the nodes of the scene shown, in world space.
   std::vector<Light> lights;
+  // Node animations; NodeAnimation::node is the glTF node's index (the adapter finds
+  // the Model node through kNodeTag).
+  std::vector<Animation> animations;
 };
 
 // Reads `bytes` (a .gltf or .glb file that prepare_gltf accepted) from `path`. Every

@@ -45,6 +45,9 @@ namespace velocity::detail {
 // itself (no bufferView, or sparse) within `max_memory` / 4.
 // The name each material has in the copy Assimp reads: this, then its index in the file.
 inline constexpr const char* kMaterialTag = "velocity-gltf-material-";
+// Each node an animation moves is renamed kNodeTag + its index + ":" + its name in the
+// copy Assimp reads, so that the adapter finds the node an animation names.
+inline constexpr const char* kNodeTag = "velocity-gltf-node-";
 
 std::string prepare_gltf(std::string_view bytes, const std::string& path, size_t max_memory);
 

@@ -1,0 +1,66 @@
+// Node animations: glTF 2.0's translation / rotation / scale channels, and the pose of
+// a node at a time. The loader reads them (Model::animations, glTF only); a program
+// plays them by setting each animated object's `base` matrix every frame (apply).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "velocity/math.hpp"
+#include "velocity/scene.hpp"
+
+namespace velocity {
+
+// A rotation as a unit quaternion (x, y, z: the axis times sin(angle / 2); w: cos).
+struct Quat {
+  float x = 0, y = 0, z = 0, w = 1;
+};
+
+// How a channel goes from one key to the next (glTF's sampler "interpolation"):
+// Linear lerps (slerps rotations), Step holds each key until the next one.
+// CUBICSPLINE samplers are read as Linear through their keys' values.
+enum class Interpolation { Linear, Step };
+
+template <typename T>
+struct Keys {
+  std::vector<float> times;  // seconds, increasing
+  std::vector<T> values;     // one per time
+  Interpolation interpolation = Interpolation::Linear;
+  bool empty() const { return times.empty(); }
+};
+
+// One node's channels; a part without keys keeps the node's rest value.
+struct NodeAnimation {
+  size_t node = 0;  // Model::nodes index (a Scene's ObjectId once in a scene)
+  Vec3 rest_translation;
+  Quat rest_rotation;
+  Vec3 rest_scale{1, 1, 1};
+  Keys<Vec3> translation;
+  Keys<Quat> rotation;
+  Keys<Vec3> scale;
+};
+
+struct Animation {
+  std::string name;
+  float duration = 0;  // the last key's time, seconds
+  std::vector<NodeAnimation> nodes;
+};
+
+// The spherical interpolation from `a` to `b` by `u` in [0, 1], the short way round.
+Quat slerp(Quat a, Quat b, float u);
+// The rotation matrix of `q` (normalised first; a zero quaternion is no rotation).
+Mat4 rotation_matrix(Quat q);
+
+// A channel's value at time `t` (before the first key: the first; after the last: the
+// last); `rest` when it has no keys.
+Vec3 sample(const Keys<Vec3>& keys, float t, Vec3 rest);
+Quat sample(const Keys<Quat>& keys, float t, Quat rest);
+
+// The node's local matrix at `t`: translation * rotation * scale.
+Mat4 pose(const NodeAnimation& node, float t);
+
+// Sets the `base` matrix of every animated object of `scene` to its pose at `t`
+// (NodeAnimation::node is an ObjectId there; ids not in the scene are skipped).
+void apply(const Animation& animation, float t, Scene& scene);
+
+}  // namespace velocity

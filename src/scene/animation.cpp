@@ -1,0 +1,66 @@
+#include "velocity/animation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace velocity {
+
+namespace {
+
+Vec3 lerp(Vec3 a, Vec3 b, float u) { return a + (b - a) * u; }
+Quat lerp(Quat a, Quat b, float u) { return slerp(a, b, u); }
+
+// The key interval holding `t`, and how far into it; shared by both value types.
+template <typename T>
+T sample_keys(const Keys<T>& k, float t, T rest) {
+  const size_t n = std::min(k.times.size(), k.values.size());
+  if (n == 0) return rest;
+  if (!(t > k.times[0])) return k.values[0];  // NaN too
+  if (t >= k.times[n - 1]) return k.values[n - 1];
+  const size_t i = size_t(std::upper_bound(k.times.begin(), k.times.begin() + ptrdiff_t(n), t) - k.times.begin()) - 1;
+  if (k.interpolation == Interpolation::Step) return k.values[i];
+  const float span = k.times[i + 1] - k.times[i];
+  const float u = span > 0 ? std::clamp((t - k.times[i]) / span, 0.0f, 1.0f) : 1.0f;
+  return lerp(k.values[i], k.values[i + 1], u);
+}
+
+}  // namespace
+
+Quat slerp(Quat a, Quat b, float u) {
+  float d = a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+  if (d < 0) b = {-b.x, -b.y, -b.z, -b.w}, d = -d;  // q and -q are the same rotation
+  float wa = 1 - u, wb = u;
+  if (d < 0.9995f) {  // else nearly parallel: the straight line is as good, and stable
+    const float angle = std::acos(std::min(d, 1.0f)), s = std::sin(angle);
+    wa = std::sin((1 - u) * angle) / s, wb = std::sin(u * angle) / s;
+  }
+  Quat q{wa * a.x + wb * b.x, wa * a.y + wb * b.y, wa * a.z + wb * b.z, wa * a.w + wb * b.w};
+  const float len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  return len > 0 && std::isfinite(len) ? Quat{q.x / len, q.y / len, q.z / len, q.w / len} : Quat{};
+}
+
+Mat4 rotation_matrix(Quat q) {
+  const float len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  if (!(len > 0) || !std::isfinite(len)) return Mat4::identity();
+  const float x = q.x / len, y = q.y / len, z = q.z / len, w = q.w / len;
+  Mat4 r;
+  r.m[0][0] = 1 - 2 * (y * y + z * z), r.m[0][1] = 2 * (x * y - z * w), r.m[0][2] = 2 * (x * z + y * w);
+  r.m[1][0] = 2 * (x * y + z * w), r.m[1][1] = 1 - 2 * (x * x + z * z), r.m[1][2] = 2 * (y * z - x * w);
+  r.m[2][0] = 2 * (x * z - y * w), r.m[2][1] = 2 * (y * z + x * w), r.m[2][2] = 1 - 2 * (x * x + y * y);
+  return r;
+}
+
+Vec3 sample(const Keys<Vec3>& keys, float t, Vec3 rest) { return sample_keys(keys, t, rest); }
+Quat sample(const Keys<Quat>& keys, float t, Quat rest) { return sample_keys(keys, t, rest); }
+
+Mat4 pose(const NodeAnimation& node, float t) {
+  return translate(sample(node.translation, t, node.rest_translation)) *
+         rotation_matrix(sample(node.rotation, t, node.rest_rotation)) * scale(sample(node.scale, t, node.rest_scale));
+}
+
+void apply(const Animation& animation, float t, Scene& scene) {
+  for (const NodeAnimation& n : animation.nodes)
+    if (n.node < scene.objects().size()) scene.object(ObjectId(n.node)).base = pose(n, t);
+}
+
+}  // namespace velocity
