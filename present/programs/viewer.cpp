@@ -81,11 +81,12 @@ ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
 
 void ViewerProgram::open(const std::string& path) {
   Scene scene;
+  std::vector<Animation> animations;
   if (path.empty()) {
     scene = make_demo_scene();
     name_ = "DEMO SCENE";
   } else {
-    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_));
+    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_), &animations);
     name_ = std::filesystem::path(path).filename().string();
   }
   triangles_ = points_ = 0;
@@ -130,7 +131,20 @@ void ViewerProgram::open(const std::string& path) {
   const Vec3 axis_colors[3] = {{0.9f, 0.15f, 0.1f}, {0.2f, 0.85f, 0.2f}, {0.2f, 0.4f, 1.0f}};
   for (int a = 0; a < 3; ++a) axes_[a] = std::make_shared<const Mesh>(make_axis(a, radius_ * 0.6f, axis_colors[a]));
   scene_ = std::move(scene);
+  animations_ = std::move(animations);
+  anim_time_ = 0;
+  playing_ = true;
+  if (!animations_.empty()) apply(animations_[0], 0.0f, scene_);
   reset_view();
+}
+
+// Moves the animation to `t` (wrapped into its length: it loops) and poses the scene.
+void ViewerProgram::seek(double t) {
+  if (animations_.empty()) return;
+  const double length = animations_[0].duration;
+  anim_time_ = length > 0 ? t - std::floor(t / length) * length : 0.0;
+  apply(animations_[0], float(anim_time_), scene_);
+  changed_ = true;
 }
 
 // Back to the opening view: orbit angles, distance, and the pan undone.
@@ -154,8 +168,10 @@ void ViewerProgram::place_camera() {
   c.position = target_ + dir * distance_;
   c.roll = 0;
   c.look_at(target_);
-  float to_center = length(scene_.bounds().center - c.position);
-  float reach = radius_ * (show_grid_ ? 2.4f : 1.2f);  // the grid reaches past the model
+  // The depth range around the scene as it is now (an animation moves and grows it).
+  const Sphere now = scene_.bounds();
+  float to_center = length(now.center - c.position);
+  float reach = std::max(radius_, now.radius) * (show_grid_ ? 2.4f : 1.2f);  // the grid reaches past the model
   c.near = std::max(to_center - reach, std::max(distance_, radius_) * 1e-3f);
   c.far = to_center + reach;
 }
@@ -259,6 +275,21 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
           say("OPENING VIEW");
           break;
         case ' ': spin_ = !spin_; break;
+        case 'k':
+          if (animations_.empty()) {
+            say("NO ANIMATION IN THIS FILE");
+            break;
+          }
+          playing_ = !playing_;
+          say(playing_ ? "ANIMATION PLAYING" : "ANIMATION PAUSED");
+          break;
+        case 'j':
+        case 'l':
+          // A tenth of a second back or on, paused (a scrub).
+          if (animations_.empty()) break;
+          playing_ = false;
+          seek(anim_time_ + (e.key == Key('l') ? 0.1 : -0.1));
+          break;
         case '[':
         case ']':
           // Points are squares this many pixels a side, whatever the super-sampling.
@@ -305,6 +336,7 @@ void ViewerProgram::update(double dt, const InputState& input) {
   if (input.held('+') || input.held('=')) distance_ *= std::pow(0.5f, float(dt));
   if (input.held('-')) distance_ *= std::pow(2.0f, float(dt));
   message_time_ = std::max(0.0, message_time_ - dt);
+  if (playing_ && !animations_.empty()) seek(anim_time_ + dt);
   place_camera();
 }
 
@@ -346,6 +378,12 @@ void ViewerProgram::frame(FrameDescription& out) {
       options_.affine ? "AFFINE TEXTURES" : "PERSPECTIVE TEXTURES",
       "H: HELP"};
   if (points_) items.insert(items.end() - 1, "POINTS " + std::to_string(int(options_.point_size)) + " PX");
+  if (!animations_.empty()) {
+    char clock[96];
+    std::snprintf(clock, sizeof clock, "ANIMATION %.2f/%.2f S %s", anim_time_, double(animations_[0].duration),
+                  playing_ ? "PLAYING" : "PAUSED");
+    items.insert(items.end() - 1, clock);
+  }
   std::vector<std::string> lines(1);
   for (const std::string& item : items) {
     std::string joined = lines.back().empty() ? item : lines.back() + "  " + item;
@@ -375,7 +413,7 @@ void ViewerProgram::frame(FrameDescription& out) {
         "ARROWS: ORBIT   + -: ZOOM   SPACE: SPIN   R: OPENING VIEW\n"
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
-        "[ ]: POINT SIZE\n"
+        "[ ]: POINT SIZE   K: PLAY / PAUSE   J L: STEP BACK / ON\n"
         "C or F12: SCREENSHOT   SHIFT+F12: WITH THIS TEXT\n"
         "F2: SCREEN MODE   F3: FPS\n"
         "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";

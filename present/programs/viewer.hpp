@@ -1,14 +1,16 @@
 // `velocity view`: an orbit viewer. Left-drag rotates about the model, the wheel zooms,
 // right-drag pans; keys switch shading, wireframe, painter's / depth buffer, SSAA,
-// affine / perspective textures, back faces, and take screenshots. A file dropped on
-// the window replaces the model.
+// affine / perspective textures, back faces, and take screenshots; a glTF file's
+// animation plays (pause, step). A file dropped on the window replaces the model.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "runtime/program.hpp"
+#include "velocity/animation.hpp"
 #include "velocity/load.hpp"
 
 namespace velocity::realtime {
@@ -43,6 +45,11 @@ class ViewerProgram : public Program {
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
   size_t points() const { return points_; }
+  // The model's animations (the first plays, looping), the time into it, and whether it
+  // is playing (K pauses and plays, J / L step a tenth of a second back / on).
+  const std::vector<Animation>& animations() const { return animations_; }
+  double animation_time() const { return anim_time_; }
+  bool playing() const { return playing_; }
   // The direction towards the key light (the first directional one); zero if none.
   Vec3 light_direction() const {
     for (const Light& l : scene_.lights)
@@ -53,6 +60,7 @@ class ViewerProgram : public Program {
  private:
   void open(const std::string& path);  // throws
   void reset_view();
+  void seek(double t);
   void place_camera();
   Light* key_light();  // the first directional light (Shift+drag turns it); null if none
 
@@ -78,6 +86,9 @@ class ViewerProgram : public Program {
   std::string message_;
   bool changed_ = true;  // something to draw since the last frame
   double message_time_ = 0;
+  std::vector<Animation> animations_;
+  double anim_time_ = 0;
+  bool playing_ = true;
 };
 
 }  // namespace velocity::realtime

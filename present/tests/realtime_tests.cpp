@@ -18,6 +18,7 @@
 #include "runtime/canvas.hpp"
 #include "runtime/loop.hpp"
 #include "runtime/script.hpp"
+#include "gltf_animated.hpp"
 #include "scripted.hpp"
 #include "runtime/shell.hpp"
 #include "runtime/synth.hpp"
@@ -29,7 +30,7 @@ using namespace velocity::realtime;
 
 namespace {
 
-using test::run_scripted;
+using velocity::realtime::test::run_scripted;
 
 }  // namespace
 
@@ -738,4 +739,95 @@ TEST(Viewer, PointCloudsWithAPointSizeKey) {
   EXPECT_EQ(v.render_options().point_size, 3.0f);
   for (int i = 0; i < 20; ++i) run_scripted(v, "0 press [\n", 0.02);
   EXPECT_EQ(v.render_options().point_size, 1.0f) << "never below one pixel";
+}
+
+// Issue 21: a glTF file's animation plays in the viewer. One second in, the animated
+// node is at the pose interpolated between the keys (translation and slerped rotation
+// halfway, the STEP scale past its step), numerically and in pixels: the frame equals
+// the one of a still file with the node placed at that pose by hand. K pauses; J and L
+// step back and on.
+TEST(Viewer, GltfAnimationPlaysPausesAndSteps) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("velocity_viewer_anim_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const float h = std::sin(std::numbers::pi_v<float> / 8);  // 45 degrees about Y: (0, sin 22.5, 0, cos 22.5)
+  std::ofstream(dir / "moving.gltf") << velocity::test::animated_box_gltf(true);
+  std::ofstream(dir / "posed.gltf") << velocity::test::animated_box_gltf(false, {1, 0, 0}, {0, h, 0, std::cos(std::numbers::pi_v<float> / 8)},
+                                                              {2, 2, 2});
+  ViewerOptions o;
+  o.model = (dir / "moving.gltf").string();
+  ViewerProgram v(o);
+  v.resize(160, 120);
+  ASSERT_EQ(v.animations().size(), 1u);
+  // Plays one second (60 steps), then pauses; back off (the box moves out of the opening view).
+  run_scripted(v, "1.01 press k\n1.05 wheel -12\n", 1.2);
+  EXPECT_FALSE(v.playing());
+  EXPECT_NEAR(v.animation_time(), 1.0, 1e-6);
+  FrameDescription f;
+  v.frame(f);
+  const ObjectId id = *f.scene.find("mover");
+  const Mat4 expected = translate({0, 1, 0}) * translate({1, 0, 0}) * rotate_y(std::numbers::pi_v<float> / 4) *
+                        scale({2, 2, 2});
+  const Mat4 world = f.scene.world_matrices()[id];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(world.m[i][j], expected.m[i][j], 1e-5f) << i << "," << j;
+  std::string bar;
+  for (const DrawOp& op : f.overlay.ops()) bar += op.text + "|";
+  EXPECT_NE(bar.find("ANIMATION 1.00/2.00 S"), std::string::npos) << bar;
+  EXPECT_NE(bar.find("ANIMATION PAUSED"), std::string::npos) << bar;
+
+  // The same pixels as the still file's, seen by the same camera in the same light.
+  auto pixels = [](const Scene& scene, const RenderOptions& options) {
+    Renderer r(160, 120);
+    r.options = options;
+    r.render(scene);
+    std::vector<uint8_t> px(160 * 120 * 4);
+    r.read_color(px.data(), 160 * 4, 4);
+    return px;
+  };
+  ViewerOptions so = o;
+  so.model = (dir / "posed.gltf").string();
+  ViewerProgram still(so);
+  still.resize(160, 120);
+  run_scripted(still, "", 0);
+  FrameDescription sf;
+  still.frame(sf);
+  sf.scene.camera = f.scene.camera;
+  sf.scene.lights = f.scene.lights;
+  const std::vector<uint8_t> animated = pixels(f.scene, f.options), posed = pixels(sf.scene, sf.options);
+  int differ = 0, lit = 0;
+  for (size_t i = 0; i < animated.size(); i += 4) {
+    differ += std::abs(animated[i] - posed[i]) > 2 || std::abs(animated[i + 1] - posed[i + 1]) > 2;
+    lit += animated[i] != animated[0] || animated[i + 1] != animated[1];
+  }
+  EXPECT_GT(lit, 100) << "the box does not show";
+  EXPECT_LE(differ, 2) << "the animated frame is not the posed one";
+  // And not the rest pose's: the animation moved it.
+  ViewerOptions ro = o;
+  ro.model = (dir / "posed.gltf").string();
+  std::ofstream(dir / "posed.gltf") << velocity::test::animated_box_gltf(false);
+  ViewerProgram rest(ro);
+  rest.resize(160, 120);
+  FrameDescription rf;
+  rest.frame(rf);
+  rf.scene.camera = f.scene.camera;
+  rf.scene.lights = f.scene.lights;
+  EXPECT_NE(pixels(rf.scene, rf.options), animated);
+
+  // Stepping: L a tenth on, J two back; the pose follows (STEP scale back to 1 before 0.8 s).
+  run_scripted(v, "0 press l\n", 0.05);
+  EXPECT_NEAR(v.animation_time(), 1.1, 1e-6);
+  run_scripted(v, "0 press j\n0.01 press j\n0.02 press j\n", 0.05);
+  EXPECT_NEAR(v.animation_time(), 0.8, 1e-6);
+  run_scripted(v, "0 press j\n", 0.05);
+  FrameDescription g;
+  v.frame(g);
+  const Mat4 at07 = g.scene.world_matrices()[*g.scene.find("mover")];
+  EXPECT_NEAR(at07.m[1][1], 1.0f, 1e-5f) << "the STEP scale is 1 before 0.8 s";
+  EXPECT_NEAR(at07.m[0][3], 0.7f, 1e-5f) << "translation at 0.7 s";
+  // K plays on from there.
+  run_scripted(v, "0 press k\n", 0.5);
+  EXPECT_TRUE(v.playing());
+  EXPECT_NEAR(v.animation_time(), 1.2, 1e-6);
+  fs::remove_all(dir);
 }
