@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "runtime/settings_file.hpp"
+#include "velocity/error.hpp"
+
 namespace velocity::realtime {
 
 namespace {
@@ -31,6 +34,24 @@ Shell::Shell(Game& game, ShellText text, bool skip_menus) : game_(game), text_(s
   }
   game_.set_attract(screen_ != Screen::Game);
   game_.set_settings(settings_);
+}
+
+void Shell::keep_settings_in(const std::string& path) {
+  if (auto loaded = load_settings(path, settings_)) {
+    settings_ = *loaded;
+    game_.set_settings(settings_);
+  }
+  settings_file_ = path;
+}
+
+void Shell::settings_changed() {
+  game_.set_settings(settings_);
+  if (settings_file_.empty()) return;
+  try {
+    save_settings(settings_file_, settings_);
+  } catch (const Error& e) {  // the game goes on; the options stay as chosen for this run
+    std::fprintf(stderr, "velocity: %s\n", e.what());
+  }
 }
 
 void Shell::resize(int width, int height) {
@@ -82,7 +103,7 @@ void Shell::change_option(int row, int step) {
       return;
   }
   effects_.push_back(Effect::Click);
-  game_.set_settings(settings_);
+  settings_changed();
 }
 
 void Shell::options_event(const InputEvent& e) {
@@ -94,7 +115,7 @@ void Shell::options_event(const InputEvent& e) {
       for (Key& k : settings_.keys)
         if (k == e.key) k = settings_.key(a);
       settings_.keys[size_t(a)] = e.key;
-      game_.set_settings(settings_);
+      settings_changed();
       effects_.push_back(Effect::Click);
     }
     binding_ = false;

@@ -68,6 +68,10 @@ class Shell : public Program {
   void set_gamepad(const GamepadState& pad) override { game_.set_gamepad(pad); }
   int screen_mode() const override { return settings_.screen_mode; }
 
+  // Keeps the options in `path` (runtime/settings_file.hpp): read now, if it exists, and
+  // written whole each time an option changes. Throws velocity::Error for a bad file.
+  void keep_settings_in(const std::string& path);
+
   Screen screen() const { return screen_; }
   // A game was started and not finished: the menu's first button resumes it.
   bool in_progress() const { return in_progress_; }
@@ -96,10 +100,12 @@ class Shell : public Program {
   void activate(int button);
   void options_event(const InputEvent& e);
   void change_option(int row, int step);
+  void settings_changed();  // to the game, and to the settings file
 
   Game& game_;
   ShellText text_;
   Settings settings_;
+  std::string settings_file_;
   Screen screen_ = Screen::Title;
   Screen next_ = Screen::Title;
   bool fading_out_ = false, quit_ = false, quit_after_fade_ = false;

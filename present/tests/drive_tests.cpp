@@ -16,6 +16,7 @@
 #include "runtime/loop.hpp"
 #include "runtime/script.hpp"
 #include "scripted.hpp"
+#include "runtime/settings_file.hpp"
 #include "runtime/shell.hpp"
 #include "velocity/error.hpp"
 
@@ -658,4 +659,68 @@ TEST(Shell, AGamepadFliesTheFlythrough) {
   EXPECT_LT(fly.yaw(), yaw - 0.5f);
   EXPECT_GT(fly.pitch(), 0.1f);
   EXPECT_GT(fly.speed(), speed + 20);
+}
+
+// Issue 21: the options are kept on disk. Changing them on the options screen writes the
+// file whole (no PATH.tmp left behind); a new shell (the next run) starts with them; the
+// file reads back exactly what was written.
+TEST(Settings, TheOptionsAreKeptOnDiskAndComeBack) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("velocity_settings_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string path = (dir / "velocity" / "drive.conf").string();  // the folder is made
+  {
+    DriveProgram d(no_disk());
+    Shell shell(d, drive_shell_text());
+    shell.keep_settings_in(path);  // no file yet: the defaults
+    EXPECT_EQ(shell.settings().ssaa, 1);
+    shell.resize(320, 200);
+    run_scripted(shell,
+                 "0.3 press space\n0.8 press o\n1.6 press down\n1.7 press right\n1.8 press down\n1.9 press right\n"
+                 "2.0 press down\n2.1 press left\n2.2 press down\n2.3 press enter\n2.4 press w\n",
+                 2.6);
+    ASSERT_EQ(shell.settings().key(Action::Throttle), Key('w'));
+  }
+  ASSERT_TRUE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  DriveProgram d(no_disk());
+  Shell next(d, drive_shell_text());
+  next.keep_settings_in(path);
+  EXPECT_EQ(next.settings().ssaa, 2);
+  EXPECT_EQ(next.settings().filter, Filter::Trilinear);
+  EXPECT_NEAR(next.settings().volume, 0.7f, 1e-6f);
+  EXPECT_EQ(next.settings().key(Action::Throttle), Key('w'));
+  EXPECT_EQ(next.settings().key(Action::Brake), KeyDown);
+  // Written and read back: the same settings, the same text.
+  const std::string text = format_settings(next.settings());
+  EXPECT_EQ(format_settings(parse_settings(text, "x")), text);
+  fs::remove_all(dir);
+}
+
+// A bad settings file is refused with one line naming the file, the line and what was
+// expected; the file is left as it was.
+TEST(Settings, ABadFileIsRefusedWithItsLine) {
+  auto error = [](const std::string& text) {
+    try {
+      parse_settings(text, "drive.conf");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(error("velocity-settings 1\nssaa 7\n"), "drive.conf:2: ssaa '7', expected a whole number from 1 to 3");
+  EXPECT_EQ(error("velocity-settings 1\n# a comment\nfilter smooth\n"),
+            "drive.conf:3: filter 'smooth', expected nearest, bilinear or trilinear");
+  EXPECT_EQ(error("velocity-settings 1\nvolume 1.5\n"), "drive.conf:2: volume '1.5', expected a number from 0 to 1");
+  EXPECT_EQ(error("velocity-settings 1\nkey jump space\n").substr(0, 36), "drive.conf:2: unknown action 'jump' ");
+  EXPECT_EQ(error("velocity-settings 1\nkey throttle nokey\n").substr(0, 33), "drive.conf:2: unknown key 'nokey'");
+  EXPECT_EQ(error("velocity-settings 1\nkey throttle down\n"), "drive.conf: throttle and brake are both on key 'down'");
+  EXPECT_EQ(error("ssaa 2\n"), "drive.conf:1: expected 'velocity-settings 1' first, found 'ssaa 2'");
+  EXPECT_EQ(error(""), "drive.conf:0: empty file, expected 'velocity-settings 1' first");
+  EXPECT_EQ(error("velocity-settings 1\nssaa 2 3\n"), "drive.conf:2: '3' after the value");
+  EXPECT_EQ(error("velocity-settings 1\nfog on\n").substr(0, 36), "drive.conf:2: unknown setting 'fog' ");
+  // Missing lines keep the defaults.
+  Settings s = parse_settings("velocity-settings 1\nssaa 3\n", "x");
+  EXPECT_EQ(s.ssaa, 3);
+  EXPECT_EQ(s.filter, Settings{}.filter);
 }

@@ -82,6 +82,7 @@ std::function<int()> add_drive_command(CLI::App& app) {
     }
     realtime::DriveProgram drive(o);
     realtime::Shell shell(drive, realtime::drive_shell_text(), args->skip_menu || o.replay.has_value());
+    keep_settings(shell, rt, o.replay.has_value());
     int status = run_realtime(shell, rt, "800x600", true);
     if (!record_race.empty()) {
       std::string part = record_race + ".part";

@@ -47,6 +47,7 @@ std::function<int()> add_fly_command(CLI::App& app) {
     o.seed = args->seed;
     realtime::FlyProgram fly(o);
     realtime::Shell shell(fly, realtime::fly_shell_text(), args->skip_menu);
+    keep_settings(shell, args->realtime);
     return run_realtime(shell, args->realtime, "640x480", true);
   };
 }

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "runtime/loop.hpp"
+#include "runtime/settings_file.hpp"
 #include "runtime/synth.hpp"
 #include "sdl/presenter.hpp"
 #include "velocity/error.hpp"
@@ -32,6 +33,11 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_flag("--window-at-origin", a.at_origin, "Put the window at the screen's top-left corner");
   cmd->add_option("--linger", a.linger, "After the last frame, keep the window open this many seconds");
   cmd->add_option("--threads", a.threads, "Threads rasterizing tiles (0: every core)");
+}
+
+void keep_settings(realtime::Shell& shell, const RealtimeArgs& a, bool replaying) {
+  if (!a.script.empty() || replaying) return;
+  if (std::string path = realtime::default_settings_file(a.command); !path.empty()) shell.keep_settings_in(path);
 }
 
 int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::string& default_size, bool sound) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "runtime/program.hpp"
+#include "runtime/shell.hpp"
 
 namespace velocity::cli {
 
@@ -33,5 +34,9 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& args);
 // Runs `program` with a window (or headless), sound and the main loop; prints the
 // frame-time statistics at exit. `default_size` when --size is not given.
 int run_realtime(realtime::Program& program, const RealtimeArgs& args, const std::string& default_size, bool sound);
+// The options screen's choices kept in $XDG_CONFIG_HOME/velocity/COMMAND.conf
+// (runtime/settings_file.hpp). A scripted run (or a replay: `replaying`) starts from the
+// defaults and keeps nothing, so that a script does the same on every machine.
+void keep_settings(realtime::Shell& shell, const RealtimeArgs& args, bool replaying = false);
 
 }  // namespace velocity::cli
