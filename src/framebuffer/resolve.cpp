@@ -61,11 +61,24 @@ void resolve_color_rows(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_
   for (int y = y0; y < y1; ++y) {
     read_sample_rows(fb, k, y, rows, &Framebuffer::read_color_row);
     for (int x = 0; x < w; ++x) {
+      // Two channels a 32-bit add, each in a 16-bit lane (channels 0 and 2, then 1 and
+      // 3): k * k samples of 255 fit a lane up to k = 16, and the sums are the exact ones
+      // a channel at a time would give, in a quarter of the work (a fifth of drive --hq's
+      // frame went here).
       uint32_t sum[4] = {0, 0, 0, 0};
-      for (int sy = 0; sy < k; ++sy) {
-        const uint32_t* row = rows.data() + size_t(sy) * fb.width + size_t(x) * k;
-        for (int sx = 0; sx < k; ++sx)
-          for (int c = 0; c < 4; ++c) sum[c] += (row[sx] >> (8 * c)) & 0xff;
+      if (k <= 16) {
+        uint32_t even = 0, odd = 0;
+        for (int sy = 0; sy < k; ++sy) {
+          const uint32_t* row = rows.data() + size_t(sy) * fb.width + size_t(x) * k;
+          for (int sx = 0; sx < k; ++sx) even += row[sx] & 0x00ff00ffu, odd += (row[sx] >> 8) & 0x00ff00ffu;
+        }
+        sum[0] = even & 0xffffu, sum[1] = odd & 0xffffu, sum[2] = even >> 16, sum[3] = odd >> 16;
+      } else {
+        for (int sy = 0; sy < k; ++sy) {
+          const uint32_t* row = rows.data() + size_t(sy) * fb.width + size_t(x) * k;
+          for (int sx = 0; sx < k; ++sx)
+            for (int c = 0; c < 4; ++c) sum[c] += (row[sx] >> (8 * c)) & 0xff;
+        }
       }
       uint8_t* p = rgba + size_t(y) * row_bytes + size_t(x) * channels;
       for (int c = 0; c < channels; ++c) p[c] = uint8_t((sum[c] + uint32_t(n / 2)) / uint32_t(n));

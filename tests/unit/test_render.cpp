@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "framebuffer/framebuffer.hpp"
+#include "framebuffer/resolve.hpp"
 #include "image_test_util.hpp"
 #include "velocity/demo.hpp"
 #include "velocity/error.hpp"
@@ -281,3 +283,32 @@ TEST(Render, ReadColorMatchesTheImage) {
     EXPECT_THROW(r.read_color(any.data(), 101 * 2, 2), Error);
   }
 }
+
+namespace velocity {
+// The super-sampling resolve adds two channels at a time (16-bit lanes): every pixel is
+// still the rounded mean of its k x k samples, channel by channel, for samples of every
+// value (all 255 included, the lanes' largest sum), at k = 2, 3, 4 and 16.
+TEST(Resolve, BoxFilterIsTheRoundedMeanOfEachChannel) {
+  for (int k : {2, 3, 4, 16}) {
+    Framebuffer fb;
+    const int w = 5, h = 3;
+    fb.resize(w * k, h * k);
+    uint32_t state = 12345u + uint32_t(k);
+    for (int y = 0; y < h * k; ++y)
+      for (int x = 0; x < w * k; ++x) {
+        state = state * 1664525u + 1013904223u;
+        fb.color[fb.index(x, y)] = x < k ? 0xffffffffu : state;  // the first pixel column all 255
+      }
+    const Image out = resolve_color(fb, k);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 4; ++c) {
+          uint32_t sum = 0;
+          for (int sy = 0; sy < k; ++sy)
+            for (int sx = 0; sx < k; ++sx) sum += (fb.color[fb.index(x * k + sx, y * k + sy)] >> (8 * c)) & 0xff;
+          const uint32_t want = (sum + uint32_t(k * k / 2)) / uint32_t(k * k);
+          ASSERT_EQ(out.pixels[(size_t(y) * w + x) * 4 + size_t(c)], want) << "k=" << k << " x=" << x << " c=" << c;
+        }
+  }
+}
+}  // namespace velocity
