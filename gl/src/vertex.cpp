@@ -136,12 +136,23 @@ void Context::assemble(bool final) {
         polygon(t, 3, 2);
       }
       break;
-    case GL_QUADS:
+    case GL_QUADS: {
+      // Mesa (llvmpipe) splits a quad along v0 - v2 unless a vertex of the draw lies
+      // outside the view volume: then its clipper splits every quad of it along v1 - v3.
+      // The same here, for the quads of this glBegin/glEnd (or of this part of a long one).
+      bool outside = false;
+      for (uint32_t i = 0; i < n && !outside; ++i) {
+        const Vec4& c = prim_[o[i]].clip;
+        outside = !(std::fabs(c.x) <= c.w && std::fabs(c.y) <= c.w && std::fabs(c.z) <= c.w);
+      }
       for (uint32_t i = 0; i + 3 < n; i += 4) {
-        const uint32_t q[4] = {o[i], o[i + 1], o[i + 2], o[i + 3]};
-        polygon(q, 4, 3);
+        // The fan below from the first of q; the quad's fourth vertex provokes.
+        const uint32_t q[4] = {o[i + (outside ? 1 : 0)], o[i + (outside ? 2 : 1)], o[i + (outside ? 3 : 2)],
+                               o[i + (outside ? 0 : 3)]};
+        polygon(q, 4, outside ? 2 : 3);
       }
       break;
+    }
     case GL_QUAD_STRIP:
       if (!final) break;
       for (uint32_t i = 0; i + 3 < n; i += 2) {
@@ -222,7 +233,7 @@ void Context::point_vertex(uint32_t a) {
 
 void Context::rect(float x1, float y1, float x2, float y2) {
   if (in_begin_error()) return;
-  begin(GL_POLYGON);
+  begin(GL_QUADS);  // as Mesa's glRect, so that it is split as a quad
   vertex({x1, y1, 0, 1}), vertex({x2, y1, 0, 1}), vertex({x2, y2, 0, 1}), vertex({x1, y2, 0, 1});
   end();
 }

@@ -89,5 +89,36 @@ int main(int argc, char** argv) {
     }
   }
   conf_frame("sizes");
+
+  /* The quad split, seen in colours that are not affine across a quad: one inside the
+   * view volume (split along v0 - v2), one with corners outside it in the same frame
+   * (Mesa's clipper splits it along v1 - v3), and glRect, a quad. */
+  glPointSize(1);
+  glLineWidth(1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glViewport(0, 0, 100, 100);
+  glBegin(GL_QUADS);
+  glColor3f(1, 0, 0), glVertex2f(-0.9f, -0.9f);
+  glColor3f(0, 1, 0), glVertex2f(0.9f, -0.9f);
+  glColor3f(0, 0, 1), glVertex2f(0.9f, 0.9f);
+  glColor3f(1, 1, 1), glVertex2f(-0.9f, 0.9f);
+  glEnd();
+  glViewport(100, 0, 100, 100);
+  glBegin(GL_QUADS);
+  glColor3f(1, 0, 0), glVertex2f(-1.4f, -1.3f);
+  glColor3f(0, 1, 0), glVertex2f(1.2f, -1.5f);
+  glColor3f(0, 0, 1), glVertex2f(1.3f, 1.2f);
+  glColor3f(1, 1, 1), glVertex2f(-1.5f, 1.4f);
+  glEnd();
+  conf_frame("quad_split");
+  glViewport(0, 0, 200, 100);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glShadeModel(GL_FLAT);
+  glColor3f(0, 1, 1);
+  glRectf(-0.5f, -0.5f, 0.5f, 0.7f);
+  conf_frame("rect");
   return conf_end();
 }
