@@ -145,7 +145,7 @@ void get_values(GLenum pname, T* params, Convert convert) {
 
 struct osmesa_context {
   Context gl;
-  osmesa_context(GLenum format, int depth_bits) : gl(format, depth_bits) {}
+  osmesa_context(GLenum format, int depth_bits, int stencil_bits) : gl(format, depth_bits, stencil_bits) {}
 };
 
 namespace {
@@ -313,6 +313,14 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
   LIST(if (!c.in_begin_error()) c.clear_color({r, g, b, a}));
 }
 void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
+void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
+void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
+void glPopAttrib(void) { LIST(c.pop_attrib()); }
+void glPushClientAttrib(GLbitfield mask) { NOW(c.push_client_attrib(mask)); }  // client state: never compiled
+void glPopClientAttrib(void) { NOW(c.pop_client_attrib()); }
+void glStencilFunc(GLenum func, GLint ref, GLuint mask) { LIST(c.stencil_func(func, ref, mask)); }
+void glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) { LIST(c.stencil_op(fail, zfail, zpass)); }
+void glStencilMask(GLuint mask) { LIST(c.stencil_mask(mask)); }
 void glDepthFunc(GLenum f) { LIST(c.depth_func(f)); }
 void glDepthMask(GLboolean flag) { LIST(c.depth_mask(flag != 0)); }
 void glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) { LIST(c.color_mask(r, g, b, a)); }
@@ -650,13 +658,13 @@ void glFlush(void) { NOW(c.finish()); }
 
 OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits, GLint accumBits,
                                      OSMesaContext sharelist) {
-  (void)stencilBits, (void)accumBits;
+  (void)accumBits;
   if (sharelist) return nullptr;  // shared lists and textures: not supported (docs/gl.md)
   if (format != OSMESA_RGBA && format != OSMESA_BGRA && format != OSMESA_ARGB && format != OSMESA_RGB &&
       format != OSMESA_BGR)
     return nullptr;
   try {
-    return new osmesa_context(format, depthBits);
+    return new osmesa_context(format, depthBits, stencilBits);
   } catch (const std::exception&) {
     return nullptr;
   }

@@ -25,6 +25,9 @@
 //   lists.cpp         display lists
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
+//   attrib.cpp        glPushAttrib, glPopAttrib, glPushClientAttrib, glPopClientAttrib
+//   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
+//                     glClearStencil, its queries and its part of PixelState
 #pragma once
 
 #include <GL/gl.h>
@@ -50,7 +53,7 @@ struct Vertex {
 
 class Context {
  public:
-  Context(GLenum format, int depth_bits);
+  Context(GLenum format, int depth_bits, int stencil_bits = 0);
   ~Context();
 
   // --- OSMesa (context.cpp)
@@ -126,6 +129,21 @@ class Context {
   void polygon_offset(float factor, float units);
   void point_size(float s);
   void line_width(float w);
+
+  // --- the stencil buffer (stencil.cpp)
+  void stencil_func(GLenum func, GLint ref, GLuint mask);
+  void stencil_op(GLenum fail, GLenum depth_fail, GLenum pass);
+  void stencil_mask(GLuint mask);
+  void clear_stencil(GLint s);
+  int stencil_bits() const { return stencil_bits_; }
+
+  // --- attribute stacks (attrib.cpp)
+  void push_attrib(GLbitfield mask);
+  void pop_attrib();
+  void push_client_attrib(GLbitfield mask);
+  void pop_client_attrib();
+  int attrib_depth() const;
+  int client_attrib_depth() const;
 
   // --- lighting (lighting.cpp)
   void light(GLenum light, GLenum pname, const float* v);
@@ -203,6 +221,9 @@ class Context {
   void run_frame();  // end the frame, copy colour (and depth) out
   void copy_depth();
   PixelState pixel_state(bool offset);
+  void stencil_pixel_state(PixelState& s) const;          // stencil.cpp
+  bool get_stencil(GLenum pname, std::vector<double>& out) const;  // stencil.cpp
+  uint8_t stencil_clear_value() const;
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
   void emit_vertex(uint32_t i, const Vec4& color, bool shared);
@@ -230,14 +251,16 @@ class Context {
   // The framebuffer and its frames.
   GLenum format_;
   int depth_bits_;
+  int stencil_bits_;  // 0 or 8
   void* buffer_ = nullptr;
   int width_ = 0, height_ = 0;
   std::unique_ptr<Renderer> renderer_;
   bool in_frame_ = false, first_frame_ = true;
   // A glClear of the whole framebuffer before the frame began, to begin it with.
-  bool start_clear_ = false, start_clear_color_ = false, start_clear_depth_ = false;
+  bool start_clear_ = false, start_clear_color_ = false, start_clear_depth_ = false, start_clear_stencil_ = false;
   Vec4 start_color_{0, 0, 0, 0};
   float start_depth_ = 1;
+  uint8_t start_stencil_ = 0;
   std::vector<uint8_t> colour_;  // the last frame's colour, RGBA, bottom row first
   bool direct_ = false;          // ... or in the caller's buffer (RGBA, Y_UP, its own width)
   const uint8_t* colour_rows() const { return direct_ ? static_cast<const uint8_t*>(buffer_) : colour_.data(); }
@@ -250,8 +273,13 @@ class Context {
   TransformState transform_;
   LightingState lighting_;
   RasterState raster_;
+  StencilState stencil_;
   TextureState texture_;
   ListState lists_;
+
+  // glPushAttrib's and glPushClientAttrib's stacks (attrib.cpp).
+  std::vector<AttribFrame> attrib_stack_;
+  std::vector<ClientAttribFrame> client_attrib_stack_;
 
   // The current vertex attributes.
   Vec4 color_{1, 1, 1, 1}, texcoord_{0, 0, 0, 1};

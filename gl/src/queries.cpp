@@ -18,6 +18,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   bool known = false;
   const bool enabled = is_enabled(pname, &known);
   if (known) return out = {enabled ? 1.0 : 0.0}, true;
+  if (get_stencil(pname, out)) return true;
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -32,6 +33,9 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_LIGHTS: out = {double(kMaxLights)}; return true;
     case GL_MAX_TEXTURE_SIZE: out = {double(kMaxTextureSize)}; return true;
     case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = {double(kMaxAttribDepth)}; return true;
+    case GL_ATTRIB_STACK_DEPTH: out = {double(attrib_depth())}; return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: out = {double(client_attrib_depth())}; return true;
     case GL_MAX_VIEWPORT_DIMS: out = {double(kMaxViewport), double(kMaxViewport)}; return true;
     case GL_VIEWPORT:
       out = {double(t.viewport.x), double(t.viewport.y), double(t.viewport.width), double(t.viewport.height)};
@@ -82,9 +86,10 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ALPHA_BITS: out = {format_ == GL_RGB || format_ == 0x4 ? 0.0 : 8.0}; return true;
     case GL_DEPTH_BITS: out = {depth_bits_ > 0 ? 24.0 : 0.0}; return true;
     // The framebuffer: one RGBA colour buffer (OSMesa's, single-buffered: GL_FRONT),
-    // a depth buffer; no stencil, accumulation or auxiliary buffers, no colour index,
-    // no stereo, no multisampling (all 0 until they exist, whatever the context asked for).
-    case GL_STENCIL_BITS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
+    // a depth buffer, a stencil buffer (stencil.cpp); no accumulation or auxiliary
+    // buffers, no colour index, no stereo, no multisampling (all 0 until they exist,
+    // whatever the context asked for).
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
     case GL_ACCUM_ALPHA_BITS: case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
     case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
@@ -102,10 +107,10 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
     // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
     // so a program that asks learns that they are missing (docs/gl.md): clip planes,
-    // evaluators, glPushAttrib and glPushClientAttrib, the selection name stack, pixel maps.
+    // evaluators, the selection name stack, pixel maps.
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_CLIP_PLANES: case GL_MAX_EVAL_ORDER:
-    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: case GL_MAX_NAME_STACK_DEPTH:
+    case GL_MAX_NAME_STACK_DEPTH:
     case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
@@ -142,6 +147,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_ALPHA_TEST: return raster_.alpha_test;
     case GL_FOG: return raster_.fog;
     case GL_SCISSOR_TEST: return raster_.scissor_test;
+    case GL_STENCIL_TEST: return stencil_.test;
     case GL_POLYGON_OFFSET_FILL: return raster_.offset_fill;
     case GL_POLYGON_OFFSET_LINE: return raster_.offset_line;
     case GL_POLYGON_OFFSET_POINT: return raster_.offset_point;

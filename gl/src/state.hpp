@@ -44,6 +44,7 @@ constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDept
 constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
 constexpr int kMaxListNesting = 64;
+constexpr int kMaxAttribDepth = 16;  // glPushAttrib's and glPushClientAttrib's stacks
 constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
 constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
 // Texel bytes a frame may keep alive (textures replaced or deleted while the frame that
@@ -138,6 +139,16 @@ struct RasterState {
   }
 };
 
+// --- the stencil buffer (stencil.cpp) --------------------------------------------
+struct StencilState {
+  bool test = false;  // GL_STENCIL_TEST
+  GLenum func = GL_ALWAYS;
+  GLint ref = 0;  // as given; clamped to the buffer's range where it is used and read
+  GLuint value_mask = ~0u, write_mask = ~0u;
+  GLenum fail = GL_KEEP, depth_fail = GL_KEEP, pass = GL_KEEP;
+  GLint clear = 0;  // glClearStencil
+};
+
 // --- textures (texture.cpp) -------------------------------------------------------
 struct TextureObject {
   // Levels as glTexImage2D gave them (RGBA8 after the internal format was applied);
@@ -196,6 +207,31 @@ struct ListState {
   int depth = 0;        // glCallList nesting now
   uint64_t budget = 0;  // commands the outermost glCallList may still run
   GLuint base = 0;      // glListBase
+};
+
+// --- attribute stacks (attrib.cpp): what glPushAttrib and glPushClientAttrib saved --
+struct AttribFrame {
+  GLbitfield mask = 0;
+  RasterState raster;
+  LightingState lighting;
+  StencilState stencil;
+  Box viewport;
+  float depth_near = 0, depth_far = 1;
+  GLenum matrix_mode = GL_MODELVIEW;
+  bool normalize = false, rescale_normal = false;
+  bool texture_enabled = false;
+  GLuint texture_bound = 0;
+  GLenum env_mode = GL_MODULATE;
+  Vec4 env_color;
+  Vec4 color, texcoord;
+  Vec3 normal;
+  GLuint list_base = 0;
+};
+
+struct ClientAttribFrame {
+  GLbitfield mask = 0;
+  GLint unpack_alignment = 4, pack_alignment = 4;
+  ArrayState arrays;
 };
 
 }  // namespace velocity::gl

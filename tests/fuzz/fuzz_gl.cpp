@@ -1,7 +1,7 @@
 // Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
 // arguments (GLU's quadrics and, where libvelocity-glut is built, GLUT's shapes among
 // them: they need no window). The input's bytes choose a context (1..96 pixels a side, any OSMesa
-// format, with or without depth), then up to 512 calls among ~90 GL, GLU and OSMesa
+// format, with or without depth and stencil), then up to 512 calls among ~90 GL, GLU and OSMesa
 // entry points, with enums drawn from valid and invalid values and numbers that are
 // often NaN, infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -81,7 +81,9 @@ class Bytes {
         GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, GL_SHORT, GL_INT, GL_DOUBLE, GL_BYTE,
         GL_COMPILE, GL_COMPILE_AND_EXECUTE, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY,
         GL_VIEWPORT, GL_MODELVIEW_MATRIX, GL_PROJECTION_STACK_DEPTH, GL_CURRENT_COLOR, GL_DEPTH_COMPONENT,
-        GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF};
+        GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF,
+        GL_STENCIL_TEST, GL_KEEP, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP, GL_STENCIL_INDEX,
+        GL_STENCIL_REF, GL_STENCIL_WRITEMASK, GL_STENCIL_BITS};
     if (u8() < 240) return e[u8() % (sizeof e / sizeof e[0])];
     return GLenum(u32());
   }
@@ -152,7 +154,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const GLenum formats[] = {OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR};
   const GLenum format = formats[in.below(5)];
   const int w = 1 + in.below(96), h = 1 + in.below(96);
-  OSMesaContext ctx = OSMesaCreateContextExt(format, in.below(3) ? 24 : 0, 0, 0, nullptr);
+  const int buffers = in.below(3);  // none, depth, depth and stencil
+  OSMesaContext ctx = OSMesaCreateContextExt(format, buffers ? 24 : 0, buffers == 2 ? 8 : 0, 0, nullptr);
   fuzz_check(ctx != nullptr);
   const size_t bpp = format == OSMESA_RGB || format == OSMESA_BGR ? 3 : 4;
   std::vector<uint8_t> buffer(size_t(w) * h * bpp);
@@ -177,7 +180,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const float a = in.number(), b = in.number(), c = in.number(), d = in.number();
     const float v4[4] = {a, b, c, d};
     const GLint iv4[4] = {in.integer(), in.integer(), in.integer(), in.integer()};
-    switch (in.below(64)) {
+    switch (in.below(66)) {
+      case 63: glStencilFunc(e1, iv4[0], GLuint(iv4[1])); break;
+      case 64:
+        glStencilOp(e1, e2, in.enumerant());
+        glStencilMask(GLuint(iv4[2]));
+        glClearStencil(iv4[3]);
+        break;
       case 0: glBegin(e1); break;
       case 1: glEnd(); break;
       case 2: glVertex3f(a, b, c); break;
