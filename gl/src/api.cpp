@@ -333,6 +333,12 @@ GLboolean glIsEnabled(GLenum cap) {
   return r;
 }
 void glBlendFunc(GLenum s, GLenum d) { LIST(c.blend_func(s, d)); }
+void glBlendFuncSeparate(GLenum sr, GLenum dr, GLenum sa, GLenum da) { LIST(c.blend_func_separate(sr, dr, sa, da)); }
+void glBlendEquation(GLenum mode) { LIST(c.blend_equation(mode)); }
+void glBlendColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { LIST(c.blend_color({r, g, b, a})); }
+void glBlendFuncSeparateEXT(GLenum sr, GLenum dr, GLenum sa, GLenum da) { glBlendFuncSeparate(sr, dr, sa, da); }
+void glBlendEquationEXT(GLenum mode) { glBlendEquation(mode); }
+void glBlendColorEXT(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { glBlendColor(r, g, b, a); }
 void glAlphaFunc(GLenum f, GLclampf ref) { LIST(c.alpha_func(f, ref)); }
 void glFogfv(GLenum pname, const GLfloat* v) {
   const auto p = params_f(pname, v);
@@ -545,6 +551,24 @@ void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indic
       glEnd());
 }
 
+// GL 1.4's multi-draws: one glDrawArrays / glDrawElements per entry (each recorded into
+// a list being compiled, as those are).
+void glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GLsizei drawcount) {
+  Context* c = current();
+  if (!c) return;
+  if (drawcount < 0) return c->error(GL_INVALID_VALUE);
+  if (drawcount > 0 && (!first || !count)) return;
+  for (GLsizei i = 0; i < drawcount; ++i) glDrawArrays(mode, first[i], count[i]);
+}
+
+void glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type, const GLvoid* const* indices, GLsizei drawcount) {
+  Context* c = current();
+  if (!c) return;
+  if (drawcount < 0) return c->error(GL_INVALID_VALUE);
+  if (drawcount > 0 && (!count || !indices)) return;
+  for (GLsizei i = 0; i < drawcount; ++i) glDrawElements(mode, count[i], type, indices[i]);
+}
+
 // --- display lists --------------------------------------------------------------
 
 GLuint glGenLists(GLsizei range) {
@@ -641,7 +665,8 @@ const GLubyte* glGetString(GLenum name) {
     case GL_EXTENSIONS:
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
-          "GL_SGIS_texture_edge_clamp ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
+          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

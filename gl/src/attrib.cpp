@@ -70,6 +70,8 @@ void Context::pop_attrib() {
   if (m & GL_COLOR_BUFFER_BIT) {
     r.alpha_test = s.alpha_test, r.alpha_func = s.alpha_func, r.alpha_ref = s.alpha_ref;
     r.blend = s.blend, r.blend_src = s.blend_src, r.blend_dst = s.blend_dst;
+    r.blend_src_alpha = s.blend_src_alpha, r.blend_dst_alpha = s.blend_dst_alpha;
+    r.blend_equation = s.blend_equation, r.blend_color = s.blend_color;
     for (int i = 0; i < 4; ++i) r.color_mask[i] = s.color_mask[i];
     r.clear_color = s.clear_color;
   }

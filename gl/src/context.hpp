@@ -26,6 +26,7 @@
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
 //   attrib.cpp        glPushAttrib, glPopAttrib, glPushClientAttrib, glPopClientAttrib
+//   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
 //                     glClearStencil, its queries and its part of PixelState
 #pragma once
@@ -120,6 +121,10 @@ class Context {
   void depth_mask(bool on);
   void color_mask(bool r, bool g, bool b, bool a);
   void blend_func(GLenum s, GLenum d);
+  void blend_func_separate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);  // blend.cpp
+  void blend_equation(GLenum mode);
+  void blend_color(Vec4 c);
+  bool get_blend(GLenum pname, std::vector<double>& out, int& kind) const;
   void alpha_func(GLenum f, float ref);
   void fog(GLenum pname, const float* v);
   void hint(GLenum target, GLenum mode);

@@ -27,6 +27,10 @@ BlendFactor blend_factor(GLenum f) {
     case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::OneMinusSrcAlpha;
     case GL_DST_ALPHA: return BlendFactor::DstAlpha;
     case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::OneMinusDstAlpha;
+    case GL_CONSTANT_COLOR: return BlendFactor::ConstantColor;
+    case GL_ONE_MINUS_CONSTANT_COLOR: return BlendFactor::OneMinusConstantColor;
+    case GL_CONSTANT_ALPHA: return BlendFactor::ConstantAlpha;
+    case GL_ONE_MINUS_CONSTANT_ALPHA: return BlendFactor::OneMinusConstantAlpha;
     default: return BlendFactor::SrcAlphaSaturate;
   }
 }
@@ -206,8 +210,14 @@ PixelState Context::pixel_state(bool offset) {
   s.polygon_offset = offset;
   s.offset_factor = raster_.offset_factor, s.offset_units = raster_.offset_units;
   s.blend = raster_.blend;
-  s.blend_src_rgb = s.blend_src_alpha = blend_factor(raster_.blend_src);
-  s.blend_dst_rgb = s.blend_dst_alpha = blend_factor(raster_.blend_dst);
+  s.blend_src_rgb = blend_factor(raster_.blend_src), s.blend_src_alpha = blend_factor(raster_.blend_src_alpha);
+  s.blend_dst_rgb = blend_factor(raster_.blend_dst), s.blend_dst_alpha = blend_factor(raster_.blend_dst_alpha);
+  s.blend_op = raster_.blend_equation == GL_FUNC_SUBTRACT           ? BlendOp::Subtract
+               : raster_.blend_equation == GL_FUNC_REVERSE_SUBTRACT ? BlendOp::ReverseSubtract
+               : raster_.blend_equation == GL_MIN                   ? BlendOp::Min
+               : raster_.blend_equation == GL_MAX                   ? BlendOp::Max
+                                                                    : BlendOp::Add;
+  s.blend_color = raster_.blend_color;
   s.color_mask = raster_.color_mask_bits();
   stencil_pixel_state(s);
   return s;

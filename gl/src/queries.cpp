@@ -19,6 +19,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   const bool enabled = is_enabled(pname, &known);
   if (known) return out = {enabled ? 1.0 : 0.0}, true;
   if (get_stencil(pname, out)) return true;
+  if (get_blend(pname, out, kind)) return true;
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -51,8 +52,6 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_COLOR_WRITEMASK:
       out = {double(r.color_mask[0]), double(r.color_mask[1]), double(r.color_mask[2]), double(r.color_mask[3])};
       return true;
-    case GL_BLEND_SRC: out = {double(raster_.blend_src)}; return true;
-    case GL_BLEND_DST: out = {double(raster_.blend_dst)}; return true;
     case GL_ALPHA_TEST_FUNC: out = {double(raster_.alpha_func)}; return true;
     case GL_ALPHA_TEST_REF: out = {raster_.alpha_ref}, kind = 1; return true;
     case GL_FOG_MODE: out = {double(raster_.fog_mode)}; return true;

@@ -15,6 +15,9 @@ bool is_blend_factor(GLenum f, bool /*source*/) {
     case GL_ONE_MINUS_DST_COLOR:
       return true;
     case GL_SRC_ALPHA_SATURATE: return true;  // also as a destination factor (Mesa, GL 3.3)
+    case GL_CONSTANT_COLOR: case GL_ONE_MINUS_CONSTANT_COLOR: case GL_CONSTANT_ALPHA:
+    case GL_ONE_MINUS_CONSTANT_ALPHA:
+      return true;  // GL 1.4's constant colour (glBlendColor, blend.cpp)
     default: return false;
   }
 }
@@ -125,7 +128,7 @@ void Context::color_mask(bool r, bool g, bool b, bool a) {
 void Context::blend_func(GLenum s, GLenum d) {
   if (in_begin_error()) return;
   if (!is_blend_factor(s, true) || !is_blend_factor(d, false)) return error(GL_INVALID_ENUM);
-  raster_.blend_src = s, raster_.blend_dst = d;
+  raster_.blend_src = raster_.blend_src_alpha = s, raster_.blend_dst = raster_.blend_dst_alpha = d;
   changed();
 }
 

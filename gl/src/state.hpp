@@ -119,7 +119,9 @@ struct RasterState {
   GLenum depth_func = GL_LESS;
   bool color_mask[4] = {true, true, true, true};
   bool blend = false;
-  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // (RGB; glBlendFunc sets alpha's too)
+  GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO, blend_equation = GL_FUNC_ADD;  // blend.cpp
+  Vec4 blend_color{0, 0, 0, 0};
   bool alpha_test = false;
   GLenum alpha_func = GL_ALWAYS;
   float alpha_ref = 0;
