@@ -83,7 +83,8 @@ class Bytes {
         GL_VIEWPORT, GL_MODELVIEW_MATRIX, GL_PROJECTION_STACK_DEPTH, GL_CURRENT_COLOR, GL_DEPTH_COMPONENT,
         GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF,
         GL_STENCIL_TEST, GL_KEEP, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP, GL_STENCIL_INDEX,
-        GL_STENCIL_REF, GL_STENCIL_WRITEMASK, GL_STENCIL_BITS};
+        GL_STENCIL_REF, GL_STENCIL_WRITEMASK, GL_STENCIL_BITS, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA,
+        GL_FUNC_SUBTRACT, GL_MIN, GL_MAX, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_ATTRIB_STACK_DEPTH};
     if (u8() < 240) return e[u8() % (sizeof e / sizeof e[0])];
     return GLenum(u32());
   }
@@ -180,13 +181,32 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const float a = in.number(), b = in.number(), c = in.number(), d = in.number();
     const float v4[4] = {a, b, c, d};
     const GLint iv4[4] = {in.integer(), in.integer(), in.integer(), in.integer()};
-    switch (in.below(66)) {
+    switch (in.below(67)) {
       case 63: glStencilFunc(e1, iv4[0], GLuint(iv4[1])); break;
       case 64:
-        glStencilOp(e1, e2, in.enumerant());
-        glStencilMask(GLuint(iv4[2]));
-        glClearStencil(iv4[3]);
+        switch (in.below(4)) {
+          case 0:
+            glStencilOp(e1, e2, in.enumerant());
+            glStencilMask(GLuint(iv4[2]));
+            glClearStencil(iv4[3]);
+            break;
+          case 1: (in.u8() & 1 ? glPushAttrib(GLbitfield(iv4[0])) : glPopAttrib()); break;
+          case 2: (in.u8() & 1 ? glPushClientAttrib(GLbitfield(iv4[0])) : glPopClientAttrib()); break;
+          default:
+            glBlendColor(a, b, c, d);
+            glBlendEquation(e1);
+            glBlendFuncSeparate(e2, in.enumerant(), in.enumerant(), in.enumerant());
+            break;
+        }
         break;
+      case 65: {
+        // Ranges inside the arrays' 56 elements, as case 50's.
+        GLint firsts[3];
+        GLsizei counts[3];
+        for (int k = 0; k < 3; ++k) firsts[k] = in.below(56), counts[k] = in.below(57 - firsts[k]);
+        glMultiDrawArrays(e1, firsts, counts, in.below(5) - 1);
+        break;
+      }
       case 0: glBegin(e1); break;
       case 1: glEnd(); break;
       case 2: glVertex3f(a, b, c); break;
