@@ -315,6 +315,16 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
 void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
 void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
 void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
+GLint glRenderMode(GLenum mode) {  // never compiled
+  GLint r = 0;
+  NOW(r = c.render_mode(mode));
+  return r;
+}
+void glSelectBuffer(GLsizei size, GLuint* buffer) { NOW(c.select_buffer(size, buffer)); }  // never compiled
+void glInitNames(void) { LIST(c.init_names()); }
+void glPushName(GLuint name) { LIST(c.push_name(name)); }
+void glPopName(void) { LIST(c.pop_name()); }
+void glLoadName(GLuint name) { LIST(c.load_name(name)); }
 void glPopAttrib(void) { LIST(c.pop_attrib()); }
 void glPushClientAttrib(GLbitfield mask) { NOW(c.push_client_attrib(mask)); }  // client state: never compiled
 void glPopClientAttrib(void) { NOW(c.pop_client_attrib()); }

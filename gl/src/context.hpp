@@ -26,6 +26,7 @@
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
 //   attrib.cpp        glPushAttrib, glPopAttrib, glPushClientAttrib, glPopClientAttrib
+//   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
 //   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
 //                     glClearStencil, its queries and its part of PixelState
@@ -141,6 +142,16 @@ class Context {
   void stencil_mask(GLuint mask);
   void clear_stencil(GLint s);
   int stencil_bits() const { return stencil_bits_; }
+
+  // --- selection (select.cpp)
+  GLint render_mode(GLenum mode);
+  void select_buffer(GLsizei size, GLuint* buffer);
+  void init_names();
+  void push_name(GLuint name);
+  void pop_name();
+  void load_name(GLuint name);
+  bool selecting() const { return select_.mode == GL_SELECT; }
+  const SelectState& selection() const { return select_; }
 
   // --- attribute stacks (attrib.cpp)
   void push_attrib(GLbitfield mask);
@@ -279,6 +290,9 @@ class Context {
   LightingState lighting_;
   RasterState raster_;
   StencilState stencil_;
+  SelectState select_;
+  void select_hit(const uint32_t* idx, int n, bool closed);  // select.cpp
+  void write_hit_record();
   TextureState texture_;
   ListState lists_;
 

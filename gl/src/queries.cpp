@@ -35,6 +35,10 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_TEXTURE_SIZE: out = {double(kMaxTextureSize)}; return true;
     case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = {double(kMaxAttribDepth)}; return true;
+    case GL_MAX_NAME_STACK_DEPTH: out = {double(kMaxNameDepth)}; return true;
+    case GL_NAME_STACK_DEPTH: out = {double(select_.names.size())}; return true;
+    case GL_RENDER_MODE: out = {double(select_.mode)}; return true;
+    case GL_SELECTION_BUFFER_SIZE: out = {double(select_.size)}; return true;
     case GL_ATTRIB_STACK_DEPTH: out = {double(attrib_depth())}; return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: out = {double(client_attrib_depth())}; return true;
     case GL_MAX_VIEWPORT_DIMS: out = {double(kMaxViewport), double(kMaxViewport)}; return true;
@@ -109,7 +113,6 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     // evaluators, the selection name stack, pixel maps.
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_CLIP_PLANES: case GL_MAX_EVAL_ORDER:
-    case GL_MAX_NAME_STACK_DEPTH:
     case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:

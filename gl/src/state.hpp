@@ -44,7 +44,8 @@ constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDept
 constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
 constexpr int kMaxListNesting = 64;
-constexpr int kMaxAttribDepth = 16;  // glPushAttrib's and glPushClientAttrib's stacks
+constexpr int kMaxAttribDepth = 16;
+constexpr int kMaxNameDepth = 64;  // the selection name stack  // glPushAttrib's and glPushClientAttrib's stacks
 constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
 constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
 // Texel bytes a frame may keep alive (textures replaced or deleted while the frame that
@@ -209,6 +210,17 @@ struct ListState {
   int depth = 0;        // glCallList nesting now
   uint64_t budget = 0;  // commands the outermost glCallList may still run
   GLuint base = 0;      // glListBase
+};
+
+// --- selection (select.cpp): glRenderMode(GL_SELECT), the name stack, hit records --
+struct SelectState {
+  GLenum mode = GL_RENDER;
+  GLuint* buffer = nullptr;  // glSelectBuffer's
+  size_t size = 0, used = 0, hits = 0;
+  bool overflow = false;
+  std::vector<GLuint> names;
+  bool hit = false;  // since the last record
+  float min_z = 1, max_z = 0;
 };
 
 // --- attribute stacks (attrib.cpp): what glPushAttrib and glPushClientAttrib saved --

@@ -194,6 +194,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
   // (Clip-space y is negated for the renderer: GL's counter-clockwise is clockwise here.)
   const bool front = (area <= 0) == (raster_.front_face == GL_CCW);
   if (raster_.cull && (raster_.cull_mode == GL_FRONT_AND_BACK || (raster_.cull_mode == GL_FRONT) == front)) return;
+  if (selecting()) return select_hit(idx, n, true);  // (select.cpp: hits, nothing drawn)
   const bool back_colors = lighting_.enabled && lighting_.two_side && !front;
   const bool flat = lighting_.shade_model == GL_FLAT;
   const Vertex& pv = prim_[idx[provoking]];
@@ -220,6 +221,10 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
 }
 
 void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
+  if (selecting()) {
+    const uint32_t ab[2] = {a, b};
+    return select_hit(ab, 2, false);
+  }
   target(PrimitiveKind::Lines, false);
   const bool flat = lighting_.shade_model == GL_FLAT;
   emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat);
@@ -227,6 +232,7 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
 }
 
 void Context::point_vertex(uint32_t a) {
+  if (selecting()) return select_hit(&a, 1, false);
   target(PrimitiveKind::Points, false);
   emit_vertex(a, prim_[a].front, true);
 }
