@@ -108,6 +108,10 @@ void record_array_element(Context& c, GLint i) {
     const Vec4 t = c.arrays.texcoord.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.set_texcoord(t); });
   }
+  if (c.arrays.edge_enabled && c.arrays.edge_pointer) {
+    const bool e = c.arrays.edge(i);
+    compiled([=](Context& k) { k.set_edge_flag(e); });
+  }
   if (c.arrays.vertex.enabled && c.arrays.vertex.pointer) {
     const Vec4 v = c.arrays.vertex.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.vertex(v); });
@@ -315,6 +319,14 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
 void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
 void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
 void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
+void glEdgeFlag(GLboolean flag) { LIST(c.set_edge_flag(flag != 0)); }  // (allowed between glBegin and glEnd)
+void glEdgeFlagv(const GLboolean* flag) {
+  if (flag) glEdgeFlag(*flag);
+}
+void glEdgeFlagPointer(GLsizei stride, const GLvoid* pointer) {
+  NOW(if (stride < 0) return c.error(GL_INVALID_VALUE);
+      c.arrays.edge_stride = stride, c.arrays.edge_pointer = static_cast<const GLboolean*>(pointer));
+}
 GLint glRenderMode(GLenum mode) {  // never compiled
   GLint r = 0;
   NOW(r = c.render_mode(mode));
@@ -568,6 +580,9 @@ void glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GL
   if (!c) return;
   if (drawcount < 0) return c->error(GL_INVALID_VALUE);
   if (drawcount > 0 && (!first || !count)) return;
+  if (mode > GL_POLYGON) return c->error(GL_INVALID_ENUM);
+  for (GLsizei i = 0; i < drawcount; ++i)  // a bad entry draws none of them
+    if (count[i] < 0) return c->error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < drawcount; ++i) glDrawArrays(mode, first[i], count[i]);
 }
 
@@ -576,6 +591,9 @@ void glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type, const G
   if (!c) return;
   if (drawcount < 0) return c->error(GL_INVALID_VALUE);
   if (drawcount > 0 && (!count || !indices)) return;
+  if (mode > GL_POLYGON) return c->error(GL_INVALID_ENUM);
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return c->error(GL_INVALID_VALUE);
   for (GLsizei i = 0; i < drawcount; ++i) glDrawElements(mode, count[i], type, indices[i]);
 }
 

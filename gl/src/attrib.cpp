@@ -20,7 +20,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.normalize = transform_.normalize, f.rescale_normal = transform_.rescale_normal;
   f.texture_enabled = texture_.enabled, f.texture_bound = texture_.bound;
   f.env_mode = texture_.env_mode, f.env_color = texture_.env_color;
-  f.color = color_, f.texcoord = texcoord_, f.normal = normal_;
+  f.color = color_, f.texcoord = texcoord_, f.normal = normal_, f.edge_flag = edge_flag_;
   f.list_base = lists_.base;
   attrib_stack_.push_back(std::move(f));
 }
@@ -33,7 +33,7 @@ void Context::pop_attrib() {
   const GLbitfield m = f.mask;
   RasterState& r = raster_;
   const RasterState& s = f.raster;
-  if (m & GL_CURRENT_BIT) color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal;
+  if (m & GL_CURRENT_BIT) color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
   if (m & GL_LINE_BIT) r.line_width = s.line_width;
   if (m & GL_POLYGON_BIT) {

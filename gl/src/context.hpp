@@ -51,6 +51,7 @@ struct Vertex {
   Vec4 front, back;  // lit colours (back only with two-sided lighting)
   Vec4 tex;
   float fog = 0;
+  bool edge = true;  // glEdgeFlag: does a polygon's boundary edge start here?
 };
 
 class Context {
@@ -95,6 +96,8 @@ class Context {
   void set_color(Vec4 c);  // (lighting.cpp: it feeds GL_COLOR_MATERIAL)
   void set_normal(Vec3 n) { normal_ = n; }
   void set_texcoord(Vec4 t) { texcoord_ = t; }
+  void set_edge_flag(bool e) { edge_flag_ = e; }
+  bool edge_flag() const { return edge_flag_; }
   void rect(float x1, float y1, float x2, float y2);
 
   // --- transform (transform.cpp)
@@ -303,6 +306,7 @@ class Context {
   // The current vertex attributes.
   Vec4 color_{1, 1, 1, 1}, texcoord_{0, 0, 0, 1};
   Vec3 normal_{0, 0, 1};
+  bool edge_flag_ = true;
 
   // The primitive being assembled.
   bool in_begin_ = false;

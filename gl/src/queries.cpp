@@ -119,6 +119,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT:
       out = {double(raster_.hints[pname - GL_PERSPECTIVE_CORRECTION_HINT])};
       return true;
+    case GL_EDGE_FLAG: out = {edge_flag() ? 1.0 : 0.0}; return true;
+    case GL_EDGE_FLAG_ARRAY_STRIDE: out = {double(arrays.edge_stride)}; return true;
     case GL_VERTEX_ARRAY_SIZE: out = {double(arrays.vertex.size)}; return true;
     case GL_VERTEX_ARRAY_TYPE: out = {double(arrays.vertex.type)}; return true;
     case GL_VERTEX_ARRAY_STRIDE: out = {double(arrays.vertex.stride)}; return true;
@@ -157,6 +159,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_NORMAL_ARRAY: return arrays.normal.enabled;
     case GL_COLOR_ARRAY: return arrays.color.enabled;
     case GL_TEXTURE_COORD_ARRAY: return arrays.texcoord.enabled;
+    case GL_EDGE_FLAG_ARRAY: return arrays.edge_enabled;
     case GL_DITHER: return true;
     default: *known = false; return false;
   }

@@ -195,6 +195,13 @@ struct ClientArray {
 
 struct ArrayState {
   ClientArray vertex, normal, color, texcoord;
+  // glEdgeFlagPointer: GLbooleans `stride` bytes apart (0: packed).
+  bool edge_enabled = false;
+  GLsizei edge_stride = 0;
+  const GLboolean* edge_pointer = nullptr;
+  bool edge(GLint i) const {
+    return edge_pointer[size_t(i) * size_t(edge_stride ? edge_stride : 1)] != 0;
+  }
 };
 
 // --- display lists (lists.cpp) ----------------------------------------------------
@@ -239,6 +246,7 @@ struct AttribFrame {
   Vec4 env_color;
   Vec4 color, texcoord;
   Vec3 normal;
+  bool edge_flag = true;
   GLuint list_base = 0;
 };
 

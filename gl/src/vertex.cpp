@@ -69,6 +69,7 @@ void Context::vertex(Vec4 v) {
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
   Vertex out;
   out.clip = transform_.mvp * v;
+  out.edge = edge_flag_;
   if (lighting_.enabled || raster_.fog) {
     const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
     if (lighting_.enabled) {
@@ -208,15 +209,22 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
       emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared), emit_vertex(c, color(c), shared);
     };
     for (int k = 1; k + 1 < n; ++k) tri(idx[0], idx[k], idx[k + 1]);  // a fan from the first vertex
-  } else if (mode == GL_LINE) {
-    target(PrimitiveKind::Lines, raster_.offset_line);
-    for (int k = 0; k < n; ++k) {
-      const uint32_t a = idx[k], b = idx[(k + 1) % n];
-      emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
-    }
   } else {
-    target(PrimitiveKind::Points, raster_.offset_point);
-    for (int k = 0; k < n; ++k) emit_vertex(idx[k], color(idx[k]), shared);
+    // Edge flags mark which boundary edges (and their first vertices) are drawn, for
+    // independent triangles, quads and polygons; strips and fans draw every edge.
+    const bool flags = mode_ == GL_TRIANGLES || mode_ == GL_QUADS || mode_ == GL_POLYGON;
+    if (mode == GL_LINE) {
+      target(PrimitiveKind::Lines, raster_.offset_line);
+      for (int k = 0; k < n; ++k) {
+        const uint32_t a = idx[k], b = idx[(k + 1) % n];
+        if (flags && !prim_[a].edge) continue;
+        emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
+      }
+    } else {
+      target(PrimitiveKind::Points, raster_.offset_point);
+      for (int k = 0; k < n; ++k)
+        if (!flags || prim_[idx[k]].edge) emit_vertex(idx[k], color(idx[k]), shared);
+    }
   }
 }
 

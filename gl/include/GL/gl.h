@@ -382,6 +382,11 @@ typedef double GLclampd;
 #define GL_BLEND_DST_ALPHA 0x80CA
 #define GL_BLEND_SRC_ALPHA 0x80CB
 
+/* Edge flags (glEdgeFlag, glEdgeFlagPointer) */
+#define GL_EDGE_FLAG 0x0B43
+#define GL_EDGE_FLAG_ARRAY 0x8079
+#define GL_EDGE_FLAG_ARRAY_STRIDE 0x808C
+
 /* Selection (glRenderMode, glSelectBuffer, the name stack) */
 #define GL_RENDER 0x1C00
 #define GL_FEEDBACK 0x1C01
@@ -556,6 +561,9 @@ GLAPI void GLAPIENTRY glClear(GLbitfield mask);
 GLAPI void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 GLAPI void GLAPIENTRY glClearDepth(GLclampd depth);
 GLAPI void GLAPIENTRY glClearStencil(GLint s);
+GLAPI void GLAPIENTRY glEdgeFlag(GLboolean flag);
+GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
+GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *pointer);
 GLAPI GLint GLAPIENTRY glRenderMode(GLenum mode);
 GLAPI void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint *buffer);
 GLAPI void GLAPIENTRY glInitNames(void);
