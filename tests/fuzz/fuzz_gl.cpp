@@ -181,10 +181,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const float a = in.number(), b = in.number(), c = in.number(), d = in.number();
     const float v4[4] = {a, b, c, d};
     const GLint iv4[4] = {in.integer(), in.integer(), in.integer(), in.integer()};
-    switch (in.below(67)) {
+    switch (in.below(68)) {
       case 63: glStencilFunc(e1, iv4[0], GLuint(iv4[1])); break;
       case 64:
-        switch (in.below(4)) {
+        switch (in.below(5)) {
           case 0:
             glStencilOp(e1, e2, in.enumerant());
             glStencilMask(GLuint(iv4[2]));
@@ -192,12 +192,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             break;
           case 1: (in.u8() & 1 ? glPushAttrib(GLbitfield(iv4[0])) : glPopAttrib()); break;
           case 2: (in.u8() & 1 ? glPushClientAttrib(GLbitfield(iv4[0])) : glPopClientAttrib()); break;
+          case 3: {
+            // Edge flags, from glEdgeFlag and from an array inside `attrib`'s bytes.
+            glEdgeFlag(GLboolean(in.u8() & 1));
+            glEdgeFlagPointer(GLsizei(in.below(3)) - 1, attrib.data());
+            (in.u8() & 1 ? glEnableClientState : glDisableClientState)(GL_EDGE_FLAG_ARRAY);
+            break;
+          }
           default:
             glBlendColor(a, b, c, d);
             glBlendEquation(e1);
             glBlendFuncSeparate(e2, in.enumerant(), in.enumerant(), in.enumerant());
             break;
         }
+        break;
+      case 66:
+        // Selection: the buffer is `out`'s memory; names and modes from the input.
+        if (in.u8() & 1) glSelectBuffer(in.below(64) - 1, reinterpret_cast<GLuint*>(out.data()));
+        glRenderMode(in.u8() & 1 ? GL_SELECT : e1);
+        (in.u8() & 1 ? glPushName(GLuint(iv4[0])) : in.u8() & 1 ? glPopName() : glLoadName(GLuint(iv4[1])));
+        if (in.u8() & 1) glInitNames();
         break;
       case 65: {
         // Ranges inside the arrays' 56 elements, as case 50's.
