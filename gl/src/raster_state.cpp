@@ -44,6 +44,11 @@ void Context::enable(GLenum cap, bool on) {
     case GL_FOG: raster_.fog = on; break;
     case GL_SCISSOR_TEST: raster_.scissor_test = on; break;
     case GL_STENCIL_TEST: stencil_.test = on; break;
+    // The vertex arrays' client state through glEnable, as Mesa's compatibility
+    // profile (and old programs) allow.
+    case GL_VERTEX_ARRAY: case GL_NORMAL_ARRAY: case GL_COLOR_ARRAY: case GL_TEXTURE_COORD_ARRAY:
+    case GL_EDGE_FLAG_ARRAY:
+      return client_state(cap, on);
     case GL_POLYGON_OFFSET_FILL: raster_.offset_fill = on; return;
     case GL_POLYGON_OFFSET_LINE: raster_.offset_line = on; return;
     case GL_POLYGON_OFFSET_POINT: raster_.offset_point = on; return;
