@@ -482,6 +482,19 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
       compiled([=](Context& k) { k.tex_sub_image(target, level, x, y, w, h, *data); }));
 }
 
+void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
+  LIST(c.copy_tex_image(target, level, internal, x, y, w, h, border));
+}
+void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h) {
+  LIST(c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
+}
+void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* params) {
+  NOW(GLint v = 0; if (c.tex_level_parameter(target, level, pname, &v) && params) *params = v);
+}
+void glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat* params) {
+  NOW(GLint v = 0; if (c.tex_level_parameter(target, level, pname, &v) && params) *params = GLfloat(v));
+}
+
 void glTexParameterfv(GLenum target, GLenum pname, const GLfloat* v) {
   const auto p = params_f(pname, v);
   LIST(c.tex_parameter(target, pname, p.data()));

@@ -26,6 +26,7 @@
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
 //   attrib.cpp        glPushAttrib, glPopAttrib, glPushClientAttrib, glPopClientAttrib
+//   copy_texture.cpp  glCopyTexImage2D, glCopyTexSubImage2D, glGetTexLevelParameter
 //   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
 //   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
@@ -190,6 +191,13 @@ class Context {
   static GLenum base_format(GLint internal);
   GLint unpack_alignment = 4, pack_alignment = 4;  // glPixelStorei
 
+  // --- copies from the framebuffer, level queries (copy_texture.cpp)
+  void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);
+  void copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
+                          GLsizei h);
+  // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
+  bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
+
   // --- vertex arrays (arrays.cpp)
   ArrayState arrays;
   void client_state(GLenum cap, bool on);
@@ -264,6 +272,7 @@ class Context {
   void update_derived();  // transform.cpp
   std::vector<Mat4>& stack();  // the one glMatrixMode selects
   void apply_color_material();  // lighting.cpp
+  void store_material(GLenum face, GLenum pname, const float* v);
   TextureObject* bound_texture();  // texture.cpp
   const Texture* texture_for_draw(TextureObject& t);
 
@@ -295,6 +304,7 @@ class Context {
   StencilState stencil_;
   SelectState select_;
   void select_hit(const uint32_t* idx, int n, bool closed);  // select.cpp
+  std::vector<uint32_t> read_colour_rect(GLint x, GLint y, GLsizei w, GLsizei h);  // copy_texture.cpp
   void write_hit_record();
   TextureState texture_;
   ListState lists_;

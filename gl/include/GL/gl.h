@@ -422,6 +422,15 @@ typedef double GLclampd;
 #define GL_GENERATE_MIPMAP 0x8191
 #define GL_TEXTURE_WIDTH 0x1000
 #define GL_TEXTURE_HEIGHT 0x1001
+#define GL_TEXTURE_INTERNAL_FORMAT 0x1003
+#define GL_TEXTURE_COMPONENTS 0x1003
+#define GL_TEXTURE_BORDER 0x1005
+#define GL_TEXTURE_RED_SIZE 0x805C
+#define GL_TEXTURE_GREEN_SIZE 0x805D
+#define GL_TEXTURE_BLUE_SIZE 0x805E
+#define GL_TEXTURE_ALPHA_SIZE 0x805F
+#define GL_TEXTURE_LUMINANCE_SIZE 0x8060
+#define GL_TEXTURE_INTENSITY_SIZE 0x8061
 
 GLAPI void GLAPIENTRY glBegin(GLenum mode);
 GLAPI void GLAPIENTRY glEnd(void);
@@ -561,6 +570,12 @@ GLAPI void GLAPIENTRY glClear(GLbitfield mask);
 GLAPI void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 GLAPI void GLAPIENTRY glClearDepth(GLclampd depth);
 GLAPI void GLAPIENTRY glClearStencil(GLint s);
+GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
+                                       GLsizei height, GLint border);
+GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
+                                          GLsizei width, GLsizei height);
+GLAPI void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
 GLAPI void GLAPIENTRY glEdgeFlag(GLboolean flag);
 GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
 GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *pointer);

@@ -223,5 +223,46 @@ int main(int argc, char** argv) {
     }
   }
   glDeleteTextures(4, tex);
+
+  /* glCopyTexImage2D and glCopyTexSubImage2D from the colour buffer (rectangles inside
+   * it), drawn back magnified; glGetTexLevelParameteriv of the copy. */
+  {
+    static const GLenum pnames[6] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_RED_SIZE,
+                                     GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE};
+    GLuint copy;
+    GLint v;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_TEXTURE_2D);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0), glVertex2f(-1, -1);
+    glColor3f(0, 1, 0), glVertex2f(-0.5f, -1);
+    glColor3f(0, 0, 1), glVertex2f(-0.75f, -0.5f);
+    glEnd();
+    glGenTextures(1, &copy);
+    glBindTexture(GL_TEXTURE_2D, copy);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 32, 32, 0);
+    conf_value("copy_error", glGetError());
+    for (i = 0; i < 6; ++i) {
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, pnames[i], &v);
+      conf_value("copy_level_parameter", v);
+    }
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 8, 8, 4, 2, 16, 8);
+    conf_value("copy_sub_error", glGetError());
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 20, 20, 0, 0, 16, 16); /* beyond the texture */
+    conf_value("copy_sub_outside", glGetError());
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    textured_quad(-0.2f, -0.9f, 0.9f, 0.9f, 1, 1);
+    glDisable(GL_TEXTURE_2D);
+    conf_frame("copy");
+    glDeleteTextures(1, &copy);
+  }
   return conf_end();
 }
