@@ -488,6 +488,9 @@ void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLin
 void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h) {
   LIST(c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
 }
+void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid* pixels) {
+  NOW(c.get_tex_image(target, level, format, type, pixels));
+}
 void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* params) {
   NOW(GLint v = 0; if (c.tex_level_parameter(target, level, pname, &v) && params) *params = v);
 }

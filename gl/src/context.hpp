@@ -26,7 +26,8 @@
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
 //   attrib.cpp        glPushAttrib, glPopAttrib, glPushClientAttrib, glPopClientAttrib
-//   copy_texture.cpp  glCopyTexImage2D, glCopyTexSubImage2D, glGetTexLevelParameter
+//   copy_texture.cpp  glCopyTexImage2D, glCopyTexSubImage2D, glGetTexLevelParameter,
+//                     glGetTexImage
 //   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
 //   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
@@ -197,6 +198,7 @@ class Context {
                           GLsizei h);
   // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
   bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
+  void get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels);
 
   // --- vertex arrays (arrays.cpp)
   ArrayState arrays;

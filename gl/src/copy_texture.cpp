@@ -2,7 +2,10 @@
 // colour buffer (GL's rows, bottom first: the texture's first row is the rectangle's
 // bottom row) becomes a texture image, through tex_image / tex_sub_image (texture.cpp).
 // Pixels outside the framebuffer are undefined in GL; here they read as opaque black.
-// glGetTexLevelParameter reads a level's size and format back.
+// glGetTexLevelParameter and glGetTexImage read a level's size, format and texels back.
+#include <algorithm>
+#include <cstring>
+
 #include "context.hpp"
 
 namespace velocity::gl {
@@ -73,6 +76,53 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
     case GL_TEXTURE_INTENSITY_SIZE: *out = bits(base == GL_INTENSITY); return true;
     default: return error(GL_INVALID_ENUM), false;
   }
+}
+
+void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE);
+  int comps;
+  switch (format) {
+    case GL_RGBA: case GL_BGRA: comps = 4; break;
+    case GL_RGB: case GL_BGR: comps = 3; break;
+    case GL_LUMINANCE_ALPHA: comps = 2; break;
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: comps = 1; break;
+    default: return error(GL_INVALID_ENUM);
+  }
+  if (type != GL_UNSIGNED_BYTE && type != GL_FLOAT) return error(GL_INVALID_ENUM);
+  const TextureObject& t = *bound_texture();
+  const Texture::Level& l = t.levels[size_t(level)];
+  if (!pixels || l.width == 0) return;
+  const size_t tsize = type == GL_FLOAT ? 4 : 1, align = size_t(std::max(pack_alignment, 1));
+  const size_t row_bytes = (size_t(l.width) * size_t(comps) * tsize + align - 1) / align * align;
+  const GLenum base = t.internal_format;
+  for (int y = 0; y < l.height; ++y)
+    for (int x = 0; x < l.width; ++x) {
+      const uint32_t p = l.texels[size_t(y) * size_t(l.width) + size_t(x)];
+      float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
+      // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
+      // intensity as R), then the format's.
+      if (base == GL_LUMINANCE || base == GL_INTENSITY) g = b = 0, a = 1;
+      if (base == GL_LUMINANCE_ALPHA) g = b = 0;
+      if (base == GL_RGB) a = 1;
+      if (base == GL_ALPHA) r = g = b = 0;
+      float c[4] = {r, g, b, a};
+      switch (format) {
+        case GL_BGRA: c[0] = b, c[2] = r; break;
+        case GL_BGR: c[0] = b, c[2] = r; break;
+        case GL_LUMINANCE_ALPHA: c[1] = a; break;
+        case GL_GREEN: c[0] = g; break;
+        case GL_BLUE: c[0] = b; break;
+        case GL_ALPHA: c[0] = a; break;
+        default: break;  // RGBA, RGB, RED, LUMINANCE: as they are
+      }
+      uint8_t* dst = static_cast<uint8_t*>(pixels) + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
+      for (int k = 0; k < comps; ++k) {
+        if (type == GL_FLOAT) std::memcpy(dst + 4 * k, &c[k], 4);
+        else dst[k] = uint8_t(c[k] * 255.0f + 0.5f);
+      }
+    }
 }
 
 }  // namespace velocity::gl

@@ -574,6 +574,7 @@ GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum intern
                                        GLsizei height, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
                                           GLsizei width, GLsizei height);
+GLAPI void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels);
 GLAPI void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
 GLAPI void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
 GLAPI void GLAPIENTRY glEdgeFlag(GLboolean flag);

@@ -255,6 +255,22 @@ int main(int argc, char** argv) {
     }
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 8, 8, 4, 2, 16, 8);
     conf_value("copy_sub_error", glGetError());
+    {
+      /* glGetTexImage of the copy: RGBA bytes, and LUMINANCE floats (its red). */
+      static GLubyte texels[32 * 32 * 4];
+      static GLfloat lum[32 * 32];
+      unsigned long sum = 0;
+      int k;
+      glPixelStorei(GL_PACK_ALIGNMENT, 1);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      for (k = 0; k < 32 * 32 * 4; ++k) sum = (sum * 31 + texels[k]) % 1000003;
+      conf_value("get_tex_image_sum", (double)sum);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_FLOAT, lum);
+      conf_value("get_tex_image_lum", (double)lum[3 * 32 + 5]);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, 0x9999, texels);
+      conf_value("get_tex_image_bad_type", glGetError());
+      glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    }
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 20, 20, 0, 0, 16, 16); /* beyond the texture */
     conf_value("copy_sub_outside", glGetError());
     glEnable(GL_TEXTURE_2D);
