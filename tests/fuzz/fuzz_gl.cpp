@@ -1,7 +1,7 @@
 // Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
 // arguments (GLU's quadrics and, where libvelocity-glut is built, GLUT's shapes among
 // them: they need no window). The input's bytes choose a context (1..96 pixels a side, any OSMesa
-// format, with or without depth and stencil), then up to 512 calls among ~90 GL, GLU and OSMesa
+// format, with or without depth and stencil), then up to 512 calls among ~120 GL, GLU and OSMesa
 // entry points, with enums drawn from valid and invalid values and numbers that are
 // often NaN, infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -84,7 +84,8 @@ class Bytes {
         GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF,
         GL_STENCIL_TEST, GL_KEEP, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP, GL_STENCIL_INDEX,
         GL_STENCIL_REF, GL_STENCIL_WRITEMASK, GL_STENCIL_BITS, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA,
-        GL_FUNC_SUBTRACT, GL_MIN, GL_MAX, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_ATTRIB_STACK_DEPTH};
+        GL_FUNC_SUBTRACT, GL_MIN, GL_MAX, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_ATTRIB_STACK_DEPTH,
+        GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_RED_SIZE, GL_RENDER, GL_SELECT, GL_EDGE_FLAG_ARRAY};
     if (u8() < 240) return e[u8() % (sizeof e / sizeof e[0])];
     return GLenum(u32());
   }
@@ -181,7 +182,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const float a = in.number(), b = in.number(), c = in.number(), d = in.number();
     const float v4[4] = {a, b, c, d};
     const GLint iv4[4] = {in.integer(), in.integer(), in.integer(), in.integer()};
-    switch (in.below(68)) {
+    switch (in.below(69)) {
       case 63: glStencilFunc(e1, iv4[0], GLuint(iv4[1])); break;
       case 64:
         switch (in.below(5)) {
@@ -213,6 +214,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         (in.u8() & 1 ? glPushName(GLuint(iv4[0])) : in.u8() & 1 ? glPopName() : glLoadName(GLuint(iv4[1])));
         if (in.u8() & 1) glInitNames();
         break;
+      case 67: {
+        // Copies from the colour buffer (any rectangle, partly outside or not) and the
+        // level queries.
+        const GLint level = in.below(4) - 1;
+        const GLint x = in.integer() % 128, y = in.integer() % 128;
+        const GLsizei cw = in.below(70) - 2, ch = in.below(70) - 2;
+        if (in.u8() & 1)
+          glCopyTexImage2D(in.u8() & 1 ? GL_TEXTURE_2D : e1, level, in.u8() & 1 ? GL_RGBA : e2, x, y, cw, ch,
+                           in.below(3) - 1);
+        else
+          glCopyTexSubImage2D(GL_TEXTURE_2D, level, in.below(40) - 4, in.below(40) - 4, x, y, cw, ch);
+        GLint v = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, level, in.u8() & 1 ? GL_TEXTURE_WIDTH : e1, &v);
+        break;
+      }
       case 65: {
         // Ranges inside the arrays' 56 elements, as case 50's.
         GLint firsts[3];
