@@ -163,6 +163,7 @@ struct TextureObject {
   GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
   Vec4 border{0, 0, 0, 0};
   bool generate_mipmap = false;
+  int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
   // What the renderer samples, built when first drawn after a change (null: not yet,
   // or incomplete). Draws already recorded keep their own reference.
   std::shared_ptr<const Texture> built;

@@ -280,5 +280,52 @@ int main(int argc, char** argv) {
     conf_frame("copy");
     glDeleteTextures(1, &copy);
   }
+
+  /* GL 1.2's GL_TEXTURE_BASE_LEVEL and GL_TEXTURE_MAX_LEVEL: six levels of solid,
+   * distinct colours; quads at 32, 8 and 2 pixels with the base level 0, 2 and 1 and
+   * the max level 1 and 3. */
+  {
+    static const GLubyte level_colours[6][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 0}, {0, 255, 255},
+                                                {255, 0, 255}};
+    static GLubyte solid[32 * 32 * 3];
+    GLuint levels_tex;
+    int lv, k, row;
+    glGenTextures(1, &levels_tex);
+    glBindTexture(GL_TEXTURE_2D, levels_tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (lv = 0; lv < 6; ++lv) {
+      const int size = 32 >> lv;
+      for (k = 0; k < size * size; ++k) memcpy(solid + 3 * k, level_colours[lv], 3);
+      glTexImage2D(GL_TEXTURE_2D, lv, GL_RGB, size, size, 0, GL_RGB, GL_UNSIGNED_BYTE, solid);
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glEnable(GL_TEXTURE_2D);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 192, 0, 128, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    for (row = 0; row < 3; ++row) {
+      static const int base[3] = {0, 2, 1}, max[3] = {1000, 3, 1};
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, base[row]);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, max[row]);
+      for (k = 0; k < 3; ++k) {
+        const float size = (float)(32 >> (2 * k)), x = 4.0f + 60.0f * k, y = 4.0f + 40.0f * row;
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0), glVertex2f(x, y);
+        glTexCoord2f(1, 0), glVertex2f(x + size, y);
+        glTexCoord2f(1, 1), glVertex2f(x + size, y + size);
+        glTexCoord2f(0, 1), glVertex2f(x, y + size);
+        glEnd();
+      }
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, -1);
+    conf_value("base_level_negative", glGetError());
+    glDisable(GL_TEXTURE_2D);
+    conf_frame("levels");
+    glDeleteTextures(1, &levels_tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  }
   return conf_end();
 }
