@@ -842,6 +842,8 @@ void GpuBackend::read_view_depth(float* out) const {
   velocity::read_view_depth(samples_, ssaa_, nullptr, projection_, out);
 }
 void GpuBackend::read_window_depth(float* out) const { velocity::read_window_depth(samples_, ssaa_, nullptr, out); }
+// The GPU's draws keep no stencil buffer (PixelState's stencil test is the CPU's alone).
+void GpuBackend::read_stencil(uint8_t*) const { throw Error("the GPU backend keeps no stencil buffer"); }
 std::vector<uint32_t> GpuBackend::object_ids() const { return resolve_object_ids(samples_, ssaa_); }
 size_t GpuBackend::framebuffer_bytes() const {
   return samples_.color.size() * 4 + samples_.depth.size() * 4 + samples_.ids.size() * 4;

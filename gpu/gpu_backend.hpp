@@ -45,6 +45,7 @@ class GpuBackend final : public Backend {
   void read_color(uint8_t* rgba, size_t row_bytes, int channels) const override;
   void read_view_depth(float* out) const override;
   void read_window_depth(float* out) const override;
+  void read_stencil(uint8_t* out) const override;
   std::vector<uint32_t> object_ids() const override;
   size_t framebuffer_bytes() const override;
 

@@ -67,10 +67,11 @@ class CpuBackend final : public Backend {
     velocity::read_view_depth(framebuffer, ssaa, pool.get(), projection, out);
   }
   void read_window_depth(float* out) const override { velocity::read_window_depth(framebuffer, ssaa, pool.get(), out); }
+  void read_stencil(uint8_t* out) const override { velocity::read_stencil(framebuffer, ssaa, out); }
   std::vector<uint32_t> object_ids() const override { return resolve_object_ids(framebuffer, ssaa); }
   size_t framebuffer_bytes() const override {
     return framebuffer.color.size() * sizeof(uint32_t) + framebuffer.depth.size() * sizeof(float) +
-           framebuffer.ids.size() * sizeof(uint32_t);
+           framebuffer.stencil.size() + framebuffer.ids.size() * sizeof(uint32_t);
   }
 
  private:
@@ -283,7 +284,8 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
   tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
   tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
-  r.framebuffer.expect_clear(tiles.color, tiles.depth);
+  tiles.clear_stencil_buffer = r.start.clear_stencil_buffer, tiles.stencil = r.start.stencil;
+  r.framebuffer.expect_clear(tiles.color, tiles.depth, tiles.clear_stencil_buffer ? tiles.stencil : r.framebuffer.clean_stencil);
   pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(tiles, tile, r.framebuffer); });
   const Clock::time_point t3 = Clock::now();
   r.stats_.vertex_ms = ms(t0, t1), r.stats_.triangle_ms = ms(t1, t2), r.stats_.tile_ms = ms(t2, t3);

@@ -145,6 +145,7 @@ std::vector<float> Renderer::window_depth() const {
   return d;
 }
 void Renderer::read_window_depth(float* out) const { backend_->read_window_depth(out); }
+void Renderer::read_stencil(uint8_t* out) const { backend_->read_stencil(out); }
 
 std::vector<uint32_t> Renderer::object_ids() const { return backend_->object_ids(); }
 

@@ -5,11 +5,12 @@
 #include <GL/glxext.h>
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
 
 namespace velocity::glx {
 
-const Config kConfigs[kConfigCount] = {{1, true, 24}, {2, false, 24}, {3, true, 0}, {4, false, 0}};
+const Config kConfigs[kConfigCount] = {{1, true, 24, 8}, {2, false, 24, 8}, {3, true, 0, 0}, {4, false, 0, 0}};
 
 namespace {
 constexpr int kDontCare = int(GLX_DONT_CARE);
@@ -84,7 +85,8 @@ bool config_attribute(const Config& c, unsigned long visual, int attribute, int*
     case GLX_USE_GL: case GLX_RGBA: v = 1; break;
     case GLX_FBCONFIG_ID: v = c.id; break;
     case GLX_BUFFER_SIZE: v = 32; break;
-    case GLX_LEVEL: case GLX_STEREO: case GLX_AUX_BUFFERS: case GLX_STENCIL_SIZE:
+    case GLX_STENCIL_SIZE: v = c.stencil; break;
+    case GLX_LEVEL: case GLX_STEREO: case GLX_AUX_BUFFERS:
     case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE: case GLX_ACCUM_ALPHA_SIZE:
     case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES:
     case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE: case GLX_TRANSPARENT_GREEN_VALUE:
@@ -118,7 +120,8 @@ bool satisfies(int i, int visuals, const Wanted& w) {
   for (int b : w.colour)
     if (b != kDontCare && b > 8) return false;
   if (w.depth != kDontCare && w.depth > c.depth) return false;
-  for (int v : {w.stencil, w.accum[0], w.accum[1], w.accum[2], w.accum[3], w.aux, w.samples, w.sample_buffers})
+  if (w.stencil != kDontCare && w.stencil > c.stencil) return false;
+  for (int v : {w.accum[0], w.accum[1], w.accum[2], w.accum[3], w.aux, w.samples, w.sample_buffers})
     if (v != kDontCare && v > 0) return false;
   if (w.render_type != kDontCare && !(w.render_type & GLX_RGBA_BIT)) return false;
   int drawable_types = 0;
@@ -135,9 +138,10 @@ std::vector<const Config*> choose_fbconfigs(const Wanted& w, int visuals) {
   std::vector<const Config*> found;
   for (int i = 0; i < kConfigCount; ++i)
     if (satisfies(i, visuals, w)) found.push_back(&kConfigs[i]);
-  // GLX 1.4's order: single before double buffered, then the smaller depth buffer.
+  // GLX 1.4's order: single before double buffered, then the smaller depth buffer, then
+  // the smaller stencil buffer.
   std::stable_sort(found.begin(), found.end(), [](const Config* a, const Config* b) {
-    return std::make_pair(a->double_buffer, a->depth) < std::make_pair(b->double_buffer, b->depth);
+    return std::make_tuple(a->double_buffer, a->depth, a->stencil) < std::make_tuple(b->double_buffer, b->depth, b->stencil);
   });
   return found;
 }

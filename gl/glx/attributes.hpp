@@ -8,14 +8,15 @@
 
 namespace velocity::glx {
 
-// What exists: 8-bit red, green, blue and alpha, a 24-bit depth buffer or none, single
-// or double buffered. No stencil, accumulation, auxiliary buffers, stereo or
-// multisampling: pGL has none, so no configuration claims them. Configuration i is
+// What exists: 8-bit red, green, blue and alpha, a 24-bit depth buffer with an 8-bit
+// stencil buffer or neither, single or double buffered. No accumulation, auxiliary
+// buffers, stereo or multisampling: pGL has none, so no configuration claims them. Configuration i is
 // shown in the screen's i-th usable X visual; one without a visual is for pbuffers.
 struct Config {
   int id;
   bool double_buffer;
   int depth;
+  int stencil;
 };
 constexpr int kConfigCount = 4;
 extern const Config kConfigs[kConfigCount];

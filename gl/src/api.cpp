@@ -108,6 +108,10 @@ void record_array_element(Context& c, GLint i) {
     const Vec4 t = c.arrays.texcoord.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.set_texcoord(t); });
   }
+  if (c.arrays.edge_enabled && c.arrays.edge_pointer) {
+    const bool e = c.arrays.edge(i);
+    compiled([=](Context& k) { k.set_edge_flag(e); });
+  }
   if (c.arrays.vertex.enabled && c.arrays.vertex.pointer) {
     const Vec4 v = c.arrays.vertex.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.vertex(v); });
@@ -145,7 +149,7 @@ void get_values(GLenum pname, T* params, Convert convert) {
 
 struct osmesa_context {
   Context gl;
-  osmesa_context(GLenum format, int depth_bits) : gl(format, depth_bits) {}
+  osmesa_context(GLenum format, int depth_bits, int stencil_bits) : gl(format, depth_bits, stencil_bits) {}
 };
 
 namespace {
@@ -313,6 +317,32 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
   LIST(if (!c.in_begin_error()) c.clear_color({r, g, b, a}));
 }
 void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
+void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
+void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
+void glEdgeFlag(GLboolean flag) { LIST(c.set_edge_flag(flag != 0)); }  // (allowed between glBegin and glEnd)
+void glEdgeFlagv(const GLboolean* flag) {
+  if (flag) glEdgeFlag(*flag);
+}
+void glEdgeFlagPointer(GLsizei stride, const GLvoid* pointer) {
+  NOW(if (stride < 0) return c.error(GL_INVALID_VALUE);
+      c.arrays.edge_stride = stride, c.arrays.edge_pointer = static_cast<const GLboolean*>(pointer));
+}
+GLint glRenderMode(GLenum mode) {  // never compiled
+  GLint r = 0;
+  NOW(r = c.render_mode(mode));
+  return r;
+}
+void glSelectBuffer(GLsizei size, GLuint* buffer) { NOW(c.select_buffer(size, buffer)); }  // never compiled
+void glInitNames(void) { LIST(c.init_names()); }
+void glPushName(GLuint name) { LIST(c.push_name(name)); }
+void glPopName(void) { LIST(c.pop_name()); }
+void glLoadName(GLuint name) { LIST(c.load_name(name)); }
+void glPopAttrib(void) { LIST(c.pop_attrib()); }
+void glPushClientAttrib(GLbitfield mask) { NOW(c.push_client_attrib(mask)); }  // client state: never compiled
+void glPopClientAttrib(void) { NOW(c.pop_client_attrib()); }
+void glStencilFunc(GLenum func, GLint ref, GLuint mask) { LIST(c.stencil_func(func, ref, mask)); }
+void glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) { LIST(c.stencil_op(fail, zfail, zpass)); }
+void glStencilMask(GLuint mask) { LIST(c.stencil_mask(mask)); }
 void glDepthFunc(GLenum f) { LIST(c.depth_func(f)); }
 void glDepthMask(GLboolean flag) { LIST(c.depth_mask(flag != 0)); }
 void glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) { LIST(c.color_mask(r, g, b, a)); }
@@ -325,6 +355,12 @@ GLboolean glIsEnabled(GLenum cap) {
   return r;
 }
 void glBlendFunc(GLenum s, GLenum d) { LIST(c.blend_func(s, d)); }
+void glBlendFuncSeparate(GLenum sr, GLenum dr, GLenum sa, GLenum da) { LIST(c.blend_func_separate(sr, dr, sa, da)); }
+void glBlendEquation(GLenum mode) { LIST(c.blend_equation(mode)); }
+void glBlendColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { LIST(c.blend_color({r, g, b, a})); }
+void glBlendFuncSeparateEXT(GLenum sr, GLenum dr, GLenum sa, GLenum da) { glBlendFuncSeparate(sr, dr, sa, da); }
+void glBlendEquationEXT(GLenum mode) { glBlendEquation(mode); }
+void glBlendColorEXT(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { glBlendColor(r, g, b, a); }
 void glAlphaFunc(GLenum f, GLclampf ref) { LIST(c.alpha_func(f, ref)); }
 void glFogfv(GLenum pname, const GLfloat* v) {
   const auto p = params_f(pname, v);
@@ -446,6 +482,22 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
       compiled([=](Context& k) { k.tex_sub_image(target, level, x, y, w, h, *data); }));
 }
 
+void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
+  LIST(c.copy_tex_image(target, level, internal, x, y, w, h, border));
+}
+void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h) {
+  LIST(c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
+}
+void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid* pixels) {
+  NOW(c.get_tex_image(target, level, format, type, pixels));
+}
+void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* params) {
+  NOW(GLint v = 0; if (c.tex_level_parameter(target, level, pname, &v) && params) *params = v);
+}
+void glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat* params) {
+  NOW(GLint v = 0; if (c.tex_level_parameter(target, level, pname, &v) && params) *params = GLfloat(v));
+}
+
 void glTexParameterfv(GLenum target, GLenum pname, const GLfloat* v) {
   const auto p = params_f(pname, v);
   LIST(c.tex_parameter(target, pname, p.data()));
@@ -535,6 +587,30 @@ void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indic
         if (i <= 0x7fffffffu) record_array_element(c, GLint(i));
       }
       glEnd());
+}
+
+// GL 1.4's multi-draws: one glDrawArrays / glDrawElements per entry (each recorded into
+// a list being compiled, as those are).
+void glMultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count, GLsizei drawcount) {
+  Context* c = current();
+  if (!c) return;
+  if (drawcount < 0) return c->error(GL_INVALID_VALUE);
+  if (drawcount > 0 && (!first || !count)) return;
+  if (mode > GL_POLYGON) return c->error(GL_INVALID_ENUM);
+  for (GLsizei i = 0; i < drawcount; ++i)  // a bad entry draws none of them
+    if (count[i] < 0) return c->error(GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < drawcount; ++i) glDrawArrays(mode, first[i], count[i]);
+}
+
+void glMultiDrawElements(GLenum mode, const GLsizei* count, GLenum type, const GLvoid* const* indices, GLsizei drawcount) {
+  Context* c = current();
+  if (!c) return;
+  if (drawcount < 0) return c->error(GL_INVALID_VALUE);
+  if (drawcount > 0 && (!count || !indices)) return;
+  if (mode > GL_POLYGON) return c->error(GL_INVALID_ENUM);
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return c->error(GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < drawcount; ++i) glDrawElements(mode, count[i], type, indices[i]);
 }
 
 // --- display lists --------------------------------------------------------------
@@ -633,7 +709,8 @@ const GLubyte* glGetString(GLenum name) {
     case GL_EXTENSIONS:
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
-          "GL_SGIS_texture_edge_clamp ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
+          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }
@@ -650,13 +727,13 @@ void glFlush(void) { NOW(c.finish()); }
 
 OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits, GLint accumBits,
                                      OSMesaContext sharelist) {
-  (void)stencilBits, (void)accumBits;
+  (void)accumBits;
   if (sharelist) return nullptr;  // shared lists and textures: not supported (docs/gl.md)
   if (format != OSMESA_RGBA && format != OSMESA_BGRA && format != OSMESA_ARGB && format != OSMESA_RGB &&
       format != OSMESA_BGR)
     return nullptr;
   try {
-    return new osmesa_context(format, depthBits);
+    return new osmesa_context(format, depthBits, stencilBits);
   } catch (const std::exception&) {
     return nullptr;
   }

@@ -63,6 +63,7 @@ void Context::client_state(GLenum cap, bool on) {
     case GL_NORMAL_ARRAY: arrays.normal.enabled = on; break;
     case GL_COLOR_ARRAY: arrays.color.enabled = on; break;
     case GL_TEXTURE_COORD_ARRAY: arrays.texcoord.enabled = on; break;
+    case GL_EDGE_FLAG_ARRAY: arrays.edge_enabled = on; break;
     default: error(GL_INVALID_ENUM);
   }
 }
@@ -73,6 +74,7 @@ void Context::array_element(GLint i) {
     set_color(arrays.color.fetch_normalized(i, {0, 0, 0, 1}, arrays.color.size));
   if (arrays.normal.enabled && arrays.normal.pointer) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
   if (arrays.texcoord.enabled && arrays.texcoord.pointer) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
+  if (arrays.edge_enabled && arrays.edge_pointer) edge_flag_ = arrays.edge(i);
   if (arrays.vertex.enabled && arrays.vertex.pointer) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
 }
 

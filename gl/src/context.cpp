@@ -32,7 +32,8 @@ BackendChoice backend_from_environment() {
 Context* current() { return g_current; }
 void set_current(Context* c) { g_current = c; }
 
-Context::Context(GLenum format, int depth_bits) : format_(format), depth_bits_(depth_bits) {}
+Context::Context(GLenum format, int depth_bits, int stencil_bits)
+    : format_(format), depth_bits_(depth_bits), stencil_bits_(stencil_bits > 0 ? 8 : 0) {}
 
 Context::~Context() = default;
 

@@ -25,6 +25,13 @@
 //   lists.cpp         display lists
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
+//   attrib.cpp        glPushAttrib, glPopAttrib, glPushClientAttrib, glPopClientAttrib
+//   copy_texture.cpp  glCopyTexImage2D, glCopyTexSubImage2D, glGetTexLevelParameter,
+//                     glGetTexImage
+//   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
+//   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
+//   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
+//                     glClearStencil, its queries and its part of PixelState
 #pragma once
 
 #include <GL/gl.h>
@@ -46,11 +53,12 @@ struct Vertex {
   Vec4 front, back;  // lit colours (back only with two-sided lighting)
   Vec4 tex;
   float fog = 0;
+  bool edge = true;  // glEdgeFlag: does a polygon's boundary edge start here?
 };
 
 class Context {
  public:
-  Context(GLenum format, int depth_bits);
+  Context(GLenum format, int depth_bits, int stencil_bits = 0);
   ~Context();
 
   // --- OSMesa (context.cpp)
@@ -90,6 +98,8 @@ class Context {
   void set_color(Vec4 c);  // (lighting.cpp: it feeds GL_COLOR_MATERIAL)
   void set_normal(Vec3 n) { normal_ = n; }
   void set_texcoord(Vec4 t) { texcoord_ = t; }
+  void set_edge_flag(bool e) { edge_flag_ = e; }
+  bool edge_flag() const { return edge_flag_; }
   void rect(float x1, float y1, float x2, float y2);
 
   // --- transform (transform.cpp)
@@ -117,6 +127,10 @@ class Context {
   void depth_mask(bool on);
   void color_mask(bool r, bool g, bool b, bool a);
   void blend_func(GLenum s, GLenum d);
+  void blend_func_separate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);  // blend.cpp
+  void blend_equation(GLenum mode);
+  void blend_color(Vec4 c);
+  bool get_blend(GLenum pname, std::vector<double>& out, int& kind) const;
   void alpha_func(GLenum f, float ref);
   void fog(GLenum pname, const float* v);
   void hint(GLenum target, GLenum mode);
@@ -126,6 +140,31 @@ class Context {
   void polygon_offset(float factor, float units);
   void point_size(float s);
   void line_width(float w);
+
+  // --- the stencil buffer (stencil.cpp)
+  void stencil_func(GLenum func, GLint ref, GLuint mask);
+  void stencil_op(GLenum fail, GLenum depth_fail, GLenum pass);
+  void stencil_mask(GLuint mask);
+  void clear_stencil(GLint s);
+  int stencil_bits() const { return stencil_bits_; }
+
+  // --- selection (select.cpp)
+  GLint render_mode(GLenum mode);
+  void select_buffer(GLsizei size, GLuint* buffer);
+  void init_names();
+  void push_name(GLuint name);
+  void pop_name();
+  void load_name(GLuint name);
+  bool selecting() const { return select_.mode == GL_SELECT; }
+  const SelectState& selection() const { return select_; }
+
+  // --- attribute stacks (attrib.cpp)
+  void push_attrib(GLbitfield mask);
+  void pop_attrib();
+  void push_client_attrib(GLbitfield mask);
+  void pop_client_attrib();
+  int attrib_depth() const;
+  int client_attrib_depth() const;
 
   // --- lighting (lighting.cpp)
   void light(GLenum light, GLenum pname, const float* v);
@@ -152,6 +191,14 @@ class Context {
   // The internal format glTexImage2D's argument names, or 0 if none.
   static GLenum base_format(GLint internal);
   GLint unpack_alignment = 4, pack_alignment = 4;  // glPixelStorei
+
+  // --- copies from the framebuffer, level queries (copy_texture.cpp)
+  void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);
+  void copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
+                          GLsizei h);
+  // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
+  bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
+  void get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels);
 
   // --- vertex arrays (arrays.cpp)
   ArrayState arrays;
@@ -203,6 +250,9 @@ class Context {
   void run_frame();  // end the frame, copy colour (and depth) out
   void copy_depth();
   PixelState pixel_state(bool offset);
+  void stencil_pixel_state(PixelState& s) const;          // stencil.cpp
+  bool get_stencil(GLenum pname, std::vector<double>& out) const;  // stencil.cpp
+  uint8_t stencil_clear_value() const;
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
   void emit_vertex(uint32_t i, const Vec4& color, bool shared);
@@ -224,20 +274,23 @@ class Context {
   void update_derived();  // transform.cpp
   std::vector<Mat4>& stack();  // the one glMatrixMode selects
   void apply_color_material();  // lighting.cpp
+  void store_material(GLenum face, GLenum pname, const float* v);
   TextureObject* bound_texture();  // texture.cpp
   const Texture* texture_for_draw(TextureObject& t);
 
   // The framebuffer and its frames.
   GLenum format_;
   int depth_bits_;
+  int stencil_bits_;  // 0 or 8
   void* buffer_ = nullptr;
   int width_ = 0, height_ = 0;
   std::unique_ptr<Renderer> renderer_;
   bool in_frame_ = false, first_frame_ = true;
   // A glClear of the whole framebuffer before the frame began, to begin it with.
-  bool start_clear_ = false, start_clear_color_ = false, start_clear_depth_ = false;
+  bool start_clear_ = false, start_clear_color_ = false, start_clear_depth_ = false, start_clear_stencil_ = false;
   Vec4 start_color_{0, 0, 0, 0};
   float start_depth_ = 1;
+  uint8_t start_stencil_ = 0;
   std::vector<uint8_t> colour_;  // the last frame's colour, RGBA, bottom row first
   bool direct_ = false;          // ... or in the caller's buffer (RGBA, Y_UP, its own width)
   const uint8_t* colour_rows() const { return direct_ ? static_cast<const uint8_t*>(buffer_) : colour_.data(); }
@@ -250,12 +303,22 @@ class Context {
   TransformState transform_;
   LightingState lighting_;
   RasterState raster_;
+  StencilState stencil_;
+  SelectState select_;
+  void select_hit(const uint32_t* idx, int n, bool closed);  // select.cpp
+  std::vector<uint32_t> read_colour_rect(GLint x, GLint y, GLsizei w, GLsizei h);  // copy_texture.cpp
+  void write_hit_record();
   TextureState texture_;
   ListState lists_;
+
+  // glPushAttrib's and glPushClientAttrib's stacks (attrib.cpp).
+  std::vector<AttribFrame> attrib_stack_;
+  std::vector<ClientAttribFrame> client_attrib_stack_;
 
   // The current vertex attributes.
   Vec4 color_{1, 1, 1, 1}, texcoord_{0, 0, 0, 1};
   Vec3 normal_{0, 0, 1};
+  bool edge_flag_ = true;
 
   // The primitive being assembled.
   bool in_begin_ = false;

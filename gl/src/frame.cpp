@@ -27,6 +27,10 @@ BlendFactor blend_factor(GLenum f) {
     case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::OneMinusSrcAlpha;
     case GL_DST_ALPHA: return BlendFactor::DstAlpha;
     case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::OneMinusDstAlpha;
+    case GL_CONSTANT_COLOR: return BlendFactor::ConstantColor;
+    case GL_ONE_MINUS_CONSTANT_COLOR: return BlendFactor::OneMinusConstantColor;
+    case GL_CONSTANT_ALPHA: return BlendFactor::ConstantAlpha;
+    case GL_ONE_MINUS_CONSTANT_ALPHA: return BlendFactor::OneMinusConstantAlpha;
     default: return BlendFactor::SrcAlphaSaturate;
   }
 }
@@ -36,8 +40,11 @@ void Context::ensure_frame() {
   if (in_frame_ || !renderer_) return;
   FrameStart start;
   start.clear_color_buffer = start.clear_depth_buffer = first_frame_;
+  // Without a stencil buffer, clearing the renderer's keeps its empty tiles skippable.
+  start.clear_stencil_buffer = first_frame_ || stencil_bits_ == 0;
   start.color = {0, 0, 0, 0};
   start.depth = 1;
+  start.stencil = 0;
   if (start_clear_) {
     // A whole-framebuffer glClear before anything else in the frame: the frame starts
     // cleared, which lets the renderer skip tiles that stay empty and clean.
@@ -45,7 +52,8 @@ void Context::ensure_frame() {
     start.clear_depth_buffer = start_clear_depth_ || first_frame_;
     if (start_clear_color_) start.color = start_color_;
     if (start_clear_depth_) start.depth = start_depth_;
-    start_clear_ = start_clear_color_ = start_clear_depth_ = false;
+    if (start_clear_stencil_) start.clear_stencil_buffer = true, start.stencil = start_stencil_;
+    start_clear_ = start_clear_color_ = start_clear_depth_ = start_clear_stencil_ = false;
   }
   renderer_->begin_frame(Camera{}, {}, start);
   first_frame_ = false;
@@ -202,9 +210,16 @@ PixelState Context::pixel_state(bool offset) {
   s.polygon_offset = offset;
   s.offset_factor = raster_.offset_factor, s.offset_units = raster_.offset_units;
   s.blend = raster_.blend;
-  s.blend_src_rgb = s.blend_src_alpha = blend_factor(raster_.blend_src);
-  s.blend_dst_rgb = s.blend_dst_alpha = blend_factor(raster_.blend_dst);
+  s.blend_src_rgb = blend_factor(raster_.blend_src), s.blend_src_alpha = blend_factor(raster_.blend_src_alpha);
+  s.blend_dst_rgb = blend_factor(raster_.blend_dst), s.blend_dst_alpha = blend_factor(raster_.blend_dst_alpha);
+  s.blend_op = raster_.blend_equation == GL_FUNC_SUBTRACT           ? BlendOp::Subtract
+               : raster_.blend_equation == GL_FUNC_REVERSE_SUBTRACT ? BlendOp::ReverseSubtract
+               : raster_.blend_equation == GL_MIN                   ? BlendOp::Min
+               : raster_.blend_equation == GL_MAX                   ? BlendOp::Max
+                                                                    : BlendOp::Add;
+  s.blend_color = raster_.blend_color;
   s.color_mask = raster_.color_mask_bits();
+  stencil_pixel_state(s);
   return s;
 }
 

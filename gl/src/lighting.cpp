@@ -67,6 +67,13 @@ void Context::light_model(GLenum pname, const float* v) {
 }
 
 void Context::material(GLenum face, GLenum pname, const float* v) {
+  store_material(face, pname, v);
+  // With GL_COLOR_MATERIAL on, the properties it tracks follow the current colour: a
+  // glMaterial of them is overridden at once (as Mesa ignores it).
+  if (lighting_.color_material) apply_color_material();
+}
+
+void Context::store_material(GLenum face, GLenum pname, const float* v) {
   // glMaterial is allowed between glBegin and glEnd.
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return error(GL_INVALID_ENUM);
   const Vec4 c{v[0], v[1], v[2], v[3]};
@@ -113,7 +120,7 @@ void Context::color_material(GLenum face, GLenum mode) {
 
 void Context::apply_color_material() {
   const float c[4] = {color_.x, color_.y, color_.z, color_.w};
-  material(lighting_.color_material_face, lighting_.color_material_mode, c);
+  store_material(lighting_.color_material_face, lighting_.color_material_mode, c);
 }
 
 void Context::set_color(Vec4 c) {

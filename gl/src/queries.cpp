@@ -18,6 +18,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   bool known = false;
   const bool enabled = is_enabled(pname, &known);
   if (known) return out = {enabled ? 1.0 : 0.0}, true;
+  if (get_stencil(pname, out)) return true;
+  if (get_blend(pname, out, kind)) return true;
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -32,6 +34,13 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_LIGHTS: out = {double(kMaxLights)}; return true;
     case GL_MAX_TEXTURE_SIZE: out = {double(kMaxTextureSize)}; return true;
     case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = {double(kMaxAttribDepth)}; return true;
+    case GL_MAX_NAME_STACK_DEPTH: out = {double(kMaxNameDepth)}; return true;
+    case GL_NAME_STACK_DEPTH: out = {double(select_.names.size())}; return true;
+    case GL_RENDER_MODE: out = {double(select_.mode)}; return true;
+    case GL_SELECTION_BUFFER_SIZE: out = {double(select_.size)}; return true;
+    case GL_ATTRIB_STACK_DEPTH: out = {double(attrib_depth())}; return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: out = {double(client_attrib_depth())}; return true;
     case GL_MAX_VIEWPORT_DIMS: out = {double(kMaxViewport), double(kMaxViewport)}; return true;
     case GL_VIEWPORT:
       out = {double(t.viewport.x), double(t.viewport.y), double(t.viewport.width), double(t.viewport.height)};
@@ -47,8 +56,6 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_COLOR_WRITEMASK:
       out = {double(r.color_mask[0]), double(r.color_mask[1]), double(r.color_mask[2]), double(r.color_mask[3])};
       return true;
-    case GL_BLEND_SRC: out = {double(raster_.blend_src)}; return true;
-    case GL_BLEND_DST: out = {double(raster_.blend_dst)}; return true;
     case GL_ALPHA_TEST_FUNC: out = {double(raster_.alpha_func)}; return true;
     case GL_ALPHA_TEST_REF: out = {raster_.alpha_ref}, kind = 1; return true;
     case GL_FOG_MODE: out = {double(raster_.fog_mode)}; return true;
@@ -82,9 +89,10 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ALPHA_BITS: out = {format_ == GL_RGB || format_ == 0x4 ? 0.0 : 8.0}; return true;
     case GL_DEPTH_BITS: out = {depth_bits_ > 0 ? 24.0 : 0.0}; return true;
     // The framebuffer: one RGBA colour buffer (OSMesa's, single-buffered: GL_FRONT),
-    // a depth buffer; no stencil, accumulation or auxiliary buffers, no colour index,
-    // no stereo, no multisampling (all 0 until they exist, whatever the context asked for).
-    case GL_STENCIL_BITS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
+    // a depth buffer, a stencil buffer (stencil.cpp); no accumulation or auxiliary
+    // buffers, no colour index, no stereo, no multisampling (all 0 until they exist,
+    // whatever the context asked for).
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
     case GL_ACCUM_ALPHA_BITS: case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
     case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
@@ -102,16 +110,17 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
     // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
     // so a program that asks learns that they are missing (docs/gl.md): clip planes,
-    // evaluators, glPushAttrib and glPushClientAttrib, the selection name stack, pixel maps.
+    // evaluators, the selection name stack, pixel maps.
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_CLIP_PLANES: case GL_MAX_EVAL_ORDER:
-    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: case GL_MAX_NAME_STACK_DEPTH:
     case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT:
       out = {double(raster_.hints[pname - GL_PERSPECTIVE_CORRECTION_HINT])};
       return true;
+    case GL_EDGE_FLAG: out = {edge_flag() ? 1.0 : 0.0}; return true;
+    case GL_EDGE_FLAG_ARRAY_STRIDE: out = {double(arrays.edge_stride)}; return true;
     case GL_VERTEX_ARRAY_SIZE: out = {double(arrays.vertex.size)}; return true;
     case GL_VERTEX_ARRAY_TYPE: out = {double(arrays.vertex.type)}; return true;
     case GL_VERTEX_ARRAY_STRIDE: out = {double(arrays.vertex.stride)}; return true;
@@ -142,6 +151,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_ALPHA_TEST: return raster_.alpha_test;
     case GL_FOG: return raster_.fog;
     case GL_SCISSOR_TEST: return raster_.scissor_test;
+    case GL_STENCIL_TEST: return stencil_.test;
     case GL_POLYGON_OFFSET_FILL: return raster_.offset_fill;
     case GL_POLYGON_OFFSET_LINE: return raster_.offset_line;
     case GL_POLYGON_OFFSET_POINT: return raster_.offset_point;
@@ -149,6 +159,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_NORMAL_ARRAY: return arrays.normal.enabled;
     case GL_COLOR_ARRAY: return arrays.color.enabled;
     case GL_TEXTURE_COORD_ARRAY: return arrays.texcoord.enabled;
+    case GL_EDGE_FLAG_ARRAY: return arrays.edge_enabled;
     case GL_DITHER: return true;
     default: *known = false; return false;
   }

@@ -15,6 +15,9 @@ bool is_blend_factor(GLenum f, bool /*source*/) {
     case GL_ONE_MINUS_DST_COLOR:
       return true;
     case GL_SRC_ALPHA_SATURATE: return true;  // also as a destination factor (Mesa, GL 3.3)
+    case GL_CONSTANT_COLOR: case GL_ONE_MINUS_CONSTANT_COLOR: case GL_CONSTANT_ALPHA:
+    case GL_ONE_MINUS_CONSTANT_ALPHA:
+      return true;  // GL 1.4's constant colour (glBlendColor, blend.cpp)
     default: return false;
   }
 }
@@ -40,6 +43,12 @@ void Context::enable(GLenum cap, bool on) {
     case GL_ALPHA_TEST: raster_.alpha_test = on; break;
     case GL_FOG: raster_.fog = on; break;
     case GL_SCISSOR_TEST: raster_.scissor_test = on; break;
+    case GL_STENCIL_TEST: stencil_.test = on; break;
+    // The vertex arrays' client state through glEnable, as Mesa's compatibility
+    // profile (and old programs) allow.
+    case GL_VERTEX_ARRAY: case GL_NORMAL_ARRAY: case GL_COLOR_ARRAY: case GL_TEXTURE_COORD_ARRAY:
+    case GL_EDGE_FLAG_ARRAY:
+      return client_state(cap, on);
     case GL_POLYGON_OFFSET_FILL: raster_.offset_fill = on; return;
     case GL_POLYGON_OFFSET_LINE: raster_.offset_line = on; return;
     case GL_POLYGON_OFFSET_POINT: raster_.offset_point = on; return;
@@ -66,28 +75,35 @@ void Context::clear(GLbitfield mask) {
   submit_pending();
   const RasterState& r = raster_;
   const bool color = mask & GL_COLOR_BUFFER_BIT, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;
+  const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && stencil_bits_ > 0;
   const bool all_channels = r.color_mask_bits() == 0xf;
-  if (!in_frame_ && !r.scissor_test && (!color || all_channels) && (!depth || r.depth_write) && (color || depth)) {
+  const bool all_stencil = (stencil_.write_mask & 0xff) == 0xff;
+  if (!in_frame_ && !r.scissor_test && (!color || all_channels) && (!depth || r.depth_write) && (!stencil || all_stencil) &&
+      (color || depth || stencil)) {
     start_clear_ = true;  // the frame begins with it (ensure_frame)
     if (color) {
       start_clear_color_ = true;
       start_color_ = {unit(r.clear_color.x), unit(r.clear_color.y), unit(r.clear_color.z), unit(r.clear_color.w)};
     }
     if (depth) start_clear_depth_ = true, start_depth_ = r.clear_depth;
+    if (stencil) start_clear_stencil_ = true, start_stencil_ = stencil_clear_value();
     return;
   }
   ensure_frame();
   ClearRequest q;
   q.color = mask & GL_COLOR_BUFFER_BIT;
-  q.depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;
+  q.depth = depth;
   q.color_value = {unit(r.clear_color.x), unit(r.clear_color.y), unit(r.clear_color.z), unit(r.clear_color.w)};
   q.depth_value = r.clear_depth;
   q.color_mask = raster_.color_mask_bits();
   q.depth_write = r.depth_write;
+  q.stencil = stencil;
+  q.stencil_value = stencil_clear_value();
+  q.stencil_mask = uint8_t(stencil_.write_mask);
   q.scissor = r.scissor_test;
   if (r.scissor_test)
     q.x0 = r.scissor.x, q.x1 = r.scissor.x + r.scissor.width, q.y0 = r.scissor.y, q.y1 = r.scissor.y + r.scissor.height;
-  if (q.color || q.depth) renderer_->clear(q);
+  if (q.color || q.depth || q.stencil) renderer_->clear(q);
 }
 
 void Context::clear_depth(double d) {
@@ -117,7 +133,7 @@ void Context::color_mask(bool r, bool g, bool b, bool a) {
 void Context::blend_func(GLenum s, GLenum d) {
   if (in_begin_error()) return;
   if (!is_blend_factor(s, true) || !is_blend_factor(d, false)) return error(GL_INVALID_ENUM);
-  raster_.blend_src = s, raster_.blend_dst = d;
+  raster_.blend_src = raster_.blend_src_alpha = s, raster_.blend_dst = raster_.blend_dst_alpha = d;
   changed();
 }
 

@@ -1,4 +1,4 @@
-// glReadPixels: the frame is run, then colour or depth are converted and packed.
+// glReadPixels: the frame is run, then colour, depth or stencil are converted and packed.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -7,6 +7,31 @@
 
 namespace velocity::gl {
 
+namespace {
+// A stencil index in a pixel type, as it is (GL: indices are not scaled).
+void write_index(uint8_t v, GLenum type, uint8_t* dst) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: *dst = v; break;  // (GL_BYTE: 127 is the most it holds)
+    case GL_UNSIGNED_SHORT: case GL_SHORT: { const uint16_t u = v; std::memcpy(dst, &u, 2); break; }
+    case GL_FLOAT: { const float f = v; std::memcpy(dst, &f, 4); break; }
+    default: { const uint32_t u = v; std::memcpy(dst, &u, 4); break; }
+  }
+  if (type == GL_BYTE && v > 127) *dst = 127;
+}
+
+// A component in [0, 1] as GL's signed and 16-bit types hold it (the table of GL
+// 1.5's section 4.3.2): unsigned 2^n - 1 c, signed (2^n - 1) c - 1) / 2.
+void write_normalized(float c, GLenum type, uint8_t* dst) {
+  c = std::clamp(c, 0.0f, 1.0f);
+  switch (type) {
+    case GL_BYTE: *dst = uint8_t(int8_t(std::lround((255.0 * c - 1) / 2))); break;
+    case GL_UNSIGNED_SHORT: { const uint16_t u = uint16_t(std::lround(65535.0 * c)); std::memcpy(dst, &u, 2); break; }
+    case GL_SHORT: { const int16_t u = int16_t(std::lround((65535.0 * c - 1) / 2)); std::memcpy(dst, &u, 2); break; }
+    default: { const int32_t u = int32_t(std::llround((4294967295.0 * c - 1) / 2)); std::memcpy(dst, &u, 4); break; }  // GL_INT
+  }
+}
+}  // namespace
+
 void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   int comps;
@@ -14,24 +39,31 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
     case GL_RGBA: case GL_BGRA: comps = 4; break;
     case GL_RGB: case GL_BGR: comps = 3; break;
     case GL_ALPHA: case GL_LUMINANCE: case GL_RED: case GL_GREEN:
-    case GL_BLUE: case GL_DEPTH_COMPONENT:
+    case GL_BLUE: case GL_DEPTH_COMPONENT: case GL_STENCIL_INDEX:
       comps = 1;
       break;
     default: return error(GL_INVALID_ENUM);
   }
   size_t tsize;
   switch (type) {
-    case GL_UNSIGNED_BYTE: tsize = 1; break;
-    case GL_FLOAT: case GL_UNSIGNED_INT: tsize = 4; break;
+    case GL_UNSIGNED_BYTE: case GL_BYTE: tsize = 1; break;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: tsize = 2; break;
+    case GL_FLOAT: case GL_UNSIGNED_INT: case GL_INT: tsize = 4; break;
     default: return error(GL_INVALID_ENUM);
   }
   if (in_begin_error()) return;
   if (!renderer_ || !pixels || w == 0 || h == 0) return;
   run_frame();
-  const bool depth = format == GL_DEPTH_COMPONENT;
+  const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
   if (depth && depth_bits_ <= 0) return error(GL_INVALID_OPERATION);
+  if (stencil && stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
   std::vector<float> zbuf;
   if (depth) zbuf = renderer_->window_depth();
+  std::vector<uint8_t> sbuf;
+  if (stencil) {
+    sbuf.resize(size_t(width_) * size_t(height_));
+    renderer_->read_stencil(sbuf.data());
+  }
   const size_t align = size_t(std::max(pack_alignment, 1));
   const size_t row_bytes = (size_t(w) * comps * tsize + align - 1) / align * align;
   uint8_t* out = static_cast<uint8_t*>(pixels);
@@ -43,10 +75,10 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
       const int64_t wx = int64_t(x) + i;
       if (wx < 0 || wx >= width_) continue;
       const size_t at = row * size_t(width_) + size_t(wx);
-      float c[4];
+      float c[4] = {0, 0, 0, 0};
       if (depth) {
         c[0] = zbuf[at];
-      } else {
+      } else if (!stencil) {
         const uint8_t* p = colour_rows() + at * 4;
         const float r = p[0] / 255.0f, g = p[1] / 255.0f, b = p[2] / 255.0f;
         const float a = format_ == GL_RGB || format_ == 0x4 ? 1.0f : p[3] / 255.0f;
@@ -63,11 +95,17 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
         }
       }
       uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * comps * tsize;
+      if (stencil) {  // an index: its value in any type, not scaled
+        write_index(sbuf[at], type, dst);
+        continue;
+      }
       for (int k = 0; k < comps; ++k) {
         if (type == GL_UNSIGNED_BYTE) {
           dst[k] = uint8_t(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
         } else if (type == GL_FLOAT) {
           std::memcpy(dst + 4 * k, &c[k], 4);
+        } else if (type != GL_UNSIGNED_INT) {
+          write_normalized(c[k], type, dst + tsize * k);
         } else {
           const uint32_t u = uint32_t(std::llround(double(std::clamp(c[k], 0.0f, 1.0f)) * 4294967295.0));
           std::memcpy(dst + 4 * k, &u, 4);

@@ -44,6 +44,8 @@ constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDept
 constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
 constexpr int kMaxListNesting = 64;
+constexpr int kMaxAttribDepth = 16;
+constexpr int kMaxNameDepth = 64;  // the selection name stack  // glPushAttrib's and glPushClientAttrib's stacks
 constexpr size_t kMaxListCommands = size_t(1) << 24;  // per list; more is GL_OUT_OF_MEMORY
 constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is run, a new one begun
 // Texel bytes a frame may keep alive (textures replaced or deleted while the frame that
@@ -118,7 +120,9 @@ struct RasterState {
   GLenum depth_func = GL_LESS;
   bool color_mask[4] = {true, true, true, true};
   bool blend = false;
-  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // (RGB; glBlendFunc sets alpha's too)
+  GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO, blend_equation = GL_FUNC_ADD;  // blend.cpp
+  Vec4 blend_color{0, 0, 0, 0};
   bool alpha_test = false;
   GLenum alpha_func = GL_ALWAYS;
   float alpha_ref = 0;
@@ -138,6 +142,16 @@ struct RasterState {
   }
 };
 
+// --- the stencil buffer (stencil.cpp) --------------------------------------------
+struct StencilState {
+  bool test = false;  // GL_STENCIL_TEST
+  GLenum func = GL_ALWAYS;
+  GLint ref = 0;  // as given; clamped to the buffer's range where it is used and read
+  GLuint value_mask = ~0u, write_mask = ~0u;
+  GLenum fail = GL_KEEP, depth_fail = GL_KEEP, pass = GL_KEEP;
+  GLint clear = 0;  // glClearStencil
+};
+
 // --- textures (texture.cpp) -------------------------------------------------------
 struct TextureObject {
   // Levels as glTexImage2D gave them (RGBA8 after the internal format was applied);
@@ -149,6 +163,7 @@ struct TextureObject {
   GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
   Vec4 border{0, 0, 0, 0};
   bool generate_mipmap = false;
+  int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
   // What the renderer samples, built when first drawn after a change (null: not yet,
   // or incomplete). Draws already recorded keep their own reference.
   std::shared_ptr<const Texture> built;
@@ -181,6 +196,13 @@ struct ClientArray {
 
 struct ArrayState {
   ClientArray vertex, normal, color, texcoord;
+  // glEdgeFlagPointer: GLbooleans `stride` bytes apart (0: packed).
+  bool edge_enabled = false;
+  GLsizei edge_stride = 0;
+  const GLboolean* edge_pointer = nullptr;
+  bool edge(GLint i) const {
+    return edge_pointer[size_t(i) * size_t(edge_stride ? edge_stride : 1)] != 0;
+  }
 };
 
 // --- display lists (lists.cpp) ----------------------------------------------------
@@ -196,6 +218,43 @@ struct ListState {
   int depth = 0;        // glCallList nesting now
   uint64_t budget = 0;  // commands the outermost glCallList may still run
   GLuint base = 0;      // glListBase
+};
+
+// --- selection (select.cpp): glRenderMode(GL_SELECT), the name stack, hit records --
+struct SelectState {
+  GLenum mode = GL_RENDER;
+  GLuint* buffer = nullptr;  // glSelectBuffer's
+  size_t size = 0, used = 0, hits = 0;
+  bool overflow = false;
+  std::vector<GLuint> names;
+  bool hit = false;  // since the last record
+  float min_z = 1, max_z = 0;
+};
+
+// --- attribute stacks (attrib.cpp): what glPushAttrib and glPushClientAttrib saved --
+struct AttribFrame {
+  GLbitfield mask = 0;
+  RasterState raster;
+  LightingState lighting;
+  StencilState stencil;
+  Box viewport;
+  float depth_near = 0, depth_far = 1;
+  GLenum matrix_mode = GL_MODELVIEW;
+  bool normalize = false, rescale_normal = false;
+  bool texture_enabled = false;
+  GLuint texture_bound = 0;
+  GLenum env_mode = GL_MODULATE;
+  Vec4 env_color;
+  Vec4 color, texcoord;
+  Vec3 normal;
+  bool edge_flag = true;
+  GLuint list_base = 0;
+};
+
+struct ClientAttribFrame {
+  GLbitfield mask = 0;
+  GLint unpack_alignment = 4, pack_alignment = 4;
+  ArrayState arrays;
 };
 
 }  // namespace velocity::gl

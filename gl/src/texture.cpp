@@ -157,6 +157,12 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       t.generate_mipmap = v[0] != 0;
       t.dirty = true;
       break;
+    case GL_TEXTURE_BASE_LEVEL:  // GL 1.2's: the levels drawn start here ...
+    case GL_TEXTURE_MAX_LEVEL:   // ... and end here (or at 1x1)
+      if (!(v[0] >= 0)) return error(GL_INVALID_VALUE);
+      (pname == GL_TEXTURE_BASE_LEVEL ? t.base_level : t.max_level) = v[0] < 1000 ? int(v[0]) : 1000;
+      t.dirty = true;
+      break;
     default: return error(GL_INVALID_ENUM);
   }
   changed();
@@ -185,16 +191,20 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     t.dirty = false;
     t.built.reset();
     t.complete = false;
-    const Texture::Level& base = t.levels[0];
+    // GL_TEXTURE_BASE_LEVEL and GL_TEXTURE_MAX_LEVEL choose the levels drawn: the chain
+    // from the base level to the max level or 1x1, whichever comes first.
+    if (t.base_level >= kMaxTextureLevels || t.max_level < t.base_level) return nullptr;
+    const size_t first = size_t(t.base_level), last = size_t(std::min(t.max_level, kMaxTextureLevels - 1));
+    const Texture::Level& base = t.levels[first];
     if (base.width == 0 || base.height == 0) return nullptr;
     const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
     if (t.generate_mipmap) {
-      for (size_t i = 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
+      for (size_t i = first + 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
         t.levels[i] = next_mip_level(t.levels[i - 1]);
     }
     std::vector<Texture::Level> levels{base};
     if (mip) {
-      for (size_t i = 1; levels.back().width > 1 || levels.back().height > 1; ++i) {
+      for (size_t i = first + 1; (levels.back().width > 1 || levels.back().height > 1) && i <= last; ++i) {
         if (i >= t.levels.size()) return nullptr;
         const Texture::Level& l = t.levels[i];
         if (l.width != std::max(1, levels.back().width / 2) ||

@@ -69,6 +69,7 @@ void Context::vertex(Vec4 v) {
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
   Vertex out;
   out.clip = transform_.mvp * v;
+  out.edge = edge_flag_;
   if (lighting_.enabled || raster_.fog) {
     const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
     if (lighting_.enabled) {
@@ -136,12 +137,23 @@ void Context::assemble(bool final) {
         polygon(t, 3, 2);
       }
       break;
-    case GL_QUADS:
+    case GL_QUADS: {
+      // Mesa (llvmpipe) splits a quad along v0 - v2 unless a vertex of the draw lies
+      // outside the view volume: then its clipper splits every quad of it along v1 - v3.
+      // The same here, for the quads of this glBegin/glEnd (or of this part of a long one).
+      bool outside = false;
+      for (uint32_t i = 0; i < n && !outside; ++i) {
+        const Vec4& c = prim_[o[i]].clip;
+        outside = !(std::fabs(c.x) <= c.w && std::fabs(c.y) <= c.w && std::fabs(c.z) <= c.w);
+      }
       for (uint32_t i = 0; i + 3 < n; i += 4) {
-        const uint32_t q[4] = {o[i], o[i + 1], o[i + 2], o[i + 3]};
-        polygon(q, 4, 3);
+        // The fan below from the first of q; the quad's fourth vertex provokes.
+        const uint32_t q[4] = {o[i + (outside ? 1 : 0)], o[i + (outside ? 2 : 1)], o[i + (outside ? 3 : 2)],
+                               o[i + (outside ? 0 : 3)]};
+        polygon(q, 4, outside ? 2 : 3);
       }
       break;
+    }
     case GL_QUAD_STRIP:
       if (!final) break;
       for (uint32_t i = 0; i + 3 < n; i += 2) {
@@ -183,6 +195,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
   // (Clip-space y is negated for the renderer: GL's counter-clockwise is clockwise here.)
   const bool front = (area <= 0) == (raster_.front_face == GL_CCW);
   if (raster_.cull && (raster_.cull_mode == GL_FRONT_AND_BACK || (raster_.cull_mode == GL_FRONT) == front)) return;
+  if (selecting()) return select_hit(idx, n, true);  // (select.cpp: hits, nothing drawn)
   const bool back_colors = lighting_.enabled && lighting_.two_side && !front;
   const bool flat = lighting_.shade_model == GL_FLAT;
   const Vertex& pv = prim_[idx[provoking]];
@@ -196,19 +209,30 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
       emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared), emit_vertex(c, color(c), shared);
     };
     for (int k = 1; k + 1 < n; ++k) tri(idx[0], idx[k], idx[k + 1]);  // a fan from the first vertex
-  } else if (mode == GL_LINE) {
-    target(PrimitiveKind::Lines, raster_.offset_line);
-    for (int k = 0; k < n; ++k) {
-      const uint32_t a = idx[k], b = idx[(k + 1) % n];
-      emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
-    }
   } else {
-    target(PrimitiveKind::Points, raster_.offset_point);
-    for (int k = 0; k < n; ++k) emit_vertex(idx[k], color(idx[k]), shared);
+    // Edge flags mark which boundary edges (and their first vertices) are drawn, for
+    // independent triangles, quads and polygons; strips and fans draw every edge.
+    const bool flags = mode_ == GL_TRIANGLES || mode_ == GL_QUADS || mode_ == GL_POLYGON;
+    if (mode == GL_LINE) {
+      target(PrimitiveKind::Lines, raster_.offset_line);
+      for (int k = 0; k < n; ++k) {
+        const uint32_t a = idx[k], b = idx[(k + 1) % n];
+        if (flags && !prim_[a].edge) continue;
+        emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
+      }
+    } else {
+      target(PrimitiveKind::Points, raster_.offset_point);
+      for (int k = 0; k < n; ++k)
+        if (!flags || prim_[idx[k]].edge) emit_vertex(idx[k], color(idx[k]), shared);
+    }
   }
 }
 
 void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
+  if (selecting()) {
+    const uint32_t ab[2] = {a, b};
+    return select_hit(ab, 2, false);
+  }
   target(PrimitiveKind::Lines, false);
   const bool flat = lighting_.shade_model == GL_FLAT;
   emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat);
@@ -216,13 +240,14 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
 }
 
 void Context::point_vertex(uint32_t a) {
+  if (selecting()) return select_hit(&a, 1, false);
   target(PrimitiveKind::Points, false);
   emit_vertex(a, prim_[a].front, true);
 }
 
 void Context::rect(float x1, float y1, float x2, float y2) {
   if (in_begin_error()) return;
-  begin(GL_POLYGON);
+  begin(GL_QUADS);  // as Mesa's glRect, so that it is split as a quad
   vertex({x1, y1, 0, 1}), vertex({x2, y1, 0, 1}), vertex({x2, y2, 0, 1}), vertex({x1, y2, 0, 1});
   end();
 }

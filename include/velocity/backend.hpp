@@ -53,6 +53,7 @@ class Backend {
   virtual void read_color(uint8_t* rgba, size_t row_bytes, int channels) const = 0;
   virtual void read_view_depth(float* out) const = 0;
   virtual void read_window_depth(float* out) const = 0;
+  virtual void read_stencil(uint8_t* out) const = 0;
   virtual std::vector<uint32_t> object_ids() const = 0;
   virtual size_t framebuffer_bytes() const = 0;
 };

@@ -7,8 +7,8 @@
 // coordinates and fog coordinate. The renderer clips them (near, far, guard band),
 // maps them through the batch's viewport, sets them up, bins them and rasterizes them
 // on the same tiles, threads and SIMD kernels as meshes, applying the PixelState below
-// in OpenGL's order: texture environment, fog, scissor, alpha test, depth test, blend,
-// colour mask.
+// in OpenGL's order: texture environment, fog, scissor, alpha test, stencil test,
+// depth test, blend, colour mask.
 //
 //   velocity::PrimitiveBatch b;
 //   b.kind = velocity::PrimitiveKind::Triangles;
@@ -62,6 +62,9 @@ enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add };
 enum class TexFormat : uint8_t { Rgba, Rgb, Luminance, LuminanceAlpha, Alpha, Intensity };
 
 enum class FogMode : uint8_t { Linear, Exp, Exp2 };
+
+// glStencilOp's operations, on the 8-bit stencil value (the Wrap ones are GL 1.4's).
+enum class StencilOp : uint8_t { Keep, Zero, Replace, Increment, Decrement, Invert, IncrementWrap, DecrementWrap };
 
 // How a texture is read: OpenGL's magnification and minification filters and wrap
 // modes. `mip` None samples level 0 only (GL_NEAREST / GL_LINEAR minification).
@@ -120,6 +123,15 @@ struct PixelState {
   BlendOp blend_op = BlendOp::Add;
   Vec4 blend_color{0, 0, 0, 0};
 
+  // The stencil test, between the alpha and the depth test: it passes where
+  // (ref & value_mask) func (stencil & value_mask); the stencil value then becomes
+  // fail's result where it failed, depth_fail's where the depth test failed, pass's
+  // where both passed (or there is no depth test), written under write_mask.
+  bool stencil_test = false;
+  CompareFunc stencil_func = CompareFunc::Always;
+  uint8_t stencil_ref = 0, stencil_value_mask = 0xff, stencil_write_mask = 0xff;
+  StencilOp stencil_fail = StencilOp::Keep, stencil_depth_fail = StencilOp::Keep, stencil_pass = StencilOp::Keep;
+
   uint8_t color_mask = 0xf;  // bit 0 red, 1 green, 2 blue, 3 alpha (glColorMask)
 };
 
@@ -160,6 +172,8 @@ struct ClearRequest {
   float depth_value = 1;
   uint8_t color_mask = 0xf;
   bool depth_write = true;  // false: depth is left alone (glDepthMask(GL_FALSE))
+  bool stencil = false;      // the stencil buffer, to stencil_value under stencil_mask
+  uint8_t stencil_value = 0, stencil_mask = 0xff;
   bool scissor = false;
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // as PixelState's scissor
 };

@@ -103,6 +103,8 @@ struct FrameStart {
   Vec4 color{0.1f, 0.1f, 0.15f, 1.0f};
   bool clear_depth_buffer = true;  // the same for the depth buffer
   float depth = 1.0f;
+  bool clear_stencil_buffer = true;  // and the 8-bit stencil buffer (PixelState's stencil test)
+  uint8_t stencil = 0;
 };
 
 // What the last frame did, for --verbose output and tests.
@@ -194,6 +196,10 @@ class Renderer {
   std::vector<float> window_depth() const;
   // window_depth into caller memory: width * height floats, top row first.
   void read_window_depth(float* out) const;
+  // Per output pixel (top row first), the 8-bit stencil value: what
+  // glReadPixels(GL_STENCIL_INDEX) returns. With super-sampling, the first sample.
+  // Throws velocity::Error on a backend that keeps no stencil buffer (the GPU's).
+  void read_stencil(uint8_t* out) const;
   // Per output pixel, the object id of what was drawn there (0 for nothing), when
   // options.object_ids was set for the frame; otherwise empty. With super-sampling,
   // the id of the nearest sample, never a mix.

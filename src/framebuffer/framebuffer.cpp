@@ -17,7 +17,7 @@ void Framebuffer::resize(int w, int h) {
   if (n <= color.capacity() && (ids.empty() || n <= ids.capacity())) {
     // Within the buffers' capacity (a program that switches between sizes, or
     // super-sampling factors): no new allocation, so the heap does not fragment.
-    color.resize(n), depth.resize(n);
+    color.resize(n), depth.resize(n), stencil.resize(n);
     if (!ids.empty()) ids.resize(n);
   } else {
     // New buffers first, so that running out of memory (a velocity::Error, not
@@ -25,13 +25,15 @@ void Framebuffer::resize(int w, int h) {
     try {
       BlockVector<uint32_t> c(n, 0);
       BlockVector<float> d(n, 1.0f);
+      BlockVector<uint8_t> s(n, 0);
       BlockVector<uint32_t> i(ids.empty() ? 0 : n, 0);
       color.swap(c);
       depth.swap(d);
+      stencil.swap(s);
       ids.swap(i);
     } catch (const std::bad_alloc&) {
       throw Error("framebuffer size " + std::to_string(w) + "x" + std::to_string(h) + ": cannot allocate " +
-                  std::to_string(n * (sizeof(uint32_t) + sizeof(float))) + " bytes");
+                  std::to_string(n * (sizeof(uint32_t) + sizeof(float) + 1)) + " bytes");
     }
   }
   width = w, height = h, tiles_x = tx, tiles_y = ty;
@@ -67,6 +69,7 @@ void read_row(const Framebuffer& fb, const T* data, int y, T* out) {
 void Framebuffer::read_color_row(int y, uint32_t* out) const { read_row(*this, color.data(), y, out); }
 void Framebuffer::read_depth_row(int y, float* out) const { read_row(*this, depth.data(), y, out); }
 void Framebuffer::read_id_row(int y, uint32_t* out) const { read_row(*this, ids.data(), y, out); }
+void Framebuffer::read_stencil_row(int y, uint8_t* out) const { read_row(*this, stencil.data(), y, out); }
 
 Image Framebuffer::color_image() const {
   Image image(width, height);

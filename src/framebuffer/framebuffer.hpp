@@ -7,7 +7,8 @@
 //   index(x, y) = tile(x >> 6, y >> 6) * 4096 + block((x >> 2) & 15, (y >> 2) & 15) * 16
 //                 + (y & 3) * 4 + (x & 3)
 //
-// A 4x4 block is one 64-byte cache line of colour (RGBA8) and one of depth (float):
+// A 4x4 block is one 64-byte cache line of colour (RGBA8) and one of depth (float)
+// (and 16 bytes of stencil):
 // the SIMD kernels load and store whole blocks, and a tile (32 KiB of colour and depth)
 // stays in the core's cache while it is drawn. The buffers are padded to whole tiles;
 // pixels outside width x height are never drawn and never read back. Readers see
@@ -60,17 +61,20 @@ struct Framebuffer {
   int tiles_x = 0, tiles_y = 0;   // 64x64 tiles covering them
   BlockVector<uint32_t> color;    // RGBA8 (byte 0 red), tiled as above
   BlockVector<float> depth;       // window depth in [0, 1]; 1 is the far plane
+  BlockVector<uint8_t> stencil;   // 8-bit stencil values, tiled as above
   BlockVector<uint32_t> ids;      // object id per sample, when the renderer keeps them (else empty)
-  // Tiles that hold nothing but the clear values below (colour, depth and ids zero): a
-  // frame that clears them to the same values and draws nothing there skips them.
+  // Tiles that hold nothing but the clear values below (colour, depth, stencil, and ids
+  // zero): a frame that clears them to the same values and draws nothing there skips them.
   std::vector<uint8_t> tile_clean;
   uint32_t clean_color = 0;
   float clean_depth = 1.0f;
+  uint8_t clean_stencil = 0;
 
   // Forgets which tiles are clean unless they were cleaned with these values.
-  void expect_clear(uint32_t color, float depth) {
-    if (color != clean_color || depth != clean_depth) std::fill(tile_clean.begin(), tile_clean.end(), 0);
-    clean_color = color, clean_depth = depth;
+  void expect_clear(uint32_t color, float depth, uint8_t stencil_value) {
+    if (color != clean_color || depth != clean_depth || stencil_value != clean_stencil)
+      std::fill(tile_clean.begin(), tile_clean.end(), 0);
+    clean_color = color, clean_depth = depth, clean_stencil = stencil_value;
   }
 
   static constexpr int kTilePixels = kTileSize * kTileSize;  // 4096
@@ -93,6 +97,7 @@ struct Framebuffer {
   void read_color_row(int y, uint32_t* out) const;
   void read_depth_row(int y, float* out) const;
   void read_id_row(int y, uint32_t* out) const;
+  void read_stencil_row(int y, uint8_t* out) const;
 
   Image color_image() const;
   // Depth as greyscale: the nearest depth drawn is white, the farthest drawn is dark

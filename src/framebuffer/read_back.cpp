@@ -1,6 +1,7 @@
 #include "framebuffer/read_back.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "framebuffer/resolve.hpp"
 
@@ -30,6 +31,15 @@ void read_color(const Framebuffer& samples, int k, ThreadPool* pool, uint8_t* rg
 
 void read_window_depth(const Framebuffer& samples, int k, ThreadPool* pool, float* out) {
   for_row_bands(pool, samples.height / k, [&](int y0, int y1) { resolve_window_depth_rows(samples, k, out, y0, y1); });
+}
+
+void read_stencil(const Framebuffer& samples, int k, uint8_t* out) {
+  const int w = samples.width / k, h = samples.height / k;
+  std::vector<uint8_t> row(size_t(samples.width));
+  for (int y = 0; y < h; ++y) {
+    samples.read_stencil_row(y * k, row.data());
+    for (int x = 0; x < w; ++x) out[size_t(y) * size_t(w) + size_t(x)] = row[size_t(x) * size_t(k)];
+  }
 }
 
 void read_view_depth(const Framebuffer& samples, int k, ThreadPool* pool, const Mat4& projection, float* out) {

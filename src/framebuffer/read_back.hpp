@@ -18,6 +18,8 @@ namespace velocity {
 void read_color(const Framebuffer& samples, int k, ThreadPool* pool, uint8_t* rgba, size_t row_bytes, int channels);
 // Per output pixel, the window depth of its nearest sample (1 where nothing was drawn).
 void read_window_depth(const Framebuffer& samples, int k, ThreadPool* pool, float* out);
+// Per output pixel, the stencil value of its first sample.
+void read_stencil(const Framebuffer& samples, int k, uint8_t* out);
 // Per output pixel, the distance along the view axis (-z in eye space) for the camera
 // whose `projection` drew the frame, 0 where nothing was drawn.
 void read_view_depth(const Framebuffer& samples, int k, ThreadPool* pool, const Mat4& projection, float* out);

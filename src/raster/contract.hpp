@@ -115,6 +115,7 @@ struct ClearShape {
   float depth;
   uint32_t color_mask;  // RGBA8 bits that are written (0 when colour is not cleared)
   uint32_t clear_depth;
+  uint8_t stencil, stencil_mask;  // stencil bits written (0 when stencil is not cleared)
 };
 
 // Rect records (points, and a fully covered box) have no shape: the bounding box is the
@@ -305,8 +306,10 @@ struct TileInputs {
   bool orthographic = false;  // the eye direction is +z everywhere (else towards the origin)
   bool depth_test = true;       // false: painter's mode (meshes: no depth test, no depth write)
   bool clear_color_buffer = true, clear_depth_buffer = true;
+  bool clear_stencil_buffer = true;
   uint32_t color = 0;           // the clear values
   float depth = 1.0f;
+  uint8_t stencil = 0;
 };
 
 }  // namespace velocity::raster

@@ -28,12 +28,16 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
   FixedShader<kTex, kFog> shader(r, draw);
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
-  // With no alpha test, the depth test can come first and spare the shading.
-  const bool early_z = !p.alpha_test;
+  // With no alpha or stencil test, the depth test can come first and spare the shading.
+  const bool stencil = p.stencil_test;
+  const bool early_z = !p.alpha_test && !stencil;
   const bool writes_depth = p.depth_test && p.depth_write;
+  const bool writes_stencil = stencil && p.stencil_write_mask &&
+                              (p.stencil_fail != StencilOp::Keep || p.stencil_depth_fail != StencilOp::Keep ||
+                               p.stencil_pass != StencilOp::Keep);
   const uint32_t keep = ~(((p.color_mask & 1) ? 0xffu : 0) | ((p.color_mask & 2) ? 0xff00u : 0) |
                           ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
-  if (keep == 0xffffffffu && !writes_depth && !t.ids) return;  // nothing would be written
+  if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids) return;  // nothing would be written
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
     float fx, fy;
@@ -55,8 +59,13 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
         if (hn::AllFalse(d, m)) continue;
       }
       Rgba c = shader.shade(v);
-      if (p.alpha_test) {
-        m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
+      if (p.alpha_test) m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
+      if (stencil) {
+        if (hn::AllFalse(d, m)) continue;
+        const MF depth = p.depth_test ? compare(p.depth_func, z, zb) : hn::FirstN(d, kLanes);
+        m = stencil_and_depth(p, m, depth, t.stencil + at + v * kLanes);
+        if (hn::AllFalse(d, m)) continue;
+      } else if (!early_z) {
         if (p.depth_test) m = hn::And(m, compare(p.depth_func, z, zb));
         if (hn::AllFalse(d, m)) continue;
       }

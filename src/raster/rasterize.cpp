@@ -26,7 +26,7 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
 
-// A clear record: the box, colour under its mask and/or depth.
+// A clear record: the box, colour under its mask, depth, stencil under its mask.
 void clear_box(const RecordHeader& r, const TileBox& b, const TileTarget& t) {
   const ClearShape& c = shape<ClearShape>(r);
   Block blocks[kMaxBlocks];
@@ -40,6 +40,7 @@ void clear_box(const RecordHeader& r, const TileBox& b, const TileTarget& t) {
         if (t.ids) t.ids[at + k] = 0;
       }
       if (c.clear_depth) t.depth[at + k] = c.depth;
+      if (c.stencil_mask) t.stencil[at + k] = uint8_t((t.stencil[at + k] & ~c.stencil_mask) | (c.stencil & c.stencil_mask));
     }
   }
 }
@@ -60,21 +61,23 @@ void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
-  TileTarget target{frame, fb.color.data() + base, fb.depth.data() + base, fb.ids.empty() ? nullptr : fb.ids.data() + base,
-                    tx, ty};
+  TileTarget target{frame, fb.color.data() + base, fb.depth.data() + base, fb.stencil.data() + base,
+                    fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
   constexpr int kPixels = Framebuffer::kTilePixels;
   // A tile with nothing to draw that already holds exactly the clear values (it was
-  // cleared and left empty last frame too: the background of most frames) is done.
+  // cleared and left empty last frame too: the background of most frames) is done. A
+  // stencil buffer the frame does not clear stays as it was: clean if it was.
   const bool full_clear = frame.clear_color_buffer && frame.clear_depth_buffer;
   const bool nothing = bins.empty(tile);
   uint8_t& clean = fb.tile_clean[size_t(tile)];
   if (full_clear && nothing && clean) return;
-  clean = full_clear && nothing;
+  clean = full_clear && nothing && (frame.clear_stencil_buffer || clean);
   if (frame.clear_color_buffer) {
     std::fill_n(target.color, kPixels, frame.color);
     if (target.ids) std::fill_n(target.ids, kPixels, 0u);
   }
   if (frame.clear_depth_buffer) std::fill_n(target.depth, kPixels, frame.depth);
+  if (frame.clear_stencil_buffer) std::fill_n(target.stencil, kPixels, frame.stencil);
   Block blocks[kMaxBlocks];
   Fragments fragments;  // small triangles' pixels, shaded 16 at a time (fragments-inl.h)
   auto flush = [&] { fragments.draw(frame, target.color, target.depth, target.ids); };

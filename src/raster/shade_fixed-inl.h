@@ -38,6 +38,66 @@ HWY_INLINE MF compare(CompareFunc f, VF a, VF b) {
   }
 }
 
+// --- the stencil buffer: kLanes 8-bit values at a time, worked on as 32-bit lanes.
+using DS8 = hn::Rebind<uint8_t, DI>;
+
+HWY_INLINE VI load_stencil(const uint8_t* p) { return hn::PromoteTo(DI(), hn::LoadU(DS8(), p)); }
+HWY_INLINE void store_stencil(VI v, uint8_t* p) { hn::StoreU(hn::DemoteTo(DS8(), v), DS8(), p); }
+
+HWY_INLINE MF compare_int(CompareFunc f, VI a, VI b) {
+  const DF d;
+  switch (f) {
+    case CompareFunc::Never: return hn::FirstN(d, 0);
+    case CompareFunc::Less: return hn::RebindMask(d, hn::Lt(a, b));
+    case CompareFunc::Equal: return hn::RebindMask(d, hn::Eq(a, b));
+    case CompareFunc::LessEqual: return hn::RebindMask(d, hn::Not(hn::Gt(a, b)));
+    case CompareFunc::Greater: return hn::RebindMask(d, hn::Gt(a, b));
+    case CompareFunc::NotEqual: return hn::RebindMask(d, hn::Not(hn::Eq(a, b)));
+    case CompareFunc::GreaterEqual: return hn::RebindMask(d, hn::Not(hn::Lt(a, b)));
+    default: return hn::FirstN(d, kLanes);
+  }
+}
+
+// glStencilOp's operation on stencil values s (in [0, 255]).
+HWY_INLINE VI stencil_op(StencilOp op, VI s, uint8_t ref) {
+  const DI di;
+  const VI one = hn::Set(di, 1), max = hn::Set(di, 255);
+  switch (op) {
+    case StencilOp::Keep: return s;
+    case StencilOp::Zero: return hn::Zero(di);
+    case StencilOp::Replace: return hn::Set(di, ref);
+    case StencilOp::Increment: return hn::Min(hn::Add(s, one), max);
+    case StencilOp::Decrement: return hn::Max(hn::Sub(s, one), hn::Zero(di));
+    case StencilOp::Invert: return hn::Xor(s, max);
+    case StencilOp::IncrementWrap: return hn::And(hn::Add(s, one), max);
+    default: return hn::And(hn::Sub(s, one), max);  // DecrementWrap
+  }
+}
+
+// The stencil test on the fragments `m`, and the depth test after it (`depth` are the
+// fragments that pass it; all when there is none): updates the stencil values at `sp`
+// as the ops of each outcome say, under the write mask, and returns the fragments that
+// passed both.
+HWY_INLINE MF stencil_and_depth(const PixelState& p, MF m, MF depth, uint8_t* sp) {
+  const DI di;
+  const VI s = load_stencil(sp);
+  const VI vm = hn::Set(di, p.stencil_value_mask);
+  const MF pass = hn::And(m, compare_int(p.stencil_func, hn::Set(di, p.stencil_ref & p.stencil_value_mask), hn::And(s, vm)));
+  const MF fail = hn::AndNot(pass, m);
+  const MF both = hn::And(pass, depth), depth_fail = hn::AndNot(depth, pass);
+  if (p.stencil_write_mask) {
+    const DF d;
+    VI next = s;
+    if (!hn::AllFalse(d, fail)) next = hn::IfThenElse(hn::RebindMask(di, fail), stencil_op(p.stencil_fail, s, p.stencil_ref), next);
+    if (!hn::AllFalse(d, depth_fail))
+      next = hn::IfThenElse(hn::RebindMask(di, depth_fail), stencil_op(p.stencil_depth_fail, s, p.stencil_ref), next);
+    if (!hn::AllFalse(d, both)) next = hn::IfThenElse(hn::RebindMask(di, both), stencil_op(p.stencil_pass, s, p.stencil_ref), next);
+    const VI wm = hn::Set(di, p.stencil_write_mask);
+    store_stencil(hn::Or(hn::AndNot(wm, s), hn::And(next, wm)), sp);
+  }
+  return both;
+}
+
 // The texture environment (OpenGL 1.x's table of texture functions). `f` is the
 // fragment's colour, `t` the texel as the Texture stores it for its format.
 HWY_INLINE Rgba texture_environment(const DrawState& draw, const Rgba& f, const Rgba& t) {

@@ -169,7 +169,8 @@ void run_clear_job(const geometry::ClearPlan& c, int width, int height, StageCon
       if (q.color_mask >> ch & 1) mask |= 0xffu << (8 * ch);
   raster::shape<raster::ClearShape>(*r) = {
       raster::pack_rgba(q.color_value.x, q.color_value.y, q.color_value.z, q.color_value.w),
-      std::clamp(q.depth_value, 0.0f, 1.0f), mask, uint32_t(q.depth && q.depth_write)};
+      std::clamp(q.depth_value, 0.0f, 1.0f), mask, uint32_t(q.depth && q.depth_write), q.stencil_value,
+      uint8_t(q.stencil ? q.stencil_mask : 0)};
   cx.emit(*r, offset, 2.0f);  // painter's mode: a clear sorts before everything
 }
 

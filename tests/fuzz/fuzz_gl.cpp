@@ -1,7 +1,7 @@
 // Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
 // arguments (GLU's quadrics and, where libvelocity-glut is built, GLUT's shapes among
 // them: they need no window). The input's bytes choose a context (1..96 pixels a side, any OSMesa
-// format, with or without depth), then up to 512 calls among ~90 GL, GLU and OSMesa
+// format, with or without depth and stencil), then up to 512 calls among ~120 GL, GLU and OSMesa
 // entry points, with enums drawn from valid and invalid values and numbers that are
 // often NaN, infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -81,7 +81,12 @@ class Bytes {
         GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, GL_SHORT, GL_INT, GL_DOUBLE, GL_BYTE,
         GL_COMPILE, GL_COMPILE_AND_EXECUTE, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY,
         GL_VIEWPORT, GL_MODELVIEW_MATRIX, GL_PROJECTION_STACK_DEPTH, GL_CURRENT_COLOR, GL_DEPTH_COMPONENT,
-        GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF};
+        GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VERSION, 0, 1, 0xFFFF,
+        GL_STENCIL_TEST, GL_KEEP, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP, GL_STENCIL_INDEX,
+        GL_STENCIL_REF, GL_STENCIL_WRITEMASK, GL_STENCIL_BITS, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_ALPHA,
+        GL_FUNC_SUBTRACT, GL_MIN, GL_MAX, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_ATTRIB_STACK_DEPTH,
+        GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_RED_SIZE, GL_RENDER, GL_SELECT, GL_EDGE_FLAG_ARRAY,
+        GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL};
     if (u8() < 240) return e[u8() % (sizeof e / sizeof e[0])];
     return GLenum(u32());
   }
@@ -152,7 +157,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const GLenum formats[] = {OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB, OSMESA_RGB, OSMESA_BGR};
   const GLenum format = formats[in.below(5)];
   const int w = 1 + in.below(96), h = 1 + in.below(96);
-  OSMesaContext ctx = OSMesaCreateContextExt(format, in.below(3) ? 24 : 0, 0, 0, nullptr);
+  const int buffers = in.below(3);  // none, depth, depth and stencil
+  OSMesaContext ctx = OSMesaCreateContextExt(format, buffers ? 24 : 0, buffers == 2 ? 8 : 0, 0, nullptr);
   fuzz_check(ctx != nullptr);
   const size_t bpp = format == OSMESA_RGB || format == OSMESA_BGR ? 3 : 4;
   std::vector<uint8_t> buffer(size_t(w) * h * bpp);
@@ -177,7 +183,61 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const float a = in.number(), b = in.number(), c = in.number(), d = in.number();
     const float v4[4] = {a, b, c, d};
     const GLint iv4[4] = {in.integer(), in.integer(), in.integer(), in.integer()};
-    switch (in.below(64)) {
+    switch (in.below(69)) {
+      case 63: glStencilFunc(e1, iv4[0], GLuint(iv4[1])); break;
+      case 64:
+        switch (in.below(5)) {
+          case 0:
+            glStencilOp(e1, e2, in.enumerant());
+            glStencilMask(GLuint(iv4[2]));
+            glClearStencil(iv4[3]);
+            break;
+          case 1: (in.u8() & 1 ? glPushAttrib(GLbitfield(iv4[0])) : glPopAttrib()); break;
+          case 2: (in.u8() & 1 ? glPushClientAttrib(GLbitfield(iv4[0])) : glPopClientAttrib()); break;
+          case 3: {
+            // Edge flags, from glEdgeFlag and from an array inside `attrib`'s bytes.
+            glEdgeFlag(GLboolean(in.u8() & 1));
+            glEdgeFlagPointer(GLsizei(in.below(3)) - 1, attrib.data());
+            (in.u8() & 1 ? glEnableClientState : glDisableClientState)(GL_EDGE_FLAG_ARRAY);
+            break;
+          }
+          default:
+            glBlendColor(a, b, c, d);
+            glBlendEquation(e1);
+            glBlendFuncSeparate(e2, in.enumerant(), in.enumerant(), in.enumerant());
+            break;
+        }
+        break;
+      case 66:
+        // Selection: the buffer is `out`'s memory; names and modes from the input.
+        if (in.u8() & 1) glSelectBuffer(in.below(64) - 1, reinterpret_cast<GLuint*>(out.data()));
+        glRenderMode(in.u8() & 1 ? GL_SELECT : e1);
+        (in.u8() & 1 ? glPushName(GLuint(iv4[0])) : in.u8() & 1 ? glPopName() : glLoadName(GLuint(iv4[1])));
+        if (in.u8() & 1) glInitNames();
+        break;
+      case 67: {
+        // Copies from the colour buffer (any rectangle, partly outside or not) and the
+        // level queries.
+        const GLint level = in.below(4) - 1;
+        const GLint x = in.integer() % 128, y = in.integer() % 128;
+        const GLsizei cw = in.below(70) - 2, ch = in.below(70) - 2;
+        if (in.u8() & 1)
+          glCopyTexImage2D(in.u8() & 1 ? GL_TEXTURE_2D : e1, level, in.u8() & 1 ? GL_RGBA : e2, x, y, cw, ch,
+                           in.below(3) - 1);
+        else
+          glCopyTexSubImage2D(GL_TEXTURE_2D, level, in.below(40) - 4, in.below(40) - 4, x, y, cw, ch);
+        GLint v = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, level, in.u8() & 1 ? GL_TEXTURE_WIDTH : e1, &v);
+        break;
+      }
+      case 65: {
+        // Ranges inside the arrays' 56 elements, as case 50's.
+        GLint firsts[3];
+        GLsizei counts[3];
+        for (int k = 0; k < 3; ++k) firsts[k] = in.below(56), counts[k] = in.below(57 - firsts[k]);
+        glMultiDrawArrays(e1, firsts, counts, in.below(5) - 1);
+        break;
+      }
       case 0: glBegin(e1); break;
       case 1: glEnd(); break;
       case 2: glVertex3f(a, b, c); break;

@@ -280,9 +280,9 @@ TEST(Hostile, OneByOnePixel) {
   }
 }
 
-// Colour and depth bytes of a w x h sample buffer: stored in whole 64x64 tiles
+// Colour, depth and stencil bytes of a w x h sample buffer: stored in whole 64x64 tiles
 // (framebuffer.hpp), so a 1-pixel-high image holds 64 rows.
-size_t framebuffer_bytes(int w, int h) { return size_t((w + 63) / 64 * 64) * size_t((h + 63) / 64 * 64) * 8; }
+size_t framebuffer_bytes(int w, int h) { return size_t((w + 63) / 64 * 64) * size_t((h + 63) / 64 * 64) * 9; }
 
 TEST(Hostile, ThinAndLargeFramebuffers) {
   // Odd sizes, so that the middle of the view is a pixel centre: the cube is under a
@@ -300,12 +300,12 @@ TEST(Hostile, ThinAndLargeFramebuffers) {
 }
 
 TEST(Hostile, LargestFramebuffer16384Squared) {
-  // 16384x16384: 1 GiB of colour and 1 GiB of depth, plus a 1 GiB image out.
+  // 16384x16384: 1 GiB of colour, 1 GiB of depth, 256 MiB of stencil, plus a 1 GiB image out.
   if (big_allocations_are_slow())
     GTEST_SKIP() << "skipped under ThreadSanitizer and valgrind (a 2 GiB framebuffer is too much for their "
                     "shadow memory); the normal and ASan runs cover it";
   Renderer r(16384, 16384);
-  EXPECT_EQ(r.framebuffer_bytes(), size_t(16384) * 16384 * 8);
+  EXPECT_EQ(r.framebuffer_bytes(), size_t(16384) * 16384 * 9);
   r.options.threads = 0;  // every core
   render_small_scene(r, Shading::Flat);
   Image img = r.color_image();

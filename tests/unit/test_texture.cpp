@@ -195,7 +195,7 @@ TEST(Texture, SeedHighResolutionModeIs2400x1800Inside) {
   Scene empty;
   r.render(empty);
   // 2400x1800 samples of colour and depth, stored in whole 64x64 tiles (2432x1856).
-  EXPECT_EQ(r.framebuffer_bytes(), size_t(38 * 64) * (29 * 64) * (4 + 4));
+  EXPECT_EQ(r.framebuffer_bytes(), size_t(38 * 64) * (29 * 64) * (4 + 4 + 1));
   EXPECT_EQ(r.color_image().width, 800);
   EXPECT_EQ(r.color_image().height, 600);
   r.options.ssaa = 5;

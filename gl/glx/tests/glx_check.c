@@ -1,7 +1,7 @@
 /* The GLX vendor library used as any GLX program uses the system's libGL (this file
  * is built against the system's <GL/glx.h> and libglvnd's libGL, never against pGL):
  * run with __GLX_VENDOR_LIBRARY_NAME=velocity under an X server (glx_test.py).
- * Visuals and FBConfigs say what exists (depth, alpha, no stencil); a double-buffered
+ * Visuals and FBConfigs say what exists (depth, stencil, alpha, no accumulation); a double-buffered
  * window shows at glXSwapBuffers exactly what GL drew, a single-buffered one at
  * glFlush; contexts are created, made current, destroyed and created again;
  * GLX_ARB_create_context gives what pGL is and refuses the rest with X errors;
@@ -111,8 +111,14 @@ int main(void) {
   CHECK(all && n == 4, "%d configs", n);
   XFree(all);
   const int with_stencil[] = {GLX_STENCIL_SIZE, 1, None};
-  GLXFBConfig* none = glXChooseFBConfig(dpy, screen, with_stencil, &n);
-  CHECK(!none && n == 0, "a stencil buffer is offered (%d configs)", n);
+  GLXFBConfig* stencil = glXChooseFBConfig(dpy, screen, with_stencil, &n);
+  CHECK(stencil && n == 2 && config_attribute(stencil[0], GLX_STENCIL_SIZE) == 8 &&
+            config_attribute(stencil[0], GLX_DEPTH_SIZE) == 24,
+        "%d configs with a stencil buffer", n);
+  XFree(stencil);
+  const int too_much_stencil[] = {GLX_STENCIL_SIZE, 9, None};
+  GLXFBConfig* none = glXChooseFBConfig(dpy, screen, too_much_stencil, &n);
+  CHECK(!none && n == 0, "a 9-bit stencil buffer is offered");
   const int with_accum[] = {GLX_ACCUM_RED_SIZE, 1, None};
   none = glXChooseFBConfig(dpy, screen, with_accum, &n);
   CHECK(!none && n == 0, "an accumulation buffer is offered");
@@ -124,14 +130,14 @@ int main(void) {
   XFree(configs);
   CHECK(config_attribute(config, GLX_DEPTH_SIZE) == 24, "depth");
   CHECK(config_attribute(config, GLX_ALPHA_SIZE) == 8, "alpha");
-  CHECK(config_attribute(config, GLX_STENCIL_SIZE) == 0, "stencil");
+  CHECK(config_attribute(config, GLX_STENCIL_SIZE) == 8, "stencil");
   CHECK(config_attribute(config, GLX_DOUBLEBUFFER) == 1, "double");
   CHECK(config_attribute(config, GLX_VISUAL_ID) != 0, "visual");
   const int single_no_depth[] = {GLX_DOUBLEBUFFER, False, None};
   configs = glXChooseFBConfig(dpy, screen, single_no_depth, &n);
   CHECK(configs && n == 2 && config_attribute(configs[0], GLX_DEPTH_SIZE) == 0, "smaller depth first");
   XFree(configs);
-  printf("ok configs: 4, depth 24 or none, alpha 8, no stencil or accumulation buffer\n");
+  printf("ok configs: 4, depth 24 and stencil 8 or neither, alpha 8, no accumulation buffer\n");
 
   int rgba_only[] = {GLX_RED_SIZE, 1, None};
   CHECK(!glXChooseVisual(dpy, screen, rgba_only), "a colour-index visual");
@@ -141,7 +147,7 @@ int main(void) {
   int v = 0;
   CHECK(glXGetConfig(dpy, vis, GLX_DOUBLEBUFFER, &v) == 0 && v == 1, "GLX_DOUBLEBUFFER");
   CHECK(glXGetConfig(dpy, vis, GLX_DEPTH_SIZE, &v) == 0 && v == 24, "GLX_DEPTH_SIZE");
-  CHECK(glXGetConfig(dpy, vis, GLX_STENCIL_SIZE, &v) == 0 && v == 0, "GLX_STENCIL_SIZE");
+  CHECK(glXGetConfig(dpy, vis, GLX_STENCIL_SIZE, &v) == 0 && v == 8, "GLX_STENCIL_SIZE");
   CHECK(glXGetConfig(dpy, vis, GLX_USE_GL, &v) == 0 && v == 1, "GLX_USE_GL");
   printf("ok glXChooseVisual, glXGetConfig\n");
 
@@ -162,7 +168,7 @@ int main(void) {
   glGetIntegerv(GL_DEPTH_BITS, iv);
   CHECK(iv[0] == 24, "GL_DEPTH_BITS %d", iv[0]);
   glGetIntegerv(GL_STENCIL_BITS, iv);
-  CHECK(iv[0] == 0, "GL_STENCIL_BITS %d", iv[0]);
+  CHECK(iv[0] == 8, "GL_STENCIL_BITS %d", iv[0]);
   draw_quarters(w, h);
   static unsigned char frame[70 * 46 * 4];
   glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, frame);

@@ -1,5 +1,6 @@
 /* Per-fragment operations: blending with GL's factors, the alpha test, fog (linear,
  * exp, exp2), the scissor test (also for glClear), the colour mask. */
+#define GL_GLEXT_PROTOTYPES /* Mesa's <GL/gl.h>: GL 1.4's functions (glext.h) */
 #include "harness.h"
 
 static void quad(float x0, float y0, float x1, float y1, float z) {
@@ -112,5 +113,54 @@ int main(int argc, char** argv) {
   quad(120, 5, 180, 60, 0);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   conf_frame("scissor_mask");
+
+  /* GL 1.4's blending: the constant colour and its factors, separate alpha factors,
+   * the five equations, glMultiDrawArrays. (The frame only: llvmpipe blends in 8-bit
+   * fixed point, a step off float blending now and then.) */
+  {
+    static const GLenum eq[5] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+    static const GLenum f[4] = {GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA,
+                                GL_ONE_MINUS_CONSTANT_ALPHA};
+    static const GLfloat strip[8] = {0, 100, 192, 100, 0, 128, 192, 128};
+    static const GLint first[2] = {0, 2};
+    static const GLsizei count[2] = {3, 2};
+    GLint v[4];
+    GLfloat c[4];
+    int j;
+    glClearColor(0.6f, 0.3f, 0.5f, 0.8f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    glBlendColor(0.25f, 0.5f, 0.75f, 0.4f);
+    for (i = 0; i < 5; ++i)
+      for (j = 0; j < 4; ++j) {
+        glBlendEquation(eq[i]);
+        glBlendFuncSeparate(f[j], f[3 - j], GL_SRC_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+        glColor4f(0.9f, 0.5f, 0.2f, 0.7f);
+        quad(i * 38.0f, j * 24.0f, i * 38.0f + 36, j * 24.0f + 22, 0);
+      }
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glVertexPointer(2, GL_FLOAT, 0, strip);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glColor4f(0.2f, 0.4f, 1, 1);
+    glMultiDrawArrays(GL_TRIANGLES, first, count, 1);
+    glMultiDrawArrays(GL_TRIANGLES, first, count, -1);
+    conf_value("multi_draw_negative", glGetError());
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisable(GL_BLEND);
+    conf_frame("blend14");
+    glBlendColor(2, -1, 0.5f, 0.25f);
+    glGetFloatv(GL_BLEND_COLOR, c);
+    conf_value("blend_color_r", c[0]);
+    conf_value("blend_color_g", c[1]);
+    glGetIntegerv(GL_BLEND_SRC_ALPHA, v);
+    conf_value("blend_src_alpha", v[0]);
+    glGetIntegerv(GL_BLEND_DST_ALPHA, v);
+    conf_value("blend_dst_alpha", v[0]);
+    glGetIntegerv(GL_BLEND_EQUATION, v);
+    conf_value("blend_equation", v[0]);
+    glBlendEquation(GL_ONE);
+    conf_value("blend_equation_bad", glGetError());
+  }
   return conf_end();
 }

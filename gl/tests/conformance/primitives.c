@@ -89,5 +89,70 @@ int main(int argc, char** argv) {
     }
   }
   conf_frame("sizes");
+
+  /* The quad split, seen in colours that are not affine across a quad: one inside the
+   * view volume (split along v0 - v2), one with corners outside it in the same frame
+   * (Mesa's clipper splits it along v1 - v3), and glRect, a quad. */
+  glPointSize(1);
+  glLineWidth(1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glViewport(0, 0, 100, 100);
+  glBegin(GL_QUADS);
+  glColor3f(1, 0, 0), glVertex2f(-0.9f, -0.9f);
+  glColor3f(0, 1, 0), glVertex2f(0.9f, -0.9f);
+  glColor3f(0, 0, 1), glVertex2f(0.9f, 0.9f);
+  glColor3f(1, 1, 1), glVertex2f(-0.9f, 0.9f);
+  glEnd();
+  glViewport(100, 0, 100, 100);
+  glBegin(GL_QUADS);
+  glColor3f(1, 0, 0), glVertex2f(-1.4f, -1.3f);
+  glColor3f(0, 1, 0), glVertex2f(1.2f, -1.5f);
+  glColor3f(0, 0, 1), glVertex2f(1.3f, 1.2f);
+  glColor3f(1, 1, 1), glVertex2f(-1.5f, 1.4f);
+  glEnd();
+  conf_frame("quad_split");
+  glViewport(0, 0, 200, 100);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glShadeModel(GL_FLAT);
+  glColor3f(0, 1, 1);
+  glRectf(-0.5f, -0.5f, 0.5f, 0.7f);
+  conf_frame("rect");
+
+  /* Edge flags: polygon mode LINE and POINT draw only the edges (and vertices) whose
+   * first vertex is flagged, for triangles, quads and polygons, from glEdgeFlag and
+   * from an edge-flag array. (Not strips and fans: GL ignores their flags, Mesa does
+   * not: docs/gl.md.) */
+  {
+    static const GLfloat tri[8] = {-0.9f, -0.9f, -0.1f, -0.9f, -0.5f, -0.1f, -0.9f, -0.1f};
+    static const GLboolean flags[4] = {GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE};
+    glClear(GL_COLOR_BUFFER_BIT);
+    glShadeModel(GL_SMOOTH);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glColor3f(1, 1, 0);
+    glBegin(GL_QUADS);
+    glEdgeFlag(GL_TRUE), glVertex2f(0.1f, 0.1f);
+    glEdgeFlag(GL_FALSE), glVertex2f(0.9f, 0.1f);
+    glEdgeFlag(GL_TRUE), glVertex2f(0.9f, 0.9f);
+    glEdgeFlag(GL_FALSE), glVertex2f(0.1f, 0.9f);
+    glEnd();
+    glEdgeFlag(GL_TRUE);
+    glVertexPointer(2, GL_FLOAT, 0, tri);
+    glEdgeFlagPointer(0, flags);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_EDGE_FLAG_ARRAY);
+    glColor3f(0, 1, 1);
+    glDrawArrays(GL_POLYGON, 0, 4);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+    glPointSize(3);
+    glTranslatef(1.003f, 0.013f, 0); /* the points off pixel boundaries */
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisableClientState(GL_EDGE_FLAG_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    conf_frame("edge_flags");
+  }
   return conf_end();
 }

@@ -223,5 +223,109 @@ int main(int argc, char** argv) {
     }
   }
   glDeleteTextures(4, tex);
+
+  /* glCopyTexImage2D and glCopyTexSubImage2D from the colour buffer (rectangles inside
+   * it), drawn back magnified; glGetTexLevelParameteriv of the copy. */
+  {
+    static const GLenum pnames[6] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_RED_SIZE,
+                                     GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE};
+    GLuint copy;
+    GLint v;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_TEXTURE_2D);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);
+    glColor3f(1, 0, 0), glVertex2f(-1, -1);
+    glColor3f(0, 1, 0), glVertex2f(-0.5f, -1);
+    glColor3f(0, 0, 1), glVertex2f(-0.75f, -0.5f);
+    glEnd();
+    glGenTextures(1, &copy);
+    glBindTexture(GL_TEXTURE_2D, copy);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 32, 32, 0);
+    conf_value("copy_error", glGetError());
+    for (i = 0; i < 6; ++i) {
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, pnames[i], &v);
+      conf_value("copy_level_parameter", v);
+    }
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 8, 8, 4, 2, 16, 8);
+    conf_value("copy_sub_error", glGetError());
+    {
+      /* glGetTexImage of the copy: RGBA bytes, and LUMINANCE floats (its red). */
+      static GLubyte texels[32 * 32 * 4];
+      static GLfloat lum[32 * 32];
+      unsigned long sum = 0;
+      int k;
+      glPixelStorei(GL_PACK_ALIGNMENT, 1);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      for (k = 0; k < 32 * 32 * 4; ++k) sum = (sum * 31 + texels[k]) % 1000003;
+      conf_value("get_tex_image_sum", (double)sum);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_FLOAT, lum);
+      conf_value("get_tex_image_lum", (double)lum[3 * 32 + 5]);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, 0x9999, texels);
+      conf_value("get_tex_image_bad_type", glGetError());
+      glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    }
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 20, 20, 0, 0, 16, 16); /* beyond the texture */
+    conf_value("copy_sub_outside", glGetError());
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    textured_quad(-0.2f, -0.9f, 0.9f, 0.9f, 1, 1);
+    glDisable(GL_TEXTURE_2D);
+    conf_frame("copy");
+    glDeleteTextures(1, &copy);
+  }
+
+  /* GL 1.2's GL_TEXTURE_BASE_LEVEL and GL_TEXTURE_MAX_LEVEL: six levels of solid,
+   * distinct colours; quads at 32, 8 and 2 pixels with the base level 0, 2 and 1 and
+   * the max level 1 and 3. */
+  {
+    static const GLubyte level_colours[6][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 0}, {0, 255, 255},
+                                                {255, 0, 255}};
+    static GLubyte solid[32 * 32 * 3];
+    GLuint levels_tex;
+    int lv, k, row;
+    glGenTextures(1, &levels_tex);
+    glBindTexture(GL_TEXTURE_2D, levels_tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (lv = 0; lv < 6; ++lv) {
+      const int size = 32 >> lv;
+      for (k = 0; k < size * size; ++k) memcpy(solid + 3 * k, level_colours[lv], 3);
+      glTexImage2D(GL_TEXTURE_2D, lv, GL_RGB, size, size, 0, GL_RGB, GL_UNSIGNED_BYTE, solid);
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glEnable(GL_TEXTURE_2D);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 192, 0, 128, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    for (row = 0; row < 3; ++row) {
+      static const int base[3] = {0, 2, 1}, max[3] = {1000, 3, 1};
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, base[row]);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, max[row]);
+      for (k = 0; k < 3; ++k) {
+        const float size = (float)(32 >> (2 * k)), x = 4.0f + 60.0f * k, y = 4.0f + 40.0f * row;
+        glBegin(GL_QUADS);
+        glTexCoord2f(0, 0), glVertex2f(x, y);
+        glTexCoord2f(1, 0), glVertex2f(x + size, y);
+        glTexCoord2f(1, 1), glVertex2f(x + size, y + size);
+        glTexCoord2f(0, 1), glVertex2f(x, y + size);
+        glEnd();
+      }
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, -1);
+    conf_value("base_level_negative", glGetError());
+    glDisable(GL_TEXTURE_2D);
+    conf_frame("levels");
+    glDeleteTextures(1, &levels_tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  }
   return conf_end();
 }

@@ -1,0 +1,115 @@
+// glPushAttrib / glPopAttrib and glPushClientAttrib / glPopClientAttrib: the groups of
+// state GL 1.5's tables 6.5-6.35 name, saved and restored group by group. A group
+// restores exactly its own fields (GL_ENABLE_BIT the enables, GL_DEPTH_BUFFER_BIT the
+// depth test, function, mask and clear value, ...), whatever else the frame saved.
+#include "context.hpp"
+
+namespace velocity::gl {
+
+void Context::push_attrib(GLbitfield mask) {
+  if (in_begin_error()) return;
+  if (attrib_stack_.size() >= size_t(kMaxAttribDepth)) return error(GL_STACK_OVERFLOW);
+  AttribFrame f;
+  f.mask = mask;
+  f.raster = raster_;
+  f.lighting = lighting_;
+  f.stencil = stencil_;
+  f.viewport = transform_.viewport;
+  f.depth_near = transform_.depth_near, f.depth_far = transform_.depth_far;
+  f.matrix_mode = transform_.matrix_mode;
+  f.normalize = transform_.normalize, f.rescale_normal = transform_.rescale_normal;
+  f.texture_enabled = texture_.enabled, f.texture_bound = texture_.bound;
+  f.env_mode = texture_.env_mode, f.env_color = texture_.env_color;
+  f.color = color_, f.texcoord = texcoord_, f.normal = normal_, f.edge_flag = edge_flag_;
+  f.list_base = lists_.base;
+  attrib_stack_.push_back(std::move(f));
+}
+
+void Context::pop_attrib() {
+  if (in_begin_error()) return;
+  if (attrib_stack_.empty()) return error(GL_STACK_UNDERFLOW);
+  const AttribFrame f = std::move(attrib_stack_.back());
+  attrib_stack_.pop_back();
+  const GLbitfield m = f.mask;
+  RasterState& r = raster_;
+  const RasterState& s = f.raster;
+  if (m & GL_CURRENT_BIT) color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
+  if (m & GL_POINT_BIT) r.point_size = s.point_size;
+  if (m & GL_LINE_BIT) r.line_width = s.line_width;
+  if (m & GL_POLYGON_BIT) {
+    r.cull = s.cull, r.cull_mode = s.cull_mode, r.front_face = s.front_face;
+    r.polygon_mode[0] = s.polygon_mode[0], r.polygon_mode[1] = s.polygon_mode[1];
+    r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
+    r.offset_factor = s.offset_factor, r.offset_units = s.offset_units;
+  }
+  if (m & GL_LIGHTING_BIT) lighting_ = f.lighting;
+  if (m & GL_FOG_BIT) {
+    r.fog = s.fog, r.fog_mode = s.fog_mode, r.fog_start = s.fog_start, r.fog_end = s.fog_end;
+    r.fog_density = s.fog_density, r.fog_color = s.fog_color;
+  }
+  if (m & GL_DEPTH_BUFFER_BIT) r.depth_test = s.depth_test, r.depth_func = s.depth_func, r.clear_depth = s.clear_depth, r.depth_write = s.depth_write;
+  if (m & GL_STENCIL_BUFFER_BIT) stencil_ = f.stencil;
+  if (m & GL_VIEWPORT_BIT) {
+    transform_.viewport = f.viewport;
+    transform_.depth_near = f.depth_near, transform_.depth_far = f.depth_far;
+  }
+  if (m & GL_TRANSFORM_BIT) {
+    transform_.matrix_mode = f.matrix_mode;
+    transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;
+  }
+  if (m & GL_ENABLE_BIT) {
+    r.alpha_test = s.alpha_test, r.blend = s.blend, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
+    r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
+    r.scissor_test = s.scissor_test;
+    lighting_.enabled = f.lighting.enabled, lighting_.color_material = f.lighting.color_material;
+    for (int i = 0; i < kMaxLights; ++i) lighting_.lights[i].enabled = f.lighting.lights[i].enabled;
+    transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;
+    stencil_.test = f.stencil.test;
+    texture_.enabled = f.texture_enabled;
+  }
+  if (m & GL_COLOR_BUFFER_BIT) {
+    r.alpha_test = s.alpha_test, r.alpha_func = s.alpha_func, r.alpha_ref = s.alpha_ref;
+    r.blend = s.blend, r.blend_src = s.blend_src, r.blend_dst = s.blend_dst;
+    r.blend_src_alpha = s.blend_src_alpha, r.blend_dst_alpha = s.blend_dst_alpha;
+    r.blend_equation = s.blend_equation, r.blend_color = s.blend_color;
+    for (int i = 0; i < 4; ++i) r.color_mask[i] = s.color_mask[i];
+    r.clear_color = s.clear_color;
+  }
+  if (m & GL_HINT_BIT)
+    for (int i = 0; i < 5; ++i) r.hints[i] = s.hints[i];
+  if (m & GL_SCISSOR_BIT) r.scissor_test = s.scissor_test, r.scissor = s.scissor;
+  if (m & GL_TEXTURE_BIT) {
+    texture_.enabled = f.texture_enabled;
+    // The binding comes back if its texture still exists (a deleted one binds 0).
+    texture_.bound = f.texture_bound == 0 || texture_.objects.count(f.texture_bound) ? f.texture_bound : 0;
+    texture_.env_mode = f.env_mode, texture_.env_color = f.env_color;
+  }
+  if (m & GL_LIST_BIT) lists_.base = f.list_base;
+  transform_.derived_dirty = true;
+  if (lighting_.color_material) apply_color_material();
+  changed();
+}
+
+void Context::push_client_attrib(GLbitfield mask) {
+  if (in_begin_error()) return;
+  if (client_attrib_stack_.size() >= size_t(kMaxAttribDepth)) return error(GL_STACK_OVERFLOW);
+  ClientAttribFrame f;
+  f.mask = mask;
+  f.unpack_alignment = unpack_alignment, f.pack_alignment = pack_alignment;
+  f.arrays = arrays;
+  client_attrib_stack_.push_back(f);
+}
+
+void Context::pop_client_attrib() {
+  if (in_begin_error()) return;
+  if (client_attrib_stack_.empty()) return error(GL_STACK_UNDERFLOW);
+  const ClientAttribFrame f = client_attrib_stack_.back();
+  client_attrib_stack_.pop_back();
+  if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) unpack_alignment = f.unpack_alignment, pack_alignment = f.pack_alignment;
+  if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) arrays = f.arrays;
+}
+
+int Context::attrib_depth() const { return int(attrib_stack_.size()); }
+int Context::client_attrib_depth() const { return int(client_attrib_stack_.size()); }
+
+}  // namespace velocity::gl

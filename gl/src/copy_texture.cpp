@@ -1,0 +1,128 @@
+// glCopyTexImage2D and glCopyTexSubImage2D: the frame is run and a rectangle of its
+// colour buffer (GL's rows, bottom first: the texture's first row is the rectangle's
+// bottom row) becomes a texture image, through tex_image / tex_sub_image (texture.cpp).
+// Pixels outside the framebuffer are undefined in GL; here they read as opaque black.
+// glGetTexLevelParameter and glGetTexImage read a level's size, format and texels back.
+#include <algorithm>
+#include <cstring>
+
+#include "context.hpp"
+
+namespace velocity::gl {
+
+std::vector<uint32_t> Context::read_colour_rect(GLint x, GLint y, GLsizei w, GLsizei h) {
+  std::vector<uint32_t> texels(size_t(w) * size_t(h), 0xff000000u);
+  if (!renderer_) return texels;
+  run_frame();
+  const uint8_t* rows = colour_rows();
+  const bool alpha = format_ != GL_RGB && format_ != 0x4 /* OSMESA_BGR */;
+  for (GLsizei j = 0; j < h; ++j) {
+    const int64_t fy = int64_t(y) + j;
+    if (fy < 0 || fy >= height_) continue;
+    for (GLsizei i = 0; i < w; ++i) {
+      const int64_t fx = int64_t(x) + i;
+      if (fx < 0 || fx >= width_) continue;
+      const uint8_t* p = rows + (size_t(fy) * size_t(width_) + size_t(fx)) * 4;
+      texels[size_t(j) * size_t(w) + size_t(i)] =
+          uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(alpha ? p[3] : 255) << 24;
+    }
+  }
+  return texels;
+}
+
+void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h,
+                             GLint border) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
+      h > (kMaxTextureSize >> level) || border != 0 || !base_format(GLint(internal)))
+    return error(GL_INVALID_VALUE);
+  const std::vector<uint32_t> texels = read_colour_rect(x, y, w, h);
+  tex_image(target, level, GLint(internal), w, h, border, &texels);
+}
+
+void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
+                                 GLsizei h) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  const Texture::Level& l = bound_texture()->levels[size_t(level)];
+  if (l.width == 0) return error(GL_INVALID_OPERATION);
+  if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + w > l.width || int64_t(yoffset) + h > l.height)
+    return error(GL_INVALID_VALUE);
+  tex_sub_image(target, level, xoffset, yoffset, w, h, read_colour_rect(x, y, w, h));
+}
+
+bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out) {
+  if (in_begin_error()) return false;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM), false;
+  if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE), false;
+  const TextureObject& t = *bound_texture();
+  const Texture::Level& l = t.levels[size_t(level)];
+  // Each channel the format has is kept in 8 bits (the texels are RGBA8).
+  const GLenum base = l.width ? t.internal_format : GLenum(0);
+  auto bits = [&](bool has) { return has ? 8 : 0; };
+  const bool rgb = base == GL_RGB || base == GL_RGBA;
+  switch (pname) {
+    case GL_TEXTURE_WIDTH: *out = l.width; return true;
+    case GL_TEXTURE_HEIGHT: *out = l.height; return true;
+    case GL_TEXTURE_BORDER: *out = 0; return true;
+    case GL_TEXTURE_INTERNAL_FORMAT: *out = GLint(l.width ? t.internal_format : 1); return true;  // (GL_TEXTURE_COMPONENTS)
+    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: *out = bits(rgb); return true;
+    case GL_TEXTURE_ALPHA_SIZE:
+      *out = bits(base == GL_RGBA || base == GL_ALPHA || base == GL_LUMINANCE_ALPHA);
+      return true;
+    case GL_TEXTURE_LUMINANCE_SIZE: *out = bits(base == GL_LUMINANCE || base == GL_LUMINANCE_ALPHA); return true;
+    case GL_TEXTURE_INTENSITY_SIZE: *out = bits(base == GL_INTENSITY); return true;
+    default: return error(GL_INVALID_ENUM), false;
+  }
+}
+
+void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+  if (in_begin_error()) return;
+  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE);
+  int comps;
+  switch (format) {
+    case GL_RGBA: case GL_BGRA: comps = 4; break;
+    case GL_RGB: case GL_BGR: comps = 3; break;
+    case GL_LUMINANCE_ALPHA: comps = 2; break;
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: comps = 1; break;
+    default: return error(GL_INVALID_ENUM);
+  }
+  if (type != GL_UNSIGNED_BYTE && type != GL_FLOAT) return error(GL_INVALID_ENUM);
+  const TextureObject& t = *bound_texture();
+  const Texture::Level& l = t.levels[size_t(level)];
+  if (!pixels || l.width == 0) return;
+  const size_t tsize = type == GL_FLOAT ? 4 : 1, align = size_t(std::max(pack_alignment, 1));
+  const size_t row_bytes = (size_t(l.width) * size_t(comps) * tsize + align - 1) / align * align;
+  const GLenum base = t.internal_format;
+  for (int y = 0; y < l.height; ++y)
+    for (int x = 0; x < l.width; ++x) {
+      const uint32_t p = l.texels[size_t(y) * size_t(l.width) + size_t(x)];
+      float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
+      // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
+      // intensity as R), then the format's.
+      if (base == GL_LUMINANCE || base == GL_INTENSITY) g = b = 0, a = 1;
+      if (base == GL_LUMINANCE_ALPHA) g = b = 0;
+      if (base == GL_RGB) a = 1;
+      if (base == GL_ALPHA) r = g = b = 0;
+      float c[4] = {r, g, b, a};
+      switch (format) {
+        case GL_BGRA: c[0] = b, c[2] = r; break;
+        case GL_BGR: c[0] = b, c[2] = r; break;
+        case GL_LUMINANCE_ALPHA: c[1] = a; break;
+        case GL_GREEN: c[0] = g; break;
+        case GL_BLUE: c[0] = b; break;
+        case GL_ALPHA: c[0] = a; break;
+        default: break;  // RGBA, RGB, RED, LUMINANCE: as they are
+      }
+      uint8_t* dst = static_cast<uint8_t*>(pixels) + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
+      for (int k = 0; k < comps; ++k) {
+        if (type == GL_FLOAT) std::memcpy(dst + 4 * k, &c[k], 4);
+        else dst[k] = uint8_t(c[k] * 255.0f + 0.5f);
+      }
+    }
+}
+
+}  // namespace velocity::gl
