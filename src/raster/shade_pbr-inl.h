@@ -36,6 +36,9 @@
 #define VELOCITY_RASTER_SHADE_PBR_INL_H_
 #endif
 
+#include <algorithm>
+#include <optional>
+
 #include "raster/output-inl.h"
 #include "raster/rasterize.hpp"
 #include "raster/sampler-inl.h"
@@ -83,6 +86,26 @@ HWY_INLINE VF ggx_albedo(const float* table, VF roughness, VF nv) {
   return hn::MulAdd(hn::Sub(bottom, top), fy, top);
 }
 
+// 1 / E - 1 along N.V for one roughness (a draw without a metallic-roughness texture):
+// the table's rows at that roughness, so a pixel reads two entries, not four, and
+// divides by nothing. Linear in N.V between the rows' centres, clamped at the ends.
+struct LostEnergyRow {
+  static constexpr int n = shading::kGgxAlbedoSize;
+  float lost[n];
+  explicit LostEnergyRow(float roughness) {
+    for (int j = 0; j < n; ++j) lost[j] = 1.0f / shading::ggx_albedo(roughness, (float(j) + 0.5f) / n) - 1.0f;
+  }
+  HWY_INLINE VF operator()(VF nv) const {
+    const DF d;
+    const DI di;
+    const VF x = hn::Min(hn::Max(hn::MulSub(nv, hn::Set(d, float(n)), hn::Set(d, 0.5f)), hn::Zero(d)), hn::Set(d, n - 1.0f));
+    const VF lo = hn::Min(hn::Floor(x), hn::Set(d, n - 2.0f));
+    const VI j = hn::Min(hn::Max(hn::ConvertTo(di, lo), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
+    const VF a = hn::GatherIndex(d, lost, j), b = hn::GatherIndex(d, lost, hn::Add(j, hn::Set(di, 1)));
+    return hn::MulAdd(hn::Sub(b, a), hn::Sub(x, lo), a);
+  }
+};
+
 // One PBR texture of a draw: its view, uv map and the levels chosen for the block.
 struct PbrTexture {
   const SamplerView* view = nullptr;
@@ -113,6 +136,7 @@ struct PbrShader {
   const bool ortho;
   const float* albedo = shading::ggx_albedo_table();
   PbrTexture base, mr, normal, occlusion, emissive;
+  std::optional<LostEnergyRow> lost_row;  // the roughness is the factor's everywhere
 
   PbrShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
       : m(d.pbr), lights(*f.lights), ortho(f.orthographic) {
@@ -126,6 +150,7 @@ struct PbrShader {
       if (kTangent) use(normal, m.normal, m.normal_uv);
       use(occlusion, m.occlusion, m.occlusion_uv);
       use(emissive, m.emissive_map, m.emissive_uv);
+      if (!mr) lost_row.emplace(m.roughness >= 0.045f ? std::min(m.roughness, 1.0f) : 0.045f);  // as shade() clamps
     }
   }
 
@@ -218,7 +243,7 @@ struct PbrShader {
     // Multiple scattering: the specular lobe times M = 1 + f0 (1 / E - 1), per channel.
     V3 ms{one, one, one};
     if (!lights.directional.empty() || !lights.point.empty()) {
-      const VF lost = hn::Sub(hn::Div(one, ggx_albedo(albedo, rough, nv)), one);
+      const VF lost = lost_row ? (*lost_row)(nv) : hn::Sub(hn::Div(one, ggx_albedo(albedo, rough, nv)), one);
       ms = {hn::MulAdd(f0.x, lost, one), hn::MulAdd(f0.y, lost, one), hn::MulAdd(f0.z, lost, one)};
     }
 

@@ -52,7 +52,7 @@ const float* ggx_albedo_table() {
 float ggx_albedo(float roughness, float n_dot_v) {
   const float* t = ggx_albedo_table();
   auto axis = [](float v, int& i0, float& f) {
-    const float x = std::clamp(v * kN - 0.5f, 0.0f, float(kN - 1));
+    const float x = std::clamp(std::isnan(v) ? 0.0f : v * kN - 0.5f, 0.0f, float(kN - 1));
     i0 = std::min(int(x), kN - 2);
     f = x - float(i0);
   };
