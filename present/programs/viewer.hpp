@@ -12,6 +12,7 @@
 #include "runtime/program.hpp"
 #include "velocity/animation.hpp"
 #include "velocity/load.hpp"
+#include "velocity/renderer.hpp"
 
 namespace velocity::realtime {
 
@@ -21,6 +22,11 @@ struct ViewerOptions {
   bool cull_back_faces = false;
   std::string screenshot_prefix = "velocity-shot";  // screenshots: PREFIX-NNN.png
   int ssaa = 1;
+  // The colour pipeline, tone mapping and exposure, as `render` takes them
+  // (docs/appearance.md): Auto is linear with sRGB for PBR materials (glTF).
+  ColorPipeline color = ColorPipeline::Auto;
+  ToneMap tone_map = ToneMap::None;
+  float exposure = 1.0f;
 };
 
 class ViewerProgram : public Program {

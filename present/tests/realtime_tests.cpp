@@ -829,5 +829,59 @@ TEST(Viewer, GltfAnimationPlaysPausesAndSteps) {
   run_scripted(v, "0 press k\n", 0.5);
   EXPECT_TRUE(v.playing());
   EXPECT_NEAR(v.animation_time(), 1.2, 1e-6);
+// `view --color/--tone-map/--exposure` reach the frame as `render`'s do, and a glTF
+// model is drawn as `render` draws it (scene_from_model, ColorPipeline::Auto): an unlit
+// baseColorFactor 0.5 shows 188 (sRGB of linear 0.5); exposure 0.5 in the linear
+// pipeline shows sRGB of 0.25, 137; the display pipeline has no exposure.
+TEST(Viewer, ColourOptionsAsRenderHasThem) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "velocity_viewer_colour";
+  fs::create_directories(dir);
+  const fs::path model = dir / "grey.gltf";
+  {
+    // One quad, x and y in [-1, 1] at z = 0, facing +Z: positions then indices.
+    const float pos[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+    const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+    std::string blob(reinterpret_cast<const char*>(pos), sizeof pos);
+    blob.append(reinterpret_cast<const char*>(idx), sizeof idx);
+    static const char* b64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string uri;
+    for (size_t i = 0; i < blob.size(); i += 3) {
+      const size_t n = std::min<size_t>(3, blob.size() - i);
+      uint32_t v = 0;
+      for (size_t k = 0; k < 3; ++k) v = (v << 8) | (k < n ? uint8_t(blob[i + k]) : 0u);
+      for (size_t k = 0; k < 4; ++k) uri += k <= n ? b64[(v >> (18 - 6 * k)) & 63] : '=';
+    }
+    std::FILE* f = std::fopen(model.string().c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fprintf(f, R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+      "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}, "extensions": {"KHR_materials_unlit": {}}}],
+      "extensionsUsed": ["KHR_materials_unlit"],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+      "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,%s"}]})",
+                 uri.c_str());
+    std::fclose(f);
+  }
+  auto centre = [&](ColorPipeline color, float exposure) {
+    ViewerOptions o;
+    o.model = model.string();
+    o.color = color, o.exposure = exposure;
+    ViewerProgram v(o);
+    v.resize(64, 48);
+    FrameDescription frame;
+    v.frame(frame);
+    EXPECT_EQ(frame.options.color, color);
+    EXPECT_EQ(frame.options.exposure, exposure);
+    Renderer r(64, 48);
+    r.options = frame.options;
+    r.render(frame.scene);
+    return int(r.color_image().pixel(32, 24)[0]);
+  };
+  EXPECT_EQ(centre(ColorPipeline::Auto, 1.0f), 188);
+  EXPECT_EQ(centre(ColorPipeline::Auto, 0.5f), 137);
+  EXPECT_EQ(centre(ColorPipeline::Display, 0.5f), 188);
   fs::remove_all(dir);
 }

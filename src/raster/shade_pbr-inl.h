@@ -1,19 +1,30 @@
 // glTF 2.0's metallic-roughness material, per pixel, N pixels at a time: the BRDF of
 // the specification's Appendix B — Lambert diffuse and a GGX / Trowbridge-Reitz
-// specular lobe with Smith's height-correlated visibility and Schlick's Fresnel, f0 =
-// 0.04 mixed to the base colour by metallic:
+// specular lobe with Smith's height-correlated visibility and Schlick's Fresnel, the
+// dielectric (f0 = 0.04) and metal (f0 = base) BRDFs mixed by metallic:
 //
 //   c_diff = base (1 - metallic)        f0 = 0.04 (1 - metallic) + base metallic
 //   a = roughness^2                     F = f0 + (1 - f0) (1 - V.H)^5
+//   F_d = 0.04 + 0.96 (1 - V.H)^5       (the dielectric's Fresnel)
 //   D = a^2 / (pi ((N.H)^2 (a^2 - 1) + 1)^2)
 //   Vis = 0.5 / (N.L sqrt((N.V)^2 (1 - a^2) + a^2) + N.V sqrt((N.L)^2 (1 - a^2) + a^2))
-//   colour = sum_i ((1 - F) c_diff / pi + F D Vis) radiance_i N.L_i
+//   M = 1 + f0 (1 / E(roughness, N.V) - 1)   (shading/ggx_albedo.hpp)
+//   colour = sum_i ((1 - F_d) c_diff / pi + F D Vis M) radiance_i N.L_i
 //          + ambient c_diff occlusion + emissive
+//
+// M gives the specular lobe the light that bounces between microfacets more than once
+// (Turquin's compensation, which three.js applies to punctual lights too): up to 2.5x
+// on a rough metal, 1.00-1.05 on smooth or dielectric surfaces. The spec's single-
+// scattering lobe without it makes rough metals darker than three.js by that factor.
+// The diffuse share is (1 - F_d), not (1 - F): mix(fresnel_mix(F_d, diffuse, specular),
+// F_metal specular, metallic) expands to this. The spec's pseudocode had (1 - F) until
+// 2024 (KhronosGroup/glTF#2386, a bug it calls so), which differs between metallic 0
+// and 1 only; three.js has the corrected form.
 //
 // with the lights of shading/lighting.hpp (radiance: the light's colour times its
 // falloff and cone, detail::punctual). The ambient light is a uniform radiance (so
 // Lambert returns c_diff times it), the only light occlusion darkens, as glTF says.
-// Roughness is clamped to 0.0525 as three.js clamps it (a = 0 is a mirror no point
+// Roughness is clamped to 0.045 as three.js clamps it (a = 0 is a mirror no point
 // light can be seen in). Base colour = factor x vertex colour x texture (sRGB-decoded
 // in a Linear frame); metallic and roughness = factors x the texture's B and G; the
 // normal map's xy scaled by normal_scale in the tangent frame; each texture through
@@ -25,11 +36,15 @@
 #define VELOCITY_RASTER_SHADE_PBR_INL_H_
 #endif
 
+#include <algorithm>
+#include <optional>
+
 #include "raster/output-inl.h"
 #include "raster/rasterize.hpp"
 #include "raster/sampler-inl.h"
 #include "raster/shade_mesh-inl.h"
 #include "raster/tile-inl.h"
+#include "shading/ggx_albedo.hpp"
 #include "shading/lighting-inl.h"
 #include "simd/simd-inl.h"
 
@@ -44,6 +59,51 @@ namespace lit = velocity::shading::HWY_NAMESPACE;
 // What the Pbr shader returns: linear light (or display values) and alpha.
 struct PbrOut {
   VF r, g, b, a;
+};
+
+// The specular lobe's directional albedo E(roughness, N.V): shading::ggx_albedo_table
+// read bilinearly with clamped edges (shading::ggx_albedo, N pixels at a time).
+HWY_INLINE VF ggx_albedo(const float* table, VF roughness, VF nv) {
+  const DF d;
+  const DI di;
+  constexpr int n = shading::kGgxAlbedoSize;
+  auto axis = [&](VF v, VI& i0, VF& f) {
+    const VF x = hn::Min(hn::Max(hn::MulSub(v, hn::Set(d, float(n)), hn::Set(d, 0.5f)), hn::Zero(d)), hn::Set(d, n - 1.0f));
+    const VF lo = hn::Min(hn::Floor(x), hn::Set(d, n - 2.0f));
+    f = hn::Sub(x, lo);
+    i0 = hn::Min(hn::Max(hn::ConvertTo(di, lo), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
+  };
+  VI i, j;
+  VF fx, fy;
+  axis(roughness, i, fx);
+  axis(nv, j, fy);
+  static_assert(n == 16, "the row index below is j << 4");
+  const VI at = hn::Add(hn::ShiftLeft<4>(j), i);
+  const VF t00 = hn::GatherIndex(d, table, at), t10 = hn::GatherIndex(d, table, hn::Add(at, hn::Set(di, 1)));
+  const VF t01 = hn::GatherIndex(d, table, hn::Add(at, hn::Set(di, n)));
+  const VF t11 = hn::GatherIndex(d, table, hn::Add(at, hn::Set(di, n + 1)));
+  const VF top = hn::MulAdd(hn::Sub(t10, t00), fx, t00), bottom = hn::MulAdd(hn::Sub(t11, t01), fx, t01);
+  return hn::MulAdd(hn::Sub(bottom, top), fy, top);
+}
+
+// 1 / E - 1 along N.V for one roughness (a draw without a metallic-roughness texture):
+// the table's rows at that roughness, so a pixel reads two entries, not four, and
+// divides by nothing. Linear in N.V between the rows' centres, clamped at the ends.
+struct LostEnergyRow {
+  static constexpr int n = shading::kGgxAlbedoSize;
+  float lost[n];
+  explicit LostEnergyRow(float roughness) {
+    for (int j = 0; j < n; ++j) lost[j] = 1.0f / shading::ggx_albedo(roughness, (float(j) + 0.5f) / n) - 1.0f;
+  }
+  HWY_INLINE VF operator()(VF nv) const {
+    const DF d;
+    const DI di;
+    const VF x = hn::Min(hn::Max(hn::MulSub(nv, hn::Set(d, float(n)), hn::Set(d, 0.5f)), hn::Zero(d)), hn::Set(d, n - 1.0f));
+    const VF lo = hn::Min(hn::Floor(x), hn::Set(d, n - 2.0f));
+    const VI j = hn::Min(hn::Max(hn::ConvertTo(di, lo), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
+    const VF a = hn::GatherIndex(d, lost, j), b = hn::GatherIndex(d, lost, hn::Add(j, hn::Set(di, 1)));
+    return hn::MulAdd(hn::Sub(b, a), hn::Sub(x, lo), a);
+  }
 };
 
 // One PBR texture of a draw: its view, uv map and the levels chosen for the block.
@@ -74,7 +134,9 @@ struct PbrShader {
   const PbrState& m;
   const shading::EyeLights& lights;
   const bool ortho;
+  const float* albedo = shading::ggx_albedo_table();
   PbrTexture base, mr, normal, occlusion, emissive;
+  std::optional<LostEnergyRow> lost_row;  // the roughness is the factor's everywhere
 
   PbrShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
       : m(d.pbr), lights(*f.lights), ortho(f.orthographic) {
@@ -88,6 +150,7 @@ struct PbrShader {
       if (kTangent) use(normal, m.normal, m.normal_uv);
       use(occlusion, m.occlusion, m.occlusion_uv);
       use(emissive, m.emissive_map, m.emissive_uv);
+      if (!mr) lost_row.emplace(m.roughness >= 0.045f ? std::min(m.roughness, 1.0f) : 0.045f);  // as shade() clamps
     }
   }
 
@@ -154,7 +217,7 @@ struct PbrShader {
       metal = hn::Mul(metal, t.b), rough = hn::Mul(rough, t.g);
     }
     metal = saturate(metal);
-    rough = hn::Min(hn::Max(rough, hn::Set(d, 0.0525f)), one);
+    rough = hn::Min(hn::Max(rough, hn::Set(d, 0.045f)), one);
     const VF a = hn::Mul(rough, rough), a2 = hn::Mul(a, a), one_a2 = hn::Sub(one, a2);
     const VF dielectric = hn::Sub(one, metal);
     const V3 cdiff{hn::Mul(c.x, dielectric), hn::Mul(c.y, dielectric), hn::Mul(c.z, dielectric)};
@@ -177,6 +240,13 @@ struct PbrShader {
            hn::Mul(hn::Mul(cdiff.y, hn::Set(d, lights.ambient.y)), ao),
            hn::Mul(hn::Mul(cdiff.z, hn::Set(d, lights.ambient.z)), ao)};
 
+    // Multiple scattering: the specular lobe times M = 1 + f0 (1 / E - 1), per channel.
+    V3 ms{one, one, one};
+    if (!lights.directional.empty() || !lights.point.empty()) {
+      const VF lost = lost_row ? (*lost_row)(nv) : hn::Sub(hn::Div(one, ggx_albedo(albedo, rough, nv)), one);
+      ms = {hn::MulAdd(f0.x, lost, one), hn::MulAdd(f0.y, lost, one), hn::MulAdd(f0.z, lost, one)};
+    }
+
     constexpr float kInvPi = 0.318309886f;
     auto add_light = [&](const V3& l, VF rr, VF rg, VF rb) {
       const VF nl = dot(n, l);
@@ -186,16 +256,19 @@ struct PbrShader {
       const V3 h = unit({hn::Add(l.x, view.x), hn::Add(l.y, view.y), hn::Add(l.z, view.z)});
       const VF nh = saturate(dot(n, h)), vh = saturate(dot(view, h));
       const VF q = hn::Sub(one, vh), q2 = hn::Mul(q, q), q5 = hn::Mul(hn::Mul(q2, q2), q);
+      const VF diffuse_share = hn::NegMulAdd(hn::Set(d, 0.96f), q5, hn::Set(d, 0.96f));  // 1 - F_d
       const VF dn = hn::MulAdd(hn::Mul(nh, nh), hn::Neg(one_a2), one);  // (N.H)^2 (a^2 - 1) + 1
-      const VF dist = hn::Div(hn::Mul(a2, hn::Set(d, kInvPi)), hn::Max(hn::Mul(dn, dn), hn::Set(d, 1e-12f)));
+      // D Vis = (a^2 / pi) / dn^2 * 0.5 / den, in one division.
       const VF den = hn::MulAdd(nlc, nv_term, hn::Mul(nv, hn::Sqrt(hn::MulAdd(hn::Mul(nlc, nlc), one_a2, a2))));
-      const VF spec = hn::Div(hn::Mul(hn::Set(d, 0.5f), dist), hn::Max(den, hn::Set(d, 1e-12f)));
-      auto channel_of = [&](VF f0c, VF cd, VF radiance, VF acc) {
-        const VF f = hn::MulAdd(hn::Sub(one, f0c), q5, f0c);  // Schlick
-        const VF brdf = hn::MulAdd(f, spec, hn::Mul(hn::Sub(one, f), hn::Mul(cd, hn::Set(d, kInvPi))));
+      const VF spec = hn::Div(hn::Mul(a2, hn::Set(d, 0.5f * kInvPi)),
+                              hn::Mul(hn::Max(hn::Mul(dn, dn), hn::Set(d, 1e-12f)), hn::Max(den, hn::Set(d, 1e-12f))));
+      auto channel_of = [&](VF f0c, VF msc, VF cd, VF radiance, VF acc) {
+        const VF f = hn::Mul(hn::MulAdd(hn::Sub(one, f0c), q5, f0c), msc);  // Schlick, times M
+        const VF brdf = hn::MulAdd(f, spec, hn::Mul(diffuse_share, hn::Mul(cd, hn::Set(d, kInvPi))));
         return hn::MulAdd(brdf, hn::Mul(radiance, nlc), acc);
       };
-      out = {channel_of(f0.x, cdiff.x, rr, out.x), channel_of(f0.y, cdiff.y, rg, out.y), channel_of(f0.z, cdiff.z, rb, out.z)};
+      out = {channel_of(f0.x, ms.x, cdiff.x, rr, out.x), channel_of(f0.y, ms.y, cdiff.y, rg, out.y),
+             channel_of(f0.z, ms.z, cdiff.z, rb, out.z)};
     };
     for (const auto& l : lights.directional)
       add_light({hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)}, hn::Set(d, l.color.x),

@@ -14,6 +14,7 @@ std::function<int()> add_view_command(CLI::App& app) {
     bool cull = false, swap_yz = true;
     int ssaa = 1;
     std::string shot = "velocity-shot";
+    AppearanceArgs appearance;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("view", "Look at a model in a window: drag rotates, wheel zooms, right-drag pans, H for help");
@@ -24,14 +25,18 @@ std::function<int()> add_view_command(CLI::App& app) {
       ->check(CLI::Range(1, 3))
       ->capture_default_str();
   cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
+  add_appearance_options(cmd, args->appearance);
   add_realtime_options(cmd, args->realtime);
   return [args] {
+    RenderOptions colour;
+    apply_appearance(args->appearance, colour);
     realtime::ViewerOptions o;
     o.model = args->model;
     o.load.swap_yz = args->swap_yz;
     o.cull_back_faces = args->cull;
     o.ssaa = args->ssaa;
     o.screenshot_prefix = args->shot;
+    o.color = colour.color, o.tone_map = colour.tone_map, o.exposure = colour.exposure;
     realtime::ViewerProgram viewer(o);
     return run_realtime(viewer, args->realtime, "800x600", false);
   };
