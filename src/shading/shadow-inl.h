@@ -1,0 +1,84 @@
+// The visibility of shadow.hpp N points at a time (one per lane): the same offsets,
+// projection and 3x3 percentage-closer filter, with the nine taps gathered. A point
+// light's cube picks a face per point, so its lanes are looked up one by one with the
+// scalar form (the one map of a directional or spot light is the fast path).
+#if defined(VELOCITY_SHADING_SHADOW_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef VELOCITY_SHADING_SHADOW_INL_H_
+#undef VELOCITY_SHADING_SHADOW_INL_H_
+#else
+#define VELOCITY_SHADING_SHADOW_INL_H_
+#endif
+
+#include "shading/shadow.hpp"
+#include "simd/simd-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace velocity::shading {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace velocity::simd::HWY_NAMESPACE;
+
+// map_visibility of shadow.hpp at N points.
+HWY_INLINE VF map_visibility(const ShadowMap& m, const V3& p, const V3& n, const V3& to_light) {
+  const DF d;
+  const DI di;
+  const Mat4& M = m.eye_to_clip;
+  auto row = [&](int r, const V3& q) {
+    return hn::MulAdd(hn::Set(d, M.m[r][0]), q.x,
+                      hn::MulAdd(hn::Set(d, M.m[r][1]), q.y, hn::MulAdd(hn::Set(d, M.m[r][2]), q.z, hn::Set(d, M.m[r][3]))));
+  };
+  VF texel = hn::Set(d, m.texel);
+  if (m.perspective) texel = hn::Mul(texel, row(3, p));
+  const VF kn = hn::Mul(texel, hn::Set(d, kNormalOffset)), kl = hn::Mul(texel, hn::Set(d, kLightOffset));
+  const V3 q{hn::MulAdd(n.x, kn, hn::MulAdd(to_light.x, kl, p.x)), hn::MulAdd(n.y, kn, hn::MulAdd(to_light.y, kl, p.y)),
+             hn::MulAdd(n.z, kn, hn::MulAdd(to_light.z, kl, p.z))};
+  const VF one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), s = hn::Set(d, float(m.size));
+  const VF w = m.perspective ? row(3, q) : one;
+  const VF iw = hn::Div(one, w);
+  const VF x = hn::Mul(hn::MulAdd(hn::Mul(row(0, q), iw), half, half), s);
+  const VF y = hn::Mul(hn::NegMulAdd(hn::Mul(row(1, q), iw), half, half), s);
+  const VF z = hn::MulAdd(hn::Mul(row(2, q), iw), half, half);
+  // Comparisons with a NaN are false: such a lane is outside, and lit.
+  const MF inside = hn::And(hn::And(hn::And(hn::Gt(w, hn::Zero(d)), hn::Le(z, one)),
+                                    hn::And(hn::Ge(x, hn::Zero(d)), hn::Lt(x, s))),
+                            hn::And(hn::Ge(y, hn::Zero(d)), hn::Lt(y, s)));
+  if (hn::AllFalse(d, inside)) return one;
+  const VI cx = hn::ConvertTo(di, hn::IfThenElseZero(inside, x)), cy = hn::ConvertTo(di, hn::IfThenElseZero(inside, y));
+  const VI lo = hn::Zero(di), hi = hn::Set(di, m.size - 1), row_stride = hn::Set(di, m.tiles_x * 4096);
+  VF lit = hn::Zero(d);
+  for (int dy = -1; dy <= 1; ++dy) {
+    const VI ty = hn::Min(hn::Max(hn::Add(cy, hn::Set(di, dy)), lo), hi);
+    // framebuffer.hpp's index: the tile row, the block row in the tile, the row in the block.
+    const VI yi = hn::Add(hn::Mul(hn::ShiftRight<6>(ty), row_stride),
+                          hn::Add(hn::ShiftLeft<8>(hn::And(hn::ShiftRight<2>(ty), hn::Set(di, 15))),
+                                  hn::ShiftLeft<2>(hn::And(ty, hn::Set(di, 3)))));
+    for (int dx = -1; dx <= 1; ++dx) {
+      const VI tx = hn::Min(hn::Max(hn::Add(cx, hn::Set(di, dx)), lo), hi);
+      const VI xi = hn::Add(hn::ShiftLeft<12>(hn::ShiftRight<6>(tx)),
+                            hn::Add(hn::ShiftLeft<4>(hn::And(hn::ShiftRight<2>(tx), hn::Set(di, 15))), hn::And(tx, hn::Set(di, 3))));
+      const VF stored = hn::GatherIndex(d, m.depth, hn::Add(yi, xi));
+      lit = hn::Add(lit, hn::IfThenElseZero(hn::Le(z, stored), one));
+    }
+  }
+  return hn::IfThenElse(inside, hn::Mul(lit, hn::Set(d, 1.0f / 9.0f)), one);
+}
+
+// visibility of shadow.hpp at N points.
+HWY_INLINE VF visibility(const LightShadow& s, const V3& p, const V3& n, const V3& to_light) {
+  if (s.faces == 1) return map_visibility(s.face[0], p, n, to_light);
+  const DF d;
+  alignas(64) float in[9][kLanes], out[kLanes];
+  const VF* v[9] = {&p.x, &p.y, &p.z, &n.x, &n.y, &n.z, &to_light.x, &to_light.y, &to_light.z};
+  for (int i = 0; i < 9; ++i) hn::Store(*v[i], d, in[i]);
+  for (size_t k = 0; k < kLanes; ++k)
+    out[k] = shading::visibility(s, {in[0][k], in[1][k], in[2][k]}, {in[3][k], in[4][k], in[5][k]},
+                                 {in[6][k], in[7][k], in[8][k]});
+  return hn::Load(d, out);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace velocity::shading
+HWY_AFTER_NAMESPACE();
+
+#endif  // VELOCITY_SHADING_SHADOW_INL_H_ toggle
