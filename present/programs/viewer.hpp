@@ -19,6 +19,7 @@ struct ViewerOptions {
   bool cull_back_faces = false;
   std::string screenshot_prefix = "velocity-shot";  // screenshots: PREFIX-NNN.png
   int ssaa = 1;
+  bool shadows = false;  // to start with (O toggles)
 };
 
 class ViewerProgram : public Program {
