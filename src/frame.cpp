@@ -252,6 +252,16 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
     d.normals = &n;  // normalised when transformed to eye space
   }
   geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
+  if (r.owner_) {
+    // A depth pass: the flat kernel, no varyings, nothing computed per vertex but the
+    // position (its colour goes nowhere: TileInputs::depth_only).
+    for (uint32_t i = 0; i < d.slot_count; ++i) {
+      geometry::SlotPlan& s = p.slots[d.slot_begin + i];
+      s.kernel = uint8_t(raster::KernelId::Flat), s.num_varyings = 0, s.flat = false, s.lit = false;
+      s.vertex_color = false, s.uv_from_env = false;
+    }
+    d.light = d.normal = d.eye = d.vertex_color = d.vertex_specular_terms = false;
+  }
   if (d.needs_tangents) {
     if (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty()) {
       d.tangents = &mesh.tangents;
@@ -337,6 +347,7 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
     tiles.output = {true, std::isfinite(o.exposure) && o.exposure >= 0 ? o.exposure : 1.0f, o.tone_map};
   }
   tiles.depth_test = !painter;
+  tiles.depth_only = r.owner_ != nullptr;
   tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
   tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
   tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);

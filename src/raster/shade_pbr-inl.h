@@ -199,14 +199,14 @@ struct PbrShader {
     };
     for (const auto& l : lights.directional) {
       const V3 dir{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)};
-      const VF vis = l.shadow ? lit::visibility(*l.shadow, p, n, dir) : one;  // shadow.hpp
+      const VF vis = lit::visibility(l.shadow, p, n, dir);  // shading/shadow.hpp
       add_light(dir, hn::Mul(hn::Set(d, l.color.x), vis), hn::Mul(hn::Set(d, l.color.y), vis),
                 hn::Mul(hn::Set(d, l.color.z), vis));
     }
     for (const auto& l : lights.point) {
       V3 dir;
       VF att = lit::punctual(l, p, n, dir);
-      if (l.shadow) att = hn::Mul(att, lit::visibility(*l.shadow, p, n, dir));
+      if (l.shadow) att = hn::Mul(att, lit::visibility(l.shadow, p, n, dir));
       add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
                 hn::Mul(hn::Set(d, l.color.z), att));
     }

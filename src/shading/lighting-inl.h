@@ -89,14 +89,14 @@ HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular
   };
   for (const auto& l : lights.directional) {
     const V3 dir{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)};
-    const VF vis = l.shadow ? visibility(*l.shadow, p, n, dir) : hn::Set(d, 1.0f);
+    const VF vis = visibility(l.shadow, p, n, dir);
     add_light(dir, hn::Mul(hn::Set(d, l.color.x), vis), hn::Mul(hn::Set(d, l.color.y), vis),
               hn::Mul(hn::Set(d, l.color.z), vis));
   }
   for (const auto& l : lights.point) {
     V3 dir;
     VF att = punctual(l, p, n, dir);
-    if (l.shadow) att = hn::Mul(att, visibility(*l.shadow, p, n, dir));
+    if (l.shadow) att = hn::Mul(att, visibility(l.shadow, p, n, dir));
     add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
               hn::Mul(hn::Set(d, l.color.z), att));
   }

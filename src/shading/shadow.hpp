@@ -2,16 +2,22 @@
 // frame's own pipeline, src/shadows.cpp) and the visibility of a surface point, the
 // fraction of a 3x3 percentage-closer filter (PCF) that sees the light. This is the
 // scalar form; shadow-inl.h is the same function N points at a time. The lighting
-// model (lighting.hpp, lighting-inl.h) multiplies each light's contribution by it.
+// model (lighting.hpp, lighting-inl.h) multiplies each light's contribution by it; a
+// point facing away from the light (N.L <= 0) is in its own shadow.
+//
+// The filter is bilinear PCF, what a GPU's depth-compare sampler with linear filtering
+// gives: the four texels around the point are each compared with its depth and the four
+// results weighted by the point's position between their centres, so a shadow's edge is
+// a one-texel ramp rather than a staircase.
 //
 // Bias, in world units scaled by the size of one shadow-map texel at the point (so it
 // holds for any map size, scene size and distance to a spot or point light): the point
 // is moved kNormalOffset texels along its normal and kLightOffset texels towards the
-// light before it is projected. The 3x3 filter reaches up to 2.1 texels (diagonally,
-// from the texel nearest the point) across the receiving surface; a surface tilted by
-// theta from the light rises by 2.1 tan(theta) texels over that reach, while the normal
-// offset lifts the point by kNormalOffset / cos(theta) along the light: more than enough
-// at every angle, so no acne. Both offsets are a texel or two, so a shadow starts within
+// light before it is projected. The filter reads texels up to 1.4 texels away
+// (diagonally) across the receiving surface; a surface tilted by theta from the light
+// rises by 1.4 tan(theta) texels over that reach, while the normal offset lifts the point
+// by kNormalOffset / cos(theta) along the light: more than enough at every angle, so no
+// acne. Both offsets are a texel or two, so a shadow starts within
 // a texel or two of its caster's contact (no peter-panning): docs/appearance.md.
 #pragma once
 
@@ -74,18 +80,21 @@ inline float map_visibility(const ShadowMap& m, Vec3 p, Vec3 n, Vec3 to_light) {
   const float s = float(m.size);
   const float x = (c.x / c.w * 0.5f + 0.5f) * s, y = (0.5f - 0.5f * c.y / c.w) * s, z = c.z / c.w * 0.5f + 0.5f;
   if (!(x >= 0 && x < s && y >= 0 && y < s && z <= 1)) return 1;
-  const int cx = int(x), cy = int(y);
-  int lit = 0;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int tx = std::clamp(cx + dx, 0, m.size - 1), ty = std::clamp(cy + dy, 0, m.size - 1);
-      lit += z <= m.depth[shadow_texel(m, tx, ty)];
-    }
-  return float(lit) * (1.0f / 9.0f);
+  // The four texel centres around (x, y) and the weights of the bilinear filter.
+  const float gx = x - 0.5f, gy = y - 0.5f, fx0 = std::floor(gx), fy0 = std::floor(gy);
+  const float fx = gx - fx0, fy = gy - fy0;
+  const int x0 = std::max(int(fx0), 0), y0 = std::max(int(fy0), 0);
+  const int x1 = std::min(int(fx0) + 1, m.size - 1), y1 = std::min(int(fy0) + 1, m.size - 1);
+  auto lit = [&](int tx, int ty) { return z <= m.depth[shadow_texel(m, tx, ty)] ? 1.0f : 0.0f; };
+  const float top = lit(x0, y0) + (lit(x1, y0) - lit(x0, y0)) * fx;
+  const float bottom = lit(x0, y1) + (lit(x1, y1) - lit(x0, y1)) * fx;
+  return top + (bottom - top) * fy;
 }
 
-// A light's visibility at `p`: its one map, or the cube face the offset point falls in.
+// A light's visibility at `p`: its one map, or the cube face the offset point falls in;
+// 0 where the point faces away from the light.
 inline float visibility(const LightShadow& s, Vec3 p, Vec3 n, Vec3 to_light) {
+  if (!(dot(n, to_light) > 0)) return 0;
   if (s.faces == 1) return map_visibility(s.face[0], p, n, to_light);
   // The face is chosen for the point the bias moves the lookup to, so that a point
   // near a seam reads the face it is projected into.
