@@ -388,6 +388,7 @@ void CpuBackend::render_shadows() {
       if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
       CpuBackend& b = *r.shadow_passes_[pass];
       b.resize(size, size, 1);
+      BlockVector<uint32_t>().swap(b.framebuffer.color);  // never touched: depth only
       b.begin(s.views[f].view, s.views[f].projection, s.views[f].orthographic, kNoLights, start, o);
       for (const Caster& c : r.casters_) b.draw(*c.mesh, c.world, &r.depth_material_, 0);
       b.run_frame(false);
