@@ -107,6 +107,7 @@ class CpuBackend final : public Backend {
   struct Caster {
     const Mesh* mesh;
     Mat4 world;
+    bool two_sided;  // drawn with a two-sided material: both faces cast
   };
   bool shadows_ = false;
   std::vector<Light> frame_lights_;
@@ -115,7 +116,7 @@ class CpuBackend final : public Backend {
   std::vector<ShadowLight> shadow_lights_;
   std::vector<std::unique_ptr<CpuBackend>> shadow_passes_;
   CpuBackend* owner_ = nullptr;  // a depth pass: its owner's frame and threads
-  Material depth_material_;
+  Material depth_material_, depth_two_sided_;
 
   ThreadPool& pool_for(int threads) {
     if (owner_) {
@@ -231,7 +232,10 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   if (mesh.triangles.empty()) return;
   // Every mesh draw casts, seen or not.
   if (r.shadows_) {
-    r.casters_.push_back({&mesh, world});
+    bool two_sided = material ? material->two_sided : mesh.materials.empty() && r.default_material.two_sided;
+    if (!material)
+      for (const Material& m : mesh.materials) two_sided = two_sided || m.two_sided;
+    r.casters_.push_back({&mesh, world, two_sided || !r.plan.options.cull_back_faces});
     r.caster_bounds_ = merge_bounds(r.caster_bounds_, world_bounds(mesh, world));
   }
   if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats_.objects_culled++);
@@ -366,19 +370,19 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
 
 // The shadow maps of the frame's shadow-casting lights: each view's depth, drawn by a
 // pipeline of its own (a CpuBackend at shadow_map_size a side, on this one's threads)
-// with every mesh draw of the frame, unlit and two-sided (the bias of shading/shadow.hpp,
-// not front-face culling, keeps lit surfaces clear of their own shadow). Then each
-// light of the frame's EyeLights points at its maps.
+// with every mesh draw of the frame, unlit, the faces that face the light (both for a
+// two-sided material: the bias of shading/shadow.hpp, not front-face culling, keeps lit
+// surfaces clear of their own shadow). Then each light of the frame's EyeLights points
+// at its maps.
 void CpuBackend::render_shadows() {
   CpuBackend& r = *this;
   const int size = r.plan.options.shadow_map_size;
   plan_shadows(r.frame_lights_, r.view, r.caster_bounds_, size, r.shadow_lights_);
-  r.depth_material_.shading = Shading::Unlit;
-  r.depth_material_.two_sided = true;
+  r.depth_material_.shading = r.depth_two_sided_.shading = Shading::Unlit;
+  r.depth_two_sided_.two_sided = true;
   RenderOptions o;
   o.threads = r.plan.options.threads;
   o.color = ColorPipeline::Display;
-  o.cull_back_faces = false;
   FrameStart start;
   start.color = {0, 0, 0, 0};
   static const std::vector<Light> kNoLights;
@@ -390,7 +394,7 @@ void CpuBackend::render_shadows() {
       b.resize(size, size, 1);
       BlockVector<uint32_t>().swap(b.framebuffer.color);  // never touched: depth only
       b.begin(s.views[f].view, s.views[f].projection, s.views[f].orthographic, kNoLights, start, o);
-      for (const Caster& c : r.casters_) b.draw(*c.mesh, c.world, &r.depth_material_, 0);
+      for (const Caster& c : r.casters_) b.draw(*c.mesh, c.world, c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
       b.run_frame(false);
       s.shadow.face[f].depth = b.framebuffer.depth.data();
     }
