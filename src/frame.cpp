@@ -1,6 +1,8 @@
 // The CPU backend (velocity/backend.hpp) and its frame, top to bottom. draw only
 // records and plans a draw; end_frame runs the pipeline on every core:
 //
+//   shadow maps     with RenderOptions::shadows: each shadow-casting light's depth,
+//                   drawn by this same pipeline from the light (shadows.hpp)
 //   vertex stage    chunks of vertices: transform, project, snap, light   (all cores,
 //                   geometry/, shading/)
 //   triangle stage  chunks of triangles: reject, cull, clip, set up, bin  (all cores,
@@ -29,6 +31,7 @@
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
 #include "shading/lighting.hpp"
+#include "shadows.hpp"
 #include "simd/targets.hpp"
 #include "triangle/stage.hpp"
 #include "velocity/backend.hpp"
@@ -46,6 +49,8 @@ using triangle::kTrianglesPerJob;
 class CpuBackend final : public Backend {
  public:
   CpuBackend(int width, int height) { resize(width, height, 1); }
+  // A shadow map's depth pass: draws on `owner`'s threads.
+  CpuBackend(int size, CpuBackend* owner) : owner_(owner) { resize(size, size, 1); }
 
   void resize(int w, int h) override { resize(w, h, ssaa); }
   int width() const override { return width_; }
@@ -98,7 +103,29 @@ class CpuBackend final : public Backend {
   geometry::VertexStage vertex_stage;      // its chunks, reused across frames
   triangle::TriangleStage triangle_stage;  // its workers' scratch, reused across frames
 
+  // Shadows (RenderOptions::shadows): the frame's lights and mesh draws, which all cast;
+  // the lights given a map and one depth pass per map (reused across frames).
+  struct Caster {
+    const Mesh* mesh;
+    Mat4 world;
+    bool two_sided;  // drawn with a two-sided material: both faces cast
+  };
+  bool shadows_ = false;
+  std::vector<Light> frame_lights_;
+  std::vector<Caster> casters_;
+  Sphere caster_bounds_{{}, -1};
+  std::vector<ShadowLight> shadow_lights_;
+  std::vector<std::unique_ptr<CpuBackend>> shadow_passes_;
+  CpuBackend* owner_ = nullptr;  // a depth pass: its owner's frame and threads
+  Material depth_material_, depth_two_sided_;
+
   ThreadPool& pool_for(int threads) {
+    if (owner_) {
+      ThreadPool& p = *owner_->pool;
+      if (bins.workers() != p.size() || bins.tiles_x() != framebuffer.tiles_x || bins.tiles_y() != framebuffer.tiles_y)
+        bins.resize(framebuffer.width, framebuffer.height, p.size());
+      return p;
+    }
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min(threads, 256);
     // A pool made before this process was forked has no workers here: a new one.
@@ -134,8 +161,11 @@ class CpuBackend final : public Backend {
     width_ = w, height_ = h, ssaa = k;
   }
 
+  void begin(const Mat4& view, const Mat4& projection, bool orthographic, const std::vector<Light>& lights,
+             const FrameStart& start, const RenderOptions& options);
   const FrameStats& run_frame(bool painter);
   void order_blended_draws();
+  void render_shadows();
 };
 
 const char* simd_target() { return raster::simd_target(); }
@@ -148,15 +178,36 @@ std::unique_ptr<Backend> make_cpu_backend(int width, int height) {
 
 void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
                              const RenderOptions& options) {
+  if (options.shadows && (options.shadow_map_size < 16 || options.shadow_map_size > 8192))
+    throw Error("shadow map size " + std::to_string(options.shadow_map_size) + " is out of range (16..8192)");
+  resize(width_, height_, options.ssaa);  // follows a change of options.ssaa
+  const int w = framebuffer.width, h = framebuffer.height;
+  begin(camera.view(), camera.projection_matrix(float(w) / float(h)), camera.projection == Projection::Orthographic,
+        lights, start, options);
+  shadows_ = options.shadows;
+  casters_.clear();
+  caster_bounds_ = {{}, -1};
+  if (shadows_) frame_lights_ = lights;
+  // No lights: kDefaultLight's directional light (given in eye space) casts.
+  if (shadows_ && lights.empty()) {
+    const Mat4 v = camera.view();
+    const Vec3 t = normalize(kDefaultLight.towards);
+    frame_lights_ = {Light::directional({v.m[0][0] * t.x + v.m[1][0] * t.y + v.m[2][0] * t.z,
+                                         v.m[0][1] * t.x + v.m[1][1] * t.y + v.m[2][1] * t.z,
+                                         v.m[0][2] * t.x + v.m[1][2] * t.y + v.m[2][2] * t.z},
+                                        kDefaultLight.diffuse)};
+  }
+}
+
+void CpuBackend::begin(const Mat4& view, const Mat4& projection, bool orthographic, const std::vector<Light>& lights,
+                       const FrameStart& start, const RenderOptions& options) {
   CpuBackend& r = *this;
-  r.resize(r.width_, r.height_, options.ssaa);  // follows a change of options.ssaa
   r.framebuffer.keep_ids(options.object_ids);
   const int w = r.framebuffer.width, h = r.framebuffer.height;
   geometry::DrawList& p = r.plan;
   p.width = w, p.height = h;
-  const Mat4 view = camera.view();
   r.view = view;
-  r.projection = camera.projection_matrix(float(w) / float(h));
+  r.projection = projection;
   r.view_projection = r.projection * view;
   p.viewport = geometry::viewport_map(0, 0, w, h, 0.0f, 1.0f);
   p.guard = p.viewport.guard;
@@ -171,7 +222,7 @@ void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
   r.jobs.clear();
   r.averaged_used = 0;
   r.tangents_used = 0;
-  r.orthographic = camera.projection == Projection::Orthographic;
+  r.orthographic = orthographic;
   r.start = start;
   r.stats_ = {};
 }
@@ -180,6 +231,14 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   CpuBackend& r = *this;
   r.stats_.objects++;
   if (mesh.triangles.empty()) return;
+  // Every mesh draw casts, seen or not.
+  if (r.shadows_) {
+    bool two_sided = material ? material->two_sided : mesh.materials.empty() && r.default_material.two_sided;
+    if (!material)
+      for (const Material& m : mesh.materials) two_sided = two_sided || m.two_sided;
+    r.casters_.push_back({&mesh, world, two_sided || !r.plan.options.cull_back_faces});
+    r.caster_bounds_ = merge_bounds(r.caster_bounds_, world_bounds(mesh, world));
+  }
   if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats_.objects_culled++);
   geometry::DrawList& p = r.plan;
   geometry::MeshDrawPlan d;
@@ -189,7 +248,7 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   d.model_view = r.view * world;
   d.mvp = r.projection * d.model_view;
   d.normal_matrix = normal_matrix(d.model_view);
-  if (!mesh.normals.empty()) {
+  if (!mesh.normals.empty() || r.owner_) {  // (a depth pass reads no normals)
     d.normals = &mesh.normals;
   } else {
     if (r.averaged_used == r.averaged_normals.size()) r.averaged_normals.emplace_back();
@@ -198,6 +257,16 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
     d.normals = &n;  // normalised when transformed to eye space
   }
   geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
+  if (r.owner_) {
+    // A depth pass: the flat kernel, no varyings, nothing computed per vertex but the
+    // position (its colour goes nowhere: TileInputs::depth_only).
+    for (uint32_t i = 0; i < d.slot_count; ++i) {
+      geometry::SlotPlan& s = p.slots[d.slot_begin + i];
+      s.kernel = uint8_t(raster::KernelId::Flat), s.num_varyings = 0, s.flat = false, s.lit = false;
+      s.vertex_color = false, s.uv_from_env = false;
+    }
+    d.light = d.normal = d.eye = d.vertex_color = d.vertex_specular_terms = false;
+  }
   if (d.needs_tangents) {
     if (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty()) {
       d.tangents = &mesh.tangents;
@@ -262,6 +331,8 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
 
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  const Clock::time_point ts = Clock::now();
+  if (r.shadows_ && !r.casters_.empty()) r.render_shadows();
   const Clock::time_point t0 = Clock::now();
   geometry::finish_color_plan(r.plan, r.draw_states);
   r.order_blended_draws();
@@ -281,6 +352,7 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
     tiles.output = {true, std::isfinite(o.exposure) && o.exposure >= 0 ? o.exposure : 1.0f, o.tone_map};
   }
   tiles.depth_test = !painter;
+  tiles.depth_only = r.owner_ != nullptr;
   tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
   tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
   tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
@@ -289,11 +361,48 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(tiles, tile, r.framebuffer); });
   const Clock::time_point t3 = Clock::now();
   r.stats_.vertex_ms = ms(t0, t1), r.stats_.triangle_ms = ms(t1, t2), r.stats_.tile_ms = ms(t2, t3);
+  r.stats_.shadow_ms = ms(ts, t0);
 
-  // The frame's statistics, and a warning for each mesh that lost triangles to NaN.
+  // The frame's statistics, and a warning for each mesh that lost triangles to NaN (once:
+  // not again by a depth pass).
   r.triangle_stage.add_stats(r.stats_);
-  r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
+  if (!r.owner_) r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
   return r.stats_;
+}
+
+// The shadow maps of the frame's shadow-casting lights: each view's depth, drawn by a
+// pipeline of its own (a CpuBackend at shadow_map_size a side, on this one's threads)
+// with every mesh draw of the frame, unlit, the faces that face the light (both for a
+// two-sided material: the bias of shading/shadow.hpp, not front-face culling, keeps lit
+// surfaces clear of their own shadow). Then each light of the frame's EyeLights points
+// at its maps.
+void CpuBackend::render_shadows() {
+  CpuBackend& r = *this;
+  const int size = r.plan.options.shadow_map_size;
+  plan_shadows(r.frame_lights_, r.view, r.caster_bounds_, size, r.shadow_lights_);
+  r.depth_material_.shading = r.depth_two_sided_.shading = Shading::Unlit;
+  r.depth_two_sided_.two_sided = true;
+  RenderOptions o;
+  o.threads = r.plan.options.threads;
+  o.color = ColorPipeline::Display;
+  FrameStart start;
+  start.color = {0, 0, 0, 0};
+  static const std::vector<Light> kNoLights;
+  size_t pass = 0;
+  for (ShadowLight& s : r.shadow_lights_)
+    for (int f = 0; f < s.faces; ++f, ++pass) {
+      if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
+      CpuBackend& b = *r.shadow_passes_[pass];
+      b.resize(size, size, 1);
+      BlockVector<uint32_t>().swap(b.framebuffer.color);  // never touched: depth only
+      b.begin(s.views[f].view, s.views[f].projection, s.views[f].orthographic, kNoLights, start, o);
+      for (const Caster& c : r.casters_) b.draw(*c.mesh, c.world, c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
+      b.run_frame(false);
+      s.shadow.face[f].depth = b.framebuffer.depth.data();
+    }
+  r.plan.lights.shadows = !r.shadow_lights_.empty();
+  for (const ShadowLight& s : r.shadow_lights_)
+    (s.directional ? r.plan.lights.directional[s.index].shadow : r.plan.lights.point[s.index].shadow) = &s.shadow;
 }
 
 // glTF's BLEND materials: their draws go after the opaque ones, farthest first (by the

@@ -1,5 +1,5 @@
-// The colour options render, bench and view share: the colour pipeline, tone mapping
-// and exposure (RenderOptions; docs/appearance.md).
+// The appearance options render and bench share: the colour pipeline, tone mapping,
+// exposure and shadows (RenderOptions; docs/appearance.md).
 #include "commands.hpp"
 
 #include <cmath>
@@ -15,6 +15,8 @@ void add_appearance_options(CLI::App* cmd, AppearanceArgs& a) {
       ->capture_default_str();
   cmd->add_option("--tone-map", a.tone_map, "Tone mapping in the linear pipeline: none|aces|neutral")->capture_default_str();
   cmd->add_option("--exposure", a.exposure, "Linear light is multiplied by this before tone mapping")->capture_default_str();
+  cmd->add_flag("--shadows", a.shadows, "Shadow maps for the lights that cast shadows (directional, spot, point), 3x3 PCF");
+  cmd->add_option("--shadow-map-size", a.shadow_map_size, "Side of each shadow map in texels, 16..8192")->capture_default_str();
 }
 
 void apply_appearance(const AppearanceArgs& a, RenderOptions& o) {
@@ -29,6 +31,10 @@ void apply_appearance(const AppearanceArgs& a, RenderOptions& o) {
   if (!(std::isfinite(a.exposure) && a.exposure >= 0))
     throw Error("--exposure: expected a finite number >= 0, got " + std::to_string(a.exposure));
   o.exposure = a.exposure;
+  if (a.shadow_map_size < 16 || a.shadow_map_size > 8192)
+    throw Error("--shadow-map-size: expected 16..8192, got " + std::to_string(a.shadow_map_size));
+  o.shadows = a.shadows;
+  o.shadow_map_size = a.shadow_map_size;
 }
 
 }  // namespace velocity::cli

@@ -60,15 +60,16 @@ int run_bench(const BenchArgs& a) {
   Renderer renderer(w, h, *backend);
   renderer.options = look->options;
 
-  std::vector<double> ms, vertex_ms, triangle_ms, tile_ms;
+  std::vector<double> ms, vertex_ms, triangle_ms, tile_ms, shadow_ms;
   ms.reserve(size_t(a.frames)), vertex_ms.reserve(size_t(a.frames));
-  triangle_ms.reserve(size_t(a.frames)), tile_ms.reserve(size_t(a.frames));
+  triangle_ms.reserve(size_t(a.frames)), tile_ms.reserve(size_t(a.frames)), shadow_ms.reserve(size_t(a.frames));
   for (int frame = 0; frame < a.frames; ++frame) {
     auto t0 = std::chrono::steady_clock::now();
     bench::draw_frame(renderer, mesh, look->material, frame, a.frames, a.copies);
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     const FrameStats& st = renderer.stats();
     vertex_ms.push_back(st.vertex_ms), triangle_ms.push_back(st.triangle_ms), tile_ms.push_back(st.tile_ms);
+    shadow_ms.push_back(st.shadow_ms);
     if (frame == 0 && !a.out.empty()) write_image(a.out, renderer.color_image());
   }
   auto median_of = [](std::vector<double> v) {
@@ -90,8 +91,8 @@ int run_bench(const BenchArgs& a) {
                 simd_target(), a.threads, st.objects, st.objects_culled, st.triangles, st.triangles_rejected,
                 st.triangles_clipped, st.triangles_culled, st.triangles_nonfinite, st.triangles_rasterized, st.lines,
                 st.points);
-    std::printf("median stage ms: vertex=%.3f triangle=%.3f tile=%.3f\n", median_of(vertex_ms), median_of(triangle_ms),
-                median_of(tile_ms));
+    std::printf("median stage ms: shadow=%.3f vertex=%.3f triangle=%.3f tile=%.3f\n", median_of(shadow_ms),
+                median_of(vertex_ms), median_of(triangle_ms), median_of(tile_ms));
   }
   return 0;
 }

@@ -13,11 +13,14 @@ namespace velocity::cli {
 // Parses "WxH" into width and height (1..16384 each); throws CLI::ValidationError.
 void parse_size(const std::string& text, int& width, int& height);
 
-// --color, --tone-map and --exposure (apps/velocity/appearance.cpp), and how they set
-// the RenderOptions (throws velocity::Error naming the flag on a bad value).
+// --color, --tone-map, --exposure, --shadows and --shadow-map-size
+// (apps/velocity/appearance.cpp), and how they set the RenderOptions (throws
+// velocity::Error naming the flag on a bad value).
 struct AppearanceArgs {
   std::string color = "auto", tone_map = "none";
   float exposure = 1.0f;
+  bool shadows = false;
+  int shadow_map_size = 2048;
 };
 void add_appearance_options(CLI::App* cmd, AppearanceArgs& a);
 void apply_appearance(const AppearanceArgs& a, RenderOptions& o);

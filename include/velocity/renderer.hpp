@@ -122,6 +122,7 @@ struct FrameStats {
   double vertex_ms = 0;    // transform, project, light: every vertex
   double triangle_ms = 0;  // reject, cull, clip, set up, bin: every triangle (and the painter's sort)
   double tile_ms = 0;      // clear, rasterize and shade: every tile (GPU: draw and read back)
+  double shadow_ms = 0;    // the shadow maps' depth passes (RenderOptions::shadows), before the rest
   // The backend that drew ("cpu" or "gpu") and why it was chosen, e.g. "asked for" or
   // "auto: only a software OpenGL driver (llvmpipe), the CPU pipeline is faster". Set
   // from construction on, before any frame; valid while the Renderer lives.

@@ -75,6 +75,7 @@ Mesh make_axis(int a, float length, Vec3 color) {
 
 ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
   options_.ssaa = std::clamp(o_.ssaa, 1, 3);  // what A cycles through
+  options_.shadows = o_.shadows;
   options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see velocity/view_setup.hpp)
   options_.color = o_.color, options_.tone_map = o_.tone_map, options_.exposure = o_.exposure;
   open(o_.model);
@@ -254,6 +255,10 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
           options_.ssaa = options_.ssaa % 3 + 1;
           say("SSAA " + std::to_string(options_.ssaa) + "X" + std::to_string(options_.ssaa));
           break;
+        case 'o':
+          options_.shadows = !options_.shadows;
+          say(options_.shadows ? "SHADOWS" : "NO SHADOWS");
+          break;
         case 't':
           options_.affine = !options_.affine;
           say(options_.affine ? "AFFINE TEXTURES" : "PERSPECTIVE-CORRECT TEXTURES");
@@ -377,6 +382,7 @@ void ViewerProgram::frame(FrameDescription& out) {
       options_.depth_mode == DepthMode::Painter ? "PAINTER'S ALGORITHM" : "DEPTH BUFFER",
       "SSAA " + std::to_string(options_.ssaa) + "X" + std::to_string(options_.ssaa),
       options_.affine ? "AFFINE TEXTURES" : "PERSPECTIVE TEXTURES",
+      options_.shadows ? "SHADOWS" : "NO SHADOWS",
       "H: HELP"};
   if (points_) items.insert(items.end() - 1, "POINTS " + std::to_string(int(options_.point_size)) + " PX");
   if (!animations_.empty()) {
@@ -415,6 +421,7 @@ void ViewerProgram::frame(FrameDescription& out) {
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
         "[ ]: POINT SIZE   K: PLAY / PAUSE   J L: STEP BACK / ON\n"
+        "O: SHADOWS\n"
         "C or F12: SCREENSHOT   SHIFT+F12: WITH THIS TEXT\n"
         "F2: SCREEN MODE   F3: FPS\n"
         "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";

@@ -27,6 +27,7 @@ struct ViewerOptions {
   ColorPipeline color = ColorPipeline::Auto;
   ToneMap tone_map = ToneMap::None;
   float exposure = 1.0f;
+  bool shadows = false;  // to start with (O toggles)
 };
 
 class ViewerProgram : public Program {

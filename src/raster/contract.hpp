@@ -307,6 +307,9 @@ struct TileInputs {
   bool depth_test = true;       // false: painter's mode (meshes: no depth test, no depth write)
   bool clear_color_buffer = true, clear_depth_buffer = true;
   bool clear_stencil_buffer = true;
+  // Depth only (a shadow map's pass, src/shadows.hpp): the framebuffer's colour is never
+  // cleared, written or read; the kernels' colour goes to a scratch tile.
+  bool depth_only = false;
   uint32_t color = 0;           // the clear values
   float depth = 1.0f;
   uint8_t stencil = 0;

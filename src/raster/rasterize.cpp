@@ -61,18 +61,19 @@ void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
-  TileTarget target{frame, fb.color.data() + base, fb.depth.data() + base, fb.stencil.data() + base,
+  alignas(64) static thread_local uint32_t scratch[Framebuffer::kTilePixels];  // depth only: colour lands here
+  TileTarget target{frame, frame.depth_only ? scratch : fb.color.data() + base, fb.depth.data() + base, fb.stencil.data() + base,
                     fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
   constexpr int kPixels = Framebuffer::kTilePixels;
   // A tile with nothing to draw that already holds exactly the clear values (it was
   // cleared and left empty last frame too: the background of most frames) is done. A
   // stencil buffer the frame does not clear stays as it was: clean if it was.
-  const bool full_clear = frame.clear_color_buffer && frame.clear_depth_buffer;
+  const bool full_clear = (frame.clear_color_buffer || frame.depth_only) && frame.clear_depth_buffer;
   const bool nothing = bins.empty(tile);
   uint8_t& clean = fb.tile_clean[size_t(tile)];
   if (full_clear && nothing && clean) return;
   clean = full_clear && nothing && (frame.clear_stencil_buffer || clean);
-  if (frame.clear_color_buffer) {
+  if (frame.clear_color_buffer && !frame.depth_only) {
     std::fill_n(target.color, kPixels, frame.color);
     if (target.ids) std::fill_n(target.ids, kPixels, 0u);
   }

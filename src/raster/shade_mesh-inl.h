@@ -200,9 +200,9 @@ struct PhongShader {
       bb = hn::MulAdd(hn::Sub(e.b, bb), mix, bb);
     }
     const shading::Specular& s = draw.specular;
-    // The eye-space position: only the highlight and point lights read it.
+    // The eye-space position: only the highlight, point lights and shadows read it.
     V3 p{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-    if (s.ks > 0 || !lights.point.empty()) p = {in(varying::kEye, v), in(varying::kEye + 1, v), in(varying::kEye + 2, v)};
+    if (s.ks > 0 || !lights.point.empty() || lights.shadows) p = {in(varying::kEye, v), in(varying::kEye + 1, v), in(varying::kEye + 2, v)};
     const V3 c = lit::apply(lit::light(lights, {nx, ny, nz}, p, s), {br, bg, bb});
     return finish(out, c.x, c.y, c.z);
   }

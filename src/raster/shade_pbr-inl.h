@@ -270,12 +270,16 @@ struct PbrShader {
       out = {channel_of(f0.x, ms.x, cdiff.x, rr, out.x), channel_of(f0.y, ms.y, cdiff.y, rg, out.y),
              channel_of(f0.z, ms.z, cdiff.z, rb, out.z)};
     };
-    for (const auto& l : lights.directional)
-      add_light({hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)}, hn::Set(d, l.color.x),
-                hn::Set(d, l.color.y), hn::Set(d, l.color.z));
+    for (const auto& l : lights.directional) {
+      const V3 dir{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)};
+      const VF vis = lit::visibility(l.shadow, p, n, dir);  // shading/shadow.hpp
+      add_light(dir, hn::Mul(hn::Set(d, l.color.x), vis), hn::Mul(hn::Set(d, l.color.y), vis),
+                hn::Mul(hn::Set(d, l.color.z), vis));
+    }
     for (const auto& l : lights.point) {
       V3 dir;
-      const VF att = lit::punctual(l, p, n, dir);
+      VF att = lit::punctual(l, p, n, dir);
+      if (l.shadow) att = hn::Mul(att, lit::visibility(l.shadow, p, n, dir));
       add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
                 hn::Mul(hn::Set(d, l.color.z), att));
     }

@@ -10,6 +10,7 @@
 #endif
 
 #include "shading/lighting.hpp"
+#include "shading/shadow-inl.h"
 #include "simd/simd-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -58,7 +59,7 @@ HWY_INLINE VF punctual(const EyeLights::Point& l, const V3& p, const V3& n, V3& 
 }
 
 // `n` unit normals and `p` positions, eye space. `p` is read only for the specular term
-// (s.ks > 0) and point lights; otherwise it may be left zero.
+// (s.ks > 0), point lights and shadows (lights.shadows); otherwise it may be left zero.
 HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular& s) {
   const DF d;
   LightTermsN t{{hn::Set(d, lights.ambient.x), hn::Set(d, lights.ambient.y), hn::Set(d, lights.ambient.z)},
@@ -86,12 +87,16 @@ HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular
       }
     }
   };
-  for (const auto& l : lights.directional)
-    add_light({hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)}, hn::Set(d, l.color.x),
-              hn::Set(d, l.color.y), hn::Set(d, l.color.z));
+  for (const auto& l : lights.directional) {
+    const V3 dir{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)};
+    const VF vis = visibility(l.shadow, p, n, dir);
+    add_light(dir, hn::Mul(hn::Set(d, l.color.x), vis), hn::Mul(hn::Set(d, l.color.y), vis),
+              hn::Mul(hn::Set(d, l.color.z), vis));
+  }
   for (const auto& l : lights.point) {
     V3 dir;
-    const VF att = punctual(l, p, n, dir);
+    VF att = punctual(l, p, n, dir);
+    if (l.shadow) att = hn::Mul(att, visibility(l.shadow, p, n, dir));
     add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
               hn::Mul(hn::Set(d, l.color.z), att));
   }

@@ -58,6 +58,7 @@ void light_for_test(const EyeLights& lights, const Vec3* n, const Vec3* p, size_
 void eye_lights(const Mat4& view, const std::vector<Light>& lights, EyeLights& out) {
   out.ambient = {};
   out.directional.clear(), out.point.clear();
+  out.shadows = false;  // until the frame's shadow maps are drawn (frame.cpp)
   if (lights.empty()) {
     out.ambient = kDefaultLight.ambient;
     out.directional.push_back({normalize(kDefaultLight.towards), kDefaultLight.diffuse});

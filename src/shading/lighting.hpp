@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "shading/shadow.hpp"
 #include "velocity/math.hpp"
 #include "velocity/scene.hpp"
 
@@ -31,6 +32,7 @@ struct EyeLights {
   struct Directional {
     Vec3 to_light;  // unit, eye space
     Vec3 color;
+    const LightShadow* shadow = nullptr;  // its shadow map, when the frame has shadows
   };
   // A point light, or a spot light (spot: its cone).
   struct Point {
@@ -44,10 +46,12 @@ struct EyeLights {
     // The cone: saturate(cos * spot_scale + spot_offset)^2, cos the angle's between the
     // axis and the direction from the light to the point.
     float spot_scale = 0, spot_offset = 1;
+    const LightShadow* shadow = nullptr;  // its shadow map(s), when the frame has shadows
   };
   Vec3 ambient;
   std::vector<Directional> directional;
   std::vector<Point> point;
+  bool shadows = false;  // some light has a shadow: its contribution is scaled by its visibility
 };
 
 // The light arriving at a surface point, split so that the surface's colours can be
@@ -152,11 +156,14 @@ inline float punctual(const EyeLights::Point& l, Vec3 p, Vec3 n, Vec3& to_light)
 inline LightTerms light(const EyeLights& lights, Vec3 n, Vec3 p, const Specular& s) {
   LightTerms t{lights.ambient, {}};
   Vec3 to_eye = s.ks > 0 ? normalize(-p) : Vec3{};
-  for (const auto& d : lights.directional)
-    detail::add_light<Highlight::Phong>(t, n, d.to_light, {{}, d.color, d.color}, to_eye, s);
+  for (const auto& d : lights.directional) {
+    const Vec3 color = d.shadow ? d.color * visibility(*d.shadow, p, n, d.to_light) : d.color;
+    detail::add_light<Highlight::Phong>(t, n, d.to_light, {{}, color, color}, to_eye, s);
+  }
   for (const auto& pl : lights.point) {
     Vec3 to_light;
-    const float att = detail::punctual(pl, p, n, to_light);
+    float att = detail::punctual(pl, p, n, to_light);
+    if (pl.shadow) att *= visibility(*pl.shadow, p, n, to_light);
     Vec3 color = pl.color * att;
     detail::add_light<Highlight::Phong>(t, n, to_light, {{}, color, color}, to_eye, s);
   }

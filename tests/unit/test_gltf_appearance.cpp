@@ -437,4 +437,42 @@ TEST_F(GltfTextureTransform, OffsetScaleRotationAndUvSet) {
 }
 
 }  // namespace
+// KHR_lights_punctual lights cast shadows when the frame asks for them: a directional
+// light turned 30 degrees about Y shines past a small quad floating over a large one, and
+// the large one shows the small one's shadow beside it; shadows off, it does not.
+TEST_F(GltfAppearanceTest, PunctualLightsCastShadows) {
+  GltfBuilder b;
+  add_quad(b, {0});
+  b.json["materials"] = nlohmann::json::parse(R"([{"pbrMetallicRoughness": {"metallicFactor": 0}}])");
+  b.json["nodes"][0]["scale"] = {4, 4, 1};
+  b.json["nodes"].push_back({{"mesh", 0}, {"translation", {0, 0, 1}}, {"scale", {0.5, 0.5, 1}}});
+  b.json["extensionsUsed"] = {"KHR_lights_punctual"};
+  b.json["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::parse(R"([{"type": "directional", "intensity": 3}])");
+  b.json["nodes"].push_back({{"rotation", {0, std::sin(radians(15.0f)), 0, std::cos(radians(15.0f))}},
+                             {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  b.json["scenes"][0]["nodes"] = {0, 1, 2};
+  Model m = load_model(write("shadow.gltf", b.gltf()));
+  ASSERT_EQ(m.lights.size(), 1u);
+  EXPECT_TRUE(m.lights[0].cast_shadows);
+  Scene scene;
+  add_to_scene(scene, m);
+  scene.frame_camera(1.0f);
+  auto draw = [&](bool shadows) {
+    Renderer r(96, 96);
+    r.options.shadows = shadows;
+    r.options.shadow_map_size = 512;
+    r.render(scene);
+    return r.color_image();
+  };
+  const Image on = draw(true), off = draw(false);
+  int darker = 0, brighter = 0;
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 96; ++x) {
+      darker += on.pixel(x, y)[1] + 8 < off.pixel(x, y)[1];
+      brighter += on.pixel(x, y)[1] > off.pixel(x, y)[1];
+    }
+  EXPECT_GT(darker, 20);  // the strip of shadow beside the small quad (32 pixels here)
+  EXPECT_EQ(brighter, 0);
+}
+
 }  // namespace velocity

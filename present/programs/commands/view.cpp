@@ -13,6 +13,7 @@ std::function<int()> add_view_command(CLI::App& app) {
     std::string model;
     bool cull = false, swap_yz = true;
     int ssaa = 1;
+    bool shadows = false;
     std::string shot = "velocity-shot";
     AppearanceArgs appearance;
   };
@@ -24,6 +25,7 @@ std::function<int()> add_view_command(CLI::App& app) {
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor 1..3 to start with (A cycles)")
       ->check(CLI::Range(1, 3))
       ->capture_default_str();
+  cmd->add_flag("--shadows", args->shadows, "Shadow maps for the lights that cast shadows, to start with (O toggles)");
   cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
   add_appearance_options(cmd, args->appearance);
   add_realtime_options(cmd, args->realtime);
@@ -35,6 +37,7 @@ std::function<int()> add_view_command(CLI::App& app) {
     o.load.swap_yz = args->swap_yz;
     o.cull_back_faces = args->cull;
     o.ssaa = args->ssaa;
+    o.shadows = args->shadows;
     o.screenshot_prefix = args->shot;
     o.color = colour.color, o.tone_map = colour.tone_map, o.exposure = colour.exposure;
     realtime::ViewerProgram viewer(o);
