@@ -829,6 +829,9 @@ TEST(Viewer, GltfAnimationPlaysPausesAndSteps) {
   run_scripted(v, "0 press k\n", 0.5);
   EXPECT_TRUE(v.playing());
   EXPECT_NEAR(v.animation_time(), 1.2, 1e-6);
+  fs::remove_all(dir);
+}
+
 // `view --color/--tone-map/--exposure` reach the frame as `render`'s do, and a glTF
 // model is drawn as `render` draws it (scene_from_model, ColorPipeline::Auto): an unlit
 // baseColorFactor 0.5 shows 188 (sRGB of linear 0.5); exposure 0.5 in the linear
