@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "convert.hpp"
+#include "png_encode.hpp"
 #include "scene_graph.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
@@ -496,6 +497,46 @@ py::array_t<double> projection_of(const Cam& cam, int width, int height) {
   return pose_array(m);
 }
 
+// numpy image -> PNG bytes (velocity.png.encode_png), encoded without the GIL.
+py::bytes png_bytes(const py::array& image, int level, const std::string& filter) {
+  static const std::pair<const char*, PngFilter> kFilters[] = {
+      {"none", PngFilter::None}, {"sub", PngFilter::Sub}, {"up", PngFilter::Up},
+      {"average", PngFilter::Average}, {"paeth", PngFilter::Paeth}, {"adaptive", PngFilter::Adaptive}};
+  PngFilter f = PngFilter::Up;
+  bool known = false;
+  for (const auto& [name, value] : kFilters)
+    if (filter == name) f = value, known = true;
+  if (!known)
+    throw py::value_error("encode_png: filter must be 'none', 'sub', 'up', 'average', 'paeth' or 'adaptive', got '" +
+                          filter + "'");
+  const bool u8 = image.dtype().is(py::dtype::of<uint8_t>()), u16 = image.dtype().is(py::dtype::of<uint16_t>());
+  if (!u8 && !u16)
+    throw DtypeError("encode_png: expected uint8 or uint16 pixels, got " + std::string(py::str(image.dtype())));
+  const int channels = image.ndim() == 2 ? 1 : image.ndim() == 3 ? int(image.shape(2)) : 0;
+  if (channels != 1 && channels != 3 && channels != 4) {
+    std::string shape;
+    for (py::ssize_t i = 0; i < image.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(image.shape(i));
+    throw ShapeError("encode_png: expected H x W, H x W x 1, H x W x 3 or H x W x 4, got shape (" + shape + ")");
+  }
+  if (u16 && channels != 1) throw ShapeError("encode_png: 16-bit images must be grey (H x W)");
+  if (image.shape(0) < 1 || image.shape(1) < 1) throw ShapeError("encode_png: the image is empty");
+  if (level < 0 || level > 9) throw py::value_error("encode_png: level must be 0..9 (zlib's), got " + std::to_string(level));
+  py::array packed = py::array::ensure(image, py::array::c_style);  // rows of packed pixels
+  PngImage im;
+  im.pixels = packed.data();
+  im.width = int(std::min<py::ssize_t>(packed.shape(1), 1 << 30));
+  im.height = int(std::min<py::ssize_t>(packed.shape(0), 1 << 30));
+  im.channels = channels;
+  im.bits = u16 ? 16 : 8;
+  im.stride = packed.shape(0) > 1 ? packed.strides(0) : ptrdiff_t(im.width) * channels * (im.bits / 8);
+  std::vector<uint8_t> bytes;
+  {
+    py::gil_scoped_release release;
+    bytes = encode_png(im, level, f);
+  }
+  return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_velocity, m) {
@@ -945,6 +986,11 @@ PYBIND11_MODULE(_velocity, m) {
     CameraPose c = camera_pose(p.data());
     return py::make_tuple(std::array<float, 3>{c.position.x, c.position.y, c.position.z}, c.yaw, c.pitch, c.roll);
   }, "Internal: (position, yaw, pitch, roll) the engine's camera takes for a camera pose.");
+  m.def("encode_png", &png_bytes, py::arg("image"), py::arg("level") = 3, py::arg("filter") = "up",
+        "PNG bytes of a uint8 H x W (grey), H x W x 3 (RGB) or H x W x 4 (RGBA) image, or a uint16 H x W one "
+        "(16-bit grey). level: zlib's, 0..9; filter: one PNG row filter for every row ('up', the default, "
+        "suits rendered frames), or 'adaptive' (libpng's choice per row: smaller, slower). libpng encodes; the "
+        "GIL is released meanwhile.");
   m.def("_rotation_from_angles", [](double yaw, double pitch, double roll) {
     double r[9];
     rotation_from_angles(yaw, pitch, roll, r);
