@@ -105,7 +105,8 @@ def main():
                 ratios[name].append((ms / base[0], size / base[1]))
                 print(f"  {name:28s} {ms:6.2f} ms {size:7d} B")
             for name, enc in (("mask: pillow level 3", pillow_mask),
-                              ("mask: libpng up level 3", lambda m: len(encode_png(m)))):
+                              ("mask: libpng up level 3", lambda m: len(encode_png(m))),
+                              ("mask: libpng none level 3", lambda m: len(encode_png(m, 3, "none")))):
                 ms, size = cpu_ms(enc, mask, args.repeats)
                 print(f"  {name:28s} {ms:6.2f} ms {size:7d} B")
     print("geometric means against Pillow (time, size, time x size):")
