@@ -1060,16 +1060,18 @@ PYBIND11_MODULE(_velocity, m) {
                     "Side of a point (point clouds, points shading) in output pixels, 1..64.")
       .def_property_readonly("last_frame", [](PyRenderer& r) -> py::object {
         std::optional<RenderOutput> last;
+        const char *backend = nullptr, *reason = nullptr;
         {
           py::gil_scoped_release release;
-          std::lock_guard lock(r.mutex);
+          std::lock_guard lock(r.mutex);  // not while a frame writes them
           if (r.last) last.emplace(), last->options = r.last->options, last->cast_shadows = r.last->cast_shadows;
+          backend = r.renderer.stats().backend, reason = r.renderer.stats().backend_reason;
         }
         if (!last) return py::none();
         const RenderOptions& o = last->options;
         py::dict d;
-        d["backend"] = r.renderer.stats().backend;
-        d["backend_reason"] = r.renderer.stats().backend_reason;
+        d["backend"] = backend;
+        d["backend_reason"] = reason;
         d["color"] = to_string(o.color);
         d["tone_map"] = to_string(o.tone_map);
         d["exposure"] = o.exposure;
