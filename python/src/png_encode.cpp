@@ -61,6 +61,7 @@ bool write_png_rows(png_structp png, png_infop info, const PngImage& im, int lev
   png_set_IHDR(png, info, png_uint_32(im.width), png_uint_32(im.height), im.bits, kColorType[im.channels],
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, level);
+  png_set_compression_buffer_size(png, 1 << 16);  // fewer, larger IDAT chunks
   png_set_filter(png, PNG_FILTER_TYPE_BASE, filter_mask(filter));
   png_write_info(png, info);
   const uint16_t one = 1;
