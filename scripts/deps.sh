@@ -21,7 +21,8 @@
 #   python3-numpy                    its arrays (colour, depth, masks, meshes)
 #   python3-pytest                   the Python tests, run by ctest
 #   python3-distributed              the batch renderer on a Dask cluster (and its tests)
-#   python3-pil                      PNG files of the batch runner; pyrender's textures as PIL images (velocity.pyrender)
+#   libpng-dev                       PNG files of the batch runner (python/src/png_encode.cpp): zlib's speed, 16-bit masks
+#   python3-pil                      pyrender's textures as PIL images (velocity.pyrender)
 #   python3-tqdm                     the batch runner's progress bar
 #   libepoxy-dev                     the GPU backend (gpu/): OpenGL entry points, loaded at run time
 #   libegl-dev                       the GPU backend: EGL from libglvnd, a headless OpenGL context
@@ -42,7 +43,7 @@
 #                                    only when there is no npm command (NodeSource's nodejs carries its own)
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libstb-dev libtinyobjloader-dev libassimp-dev nlohmann-json3-dev assimp-testmodels libcli11-dev libgtest-dev libhwy-dev libbenchmark-dev libosmesa6-dev libglu1-mesa-dev
-  python3-dev pybind11-dev python3-numpy python3-pytest python3-distributed python3-pil python3-tqdm
+  python3-dev pybind11-dev python3-numpy libpng-dev python3-pytest python3-distributed python3-pil python3-tqdm
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libsdl2-dev xvfb xdotool python3-gi gir1.2-gtk-3.0
   libx11-dev libxext-dev libglvnd-dev mesa-utils freeglut3-dev libwaffle-1-0 python3-mako python3-six chromium "$@")
 # Debian's npm conflicts with a nodejs from NodeSource, which provides npm itself.

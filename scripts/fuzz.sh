@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (tests/fuzz) with clang in build-fuzz and runs each for
 # SECONDS (default 30).
 #
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert gl glx script race
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx script race
 #
 # Seeds: tests/fuzz/corpus/<target>, tests/fuzz/regressions/<target>, the project's own
 # test files for the format, and the real files under ../shared/data read in place when
@@ -28,7 +28,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-30}"
 [[ $# -gt 0 ]] && shift
-all_targets=(asc plg pcx obj image raster assimp embedded pyconvert gl glx script race)
+all_targets=(asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx script race)
 targets=("$@")
 ((${#targets[@]})) || targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do
@@ -90,6 +90,7 @@ max_len() {
     raster) echo 4096 ;;
     gl) echo 8192 ;;
     pyconvert) echo 4096 ;;
+    pngencode) echo 8192 ;;
     assimp) echo 262144 ;;  # assimp-testmodels' Draco engine is a 245 KB GLB
     *) echo 131072 ;;
   esac

@@ -22,6 +22,8 @@ scene.add(pyrender.OrthographicCamera(xmag=1.0, ymag=1.0), pose=np.array(
     [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 2.0], [0, 0, 0, 1]]))
 color, depth = pyrender.OffscreenRenderer(8, 8).render(scene)
 assert depth[4, 4] == 2.0 and tuple(color[4, 4]) == (255, 0, 0) and (depth > 0).sum() == 1, (depth, color)
+from velocity.png import encode_png  # libpng, linked into the installed module
+assert encode_png(np.zeros((2, 3), np.uint16))[:8] == b"\x89PNG\r\n\x1a\n"
 print("installed velocity", velocity.__file__)
 PY
 "$work/venv/bin/velocity-batch" --help > "$work/help.txt"

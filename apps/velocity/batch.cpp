@@ -56,7 +56,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
     execv(VELOCITY_PYTHON, argv.data());
     throw Error(std::string("batch: cannot run ") + VELOCITY_PYTHON + ": " + std::strerror(errno));
 #else
-    throw Error("batch: this build has no Python module (it needs python3-dev, python3-numpy and pybind11-dev)");
+    throw Error("batch: this build has no Python module (it needs python3-dev, python3-numpy, pybind11-dev and libpng-dev)");
 #endif
   };
 }

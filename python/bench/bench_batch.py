@@ -11,7 +11,9 @@ process, as does the local runner's coordinator).
 
 The job: 10 models (the project's test models and Debian's assimp-testmodels), 100
 orbit views each, colour + depth + mask at size x size, one Dask task per 25 views.
-Times the job only (the cluster is started and warmed up before).
+Times the job only (the cluster is started and warmed up before), by the wall clock
+and in CPU time (this process and the processes below it: the local runner's; Dask's
+workers too, which are its children here).
 
 Two controls: the disk's own scaling (files written and renamed by one process, then
 by two: on this machine's virtual disk, creating a file costs about 0.2 ms and two
@@ -62,6 +64,29 @@ def machine_scaling(build, rounds):
     print(f"control: one render loop alone {a:.3f} ms/frame, two at once {b:.3f} ms/frame each: "
           f"the machine scales {a / b:.3f} of 2x", flush=True)
     return a / b
+
+
+def tree_cpu_seconds():
+    """CPU seconds (user + system) used so far by this process and every process below
+    it (the local runner's forkserver and workers): on a shared, loaded machine the work
+    a job costs, which wall-clock views/s are not. Processes that ended are not counted."""
+    parents, ticks = {}, {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        parents[int(entry)] = int(fields[1])
+        ticks[int(entry)] = int(fields[11]) + int(fields[12])
+    mine, grew = {os.getpid()}, True
+    while grew:
+        more = {pid for pid, parent in parents.items() if parent in mine} - mine
+        grew = bool(more)
+        mine |= more
+    return sum(ticks.get(pid, 0) for pid in mine) / os.sysconf("SC_CLK_TCK")
 
 
 def _write_files(folder, n, go):
@@ -140,23 +165,25 @@ def measure(runner, args):
             cluster = local_cluster(n, silence_logs=50)  # as run_dask starts its own
             clusters[n] = (cluster, distributed.Client(cluster))
     rates = {n: [] for n in args.workers}
+    cpu_ms = {n: [] for n in args.workers}
     try:
         for r in range(args.rounds + 1):  # round 0 warms up (imports, renderers, page cache)
             for n in args.workers:
                 out = os.path.join(tmp, f"out-{n}")
                 shutil.rmtree(out, ignore_errors=True)
                 job = load_job(spec, out)
-                t0 = time.perf_counter()
+                t0, c0 = time.perf_counter(), tree_cpu_seconds()
                 if runner == "dask":
                     m = run_dask(job, client=clusters[n][1], progress=Progress(False))
                 else:
                     m = run_local(job, pool=pools[n], progress=Progress(False))
-                dt = time.perf_counter() - t0
+                dt, cpu = time.perf_counter() - t0, tree_cpu_seconds() - c0
                 assert m["views_done"] == total and not m["models_failed"], json.dumps(m["models_failed"])
                 if r:
                     rates[n].append(total / dt)
+                    cpu_ms[n].append(1e3 * cpu / total)
                 print(f"{runner} round {r}{' (warm-up)' if not r else ''}: {n} worker(s): {total} views in {dt:.2f} s "
-                      f"= {total / dt:.1f} views/s", flush=True)
+                      f"= {total / dt:.1f} views/s, {1e3 * cpu / total:.2f} CPU ms/view", flush=True)
     finally:
         for cluster, client in clusters.values():
             client.close()
@@ -164,6 +191,9 @@ def measure(runner, args):
         for pool in pools.values():
             pool.close()
         shutil.rmtree(tmp, ignore_errors=True)
+    for n in args.workers:
+        print(f"{runner}: {n} worker(s): median {statistics.median(rates[n]):.1f} views/s, "
+              f"{statistics.median(cpu_ms[n]):.2f} CPU ms/view", flush=True)
     return {n: statistics.median(r) for n, r in rates.items()}
 
 

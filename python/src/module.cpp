@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "convert.hpp"
+#include "png_encode.hpp"
 #include "scene_graph.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
@@ -389,10 +390,43 @@ BackendChoice backend_choice(const std::string& name) {
   throw Error("backend must be 'cpu', 'gpu' or 'auto', got '" + name + "'");
 }
 
+// The appearance options (RenderOptions; docs/appearance.md), by the names the CLI's
+// --color, --tone-map, --exposure, --point-size take. Bad values are ValueErrors.
+ColorPipeline color_pipeline(const std::string& name) {
+  if (name == "auto") return ColorPipeline::Auto;
+  if (name == "linear") return ColorPipeline::Linear;
+  if (name == "display") return ColorPipeline::Display;
+  throw py::value_error("color: expected 'auto', 'linear' or 'display', got '" + name + "'");
+}
+const char* to_string(ColorPipeline c) {
+  return c == ColorPipeline::Linear ? "linear" : c == ColorPipeline::Display ? "display" : "auto";
+}
+ToneMap tone_map(const std::string& name) {
+  if (name == "none") return ToneMap::None;
+  if (name == "aces") return ToneMap::Aces;
+  if (name == "neutral") return ToneMap::KhronosNeutral;
+  throw py::value_error("tone_map: expected 'none', 'aces' or 'neutral', got '" + name + "'");
+}
+const char* to_string(ToneMap t) { return t == ToneMap::Aces ? "aces" : t == ToneMap::KhronosNeutral ? "neutral" : "none"; }
+float exposure(double v) {
+  if (!(std::isfinite(v) && v >= 0 && v <= 1e30)) throw py::value_error("exposure: expected a finite number >= 0, got " + py::repr(py::float_(v)).cast<std::string>());
+  return float(v);
+}
+int shadow_map_size(int v) {
+  if (v < 16 || v > 8192) throw py::value_error("shadow_map_size: expected 16..8192 texels a side, got " + std::to_string(v));
+  return v;
+}
+float point_size(double v) {
+  if (!(v >= 1 && v <= 64)) throw py::value_error("point_size: expected 1..64 pixels, got " + py::repr(py::float_(v)).cast<std::string>());
+  return float(v);
+}
+
 struct PyRenderer {
   Renderer renderer;
   std::mutex mutex;
   std::shared_ptr<BufferPool> pool = std::make_shared<BufferPool>();
+  // The last frame's options and its lights' shadows, as the engine got them (last_frame).
+  std::optional<RenderOutput> last;
   PyRenderer(int w, int h, int ssaa, int threads, const std::string& backend)
       : renderer(w, h, backend_choice(backend)) {
     if (ssaa < 1 || ssaa > 4) throw Error("ssaa must be 1..4, got " + std::to_string(ssaa));
@@ -400,7 +434,16 @@ struct PyRenderer {
     renderer.options.ssaa = ssaa;
     renderer.options.threads = threads;
   }
+  // Reads or changes the options between frames, never while another thread renders
+  // (a frame changes them while it runs).
+  template <typename F>
+  auto with_options(F&& f) {
+    py::gil_scoped_release release;  // never wait for the mutex holding the GIL
+    std::lock_guard lock(mutex);
+    return f(renderer.options);
+  }
 };
+
 
 // pyrender's RenderFlags values that Velocity uses (velocity/__init__.py's RenderFlags).
 enum : int64_t {
@@ -416,7 +459,7 @@ enum : int64_t {
   kNormals = 1 << 20,
 };
 
-py::object render(PyRenderer& self, const PyScene& scene, int64_t flags, const std::string& color_pipeline) {
+py::object render(PyRenderer& self, const PyScene& scene, int64_t flags, std::optional<std::string> pipeline) {
   RenderRequest req;
   req.color = !(flags & kDepthOnly);
   req.alpha = flags & kRgba;
@@ -428,10 +471,7 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags, const s
   req.shadows_directional = flags & kShadowsDirectional;
   req.shadows_point = flags & kShadowsPoint;
   req.shadows_spot = flags & kShadowsSpot;
-  if (color_pipeline == "auto") req.color_pipeline = ColorPipeline::Auto;
-  else if (color_pipeline == "linear") req.color_pipeline = ColorPipeline::Linear;
-  else if (color_pipeline == "display") req.color_pipeline = ColorPipeline::Display;
-  else throw py::value_error("color: expected 'auto', 'linear' or 'display', got '" + color_pipeline + "'");
+  if (pipeline) req.color_pipeline = color_pipeline(*pipeline);
   RenderOutput out;
   int w, h;
   std::unique_ptr<uint8_t[]> color, depth_buffer;
@@ -457,6 +497,9 @@ py::object render(PyRenderer& self, const PyScene& scene, int64_t flags, const s
     depth_buffer = self.pool->take(depth_bytes);
     req.depth_buffer = reinterpret_cast<float*>(depth_buffer.get());
     out = render_frame(self.renderer, frame, req);
+    self.last.emplace();
+    self.last->options = out.options;
+    self.last->cast_shadows = out.cast_shadows;
   }
   warnings.emit();
   // Each array owns its buffer; when numpy frees it, it goes back to the renderer's pool.
@@ -494,6 +537,46 @@ py::array_t<double> projection_of(const Cam& cam, int width, int height) {
   double m[16];
   for (int i = 0; i < 16; ++i) m[i] = p.m[i / 4][i % 4];
   return pose_array(m);
+}
+
+// numpy image -> PNG bytes (velocity.png.encode_png), encoded without the GIL.
+py::bytes png_bytes(const py::array& image, int level, const std::string& filter) {
+  static const std::pair<const char*, PngFilter> kFilters[] = {
+      {"none", PngFilter::None}, {"sub", PngFilter::Sub}, {"up", PngFilter::Up},
+      {"average", PngFilter::Average}, {"paeth", PngFilter::Paeth}, {"adaptive", PngFilter::Adaptive}};
+  PngFilter f = PngFilter::Up;
+  bool known = false;
+  for (const auto& [name, value] : kFilters)
+    if (filter == name) f = value, known = true;
+  if (!known)
+    throw py::value_error("encode_png: filter must be 'none', 'sub', 'up', 'average', 'paeth' or 'adaptive', got '" +
+                          filter + "'");
+  const bool u8 = image.dtype().is(py::dtype::of<uint8_t>()), u16 = image.dtype().is(py::dtype::of<uint16_t>());
+  if (!u8 && !u16)
+    throw DtypeError("encode_png: expected uint8 or uint16 pixels, got " + std::string(py::str(image.dtype())));
+  const int channels = image.ndim() == 2 ? 1 : image.ndim() == 3 ? int(image.shape(2)) : 0;
+  if (channels != 1 && channels != 3 && channels != 4) {
+    std::string shape;
+    for (py::ssize_t i = 0; i < image.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(image.shape(i));
+    throw ShapeError("encode_png: expected H x W, H x W x 1, H x W x 3 or H x W x 4, got shape (" + shape + ")");
+  }
+  if (u16 && channels != 1) throw ShapeError("encode_png: 16-bit images must be grey (H x W)");
+  if (image.shape(0) < 1 || image.shape(1) < 1) throw ShapeError("encode_png: the image is empty");
+  if (level < 0 || level > 9) throw py::value_error("encode_png: level must be 0..9 (zlib's), got " + std::to_string(level));
+  py::array packed = py::array::ensure(image, py::array::c_style);  // rows of packed pixels
+  PngImage im;
+  im.pixels = packed.data();
+  im.width = int(std::min<py::ssize_t>(packed.shape(1), 1 << 30));
+  im.height = int(std::min<py::ssize_t>(packed.shape(0), 1 << 30));
+  im.channels = channels;
+  im.bits = u16 ? 16 : 8;
+  im.stride = packed.shape(0) > 1 ? packed.strides(0) : ptrdiff_t(im.width) * channels * (im.bits / 8);
+  std::vector<uint8_t> bytes;
+  {
+    py::gil_scoped_release release;
+    bytes = encode_png(im, level, f);
+  }
+  return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
 }  // namespace
@@ -781,7 +864,10 @@ PYBIND11_MODULE(_velocity, m) {
                     [](LightBase& l, double v) {
                       if (!(std::isfinite(v) && v >= 0)) throw py::value_error("intensity must be finite and >= 0, got " + std::to_string(v));
                       l.intensity = v;
-                    });
+                    })
+      .def_readwrite("cast_shadows", &LightBase::cast_shadows,
+                     "Whether it casts a shadow in frames with shadows (the renderer's shadows option, or a "
+                     "RenderFlags.SHADOWS_* flag naming its kind); True by default.");
   auto make_light = [](auto l, py::object color, std::optional<double> intensity, std::optional<std::string> name) {
     auto v = color_of(color, "color", {1, 1, 1, 1});
     l->color = {float(v[0]), float(v[1]), float(v[2])};
@@ -919,12 +1005,27 @@ PYBIND11_MODULE(_velocity, m) {
   py::class_<PyRenderer>(m, "OffscreenRenderer",
       "Renders scenes to numpy arrays on the CPU (pyrender's OffscreenRenderer; no display, no GL). Many "
       "renderers may render at once from many threads; the GIL is released while one renders.")
-      .def(py::init<int, int, int, int, const std::string&>(), py::arg("viewport_width"), py::arg("viewport_height"),
-           py::arg("ssaa") = 1, py::arg("threads") = 0, py::arg("backend") = "cpu",
+      .def(py::init([](int w, int h, int ssaa, int threads, const std::string& backend, const std::string& color,
+                       const std::string& tone, double exp, bool shadows, int map_size, double points) {
+             // The options first: a bad one is a ValueError before any backend starts.
+             RenderOptions o;
+             o.color = color_pipeline(color), o.tone_map = tone_map(tone), o.exposure = exposure(exp);
+             o.shadows = shadows, o.shadow_map_size = shadow_map_size(map_size), o.point_size = point_size(points);
+             auto r = std::make_unique<PyRenderer>(w, h, ssaa, threads, backend);
+             RenderOptions& ro = r->renderer.options;
+             ro.color = o.color, ro.tone_map = o.tone_map, ro.exposure = o.exposure;
+             ro.shadows = o.shadows, ro.shadow_map_size = o.shadow_map_size, ro.point_size = o.point_size;
+             return r;
+           }),
+           py::arg("viewport_width"), py::arg("viewport_height"), py::arg("ssaa") = 1, py::arg("threads") = 0,
+           py::arg("backend") = "cpu", py::kw_only(), py::arg("color") = "auto", py::arg("tone_map") = "none",
+           py::arg("exposure") = 1.0, py::arg("shadows") = false, py::arg("shadow_map_size") = 2048,
+           py::arg("point_size") = 1.0,
            "viewport_width x viewport_height pixels (1..16384); ssaa: 1..4 samples per side per pixel (colour "
            "averaged; depth and mask from the nearest sample, never blended); threads: cores for one frame "
            "(0: all); backend: 'cpu', 'gpu' (OpenGL 3.3 through EGL; an error naming what is missing) or "
-           "'auto' (a hardware GPU, else the CPU).")
+           "'auto' (a hardware GPU, else the CPU). The appearance options (keywords, also properties): color, "
+           "tone_map, exposure, shadows, shadow_map_size, point_size.")
       .def_property("viewport_width", [](PyRenderer& r) { return r.renderer.width(); },
                     [](PyRenderer& r, int w) {
                       py::gil_scoped_release release;  // never wait for the mutex holding the GIL
@@ -937,7 +1038,52 @@ PYBIND11_MODULE(_velocity, m) {
                       std::lock_guard lock(r.mutex);
                       r.renderer.resize(r.renderer.width(), h);
                     })
-      .def("_render", &render, py::arg("scene"), py::arg("flags"), py::arg("color") = "auto")
+      .def_property("color", [](PyRenderer& r) { return std::string(to_string(r.with_options([](RenderOptions& o) { return o.color; }))); },
+                    [](PyRenderer& r, const std::string& v) { auto c = color_pipeline(v); r.with_options([&](RenderOptions& o) { o.color = c; }); },
+                    "'auto' (linear for a frame with PBR materials, else display), 'linear' (sRGB decoded, lit in "
+                    "linear light, encoded) or 'display' (8-bit values lit as they are, as OpenGL 1.x).")
+      .def_property("tone_map", [](PyRenderer& r) { return std::string(to_string(r.with_options([](RenderOptions& o) { return o.tone_map; }))); },
+                    [](PyRenderer& r, const std::string& v) { auto t = tone_map(v); r.with_options([&](RenderOptions& o) { o.tone_map = t; }); },
+                    "Tone mapping in the linear pipeline: 'none', 'aces' (as three.js) or 'neutral' (Khronos PBR Neutral).")
+      .def_property("exposure", [](PyRenderer& r) { return r.with_options([](RenderOptions& o) { return o.exposure; }); },
+                    [](PyRenderer& r, double v) { float e = exposure(v); r.with_options([&](RenderOptions& o) { o.exposure = e; }); },
+                    "Linear light is multiplied by this before tone mapping (>= 0).")
+      .def_property("shadows", [](PyRenderer& r) { return r.with_options([](RenderOptions& o) { return o.shadows; }); },
+                    [](PyRenderer& r, bool v) { r.with_options([&](RenderOptions& o) { o.shadows = v; }); },
+                    "Shadow maps for every light whose cast_shadows is on (RenderFlags.SHADOWS_* turn them on for "
+                    "one frame and one kind of light).")
+      .def_property("shadow_map_size", [](PyRenderer& r) { return r.with_options([](RenderOptions& o) { return o.shadow_map_size; }); },
+                    [](PyRenderer& r, int v) { int n = shadow_map_size(v); r.with_options([&](RenderOptions& o) { o.shadow_map_size = n; }); },
+                    "Texels a side of each shadow map, 16..8192.")
+      .def_property("point_size", [](PyRenderer& r) { return r.with_options([](RenderOptions& o) { return o.point_size; }); },
+                    [](PyRenderer& r, double v) { float p = point_size(v); r.with_options([&](RenderOptions& o) { o.point_size = p; }); },
+                    "Side of a point (point clouds, points shading) in output pixels, 1..64.")
+      .def_property_readonly("last_frame", [](PyRenderer& r) -> py::object {
+        std::optional<RenderOutput> last;
+        const char *backend = nullptr, *reason = nullptr;
+        {
+          py::gil_scoped_release release;
+          std::lock_guard lock(r.mutex);  // not while a frame writes them
+          if (r.last) last.emplace(), last->options = r.last->options, last->cast_shadows = r.last->cast_shadows;
+          backend = r.renderer.stats().backend, reason = r.renderer.stats().backend_reason;
+        }
+        if (!last) return py::none();
+        const RenderOptions& o = last->options;
+        py::dict d;
+        d["backend"] = backend;
+        d["backend_reason"] = reason;
+        d["color"] = to_string(o.color);
+        d["tone_map"] = to_string(o.tone_map);
+        d["exposure"] = o.exposure;
+        d["shadows"] = o.shadows;
+        d["shadow_map_size"] = o.shadow_map_size;
+        d["point_size"] = o.point_size;
+        d["cast_shadows"] = py::cast(last->cast_shadows);
+        return d;
+      }, "What the engine was given for the last frame, as a dict (None before the first): backend and "
+         "backend_reason (which backend drew and why), color, tone_map, exposure, shadows, shadow_map_size, "
+         "point_size, and cast_shadows, per light in the scene's order (the ambient term last).")
+      .def("_render", &render, py::arg("scene"), py::arg("flags"), py::arg("color") = py::none())
       .def("delete", [](PyRenderer&) {}, "Nothing to free (pyrender needs this; kept for its users).");
 
   m.def("_camera_pose_angles", [](py::object pose) {
@@ -945,6 +1091,11 @@ PYBIND11_MODULE(_velocity, m) {
     CameraPose c = camera_pose(p.data());
     return py::make_tuple(std::array<float, 3>{c.position.x, c.position.y, c.position.z}, c.yaw, c.pitch, c.roll);
   }, "Internal: (position, yaw, pitch, roll) the engine's camera takes for a camera pose.");
+  m.def("encode_png", &png_bytes, py::arg("image"), py::arg("level") = 3, py::arg("filter") = "up",
+        "PNG bytes of a uint8 H x W (grey), H x W x 3 (RGB) or H x W x 4 (RGBA) image, or a uint16 H x W one "
+        "(16-bit grey). level: zlib's, 0..9; filter: one PNG row filter for every row ('up', the default, "
+        "suits rendered frames), or 'adaptive' (libpng's choice per row: smaller, slower). libpng encodes; the "
+        "GIL is released meanwhile.");
   m.def("_rotation_from_angles", [](double yaw, double pitch, double roll) {
     double r[9];
     rotation_from_angles(yaw, pitch, roll, r);

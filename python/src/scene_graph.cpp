@@ -179,7 +179,10 @@ SceneCopy copy_scene(const SceneData& scene, int width, int height) {
       for (size_t p = 0; p < n.mesh->parts.size(); ++p)
         f.items.push_back({n.mesh->parts[p], w * n.mesh->poses[p], uint32_t(i + 1)});
     }
-    if (n.light) f.lights.push_back(n.light->make(world[i].data()));
+    if (n.light) {
+      f.lights.push_back(n.light->make(world[i].data()));
+      f.lights.back().cast_shadows = n.light->cast_shadows;
+    }
   }
   // Always an ambient term, so the core's default light never replaces the scene's
   // (pyrender's scenes are dark without lights, and so are these).
@@ -220,13 +223,20 @@ RenderOutput render_frame(Renderer& r, const SceneCopy& frame, const RenderReque
   r.options.shading = req.shading;
   r.options.cull_back_faces = req.cull_back_faces;
   r.options.normals = req.normals;
-  r.options.color = req.color_pipeline;
-  r.options.shadows = req.shadows_directional || req.shadows_point || req.shadows_spot;
+  if (req.color_pipeline) r.options.color = *req.color_pipeline;
+  // A light casts a shadow when it may (its cast_shadows) and the renderer has shadows
+  // on, or the frame's flags name its type.
+  r.options.shadows = saved.shadows || req.shadows_directional || req.shadows_point || req.shadows_spot;
   std::vector<Light> lights = frame.lights;
-  for (Light& l : lights)
-    l.cast_shadows = (l.type == LightType::Directional && req.shadows_directional) ||
-                     (l.type == LightType::Point && req.shadows_point) || (l.type == LightType::Spot && req.shadows_spot);
   RenderOutput out;
+  for (Light& l : lights) {
+    const bool flagged = (l.type == LightType::Directional && req.shadows_directional) ||
+                         (l.type == LightType::Point && req.shadows_point) ||
+                         (l.type == LightType::Spot && req.shadows_spot);
+    l.cast_shadows = l.type != LightType::Ambient && l.cast_shadows && (saved.shadows || flagged);
+    out.cast_shadows.push_back(l.cast_shadows);
+  }
+  out.options = r.options;
   try {
     r.begin_frame(frame.camera, lights, frame.start);
     for (const SceneCopy::Item& item : frame.items) r.draw(*item.mesh, item.world, nullptr, item.id);

@@ -67,6 +67,9 @@ struct LightBase {
   std::string name;
   Vec3 color{1, 1, 1};
   double intensity = 1.0;
+  // Casts a shadow when the frame has shadows (RenderOptions::shadows, or a SHADOWS_*
+  // render flag naming its type).
+  bool cast_shadows = true;
   // The core light for a light at `world` (row-major 4x4).
   virtual Light make(const double world[16]) const = 0;
 };
@@ -129,6 +132,10 @@ struct RenderOutput {
   std::vector<float> depth;
   std::vector<uint32_t> mask;   // node ids, 0 = nothing; empty if not asked
   std::vector<float> normals;   // width * height * 3, camera space; empty if not asked
+  // What the engine was given: the frame's options and, per light of the frame (in the
+  // scene's order, the ambient term last), whether it cast a shadow.
+  RenderOptions options;
+  std::vector<bool> cast_shadows;
 };
 struct RenderRequest {
   bool color = true, alpha = false, mask = false, normals = false;
@@ -136,9 +143,10 @@ struct RenderRequest {
   float* depth_buffer = nullptr;    // width * height floats, or null: RenderOutput::depth
   std::optional<Shading> shading;
   bool cull_back_faces = true;
-  // Shadow maps for the lights of these types (pyrender's SHADOWS_* flags).
+  // Shadow maps for the lights of these types (pyrender's SHADOWS_* flags), besides those
+  // of every light when the renderer's options.shadows is on.
   bool shadows_directional = false, shadows_point = false, shadows_spot = false;
-  ColorPipeline color_pipeline = ColorPipeline::Auto;
+  std::optional<ColorPipeline> color_pipeline;  // none: the renderer's options.color
 };
 RenderOutput render_frame(Renderer& renderer, const SceneCopy& frame, const RenderRequest& request);
 

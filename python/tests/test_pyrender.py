@@ -382,3 +382,27 @@ def test_viewer_says_what_to_use_instead():
     scene, _ = box_scene()
     with pytest.raises(NotImplementedError, match="OffscreenRenderer"):
         pyrender.Viewer(scene, use_raymond_lighting=True)  # pyrender's quickstart, first example
+
+
+def test_spot_light_cone_and_resized_viewport():
+    # A spot light straight above a floor lights a disc: inside the inner cone fully,
+    # outside the outer cone not at all; then the renderer resized, as users do.
+    floor = trimesh.Trimesh([[-4, -4, 0], [4, -4, 0], [4, 4, 0], [-4, 4, 0]], [[0, 1, 2], [0, 2, 3]])
+    scene = pyrender.Scene(bg_color=[0, 0, 0], ambient_light=[0, 0, 0])
+    scene.add(pyrender.Mesh.from_trimesh(floor))
+    scene.add(pyrender.OrthographicCamera(xmag=4.0, ymag=4.0), pose=camera_pose_looking_down(5.0))
+    inner, outer = np.pi / 12, np.pi / 6
+    scene.add(pyrender.SpotLight(color=np.ones(3), intensity=20.0, innerConeAngle=inner, outerConeAngle=outer),
+              pose=camera_pose_looking_down(2.0))
+    r = pyrender.OffscreenRenderer(80, 80)
+    color, _ = r.render(scene)
+    grey = color[:, :, 0].astype(int)
+    px = 80 / 8.0  # pixels per unit
+    yy, xx = np.mgrid[0:80, 0:80]
+    dist = np.hypot(xx + 0.5 - 40, yy + 0.5 - 40) / px  # from the spot's centre, in units
+    inside = dist < 2.0 * np.tan(inner) * 0.9
+    outside = dist > 2.0 * np.tan(outer) * 1.1
+    assert grey[inside].min() > 40 and grey[outside].max() == 0
+    r.viewport_width, r.viewport_height = 40, 20
+    color, depth = r.render(scene)
+    assert color.shape == (20, 40, 3) and depth.shape == (20, 40)

@@ -173,7 +173,7 @@ def test_flags_flat_wire_and_cull():
     assert not np.array_equal(smooth, flat)
     assert (wire.sum(-1) > 0).sum() < (smooth.sum(-1) > 0).sum()
     with pytest.raises(ValueError, match="not supported"):
-        r.render(scene, 32)  # pyrender's SHADOWS_DIRECTIONAL
+        r.render(scene, 16)  # pyrender's ALL_SOLID
 
 
 def test_point_light_falls_off_with_distance():

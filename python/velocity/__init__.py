@@ -57,12 +57,19 @@ class RenderFlags(enum.IntFlag):
     NORMALS (Velocity's own): a last array, H x W x 3 float32 camera-space unit normals
          (OpenGL axes: +Z towards the camera), 0 where nothing was drawn; from an
          8-bit pass, so each component is within about 0.004 before normalising.
+    SHADOWS_DIRECTIONAL, SHADOWS_POINT, SHADOWS_SPOT, SHADOWS_ALL: shadow maps for this
+         frame's lights of that kind whose cast_shadows is on (the renderer's shadows
+         option turns them on for every kind).
     """
 
     NONE = 0
     DEPTH_ONLY = 1
     OFFSCREEN = 2
     ALL_WIREFRAME = 8
+    SHADOWS_DIRECTIONAL = 32
+    SHADOWS_POINT = 64
+    SHADOWS_SPOT = 128
+    SHADOWS_ALL = 32 | 64 | 128
     SKIP_CULL_FACES = 1024
     RGBA = 2048
     FLAT = 4096
@@ -72,26 +79,32 @@ class RenderFlags(enum.IntFlag):
 
 _SUPPORTED = (RenderFlags.DEPTH_ONLY | RenderFlags.OFFSCREEN | RenderFlags.ALL_WIREFRAME |
               RenderFlags.SKIP_CULL_FACES | RenderFlags.RGBA | RenderFlags.FLAT | RenderFlags.SEG |
-              RenderFlags.NORMALS)
+              RenderFlags.NORMALS | RenderFlags.SHADOWS_ALL)
 
 
 class OffscreenRenderer(_OffscreenRenderer):
     """Renders scenes to numpy arrays on the CPU (pyrender's OffscreenRenderer).
 
     OffscreenRenderer(viewport_width, viewport_height, point_size=1.0, ssaa=1, threads=0,
-    backend="cpu"): ssaa is 1..4 samples per side per pixel (colour averaged; depth and
-    mask from the nearest sample, never blended); threads is the cores one frame may use
-    (0: all); backend is "cpu", "gpu" (OpenGL through EGL) or "auto" (a hardware GPU,
-    else the CPU).
+    backend="cpu", color="auto", tone_map="none", exposure=1.0, shadows=False,
+    shadow_map_size=2048): point_size is a point's side in pixels (1..64); ssaa is 1..4
+    samples per side per pixel (colour averaged; depth and mask from the nearest sample,
+    never blended); threads is the cores one frame may use (0: all); backend is "cpu",
+    "gpu" (OpenGL through EGL) or "auto" (a hardware GPU, else the CPU). The appearance
+    options (docs/appearance.md), also properties: color "auto", "linear" or "display";
+    tone_map "none", "aces" or "neutral"; exposure >= 0; shadows (every light whose
+    cast_shadows is on); shadow_map_size 16..8192. last_frame says what the engine got
+    for the last frame and which backend drew it.
     Many renderers may render at once from many threads: the GIL is released while
     one renders. One renderer renders one frame at a time.
     """
 
     def __init__(self, viewport_width: int, viewport_height: int, point_size: float = 1.0, *,
-                 ssaa: int = 1, threads: int = 0, backend: str = "cpu") -> None:
-        if point_size != 1.0:
-            raise ValueError("point_size: only 1.0 is supported")
-        super().__init__(viewport_width, viewport_height, ssaa, threads, backend)
+                 ssaa: int = 1, threads: int = 0, backend: str = "cpu", color: str = "auto",
+                 tone_map: str = "none", exposure: float = 1.0, shadows: bool = False,
+                 shadow_map_size: int = 2048) -> None:
+        super().__init__(viewport_width, viewport_height, ssaa, threads, backend, color=color, tone_map=tone_map,
+                         exposure=exposure, shadows=shadows, shadow_map_size=shadow_map_size, point_size=point_size)
 
     def render(self, scene: Scene, flags: Union[RenderFlags, int] = RenderFlags.NONE) -> Any:
         """Renders `scene` from its main camera.
@@ -109,7 +122,7 @@ class OffscreenRenderer(_OffscreenRenderer):
         unknown = flags & ~int(_SUPPORTED)
         if unknown:
             raise ValueError(f"render: flags {RenderFlags(unknown)!r} are not supported by Velocity")
-        return self._render(scene, flags, "auto")
+        return self._render(scene, flags)
 
 
 class IntrinsicsCamera(_IntrinsicsCamera):

@@ -1,7 +1,7 @@
 # Type stubs for the compiled module velocity._velocity (python/src/module.cpp).
 # tests/test_stubs.py checks that every name and argument here matches the module.
 import os
-from typing import Optional, Sequence, Union
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -122,6 +122,7 @@ class Light:
     name: str
     color: list[float]
     intensity: float
+    cast_shadows: bool
 
 class DirectionalLight(Light):
     def __init__(self, color: Optional[Color] = None, intensity: Optional[float] = None,
@@ -181,10 +182,20 @@ class Scene:
 class OffscreenRenderer:
     viewport_width: int
     viewport_height: int
+    color: str
+    tone_map: str
+    exposure: float
+    shadows: bool
+    shadow_map_size: int
+    point_size: float
+    @property
+    def last_frame(self) -> Optional[dict[str, Any]]: ...
     def __init__(self, viewport_width: int, viewport_height: int, ssaa: int = 1, threads: int = 0,
-                 backend: str = "cpu") -> None: ...
-    def _render(self, scene: Scene, flags: int, color: str = "auto") -> object: ...
+                 backend: str = "cpu", *, color: str = "auto", tone_map: str = "none", exposure: float = 1.0,
+                 shadows: bool = False, shadow_map_size: int = 2048, point_size: float = 1.0) -> None: ...
+    def _render(self, scene: Scene, flags: int, color: Optional[str] = None) -> object: ...
     def delete(self) -> None: ...
 
 def _camera_pose_angles(pose: ArrayLike) -> tuple[list[float], float, float, float]: ...
 def _rotation_from_angles(yaw: float, pitch: float, roll: float) -> list[float]: ...
+def encode_png(image: npt.ArrayLike, level: int = 3, filter: str = "up") -> bytes: ...

@@ -16,13 +16,14 @@ from __future__ import annotations
 import argparse
 import os
 import signal
+import subprocess
 import sys
 import threading
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from concurrent.futures.process import BrokenProcessPool
 from typing import Any
 
-from .jobs import Job, JobError, load_job
+from .jobs import APPEARANCE, BACKENDS, Job, JobError, load_job
 from .progress import Progress
 from .render_task import run_task
 from .run import Run
@@ -161,6 +162,18 @@ def _summary(manifest: dict, out: str) -> str:
     return text
 
 
+def _check_backend(backend: str) -> None:
+    """A backend the workers cannot start is the job's error, said once, before any task
+    (in a child process: an OpenGL context is not carried across the workers' fork)."""
+    package_parent = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    probe = (f"import sys; sys.path.insert(0, {package_parent!r}); import velocity; "
+             f"velocity.OffscreenRenderer(8, 8, backend={backend!r})")
+    run = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True)
+    if run.returncode != 0:
+        lines = run.stderr.strip().splitlines()
+        raise JobError(f"backend {backend}: {lines[-1].split(': ', 1)[-1] if lines else 'cannot start'}")
+
+
 def main(argv: list[str] | None = None) -> int:
     # `velocity batch` (the C++ program) runs this module and names itself so.
     p = argparse.ArgumentParser(prog=os.environ.get("VELOCITY_BATCH_PROG", "velocity-batch"), description=__doc__.split("\n\n")[0],
@@ -178,12 +191,23 @@ def main(argv: list[str] | None = None) -> int:
                    help="progress bar: on a terminal (auto), always or never")
     p.add_argument("--force", action="store_true",
                    help="write into a folder that holds another job's renders (they are removed first)")
+    look = p.add_argument_group("renderer (each overrides the job's key of the same name)")
+    look.add_argument("--backend", choices=BACKENDS, help="cpu, gpu (OpenGL 3.3 through EGL) or auto")
+    look.add_argument("--color", choices=("auto", "linear", "display"), help="colour pipeline")
+    look.add_argument("--tone-map", dest="tone_map", choices=("none", "aces", "neutral"), help="tone mapping")
+    look.add_argument("--exposure", type=float, help="linear light is multiplied by this (>= 0)")
+    look.add_argument("--shadows", action=argparse.BooleanOptionalAction, help="shadow maps for every light")
+    look.add_argument("--shadow-map-size", dest="shadow_map_size", type=int, help="texels a side, 16..8192")
+    look.add_argument("--point-size", dest="point_size", type=float, help="a point's side in pixels, 1..64")
     args = p.parse_args(argv)
     if args.threads is not None and args.threads < 0:
         p.error("--threads must be >= 0")
     progress = Progress(None if args.progress == "auto" else args.progress == "always")
     try:
-        job = load_job(args.job, args.out)
+        overrides = {k: getattr(args, k) for k in ("backend", *APPEARANCE) if getattr(args, k) is not None}
+        job = load_job(args.job, args.out, overrides)
+        if job.spec["backend"] != "cpu" and not (args.dask or args.local_cluster):
+            _check_backend(job.spec["backend"])
         if args.dask or args.local_cluster:
             from .dask_runner import run_dask
             manifest = run_dask(job, address=args.dask, local_workers=args.local_cluster,

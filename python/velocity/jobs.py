@@ -14,7 +14,10 @@ A job is a JSON file:
      "views": {"type": "orbit", "count": 24, "elevation_deg": [15, 45]},
                                                    or poses / animation
      "outputs": ["color", "depth", "mask"],        any of color, depth, mask, normals
-     "chunk": 0}                                   views per task (0: a model's views in one)
+     "chunk": 0,                                   views per task (0: a model's views in one)
+     "backend": "cpu",                             cpu, gpu or auto (each worker's renderer)
+     "color": "auto", "tone_map": "none", "exposure": 1.0, "shadows": false,
+     "shadow_map_size": 2048, "point_size": 1.0}   the appearance options (docs/appearance.md)
 
 Output folder:
 
@@ -40,6 +43,11 @@ MAX_JOB_BYTES = 16 << 20       # a job file larger than this is refused (it is J
 MAX_VIEWS = 10_000_000         # views in one job (models x views per model)
 MAX_MODELS = 1_000_000         # files a job's globs may match
 OUTPUTS = ("color", "depth", "mask", "normals")
+BACKENDS = ("cpu", "gpu", "auto")
+# The renderer's appearance options (velocity.OffscreenRenderer's keywords) and their
+# defaults; a job that sets none renders (and hashes) as before they existed.
+APPEARANCE = {"color": "auto", "tone_map": "none", "exposure": 1.0, "shadows": False, "shadow_map_size": 2048,
+              "point_size": 1.0}
 _SUFFIX = {"color": "color.png", "depth": "depth.npy", "mask": "mask.png", "normals": "normals.npy"}
 
 
@@ -159,6 +167,25 @@ def _parse_views(spec: Any) -> dict:
     raise JobError(f"views.type: expected orbit, poses or animation, got {kind!r}")
 
 
+def _choice(spec: dict, key: str, default: str, choices: Iterable[str]) -> str:
+    v = spec.get(key, default)
+    if v not in choices:
+        raise JobError(f"job.{key}: expected {', '.join(choices)}, got {v!r}"[:300])
+    return v
+
+
+def _parse_appearance(spec: dict) -> dict:
+    shadows = spec.get("shadows", False)
+    if not isinstance(shadows, bool):
+        raise JobError(f"job.shadows: expected true or false, got {shadows!r}"[:300])
+    return {"color": _choice(spec, "color", "auto", ("auto", "linear", "display")),
+            "tone_map": _choice(spec, "tone_map", "none", ("none", "aces", "neutral")),
+            "exposure": float(_number(spec, "exposure", 1.0, "job", 0.0, 1e30)),
+            "shadows": shadows,
+            "shadow_map_size": _number(spec, "shadow_map_size", 2048, "job", 16, 8192, integer=True),
+            "point_size": float(_number(spec, "point_size", 1.0, "job", 1.0, 64.0))}
+
+
 def _parse_light(spec: Any) -> dict:
     spec = {"type": "headlight"} if spec is None else spec
     _check_keys(spec, ("type", "intensity", "direction", "color"), "light")
@@ -210,10 +237,11 @@ class Job:
         return {o: os.path.join(self.output, name) for o, name in self.view_names(model_key, view).items()}
 
 
-def load_job(source: str | dict, output: str | None = None) -> Job:
+def load_job(source: str | dict, output: str | None = None, overrides: dict | None = None) -> Job:
     """Parses and checks a job (a JSON file's path, or the dict itself). Relative model
     paths and globs are taken from the job file's folder (the current one for a dict);
-    `output` overrides the job's own. Raises JobError naming what is wrong."""
+    `output` overrides the job's own, and `overrides` its keys (the command line's
+    --backend, --color, ...). Raises JobError naming what is wrong."""
     if isinstance(source, dict):
         spec, base = source, os.getcwd()
         identity = "models:" + json.dumps(spec.get("models"), sort_keys=True)
@@ -221,8 +249,11 @@ def load_job(source: str | dict, output: str | None = None) -> Job:
         spec = _read_job_file(source)
         base = os.path.dirname(os.path.abspath(source))
         identity = "file:" + os.path.abspath(source)
+    if overrides:
+        spec = {**spec, **overrides} if isinstance(spec, dict) else spec
     _check_keys(spec, ("version", "models", "output", "size", "camera", "views", "outputs", "alpha", "bg_color",
-                       "ambient_light", "light", "ssaa", "chunk", "normalize", "shading"), "job")
+                       "ambient_light", "light", "ssaa", "chunk", "normalize", "shading", "backend",
+                       *APPEARANCE), "job")
     version = spec.get("version", JOB_VERSION)
     if version != JOB_VERSION:
         raise JobError(f"job.version: this Velocity reads version {JOB_VERSION}, got {version!r}")
@@ -269,6 +300,8 @@ def load_job(source: str | dict, output: str | None = None) -> Job:
         "chunk": _number(spec, "chunk", 0, "job", 0, 1_000_000, integer=True),
         "normalize": bool(spec.get("normalize", False)),
         "shading": shading,
+        "backend": _choice(spec, "backend", "cpu", BACKENDS),
+        **_parse_appearance(spec),
     }
     out = output or spec.get("output")
     if not out or not isinstance(out, (str, os.PathLike)):

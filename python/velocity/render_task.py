@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from .atomic import atomic_write, write_json
-from .jobs import Job
+from .jobs import APPEARANCE, Job
 from .records import is_done, read_record, task_record
 from .tasks import Task
 from .views import view_camera, view_poses
@@ -23,14 +23,18 @@ _local = threading.local()
 
 
 def _renderer(job: Job, threads: int):
-    """One renderer per thread and settings, kept between tasks (its thread pool too)."""
+    """One renderer per thread and settings, kept between tasks (its thread pool too, and
+    on the GPU its context and uploaded meshes)."""
     import velocity
-    key = (tuple(job.spec["size"]), job.spec["ssaa"], threads)
+    s = job.spec
+    options = {k: s[k] for k in APPEARANCE}
+    key = (tuple(s["size"]), s["ssaa"], threads, s["backend"], tuple(sorted(options.items())))
     cache = getattr(_local, "renderers", None)
     if cache is None:
         cache = _local.renderers = {}
     if key not in cache:
-        cache[key] = velocity.OffscreenRenderer(*job.spec["size"], ssaa=job.spec["ssaa"], threads=threads)
+        cache[key] = velocity.OffscreenRenderer(*s["size"], ssaa=s["ssaa"], threads=threads, backend=s["backend"],
+                                                **options)
     return cache[key]
 
 
@@ -127,7 +131,9 @@ def run_task(job: Job, task: Task, threads: int = 1, hooks: dict | None = None) 
                 elif kind == "depth":
                     atomic_write(job, path, lambda f: f.write(_npy(depth)))
                 elif kind == "mask":
-                    atomic_write(job, path, lambda f: f.write(encode_png(mask.astype(np.uint16))))
+                    # No row filter: a mask's rows are runs of one id, which zlib takes as they
+                    # are; filtered they only cost more (bench_png.py).
+                    atomic_write(job, path, lambda f: f.write(encode_png(mask.astype(np.uint16), filter="none")))
                 else:
                     atomic_write(job, path, lambda f: f.write(_npy(normals)))
             written += 1

@@ -9,7 +9,7 @@ import hashlib
 import json
 import os
 
-from .jobs import Job
+from .jobs import APPEARANCE, Job
 
 
 @dataclasses.dataclass(frozen=True)
@@ -26,8 +26,10 @@ class Task:
 def plan_tasks(job: Job) -> list[Task]:
     """The job's tasks, model by model in the job's order, views in order."""
     n, chunk = job.view_count(), job.spec["chunk"] or job.view_count()
-    settings = json.dumps({k: job.spec[k] for k in sorted(job.spec) if k not in ("models", "output", "chunk")},
-                          sort_keys=True)
+    # What changes the files: not the backend (both draw the same picture, to rounding),
+    # nor an appearance option left at its default (so jobs from before they existed resume).
+    settings = json.dumps({k: job.spec[k] for k in sorted(job.spec) if k not in ("models", "output", "chunk", "backend")
+                           and not (k in APPEARANCE and job.spec[k] == APPEARANCE[k])}, sort_keys=True)
     out = []
     for key, path in job.models:
         try:
