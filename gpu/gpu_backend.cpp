@@ -12,7 +12,9 @@
 // bytes, are deleted.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -21,8 +23,10 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
+#include "geometry/draw_plan.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/object_cull.hpp"
+#include "geometry/tangents.hpp"
 #include "gpu_backend.hpp"
 #include "shaders.hpp"
 #include "shading/lighting.hpp"
@@ -64,6 +68,7 @@ struct Fingerprint {
 uint64_t fingerprint(const Mesh& m) {
   Fingerprint f;
   f.add(m.positions), f.add(m.normals), f.add(m.uvs), f.add(m.colors), f.add(m.triangles);
+  f.add(m.uvs1), f.add(m.tangents), f.add(m.alphas);
   f.add(m.face_colors), f.add(m.face_materials);
   const uint64_t materials = m.materials.size();
   f.add(&materials, sizeof materials);
@@ -77,6 +82,28 @@ uint64_t fingerprint(const Texture& t) {
 }
 
 void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
+
+// KHR_texture_transform as two rows of an affine map (geometry/draw_plan.cpp's uv_affine).
+void uv_map_rows(const UvTransform& t, float* rows) {
+  const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+  const float r[6] = {c * t.scale.x, s * t.scale.y, t.offset.x, -s * t.scale.x, c * t.scale.y, t.offset.y};
+  std::copy(r, r + 6, rows);
+}
+
+// The uv set a Pbr material's textures read (geometry/draw_plan.cpp's pbr_uv_set).
+int pbr_uv_set(const Material& mat) {
+  if (mat.texture) return mat.texture_uv.uv_set;
+  for (const TextureRef* t : {&mat.pbr.metallic_roughness, &mat.pbr.normal, &mat.pbr.occlusion, &mat.pbr.emissive_map})
+    if (*t) return t->uv.uv_set;
+  return 0;
+}
+
+// geometry::pipeline_color as the shaders' to_pipeline() takes it: 0 as it is, 1 decode
+// sRGB, 2 encode.
+int color_convert(ColorSpace space, bool linear) {
+  if (linear == (space == ColorSpace::Linear)) return 0;
+  return linear ? 1 : 2;
+}
 
 // The GL error, if any, as velocity::Error; an allocation the device refused names what.
 void check_gl(const char* what) {
@@ -95,8 +122,10 @@ void check_gl(const char* what) {
 struct GpuBackend::MeshEntry {
   uint64_t fingerprint = 0, last_frame = 0;
   size_t bytes = 0;
-  GLuint vao = 0, buffers[6] = {}, face_colors = 0;  // positions, normals, uvs, colours, indices, face colours
-  bool has_uvs = false, has_colors = false, has_face_colors = false;
+  // positions, normals, uvs, colours, indices, face colours, second uvs, tangents, alphas
+  GLuint vao = 0, buffers[9] = {}, face_colors = 0;
+  bool has_uvs = false, has_colors = false, has_face_colors = false, has_uvs1 = false, has_alphas = false;
+  int tangent_uv_set = -1;  // the tangents in buffers[7]: the mesh's (2), generated from a uv set (0, 1), none (-1)
   // Faces reordered by material slot (triangle/mesh_job.cpp's slot_of): slot s draws
   // faces [slot_begin[s], slot_begin[s + 1]); `face_of` maps back to the mesh's faces.
   std::vector<uint32_t> slot_begin;
@@ -123,6 +152,13 @@ GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std
 
 const std::string& GpuBackend::description() const { return context_->description(); }
 
+// A texture the GPU cannot hold (GL_MAX_TEXTURE_SIZE) is an error when it is drawn.
+void GpuBackend::check_size(const Texture& t) const {
+  if (t.width() > max_texture_ || t.height() > max_texture_)
+    throw Error("a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) +
+                " texture is larger than the GPU takes (" + std::to_string(max_texture_) + " a side)");
+}
+
 GpuBackend::~GpuBackend() {
   try {
     Current current(*context_);
@@ -130,6 +166,8 @@ GpuBackend::~GpuBackend() {
     for (auto& [key, t] : textures_) glDeleteTextures(1, &t.texture);
     for (auto& [key, s] : samplers_) glDeleteSamplers(1, &s);
     for (GLuint p : programs_)
+      if (p) glDeleteProgram(p);
+    for (GLuint p : pbr_programs_)
       if (p) glDeleteProgram(p);
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(3, renderbuffers_);
@@ -143,7 +181,7 @@ GpuBackend::~GpuBackend() {
 
 void GpuBackend::free(MeshEntry& m) {
   glDeleteVertexArrays(1, &m.vao);
-  glDeleteBuffers(6, m.buffers);
+  glDeleteBuffers(9, m.buffers);
   glDeleteTextures(1, &m.face_colors);
 }
 
@@ -183,6 +221,12 @@ GLuint GpuBackend::program(bool affine, int primitive) {
   return p;
 }
 
+GLuint GpuBackend::pbr_program(bool affine) {
+  GLuint& p = pbr_programs_[affine ? 1 : 0];
+  if (!p) p = build_pbr_program(affine);
+  return p;
+}
+
 GLint GpuBackend::uniform(GLuint program, const char* name) {
   auto key = std::make_pair(program, std::string(name));
   auto it = uniforms_.find(key);
@@ -213,7 +257,8 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
     throw Error("the GPU backend takes at most " + std::to_string(kMaxLights) + " directional and " +
                 std::to_string(kMaxLights) + " point lights");
   for (bool& u : lights_uploaded_) u = false;
-  painter_draws_.clear();
+  orthographic_ = camera.projection == Projection::Orthographic;
+  mesh_draws_.clear(), batch_draws_.clear(), clears_.clear(), commands_.clear();
 
   context_->make_current();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -283,21 +328,27 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   if (mesh.normals.size() != nv) geometry::average_normals(mesh, averaged), normals = &averaged;
 
   glGenVertexArrays(1, &m.vao);
-  glGenBuffers(6, m.buffers);
+  glGenBuffers(9, m.buffers);
   glBindVertexArray(m.vao);
-  auto attribute = [&](int slot, const void* data, size_t bytes, int components) {
-    glBindBuffer(GL_ARRAY_BUFFER, m.buffers[slot]);
+  // Attribute locations: the shaders' (kMeshVertexInputs, kPbrVertex); buffers: MeshEntry's.
+  auto attribute = [&](int location, int buffer, const void* data, size_t bytes, int components) {
+    glBindBuffer(GL_ARRAY_BUFFER, m.buffers[buffer]);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
-    glVertexAttribPointer(GLuint(slot), components, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glEnableVertexAttribArray(GLuint(slot));
+    glVertexAttribPointer(GLuint(location), components, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(GLuint(location));
     m.bytes += bytes;
   };
-  attribute(0, mesh.positions.data(), nv * sizeof(Vec3), 3);
-  attribute(1, normals->data(), nv * sizeof(Vec3), 3);
+  attribute(0, 0, mesh.positions.data(), nv * sizeof(Vec3), 3);
+  attribute(1, 1, normals->data(), nv * sizeof(Vec3), 3);
   m.has_uvs = mesh.uvs.size() == nv && nv;
-  if (m.has_uvs) attribute(2, mesh.uvs.data(), nv * sizeof(Vec2), 2);
+  if (m.has_uvs) attribute(2, 2, mesh.uvs.data(), nv * sizeof(Vec2), 2);
   m.has_colors = mesh.colors.size() == nv && nv;
-  if (m.has_colors) attribute(3, mesh.colors.data(), nv * sizeof(Vec3), 3);
+  if (m.has_colors) attribute(3, 3, mesh.colors.data(), nv * sizeof(Vec3), 3);
+  m.has_uvs1 = mesh.uvs1.size() == nv && nv;
+  if (m.has_uvs1) attribute(4, 6, mesh.uvs1.data(), nv * sizeof(Vec2), 2);
+  if (mesh.tangents.size() == nv && nv) attribute(5, 7, mesh.tangents.data(), nv * sizeof(Vec4), 4), m.tangent_uv_set = 2;
+  m.has_alphas = mesh.alphas.size() == nv && nv;
+  if (m.has_alphas) attribute(6, 8, mesh.alphas.data(), nv * sizeof(float), 1);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.buffers[4]);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STATIC_DRAW);
   m.bytes += indices.size() * 4;
@@ -323,8 +374,11 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   return meshes_.emplace(&mesh, std::move(m)).first->second;
 }
 
-GLuint GpuBackend::texture(const Texture& t) {
-  auto it = textures_.find(&t);
+// A colour texture in a Linear frame is uploaded as GL_SRGB8_ALPHA8: the driver decodes
+// each texel before filtering, as the CPU's sampler does (SamplerView::srgb); the same
+// Texture read both ways is two entries.
+GLuint GpuBackend::texture(const Texture& t, bool srgb) {
+  auto it = textures_.find({&t, srgb});
   if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
   const uint64_t key = fingerprint(t);
   if (it != textures_.end() && it->second.fingerprint == key) {
@@ -332,9 +386,7 @@ GLuint GpuBackend::texture(const Texture& t) {
     return it->second.texture;
   }
   if (it != textures_.end()) glDeleteTextures(1, &it->second.texture), cache_bytes_ -= it->second.bytes, textures_.erase(it);
-  if (t.width() > max_texture_ || t.height() > max_texture_)
-    throw Error("a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) +
-                " texture is larger than the GPU takes (" + std::to_string(max_texture_) + " a side)");
+  check_size(t);
   uploads_++;
   TextureEntry e;
   e.fingerprint = key, e.last_frame = frame_;
@@ -344,7 +396,7 @@ GLuint GpuBackend::texture(const Texture& t) {
   // The texture's own mip levels (Texture's box filter), not the driver's.
   const auto& levels = t.levels();
   for (size_t l = 0; l < levels.size(); ++l) {
-    glTexImage2D(GL_TEXTURE_2D, GLint(l), GL_RGBA8, levels[l].width, levels[l].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+    glTexImage2D(GL_TEXTURE_2D, GLint(l), srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, levels[l].width, levels[l].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  levels[l].texels.data());
     e.bytes += levels[l].texels.size() * 4;
   }
@@ -357,7 +409,7 @@ GLuint GpuBackend::texture(const Texture& t) {
     throw;
   }
   cache_bytes_ += e.bytes;
-  return textures_.emplace(&t, e).first->second.texture;
+  return textures_.emplace(std::make_pair(&t, srgb), e).first->second.texture;
 }
 
 GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
@@ -412,16 +464,168 @@ void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   context_->make_current();  // (a no-op unless another renderer's frame ran on this thread since)
   if (geometry::ViewVolume(view_projection_).outside(mesh, world)) return void(stats_.objects_culled++);
   MeshEntry& m = mesh_entry(mesh);
-  if (options_.depth_mode == DepthMode::Painter) {
-    painter_draws_.push_back({&mesh, &m, world, material, object_id});
-    return;
+  // Blended (geometry::plan_mesh_draw's d.blend): a slot is Pbr with AlphaMode::Blend.
+  bool blend = false;
+  const size_t slots = material ? 1 : 1 + mesh.materials.size();
+  for (size_t s = 0; s < slots; ++s) {
+    const Material& mat = material ? *material : s == 0 ? default_material_ : mesh.materials[s - 1];
+    blend = blend || (options_.shading.value_or(mat.shading) == Shading::Pbr && mat.alpha_mode == AlphaMode::Blend);
   }
-  draw_mesh(mesh, m, world, material, object_id, nullptr);
+  // Textures too large for the device: said at the draw that brings them.
+  for (size_t s = 0; s < slots; ++s) {
+    const Material& mat = material ? *material : s == 0 ? default_material_ : mesh.materials[s - 1];
+    for (const Texture* x : {options_.texture ? options_.texture.get() : mat.texture.get(),
+                             options_.env_map ? options_.env_map.get() : mat.env_map.get(),
+                             mat.pbr.metallic_roughness.texture.get(), mat.pbr.normal.texture.get(),
+                             mat.pbr.occlusion.texture.get(), mat.pbr.emissive_map.texture.get()})
+      if (x) check_size(*x);
+  }
+  const float depth = blend ? (view_ * world).transform_point(mesh.bounding_sphere().center).z : 0.0f;
+  commands_.push_back({Command::Mesh, uint32_t(mesh_draws_.size())});
+  mesh_draws_.push_back({&mesh, &m, world, material, object_id, blend, depth});
+}
+
+// Runs the recorded frame (CpuBackend::run_frame's order): the colour pipeline decided
+// from every draw's materials (geometry::finish_color_plan), then between each pair of
+// clears the opaque draws and batches in order and the blended draws far to near
+// (CpuBackend::order_blended_draws); in painter's mode, the batches and clears, then
+// every face of the frame sorted (draw_painter).
+void GpuBackend::replay() {
+  bool pbr = false;
+  for (const MeshDraw& d : mesh_draws_) {
+    const size_t slots = d.material ? 1 : 1 + d.mesh->materials.size();
+    for (size_t s = 0; s < slots; ++s) {
+      const Material& mat = d.material ? *d.material : s == 0 ? default_material_ : d.mesh->materials[s - 1];
+      pbr = pbr || options_.shading.value_or(mat.shading) == Shading::Pbr;
+    }
+  }
+  linear_ = options_.color == ColorPipeline::Linear || (options_.color == ColorPipeline::Auto && pbr);
+  const bool painter = options_.depth_mode == DepthMode::Painter;
+  std::vector<uint32_t> blended;
+  auto flush_blended = [&] {
+    std::stable_sort(blended.begin(), blended.end(),
+                     [&](uint32_t a, uint32_t b) { return mesh_draws_[a].depth < mesh_draws_[b].depth; });
+    for (uint32_t i : blended) {
+      const MeshDraw& d = mesh_draws_[i];
+      draw_mesh(*d.mesh, *d.entry, d.world, d.material, d.object_id, nullptr);
+    }
+    blended.clear();
+  };
+  for (const Command& c : commands_) {
+    if (c.kind == Command::Batch) {
+      const BatchDraw& b = batch_draws_[c.index];
+      draw_batch(b.batch, b.state, b.primitives);
+    } else if (c.kind == Command::Clear) {
+      flush_blended();
+      run_clear(clears_[c.index]);
+    } else if (!painter) {
+      const MeshDraw& d = mesh_draws_[c.index];
+      if (d.blend) blended.push_back(c.index);
+      else draw_mesh(*d.mesh, *d.entry, d.world, d.material, d.object_id, nullptr);
+    }
+  }
+  flush_blended();
+  if (painter && !mesh_draws_.empty()) draw_painter();
+}
+
+// The output's uniforms (kColorGlsl's finish): 0 display, 1 Linear's whole transform,
+// 2 the sRGB encoding alone.
+void GpuBackend::set_output(GLuint p, int output) {
+  glUniform1i(uniform(p, "u_output"), output);
+  const float e = options_.exposure;
+  glUniform1f(uniform(p, "u_exposure"), std::isfinite(e) && e >= 0 ? e : 1.0f);  // (as CpuBackend::run_frame)
+  glUniform1i(uniform(p, "u_tone_map"), int(options_.tone_map));
+}
+
+// Tangents for a normal-mapped Pbr material: the mesh's, else generated as the CPU
+// generates them (geometry::generate_tangents, from the material's uv set), once per
+// uv set asked for.
+void GpuBackend::ensure_tangents(const Mesh& mesh, MeshEntry& m, int uv_set) {
+  if (m.tangent_uv_set == 2 || m.tangent_uv_set == uv_set) return;
+  const size_t nv = mesh.positions.size();
+  std::vector<Vec3> averaged;
+  const std::vector<Vec3>* normals = &mesh.normals;
+  if (mesh.normals.size() != nv) geometry::average_normals(mesh, averaged), normals = &averaged;
+  const std::vector<Vec2>& uvs = uv_set == 1 && !mesh.uvs1.empty() ? mesh.uvs1 : mesh.uvs;
+  std::vector<Vec4> tangents;
+  geometry::generate_tangents(mesh, *normals, uvs.empty() ? std::vector<Vec2>(nv) : uvs, tangents);
+  glBindVertexArray(m.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, m.buffers[7]);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(tangents.size() * sizeof(Vec4)), tangents.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(5, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(5);
+  if (m.tangent_uv_set < 0) m.bytes += tangents.size() * sizeof(Vec4), cache_bytes_ += tangents.size() * sizeof(Vec4);
+  m.tangent_uv_set = uv_set;
+  check_gl(("generating tangents for mesh '" + mesh.name + "'").c_str());
+}
+
+// A Pbr slot's uniforms and textures (geometry::plan_pbr and finish_color_plan).
+void GpuBackend::draw_pbr_slot(const Mesh& mesh, MeshEntry& m, const Material& mat, GLuint p) {
+  const PbrParams& pbr = mat.pbr;
+  const int uv_set = pbr_uv_set(mat);
+  const bool tangents = bool(pbr.normal) && !pbr.unlit;
+  if (tangents) ensure_tangents(mesh, m, uv_set == 1 && !mesh.uvs1.empty() ? 1 : 0);
+  glBindVertexArray(m.vao);
+  if (!m.has_uvs1) glVertexAttrib2f(4, 0, 0);
+  if (m.tangent_uv_set < 0) glVertexAttrib4f(5, 1, 0, 0, 1);
+  if (!m.has_alphas) glVertexAttrib1f(6, 1);
+  glUniform1i(uniform(p, "u_uv1"), uv_set == 1 && m.has_uvs1);
+  glUniform1i(uniform(p, "u_vertex_colors"), m.has_colors);
+  glUniform1i(uniform(p, "u_color_convert"), color_convert(mat.color_space, linear_));
+  glUniform1i(uniform(p, "u_tangents"), tangents);
+  const Vec3 base = geometry::pipeline_color(mat.color, mat.color_space, linear_);
+  const Vec3 emissive = geometry::pipeline_color(pbr.emissive, mat.color_space, linear_);
+  glUniform4f(uniform(p, "u_base"), base.x, base.y, base.z, mat.alpha);
+  glUniform3f(uniform(p, "u_emissive"), emissive.x, emissive.y, emissive.z);
+  glUniform4f(uniform(p, "u_pbr"), pbr.metallic, pbr.roughness, pbr.normal_scale, pbr.occlusion_strength);
+  glUniform1i(uniform(p, "u_unlit"), pbr.unlit);
+  glUniform1i(uniform(p, "u_alpha_mode"), int(mat.alpha_mode));
+  glUniform1f(uniform(p, "u_alpha_cutoff"), mat.alpha_cutoff);
+  glUniform1i(uniform(p, "u_ortho"), orthographic_);
+  glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
+  set_output(p, linear_ ? 1 : 0);
+  // The five textures on units 4..8: base colour and emissive are colours (sRGB-decoded
+  // in a Linear frame), the others data.
+  const Texture* base_map = options_.texture ? options_.texture.get() : mat.texture.get();
+  const Filter filter = options_.filter.value_or(mat.filter);
+  struct Map {
+    const char* name;
+    const Texture* texture;
+    const UvTransform& uv;
+    bool color;
+  };
+  const Map maps[5] = {{"u_base_map", base_map, mat.texture_uv, true},
+                       {"u_mr_map", pbr.metallic_roughness.texture.get(), pbr.metallic_roughness.uv, false},
+                       {"u_normal_map", pbr.normal.texture.get(), pbr.normal.uv, false},
+                       {"u_occlusion_map", pbr.occlusion.texture.get(), pbr.occlusion.uv, false},
+                       {"u_emissive_map", pbr.emissive_map.texture.get(), pbr.emissive_map.uv, true}};
+  GLint has[5];
+  float rows[30];
+  for (int i = 0; i < 5; ++i) {
+    const Map& map = maps[i];
+    has[i] = map.texture != nullptr;
+    glUniform1i(uniform(p, map.name), 4 + i);
+    uv_map_rows(map.uv, rows + 6 * i);
+    if (!map.texture) continue;
+    glActiveTexture(GLenum(GL_TEXTURE4 + i));
+    glBindTexture(GL_TEXTURE_2D, texture(*map.texture, map.color && linear_));
+    glBindSampler(GLuint(4 + i), sampler(filter, mat.wrap));
+  }
+  glUniform1iv(uniform(p, "u_has_map"), 5, has);
+  glUniform3fv(uniform(p, "u_map_uv"), 10, rows);
+  // BLEND: over, in the output's encoding (pbr_kernel's mix; alpha: a + dst (1 - a)),
+  // without writing depth.
+  if (mat.alpha_mode == AlphaMode::Blend) {
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendEquation(GL_FUNC_ADD);
+    glDepthMask(GL_FALSE);
+  }
 }
 
 // One mesh draw, every material slot; `faces`, in painter's mode, the sorted runs of
 // this draw's faces to draw instead of all (first: position in the frame's order, count).
-void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& world, const Material* override,
+void GpuBackend::draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override,
                            uint32_t object_id, const std::vector<std::pair<uint32_t, uint32_t>>* runs) {
   const Mat4 model_view = view_ * world;
   const Mat4 mvp = flipped_view_projection_ * world, normals = normal_matrix(model_view);
@@ -446,7 +650,8 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     const Filter filter = options_.filter.value_or(mat.filter);
     const bool lines = shading == Shading::Wireframe, points = shading == Shading::Points;
     const bool replace = tex && mat.texture_mode == TextureMode::Replace && !lines && !points;
-    const bool phong = !replace && (shading == Shading::Phong || shading == Shading::Pbr);
+    const bool pbr = shading == Shading::Pbr;
+    const bool phong = !replace && shading == Shading::Phong;
     const int mode = replace || lines || points ? kSolid : shading == Shading::Flat ? kFlat : phong ? kPhong : kSmooth;
     const bool lit = shading != Shading::Unlit;
     const bool uv_from_env = !phong && !tex && env && !lines && !points;
@@ -455,44 +660,55 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     int base = kMaterialColor;
     if (!override && !mesh.face_colors.empty()) base = kFaceColor;
     else if (!override && !mesh.colors.empty()) base = kVertexColor;
-    const Vec3 color = replace ? Vec3{1, 1, 1} : mat.color;
+    // Colours in the frame's pipeline (mesh_job.cpp's base_color); lines and points in
+    // display values (finish_color_plan's line_color).
+    Vec3 color = replace ? Vec3{1, 1, 1} : geometry::pipeline_color(mat.color, mat.color_space, linear_);
+    if (lines || points) color = geometry::pipeline_color(mat.color, mat.color_space, false);
 
     const bool direct = (mode == kSmooth || mode == kPhong) && base != kFaceColor;
-    const int primitive = lines ? 1 : points ? 2 : direct ? 3 : 0;
-    const GLuint p = program(options_.affine, primitive);
+    const int primitive = pbr ? 3 : lines ? 1 : points ? 2 : direct ? 3 : 0;
+    const GLuint p = pbr ? pbr_program(options_.affine) : program(options_.affine, primitive);
     glUseProgram(p);
-    const int which = (options_.affine ? 4 : 0) + primitive;
+    const int which = pbr ? 8 + options_.affine : (options_.affine ? 4 : 0) + primitive;
     if (!lights_uploaded_[which]) upload_lights(p), lights_uploaded_[which] = true;
     upload_matrix(uniform(p, "u_mvp"), mvp);
     upload_matrix(uniform(p, "u_model_view"), model_view);
     upload_matrix(uniform(p, "u_normal_matrix"), normals);
     glUniform1ui(uniform(p, "u_object_id"), object_id);
-    glUniform1i(uniform(p, "u_texture"), 0), glUniform1i(uniform(p, "u_env_map"), 1);
-    glUniform1i(uniform(p, "u_face_colors"), 2), glUniform1i(uniform(p, "u_order"), 3);
-    glUniform1i(uniform(p, "u_face_order"), runs ? 1 : 0);
-    glUniform1i(uniform(p, "u_mode"), mode);
-    glUniform1i(uniform(p, "u_base_source"), base);
-    glUniform1i(uniform(p, "u_lit"), lit);
-    glUniform1i(uniform(p, "u_vertex_light"), mode == kSmooth && lit);
-    glUniform1i(uniform(p, "u_unlit_vertex_colors"), shading == Shading::Unlit && !mesh.colors.empty() && mode == kSmooth);
-    glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
-    glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
-    glUniform1i(uniform(p, "u_cull"), cull);
-    glUniform1i(uniform(p, "u_textured"), textured);
-    glUniform1i(uniform(p, "u_env"), phong && env);
-    glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);
-    glUniform3f(uniform(p, "u_material_color"), color.x, color.y, color.z);
-    const shading::Specular s(mat.specular, mat.shininess);
-    glUniform3f(uniform(p, "u_specular"), s.ks, s.exponent, s.cutoff);
-    if (textured) {
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, texture(tex ? *tex : *env));
-      glBindSampler(0, sampler(filter, tex ? mat.wrap : Wrap::Clamp));  // environment maps: clamped
-    }
-    if (phong && env) {
-      glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_2D, texture(*env));
-      glBindSampler(1, sampler(filter, Wrap::Clamp));
+    if (pbr) {
+      draw_pbr_slot(mesh, m, mat, p);
+    } else {
+      glUniform1i(uniform(p, "u_texture"), 0), glUniform1i(uniform(p, "u_env_map"), 1);
+      glUniform1i(uniform(p, "u_face_colors"), 2), glUniform1i(uniform(p, "u_order"), 3);
+      glUniform1i(uniform(p, "u_face_order"), runs ? 1 : 0);
+      glUniform1i(uniform(p, "u_mode"), mode);
+      glUniform1i(uniform(p, "u_base_source"), base);
+      glUniform1i(uniform(p, "u_lit"), lit);
+      glUniform1i(uniform(p, "u_vertex_light"), mode == kSmooth && lit);
+      glUniform1i(uniform(p, "u_unlit_vertex_colors"), shading == Shading::Unlit && !mesh.colors.empty() && mode == kSmooth);
+      glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
+      glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
+      glUniform1i(uniform(p, "u_cull"), cull);
+      glUniform1i(uniform(p, "u_textured"), textured);
+      glUniform1i(uniform(p, "u_env"), phong && env);
+      glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);
+      glUniform3f(uniform(p, "u_material_color"), color.x, color.y, color.z);
+      glUniform1i(uniform(p, "u_color_convert"), color_convert(mat.color_space, linear_));
+      // The flat kernel writes its colour encoded but not exposed or tone mapped
+      // (mesh_job.cpp's pack_flat); lines and points are display values.
+      set_output(p, lines || points ? 0 : mode == kFlat && !textured ? (linear_ ? 2 : 0) : (linear_ ? 1 : 0));
+      const shading::Specular s(mat.specular, mat.shininess);
+      glUniform3f(uniform(p, "u_specular"), s.ks, s.exponent, s.cutoff);
+      if (textured) {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, texture(tex ? *tex : *env, linear_));
+        glBindSampler(0, sampler(filter, tex ? mat.wrap : Wrap::Clamp));  // environment maps: clamped
+      }
+      if (phong && env) {
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, texture(*env, linear_));
+        glBindSampler(1, sampler(filter, Wrap::Clamp));
+      }
     }
     // Triangles are culled by GL (front faces clockwise: the flip); edges and corners
     // by the geometry shader.
@@ -502,15 +718,16 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
       glUniform1i(uniform(p, "u_face_base"), GLint(begin));
       glDrawElements(GL_TRIANGLES, GLsizei(end - begin) * 3, GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(uintptr_t(begin) * 12));
-      continue;
+    } else {
+      for (const auto& [first, count] : *runs) {
+        // A run is one slot's faces (the sort keeps slots apart): draw it with its slot.
+        const uint32_t face = painter_faces_[first];
+        if (face < begin || face >= end) continue;
+        glUniform1i(uniform(p, "u_face_base"), GLint(first));
+        glDrawElements(GL_TRIANGLES, GLsizei(count) * 3, GL_UNSIGNED_INT, reinterpret_cast<const void*>(uintptr_t(first) * 12));
+      }
     }
-    for (const auto& [first, count] : *runs) {
-      // A run is one slot's faces (the sort keeps slots apart): draw it with its slot.
-      const uint32_t face = painter_faces_[first];
-      if (face < begin || face >= end) continue;
-      glUniform1i(uniform(p, "u_face_base"), GLint(first));
-      glDrawElements(GL_TRIANGLES, GLsizei(count) * 3, GL_UNSIGNED_INT, reinterpret_cast<const void*>(uintptr_t(first) * 12));
-    }
+    if (pbr && mat.alpha_mode == AlphaMode::Blend) glDisablei(GL_BLEND, 0), glDepthMask(GL_TRUE);
   }
   if (runs) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.buffers[4]);  // the VAO's own again
   glBindVertexArray(0);
@@ -526,8 +743,8 @@ void GpuBackend::draw_painter() {
     uint32_t draw, face;  // face: in the entry's slot order
   };
   std::vector<Key> keys;
-  for (uint32_t d = 0; d < painter_draws_.size(); ++d) {
-    const PainterDraw& pd = painter_draws_[d];
+  for (uint32_t d = 0; d < mesh_draws_.size(); ++d) {
+    const MeshDraw& pd = mesh_draws_[d];
     const Mesh& mesh = *pd.mesh;
     const Mat4 mvp = view_projection_ * pd.world;
     std::vector<float> z(mesh.positions.size());
@@ -546,7 +763,7 @@ void GpuBackend::draw_painter() {
   std::vector<uint32_t> indices(keys.size() * 3);
   painter_faces_.resize(keys.size());
   for (size_t i = 0; i < keys.size(); ++i) {
-    const PainterDraw& pd = painter_draws_[keys[i].draw];
+    const MeshDraw& pd = mesh_draws_[keys[i].draw];
     const Triangle& t = pd.mesh->triangles[pd.entry->face_of[keys[i].face]];
     for (int k = 0; k < 3; ++k) indices[i * 3 + size_t(k)] = t.v[k] < pd.mesh->positions.size() ? t.v[k] : 0;
     painter_faces_[i] = keys[i].face;
@@ -564,16 +781,16 @@ void GpuBackend::draw_painter() {
   size_t i = 0;
   while (i < keys.size()) {
     const uint32_t d = keys[i].draw;
-    const MeshEntry& m = *painter_draws_[d].entry;
+    MeshEntry& m = *mesh_draws_[d].entry;
     auto slot = [&](uint32_t f) { return std::upper_bound(m.slot_begin.begin(), m.slot_begin.end(), f) - m.slot_begin.begin(); };
     size_t j = i + 1;
     while (j < keys.size() && keys[j].draw == d && slot(keys[j].face) == slot(keys[i].face)) ++j;
     const std::vector<std::pair<uint32_t, uint32_t>> run = {{uint32_t(i), uint32_t(j - i)}};
-    const PainterDraw& pd = painter_draws_[d];
+    const MeshDraw& pd = mesh_draws_[d];
     draw_mesh(*pd.mesh, m, pd.world, pd.material, pd.object_id, &run);
     i = j;
   }
-  for (const PainterDraw& pd : painter_draws_) stats_.triangles_rasterized += pd.entry->face_of.size();
+  for (const MeshDraw& pd : mesh_draws_) stats_.triangles_rasterized += pd.entry->face_of.size();
 }
 
 namespace {
@@ -605,7 +822,11 @@ GLint gl_wrap(Wrap w) {
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
   stats_.objects++;
   if (primitives == 0) return;
-  context_->make_current();
+  commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});
+  batch_draws_.push_back({batch, state, primitives});
+}
+
+void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
   const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
   // The vertices of whole primitives whose indices are all in range (the rest are dropped).
   batch_indices_.clear();
@@ -745,7 +966,11 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
 }
 
 void GpuBackend::clear(const ClearRequest& request) {
-  context_->make_current();
+  commands_.push_back({Command::Clear, uint32_t(clears_.size())});
+  clears_.push_back(request);
+}
+
+void GpuBackend::run_clear(const ClearRequest& request) {
   if (request.scissor) {
     glEnable(GL_SCISSOR_TEST);  // (rows from the top: the framebuffer is upside down)
     glScissor(request.x0, request.y0, std::max(request.x1 - request.x0, 0), std::max(request.y1 - request.y0, 0));
@@ -768,7 +993,12 @@ void GpuBackend::clear(const ClearRequest& request) {
 
 const FrameStats& GpuBackend::end_frame() {
   context_->make_current();
-  if (!painter_draws_.empty()) draw_painter();
+  try {
+    replay();
+  } catch (...) {
+    context_->release();
+    throw;
+  }
   // Read back every sample into the CPU framebuffer (its tiled layout).
   const int w = width_ * ssaa_, h = height_ * ssaa_;
   samples_.keep_ids(options_.object_ids);
