@@ -8,11 +8,12 @@
 // when its contents change (a 64-bit fingerprint of every array it has, computed at each
 // draw); a texture and its mip levels the first frame it is read, again when its texels
 // change (the same fingerprint); lights and camera every frame (uniforms). Entries not
-// used for kEvictFrames frames, and the least recently used ones beyond kCacheBudget
+// used for kEvictFrames frames, and the least recently used ones beyond the budget
 // bytes, are deleted.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -37,7 +38,9 @@ namespace velocity::gpu {
 namespace {
 
 constexpr uint64_t kEvictFrames = 120;
-constexpr size_t kCacheBudget = size_t(1) << 30;  // 1 GiB of meshes and textures
+constexpr size_t kCacheBudget = size_t(1) << 30;  // 1 GiB of meshes and textures, where the driver does not say
+
+std::string mib(size_t bytes) { return std::to_string((bytes + (size_t(1) << 20) - 1) >> 20); }
 
 // A 64-bit fingerprint of bytes: four independent multiply-xor lanes (memory speed).
 struct Fingerprint {
@@ -146,11 +149,49 @@ GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
   max_side_ = std::min(int(max_side), kMaxFramebufferSide);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_);
+  set_budget();
   check_gl("the GPU backend's set-up");
   resize(width, height, 1);
 }
 
 const std::string& GpuBackend::description() const { return context_->description(); }
+
+// The GPU memory the meshes and textures of one frame may take: VELOCITY_GPU_MEMORY_MB
+// when set; else three quarters of what the driver reports (GL_NVX_gpu_memory_info,
+// GL_ATI_meminfo); else 1 GiB. A mesh or texture over it, or a frame whose meshes and
+// textures together are, is an error that says so (reserve); the cache is trimmed to it.
+void GpuBackend::set_budget() {
+  budget_ = kCacheBudget, budget_source_ = "the default: the driver does not report its memory";
+  if (const char* env = std::getenv("VELOCITY_GPU_MEMORY_MB"); env && *env) {
+    char* end = nullptr;
+    const unsigned long long mb = std::strtoull(env, &end, 10);
+    if (*end != '\0' || mb == 0 || mb > (1ull << 24))
+      throw Error(std::string("VELOCITY_GPU_MEMORY_MB: expected a number of MiB (1..16777216), got '") + env + "'");
+    budget_ = size_t(mb) << 20, budget_source_ = "VELOCITY_GPU_MEMORY_MB";
+    return;
+  }
+  GLint kib[4] = {};
+  if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
+    glGetIntegerv(0x9048, kib);  // GL_GPU_MEMORY_INFO_TOTAL_AVAILABLE_MEMORY_NVX
+    if (kib[0] > 0) budget_source_ = "3/4 of the device's " + mib(size_t(kib[0]) << 10) + " MiB (GL_NVX_gpu_memory_info)";
+  } else if (epoxy_has_gl_extension("GL_ATI_meminfo")) {
+    glGetIntegerv(0x87FC, kib);  // GL_TEXTURE_FREE_MEMORY_ATI: total free first
+    if (kib[0] > 0) budget_source_ = "3/4 of the device's free " + mib(size_t(kib[0]) << 10) + " MiB (GL_ATI_meminfo)";
+  }
+  if (kib[0] > 0) budget_ = (size_t(kib[0]) << 10) / 4 * 3;
+}
+
+// Counts `bytes` more of GPU memory for this frame, or says what is too large.
+void GpuBackend::reserve(size_t bytes, const std::string& what) {
+  if (bytes > budget_)
+    throw Error(what + " needs " + mib(bytes) + " MiB of GPU memory, more than the GPU backend's budget of " +
+                mib(budget_) + " MiB (" + budget_source_ + ")");
+  if (frame_bytes_ + bytes > budget_)
+    throw Error("the frame's meshes and textures need over " + mib(frame_bytes_ + bytes) +
+                " MiB of GPU memory (at " + what + "), more than the GPU backend's budget of " + mib(budget_) +
+                " MiB (" + budget_source_ + ")");
+  frame_bytes_ += bytes;
+}
 
 // A texture the GPU cannot hold (GL_MAX_TEXTURE_SIZE) is an error when it is drawn.
 void GpuBackend::check_size(const Texture& t) const {
@@ -258,6 +299,7 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
                 std::to_string(kMaxLights) + " point lights");
   for (bool& u : lights_uploaded_) u = false;
   orthographic_ = camera.projection == Projection::Orthographic;
+  frame_bytes_ = 0;
   mesh_draws_.clear(), batch_draws_.clear(), clears_.clear(), commands_.clear();
 
   context_->make_current();
@@ -292,10 +334,22 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
   const uint64_t key = fingerprint(mesh);
   if (it != meshes_.end() && it->second.fingerprint == key) {
+    reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
     return it->second;
   }
   if (it != meshes_.end()) free(it->second), cache_bytes_ -= it->second.bytes, meshes_.erase(it);
+  {
+    // What the upload below takes (the tangents a normal map may add come later).
+    const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
+    size_t per_vertex = 24;
+    if (mesh.uvs.size() == nv) per_vertex += 8;
+    if (mesh.colors.size() == nv) per_vertex += 12;
+    if (mesh.uvs1.size() == nv) per_vertex += 8;
+    if (mesh.tangents.size() == nv) per_vertex += 16;
+    if (mesh.alphas.size() == nv) per_vertex += 4;
+    reserve(nv * per_vertex + nt * (mesh.face_colors.empty() ? 12 : 24), "mesh '" + mesh.name + "'");
+  }
   uploads_++;
 
   MeshEntry m;
@@ -381,12 +435,17 @@ GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   auto it = textures_.find({&t, srgb});
   if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
   const uint64_t key = fingerprint(t);
+  const std::string what = "a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) + " texture";
   if (it != textures_.end() && it->second.fingerprint == key) {
+    reserve(it->second.bytes, what);
     it->second.last_frame = frame_;
     return it->second.texture;
   }
   if (it != textures_.end()) glDeleteTextures(1, &it->second.texture), cache_bytes_ -= it->second.bytes, textures_.erase(it);
   check_size(t);
+  size_t bytes = 0;
+  for (const Texture::Level& l : t.levels()) bytes += l.texels.size() * 4;
+  reserve(bytes, what);
   uploads_++;
   TextureEntry e;
   e.fingerprint = key, e.last_frame = frame_;
@@ -554,7 +613,10 @@ void GpuBackend::ensure_tangents(const Mesh& mesh, MeshEntry& m, int uv_set) {
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(tangents.size() * sizeof(Vec4)), tangents.data(), GL_STATIC_DRAW);
   glVertexAttribPointer(5, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
   glEnableVertexAttribArray(5);
-  if (m.tangent_uv_set < 0) m.bytes += tangents.size() * sizeof(Vec4), cache_bytes_ += tangents.size() * sizeof(Vec4);
+  if (m.tangent_uv_set < 0) {
+    reserve(tangents.size() * sizeof(Vec4), "mesh '" + mesh.name + "' (its tangents)");
+    m.bytes += tangents.size() * sizeof(Vec4), cache_bytes_ += tangents.size() * sizeof(Vec4);
+  }
   m.tangent_uv_set = uv_set;
   check_gl(("generating tangents for mesh '" + mesh.name + "'").c_str());
 }
@@ -1044,7 +1106,7 @@ void GpuBackend::scatter(const T* rows, T* tiled) const {
 // Drops what was not used for a while, and the least recently used beyond the budget.
 void GpuBackend::evict() {
   for (auto it = meshes_.begin(); it != meshes_.end();) {
-    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > kCacheBudget && it->second.last_frame != frame_)) {
+    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > budget_ && it->second.last_frame != frame_)) {
       cache_bytes_ -= it->second.bytes;
       free(it->second);
       it = meshes_.erase(it);
@@ -1053,7 +1115,7 @@ void GpuBackend::evict() {
     }
   }
   for (auto it = textures_.begin(); it != textures_.end();) {
-    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > kCacheBudget && it->second.last_frame != frame_)) {
+    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > budget_ && it->second.last_frame != frame_)) {
       cache_bytes_ -= it->second.bytes;
       glDeleteTextures(1, &it->second.texture);
       it = textures_.erase(it);

@@ -82,6 +82,8 @@ class GpuBackend final : public Backend {
   GLint uniform(GLuint program, const char* name);
   MeshEntry& mesh_entry(const Mesh& mesh);
   GLuint texture(const Texture& t, bool srgb = false);
+  void set_budget();
+  void reserve(size_t bytes, const std::string& what);
   void check_size(const Texture& t) const;
   void ensure_tangents(const Mesh& mesh, MeshEntry& m, int uv_set);
   void set_output(GLuint program, int output);
@@ -111,6 +113,8 @@ class GpuBackend final : public Backend {
   std::map<std::pair<const Texture*, bool>, TextureEntry> textures_;  // (texture, sRGB-decoded)
   std::unordered_map<int, GLuint> samplers_;
   size_t cache_bytes_ = 0, uploads_ = 0;
+  size_t budget_ = 0, frame_bytes_ = 0;  // GPU memory: a frame's meshes and textures at most budget_
+  std::string budget_source_;
   uint64_t frame_ = 0;
 
   RenderOptions options_;

@@ -888,4 +888,74 @@ TEST(GpuErrors, ClearMessages) {
   r.render(Scene{});  // and the next frame is fine
 }
 
+// GPU memory is bounded: a mesh or texture over the budget (here 2 MiB, set by
+// VELOCITY_GPU_MEMORY_MB), or a frame whose meshes and textures together are, is an
+// error that names what and how much; the renderer goes on drawing frames that fit.
+TEST(GpuErrors, MemoryBudget) {
+  setenv("VELOCITY_GPU_MEMORY_MB", "2", 1);
+  std::unique_ptr<Renderer> made;
+  try {
+    made = std::make_unique<Renderer>(64, 48, BackendChoice::Gpu);
+  } catch (...) {
+    unsetenv("VELOCITY_GPU_MEMORY_MB");
+    throw;
+  }
+  unsetenv("VELOCITY_GPU_MEMORY_MB");
+  Renderer& r = *made;
+  auto error_of = [&](auto&& frame) -> std::string {
+    try {
+      frame();
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // An 80 601-vertex sphere: 4.3 MiB.
+  Mesh big = make_sphere(400);
+  big.name = "big sphere";
+  std::string e = error_of([&] {
+    r.begin_frame(Camera{}, {}, Vec3{});
+    r.draw(big, Mat4::identity(), nullptr, 1);
+  });
+  r.end_frame();
+  EXPECT_NE(e.find("mesh 'big sphere' needs 5 MiB of GPU memory, more than the GPU backend's budget of 2 MiB "
+                   "(VELOCITY_GPU_MEMORY_MB)"),
+            std::string::npos)
+      << e;
+  // A 1024x1024 texture and its mip levels: 5.3 MiB (said when the frame uploads it).
+  Material textured;
+  textured.texture = std::make_shared<const Texture>(make_checkerboard(1024, 64));
+  Mesh small = make_sphere(16);
+  e = error_of([&] {
+    r.begin_frame(Camera{}, {}, Vec3{});
+    r.draw(small, Mat4::identity(), &textured, 1);
+    r.end_frame();
+  });
+  EXPECT_NE(e.find("a 1024x1024 texture needs 6 MiB of GPU memory, more than the GPU backend's budget of 2 MiB"),
+            std::string::npos)
+      << e;
+  // Two meshes of 1.1 MiB each fit alone, not together.
+  Mesh a = make_sphere(200), b = make_sphere(201);
+  a.name = "a", b.name = "b";
+  e = error_of([&] {
+    r.begin_frame(Camera{}, {}, Vec3{});
+    r.draw(a, Mat4::identity(), nullptr, 1);
+    r.draw(b, Mat4::identity(), nullptr, 2);
+  });
+  r.end_frame();
+  EXPECT_NE(e.find("the frame's meshes and textures need over 3 MiB of GPU memory (at mesh 'b')"), std::string::npos) << e;
+  // Frames that fit draw (and one mesh after the other is fine: the cache is trimmed).
+  for (const Mesh* m : {&a, &b, &small}) {
+    r.begin_frame(Camera{}, {}, Vec3{});
+    r.draw(*m, Mat4::identity(), nullptr, 1);
+    r.end_frame();
+    EXPECT_GT(r.stats().triangles, 0u);
+  }
+  // A budget that is not a number is refused, naming the variable.
+  setenv("VELOCITY_GPU_MEMORY_MB", "lots", 1);
+  e = error_of([&] { Renderer bad(8, 8, BackendChoice::Gpu); });
+  unsetenv("VELOCITY_GPU_MEMORY_MB");
+  EXPECT_NE(e.find("VELOCITY_GPU_MEMORY_MB: expected a number of MiB"), std::string::npos) << e;
+}
+
 }  // namespace
