@@ -22,8 +22,15 @@
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/renderer.hpp"
+#include "velocity/image.hpp"
 #include "velocity/view_setup.hpp"
 
+#ifdef VELOCITY_GPU_REALTIME
+#include "programs/drive.hpp"
+#include "programs/fly.hpp"
+#include "programs/viewer.hpp"
+#include "runtime/loop.hpp"
+#endif
 
 namespace {
 
@@ -694,6 +701,40 @@ TEST(GpuPbr, SeedModesInALinearFrame) {
     EXPECT_GE(agree, 0.995) << shade;
   }
 }
+
+#ifdef VELOCITY_GPU_REALTIME
+// `velocity view|fly|drive --backend gpu`: the real-time loop with the GPU backend
+// renders offscreen and shows the read-back frame. The same scripted frames (a fixed
+// step) on both backends, recorded as PNGs, agree as the parity scenes do.
+TEST(GpuRealtime, ViewFlyDriveFramesMatchTheCpu) {
+  const std::string dir = std::string(VELOCITY_GPU_OUT) + "/realtime";
+  auto run = [&](const std::string& name, BackendChoice backend) {
+    std::unique_ptr<realtime::Program> program;
+    if (name == "view") program = std::make_unique<realtime::ViewerProgram>(realtime::ViewerOptions{});
+    else if (name == "fly") program = std::make_unique<realtime::FlyProgram>();
+    else program = std::make_unique<realtime::DriveProgram>();
+    realtime::LoopOptions o;
+    o.width = 320, o.height = 240, o.frames = 4, o.fixed_step = true, o.overlay = false, o.quiet = true;
+    o.backend = backend;
+    o.record_dir = dir + "/" + name + (backend == BackendChoice::Gpu ? "_gpu" : "_cpu");
+    std::filesystem::remove_all(o.record_dir);
+    realtime::run_loop(*program, nullptr, o);
+    return o.record_dir;
+  };
+  for (const std::string name : {"view", "fly", "drive"}) {
+    const std::string cpu = run(name, BackendChoice::Cpu), gpu = run(name, BackendChoice::Gpu);
+    for (int frame = 0; frame < 4; ++frame) {
+      char file[32];
+      std::snprintf(file, sizeof file, "/frame_%05d.png", frame);
+      const vref::Image a = to_vref(read_image(cpu + file)), b = to_vref(read_image(gpu + file));
+      const vref::Diff d = vref::compare(a, b);
+      std::printf("[gpu-parity] %s frame %d psnr=%.2f\n", name.c_str(), frame, d.psnr);
+      // (Their scenes are textured: the textured threshold.)
+      EXPECT_GE(d.psnr, 35.0) << name << " frame " << frame;
+    }
+  }
+}
+#endif  // VELOCITY_GPU_REALTIME
 
 // `auto` never takes a software OpenGL: on llvmpipe it draws on the CPU and says why.
 TEST(BackendChoice, AutoRefusesSoftwareGl) {
