@@ -8,11 +8,14 @@
 // when its contents change (a 64-bit fingerprint of every array it has, computed at each
 // draw); a texture and its mip levels the first frame it is read, again when its texels
 // change (the same fingerprint); lights and camera every frame (uniforms). Entries not
-// used for kEvictFrames frames, and the least recently used ones beyond kCacheBudget
+// used for kEvictFrames frames, and the least recently used ones beyond the budget
 // bytes, are deleted.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -21,8 +24,10 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
+#include "geometry/draw_plan.hpp"
 #include "geometry/normals.hpp"
 #include "geometry/object_cull.hpp"
+#include "geometry/tangents.hpp"
 #include "gpu_backend.hpp"
 #include "shaders.hpp"
 #include "shading/lighting.hpp"
@@ -33,7 +38,9 @@ namespace velocity::gpu {
 namespace {
 
 constexpr uint64_t kEvictFrames = 120;
-constexpr size_t kCacheBudget = size_t(1) << 30;  // 1 GiB of meshes and textures
+constexpr size_t kCacheBudget = size_t(1) << 30;  // 1 GiB of meshes and textures, where the driver does not say
+
+std::string mib(size_t bytes) { return std::to_string((bytes + (size_t(1) << 20) - 1) >> 20); }
 
 // A 64-bit fingerprint of bytes: four independent multiply-xor lanes (memory speed).
 struct Fingerprint {
@@ -64,6 +71,7 @@ struct Fingerprint {
 uint64_t fingerprint(const Mesh& m) {
   Fingerprint f;
   f.add(m.positions), f.add(m.normals), f.add(m.uvs), f.add(m.colors), f.add(m.triangles);
+  f.add(m.uvs1), f.add(m.tangents), f.add(m.alphas);
   f.add(m.face_colors), f.add(m.face_materials);
   const uint64_t materials = m.materials.size();
   f.add(&materials, sizeof materials);
@@ -77,6 +85,28 @@ uint64_t fingerprint(const Texture& t) {
 }
 
 void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
+
+// KHR_texture_transform as two rows of an affine map (geometry/draw_plan.cpp's uv_affine).
+void uv_map_rows(const UvTransform& t, float* rows) {
+  const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+  const float r[6] = {c * t.scale.x, s * t.scale.y, t.offset.x, -s * t.scale.x, c * t.scale.y, t.offset.y};
+  std::copy(r, r + 6, rows);
+}
+
+// The uv set a Pbr material's textures read (geometry/draw_plan.cpp's pbr_uv_set).
+int pbr_uv_set(const Material& mat) {
+  if (mat.texture) return mat.texture_uv.uv_set;
+  for (const TextureRef* t : {&mat.pbr.metallic_roughness, &mat.pbr.normal, &mat.pbr.occlusion, &mat.pbr.emissive_map})
+    if (*t) return t->uv.uv_set;
+  return 0;
+}
+
+// geometry::pipeline_color as the shaders' to_pipeline() takes it: 0 as it is, 1 decode
+// sRGB, 2 encode.
+int color_convert(ColorSpace space, bool linear) {
+  if (linear == (space == ColorSpace::Linear)) return 0;
+  return linear ? 1 : 2;
+}
 
 // The GL error, if any, as velocity::Error; an allocation the device refused names what.
 void check_gl(const char* what) {
@@ -95,8 +125,10 @@ void check_gl(const char* what) {
 struct GpuBackend::MeshEntry {
   uint64_t fingerprint = 0, last_frame = 0;
   size_t bytes = 0;
-  GLuint vao = 0, buffers[6] = {}, face_colors = 0;  // positions, normals, uvs, colours, indices, face colours
-  bool has_uvs = false, has_colors = false, has_face_colors = false;
+  // positions, normals, uvs, colours, indices, face colours, second uvs, tangents, alphas
+  GLuint vao = 0, buffers[9] = {}, face_colors = 0;
+  bool has_uvs = false, has_colors = false, has_face_colors = false, has_uvs1 = false, has_alphas = false;
+  int tangent_uv_set = -1;  // the tangents in buffers[7]: the mesh's (2), generated from a uv set (0, 1), none (-1)
   // Faces reordered by material slot (triangle/mesh_job.cpp's slot_of): slot s draws
   // faces [slot_begin[s], slot_begin[s + 1]); `face_of` maps back to the mesh's faces.
   std::vector<uint32_t> slot_begin;
@@ -117,11 +149,56 @@ GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
   max_side_ = std::min(int(max_side), kMaxFramebufferSide);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_);
+  set_budget();
   check_gl("the GPU backend's set-up");
   resize(width, height, 1);
 }
 
 const std::string& GpuBackend::description() const { return context_->description(); }
+
+// The GPU memory the meshes and textures of one frame may take: VELOCITY_GPU_MEMORY_MB
+// when set; else three quarters of what the driver reports (GL_NVX_gpu_memory_info,
+// GL_ATI_meminfo); else 1 GiB. A mesh or texture over it, or a frame whose meshes and
+// textures together are, is an error that says so (reserve); the cache is trimmed to it.
+void GpuBackend::set_budget() {
+  budget_ = kCacheBudget, budget_source_ = "the default: the driver does not report its memory";
+  if (const char* env = std::getenv("VELOCITY_GPU_MEMORY_MB"); env && *env) {
+    char* end = nullptr;
+    const unsigned long long mb = std::strtoull(env, &end, 10);
+    if (*end != '\0' || mb == 0 || mb > (1ull << 24))
+      throw Error(std::string("VELOCITY_GPU_MEMORY_MB: expected a number of MiB (1..16777216), got '") + env + "'");
+    budget_ = size_t(mb) << 20, budget_source_ = "VELOCITY_GPU_MEMORY_MB";
+    return;
+  }
+  GLint kib[4] = {};
+  if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
+    glGetIntegerv(0x9048, kib);  // GL_GPU_MEMORY_INFO_TOTAL_AVAILABLE_MEMORY_NVX
+    if (kib[0] > 0) budget_source_ = "3/4 of the device's " + mib(size_t(kib[0]) << 10) + " MiB (GL_NVX_gpu_memory_info)";
+  } else if (epoxy_has_gl_extension("GL_ATI_meminfo")) {
+    glGetIntegerv(0x87FC, kib);  // GL_TEXTURE_FREE_MEMORY_ATI: total free first
+    if (kib[0] > 0) budget_source_ = "3/4 of the device's free " + mib(size_t(kib[0]) << 10) + " MiB (GL_ATI_meminfo)";
+  }
+  if (kib[0] > 0) budget_ = (size_t(kib[0]) << 10) / 4 * 3;
+}
+
+// Counts `bytes` more of GPU memory for this frame, or says what is too large.
+void GpuBackend::reserve(size_t bytes, const std::string& what) {
+  if (bytes > budget_)
+    throw Error(what + " needs " + mib(bytes) + " MiB of GPU memory, more than the GPU backend's budget of " +
+                mib(budget_) + " MiB (" + budget_source_ + ")");
+  if (frame_bytes_ + bytes > budget_)
+    throw Error("the frame's meshes and textures need over " + mib(frame_bytes_ + bytes) +
+                " MiB of GPU memory (at " + what + "), more than the GPU backend's budget of " + mib(budget_) +
+                " MiB (" + budget_source_ + ")");
+  frame_bytes_ += bytes;
+}
+
+// A texture the GPU cannot hold (GL_MAX_TEXTURE_SIZE) is an error when it is drawn.
+void GpuBackend::check_size(const Texture& t) const {
+  if (t.width() > max_texture_ || t.height() > max_texture_)
+    throw Error("a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) +
+                " texture is larger than the GPU takes (" + std::to_string(max_texture_) + " a side)");
+}
 
 GpuBackend::~GpuBackend() {
   try {
@@ -130,6 +207,8 @@ GpuBackend::~GpuBackend() {
     for (auto& [key, t] : textures_) glDeleteTextures(1, &t.texture);
     for (auto& [key, s] : samplers_) glDeleteSamplers(1, &s);
     for (GLuint p : programs_)
+      if (p) glDeleteProgram(p);
+    for (GLuint p : pbr_programs_)
       if (p) glDeleteProgram(p);
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(3, renderbuffers_);
@@ -143,7 +222,7 @@ GpuBackend::~GpuBackend() {
 
 void GpuBackend::free(MeshEntry& m) {
   glDeleteVertexArrays(1, &m.vao);
-  glDeleteBuffers(6, m.buffers);
+  glDeleteBuffers(9, m.buffers);
   glDeleteTextures(1, &m.face_colors);
 }
 
@@ -183,6 +262,12 @@ GLuint GpuBackend::program(bool affine, int primitive) {
   return p;
 }
 
+GLuint GpuBackend::pbr_program(bool affine) {
+  GLuint& p = pbr_programs_[affine ? 1 : 0];
+  if (!p) p = build_pbr_program(affine);
+  return p;
+}
+
 GLint GpuBackend::uniform(GLuint program, const char* name) {
   auto key = std::make_pair(program, std::string(name));
   auto it = uniforms_.find(key);
@@ -213,7 +298,9 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
     throw Error("the GPU backend takes at most " + std::to_string(kMaxLights) + " directional and " +
                 std::to_string(kMaxLights) + " point lights");
   for (bool& u : lights_uploaded_) u = false;
-  painter_draws_.clear();
+  orthographic_ = camera.projection == Projection::Orthographic;
+  frame_bytes_ = 0;
+  mesh_draws_.clear(), batch_draws_.clear(), clears_.clear(), commands_.clear();
 
   context_->make_current();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -247,10 +334,22 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
   const uint64_t key = fingerprint(mesh);
   if (it != meshes_.end() && it->second.fingerprint == key) {
+    reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
     return it->second;
   }
   if (it != meshes_.end()) free(it->second), cache_bytes_ -= it->second.bytes, meshes_.erase(it);
+  {
+    // What the upload below takes (the tangents a normal map may add come later).
+    const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
+    size_t per_vertex = 24;
+    if (mesh.uvs.size() == nv) per_vertex += 8;
+    if (mesh.colors.size() == nv) per_vertex += 12;
+    if (mesh.uvs1.size() == nv) per_vertex += 8;
+    if (mesh.tangents.size() == nv) per_vertex += 16;
+    if (mesh.alphas.size() == nv) per_vertex += 4;
+    reserve(nv * per_vertex + nt * (mesh.face_colors.empty() ? 12 : 24), "mesh '" + mesh.name + "'");
+  }
   uploads_++;
 
   MeshEntry m;
@@ -283,21 +382,27 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   if (mesh.normals.size() != nv) geometry::average_normals(mesh, averaged), normals = &averaged;
 
   glGenVertexArrays(1, &m.vao);
-  glGenBuffers(6, m.buffers);
+  glGenBuffers(9, m.buffers);
   glBindVertexArray(m.vao);
-  auto attribute = [&](int slot, const void* data, size_t bytes, int components) {
-    glBindBuffer(GL_ARRAY_BUFFER, m.buffers[slot]);
+  // Attribute locations: the shaders' (kMeshVertexInputs, kPbrVertex); buffers: MeshEntry's.
+  auto attribute = [&](int location, int buffer, const void* data, size_t bytes, int components) {
+    glBindBuffer(GL_ARRAY_BUFFER, m.buffers[buffer]);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
-    glVertexAttribPointer(GLuint(slot), components, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glEnableVertexAttribArray(GLuint(slot));
+    glVertexAttribPointer(GLuint(location), components, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glEnableVertexAttribArray(GLuint(location));
     m.bytes += bytes;
   };
-  attribute(0, mesh.positions.data(), nv * sizeof(Vec3), 3);
-  attribute(1, normals->data(), nv * sizeof(Vec3), 3);
+  attribute(0, 0, mesh.positions.data(), nv * sizeof(Vec3), 3);
+  attribute(1, 1, normals->data(), nv * sizeof(Vec3), 3);
   m.has_uvs = mesh.uvs.size() == nv && nv;
-  if (m.has_uvs) attribute(2, mesh.uvs.data(), nv * sizeof(Vec2), 2);
+  if (m.has_uvs) attribute(2, 2, mesh.uvs.data(), nv * sizeof(Vec2), 2);
   m.has_colors = mesh.colors.size() == nv && nv;
-  if (m.has_colors) attribute(3, mesh.colors.data(), nv * sizeof(Vec3), 3);
+  if (m.has_colors) attribute(3, 3, mesh.colors.data(), nv * sizeof(Vec3), 3);
+  m.has_uvs1 = mesh.uvs1.size() == nv && nv;
+  if (m.has_uvs1) attribute(4, 6, mesh.uvs1.data(), nv * sizeof(Vec2), 2);
+  if (mesh.tangents.size() == nv && nv) attribute(5, 7, mesh.tangents.data(), nv * sizeof(Vec4), 4), m.tangent_uv_set = 2;
+  m.has_alphas = mesh.alphas.size() == nv && nv;
+  if (m.has_alphas) attribute(6, 8, mesh.alphas.data(), nv * sizeof(float), 1);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.buffers[4]);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * 4), indices.data(), GL_STATIC_DRAW);
   m.bytes += indices.size() * 4;
@@ -323,18 +428,24 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   return meshes_.emplace(&mesh, std::move(m)).first->second;
 }
 
-GLuint GpuBackend::texture(const Texture& t) {
-  auto it = textures_.find(&t);
+// A colour texture in a Linear frame is uploaded as GL_SRGB8_ALPHA8: the driver decodes
+// each texel before filtering, as the CPU's sampler does (SamplerView::srgb); the same
+// Texture read both ways is two entries.
+GLuint GpuBackend::texture(const Texture& t, bool srgb) {
+  auto it = textures_.find({&t, srgb});
   if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
   const uint64_t key = fingerprint(t);
+  const std::string what = "a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) + " texture";
   if (it != textures_.end() && it->second.fingerprint == key) {
+    reserve(it->second.bytes, what);
     it->second.last_frame = frame_;
     return it->second.texture;
   }
   if (it != textures_.end()) glDeleteTextures(1, &it->second.texture), cache_bytes_ -= it->second.bytes, textures_.erase(it);
-  if (t.width() > max_texture_ || t.height() > max_texture_)
-    throw Error("a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) +
-                " texture is larger than the GPU takes (" + std::to_string(max_texture_) + " a side)");
+  check_size(t);
+  size_t bytes = 0;
+  for (const Texture::Level& l : t.levels()) bytes += l.texels.size() * 4;
+  reserve(bytes, what);
   uploads_++;
   TextureEntry e;
   e.fingerprint = key, e.last_frame = frame_;
@@ -344,7 +455,7 @@ GLuint GpuBackend::texture(const Texture& t) {
   // The texture's own mip levels (Texture's box filter), not the driver's.
   const auto& levels = t.levels();
   for (size_t l = 0; l < levels.size(); ++l) {
-    glTexImage2D(GL_TEXTURE_2D, GLint(l), GL_RGBA8, levels[l].width, levels[l].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+    glTexImage2D(GL_TEXTURE_2D, GLint(l), srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, levels[l].width, levels[l].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  levels[l].texels.data());
     e.bytes += levels[l].texels.size() * 4;
   }
@@ -357,7 +468,7 @@ GLuint GpuBackend::texture(const Texture& t) {
     throw;
   }
   cache_bytes_ += e.bytes;
-  return textures_.emplace(&t, e).first->second.texture;
+  return textures_.emplace(std::make_pair(&t, srgb), e).first->second.texture;
 }
 
 GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
@@ -412,16 +523,171 @@ void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   context_->make_current();  // (a no-op unless another renderer's frame ran on this thread since)
   if (geometry::ViewVolume(view_projection_).outside(mesh, world)) return void(stats_.objects_culled++);
   MeshEntry& m = mesh_entry(mesh);
-  if (options_.depth_mode == DepthMode::Painter) {
-    painter_draws_.push_back({&mesh, &m, world, material, object_id});
-    return;
+  // Blended (geometry::plan_mesh_draw's d.blend): a slot is Pbr with AlphaMode::Blend.
+  bool blend = false;
+  const size_t slots = material ? 1 : 1 + mesh.materials.size();
+  for (size_t s = 0; s < slots; ++s) {
+    const Material& mat = material ? *material : s == 0 ? default_material_ : mesh.materials[s - 1];
+    blend = blend || (options_.shading.value_or(mat.shading) == Shading::Pbr && mat.alpha_mode == AlphaMode::Blend);
   }
-  draw_mesh(mesh, m, world, material, object_id, nullptr);
+  // Textures too large for the device: said at the draw that brings them.
+  for (size_t s = 0; s < slots; ++s) {
+    const Material& mat = material ? *material : s == 0 ? default_material_ : mesh.materials[s - 1];
+    for (const Texture* x : {options_.texture ? options_.texture.get() : mat.texture.get(),
+                             options_.env_map ? options_.env_map.get() : mat.env_map.get(),
+                             mat.pbr.metallic_roughness.texture.get(), mat.pbr.normal.texture.get(),
+                             mat.pbr.occlusion.texture.get(), mat.pbr.emissive_map.texture.get()})
+      if (x) check_size(*x);
+  }
+  const float depth = blend ? (view_ * world).transform_point(mesh.bounding_sphere().center).z : 0.0f;
+  commands_.push_back({Command::Mesh, uint32_t(mesh_draws_.size())});
+  mesh_draws_.push_back({&mesh, &m, world, material, object_id, blend, depth});
+}
+
+// Runs the recorded frame (CpuBackend::run_frame's order): the colour pipeline decided
+// from every draw's materials (geometry::finish_color_plan), then between each pair of
+// clears the opaque draws and batches in order and the blended draws far to near
+// (CpuBackend::order_blended_draws); in painter's mode, the batches and clears, then
+// every face of the frame sorted (draw_painter).
+void GpuBackend::replay() {
+  bool pbr = false;
+  for (const MeshDraw& d : mesh_draws_) {
+    const size_t slots = d.material ? 1 : 1 + d.mesh->materials.size();
+    for (size_t s = 0; s < slots; ++s) {
+      const Material& mat = d.material ? *d.material : s == 0 ? default_material_ : d.mesh->materials[s - 1];
+      pbr = pbr || options_.shading.value_or(mat.shading) == Shading::Pbr;
+    }
+  }
+  linear_ = options_.color == ColorPipeline::Linear || (options_.color == ColorPipeline::Auto && pbr);
+  const bool painter = options_.depth_mode == DepthMode::Painter;
+  std::vector<uint32_t> blended;
+  auto flush_blended = [&] {
+    std::stable_sort(blended.begin(), blended.end(),
+                     [&](uint32_t a, uint32_t b) { return mesh_draws_[a].depth < mesh_draws_[b].depth; });
+    for (uint32_t i : blended) {
+      const MeshDraw& d = mesh_draws_[i];
+      draw_mesh(*d.mesh, *d.entry, d.world, d.material, d.object_id, nullptr);
+    }
+    blended.clear();
+  };
+  for (const Command& c : commands_) {
+    if (c.kind == Command::Batch) {
+      const BatchDraw& b = batch_draws_[c.index];
+      draw_batch(b.batch, b.state, b.primitives);
+    } else if (c.kind == Command::Clear) {
+      flush_blended();
+      run_clear(clears_[c.index]);
+    } else if (!painter) {
+      const MeshDraw& d = mesh_draws_[c.index];
+      if (d.blend) blended.push_back(c.index);
+      else draw_mesh(*d.mesh, *d.entry, d.world, d.material, d.object_id, nullptr);
+    }
+  }
+  flush_blended();
+  if (painter && !mesh_draws_.empty()) draw_painter();
+}
+
+// The output's uniforms (kColorGlsl's finish): 0 display, 1 Linear's whole transform,
+// 2 the sRGB encoding alone.
+void GpuBackend::set_output(GLuint p, int output) {
+  glUniform1i(uniform(p, "u_output"), output);
+  const float e = options_.exposure;
+  glUniform1f(uniform(p, "u_exposure"), std::isfinite(e) && e >= 0 ? e : 1.0f);  // (as CpuBackend::run_frame)
+  glUniform1i(uniform(p, "u_tone_map"), int(options_.tone_map));
+}
+
+// Tangents for a normal-mapped Pbr material: the mesh's, else generated as the CPU
+// generates them (geometry::generate_tangents, from the material's uv set), once per
+// uv set asked for.
+void GpuBackend::ensure_tangents(const Mesh& mesh, MeshEntry& m, int uv_set) {
+  if (m.tangent_uv_set == 2 || m.tangent_uv_set == uv_set) return;
+  const size_t nv = mesh.positions.size();
+  std::vector<Vec3> averaged;
+  const std::vector<Vec3>* normals = &mesh.normals;
+  if (mesh.normals.size() != nv) geometry::average_normals(mesh, averaged), normals = &averaged;
+  const std::vector<Vec2>& uvs = uv_set == 1 && !mesh.uvs1.empty() ? mesh.uvs1 : mesh.uvs;
+  std::vector<Vec4> tangents;
+  geometry::generate_tangents(mesh, *normals, uvs.empty() ? std::vector<Vec2>(nv) : uvs, tangents);
+  glBindVertexArray(m.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, m.buffers[7]);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(tangents.size() * sizeof(Vec4)), tangents.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(5, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(5);
+  if (m.tangent_uv_set < 0) {
+    reserve(tangents.size() * sizeof(Vec4), "mesh '" + mesh.name + "' (its tangents)");
+    m.bytes += tangents.size() * sizeof(Vec4), cache_bytes_ += tangents.size() * sizeof(Vec4);
+  }
+  m.tangent_uv_set = uv_set;
+  check_gl(("generating tangents for mesh '" + mesh.name + "'").c_str());
+}
+
+// A Pbr slot's uniforms and textures (geometry::plan_pbr and finish_color_plan).
+void GpuBackend::draw_pbr_slot(const Mesh& mesh, MeshEntry& m, const Material& mat, GLuint p) {
+  const PbrParams& pbr = mat.pbr;
+  const int uv_set = pbr_uv_set(mat);
+  const bool tangents = bool(pbr.normal) && !pbr.unlit;
+  if (tangents) ensure_tangents(mesh, m, uv_set == 1 && !mesh.uvs1.empty() ? 1 : 0);
+  glBindVertexArray(m.vao);
+  if (!m.has_uvs1) glVertexAttrib2f(4, 0, 0);
+  if (m.tangent_uv_set < 0) glVertexAttrib4f(5, 1, 0, 0, 1);
+  if (!m.has_alphas) glVertexAttrib1f(6, 1);
+  glUniform1i(uniform(p, "u_uv1"), uv_set == 1 && m.has_uvs1);
+  glUniform1i(uniform(p, "u_vertex_colors"), m.has_colors);
+  glUniform1i(uniform(p, "u_color_convert"), color_convert(mat.color_space, linear_));
+  glUniform1i(uniform(p, "u_tangents"), tangents);
+  const Vec3 base = geometry::pipeline_color(mat.color, mat.color_space, linear_);
+  const Vec3 emissive = geometry::pipeline_color(pbr.emissive, mat.color_space, linear_);
+  glUniform4f(uniform(p, "u_base"), base.x, base.y, base.z, mat.alpha);
+  glUniform3f(uniform(p, "u_emissive"), emissive.x, emissive.y, emissive.z);
+  glUniform4f(uniform(p, "u_pbr"), pbr.metallic, pbr.roughness, pbr.normal_scale, pbr.occlusion_strength);
+  glUniform1i(uniform(p, "u_unlit"), pbr.unlit);
+  glUniform1i(uniform(p, "u_alpha_mode"), int(mat.alpha_mode));
+  glUniform1f(uniform(p, "u_alpha_cutoff"), mat.alpha_cutoff);
+  glUniform1i(uniform(p, "u_ortho"), orthographic_);
+  glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
+  set_output(p, linear_ ? 1 : 0);
+  // The five textures on units 4..8: base colour and emissive are colours (sRGB-decoded
+  // in a Linear frame), the others data.
+  const Texture* base_map = options_.texture ? options_.texture.get() : mat.texture.get();
+  const Filter filter = options_.filter.value_or(mat.filter);
+  struct Map {
+    const char* name;
+    const Texture* texture;
+    const UvTransform& uv;
+    bool color;
+  };
+  const Map maps[5] = {{"u_base_map", base_map, mat.texture_uv, true},
+                       {"u_mr_map", pbr.metallic_roughness.texture.get(), pbr.metallic_roughness.uv, false},
+                       {"u_normal_map", pbr.normal.texture.get(), pbr.normal.uv, false},
+                       {"u_occlusion_map", pbr.occlusion.texture.get(), pbr.occlusion.uv, false},
+                       {"u_emissive_map", pbr.emissive_map.texture.get(), pbr.emissive_map.uv, true}};
+  GLint has[5];
+  float rows[30];
+  for (int i = 0; i < 5; ++i) {
+    const Map& map = maps[i];
+    has[i] = map.texture != nullptr;
+    glUniform1i(uniform(p, map.name), 4 + i);
+    uv_map_rows(map.uv, rows + 6 * i);
+    if (!map.texture) continue;
+    glActiveTexture(GLenum(GL_TEXTURE4 + i));
+    glBindTexture(GL_TEXTURE_2D, texture(*map.texture, map.color && linear_));
+    glBindSampler(GLuint(4 + i), sampler(filter, mat.wrap));
+  }
+  glUniform1iv(uniform(p, "u_has_map"), 5, has);
+  glUniform3fv(uniform(p, "u_map_uv"), 10, rows);
+  // BLEND: over, in the output's encoding (pbr_kernel's mix; alpha: a + dst (1 - a)),
+  // without writing depth.
+  if (mat.alpha_mode == AlphaMode::Blend) {
+    glEnablei(GL_BLEND, 0);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glBlendEquation(GL_FUNC_ADD);
+    glDepthMask(GL_FALSE);
+  }
 }
 
 // One mesh draw, every material slot; `faces`, in painter's mode, the sorted runs of
 // this draw's faces to draw instead of all (first: position in the frame's order, count).
-void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& world, const Material* override,
+void GpuBackend::draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override,
                            uint32_t object_id, const std::vector<std::pair<uint32_t, uint32_t>>* runs) {
   const Mat4 model_view = view_ * world;
   const Mat4 mvp = flipped_view_projection_ * world, normals = normal_matrix(model_view);
@@ -446,7 +712,8 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     const Filter filter = options_.filter.value_or(mat.filter);
     const bool lines = shading == Shading::Wireframe, points = shading == Shading::Points;
     const bool replace = tex && mat.texture_mode == TextureMode::Replace && !lines && !points;
-    const bool phong = !replace && (shading == Shading::Phong || shading == Shading::Pbr);
+    const bool pbr = shading == Shading::Pbr;
+    const bool phong = !replace && shading == Shading::Phong;
     const int mode = replace || lines || points ? kSolid : shading == Shading::Flat ? kFlat : phong ? kPhong : kSmooth;
     const bool lit = shading != Shading::Unlit;
     const bool uv_from_env = !phong && !tex && env && !lines && !points;
@@ -455,44 +722,55 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
     int base = kMaterialColor;
     if (!override && !mesh.face_colors.empty()) base = kFaceColor;
     else if (!override && !mesh.colors.empty()) base = kVertexColor;
-    const Vec3 color = replace ? Vec3{1, 1, 1} : mat.color;
+    // Colours in the frame's pipeline (mesh_job.cpp's base_color); lines and points in
+    // display values (finish_color_plan's line_color).
+    Vec3 color = replace ? Vec3{1, 1, 1} : geometry::pipeline_color(mat.color, mat.color_space, linear_);
+    if (lines || points) color = geometry::pipeline_color(mat.color, mat.color_space, false);
 
     const bool direct = (mode == kSmooth || mode == kPhong) && base != kFaceColor;
-    const int primitive = lines ? 1 : points ? 2 : direct ? 3 : 0;
-    const GLuint p = program(options_.affine, primitive);
+    const int primitive = pbr ? 3 : lines ? 1 : points ? 2 : direct ? 3 : 0;
+    const GLuint p = pbr ? pbr_program(options_.affine) : program(options_.affine, primitive);
     glUseProgram(p);
-    const int which = (options_.affine ? 4 : 0) + primitive;
+    const int which = pbr ? 8 + options_.affine : (options_.affine ? 4 : 0) + primitive;
     if (!lights_uploaded_[which]) upload_lights(p), lights_uploaded_[which] = true;
     upload_matrix(uniform(p, "u_mvp"), mvp);
     upload_matrix(uniform(p, "u_model_view"), model_view);
     upload_matrix(uniform(p, "u_normal_matrix"), normals);
     glUniform1ui(uniform(p, "u_object_id"), object_id);
-    glUniform1i(uniform(p, "u_texture"), 0), glUniform1i(uniform(p, "u_env_map"), 1);
-    glUniform1i(uniform(p, "u_face_colors"), 2), glUniform1i(uniform(p, "u_order"), 3);
-    glUniform1i(uniform(p, "u_face_order"), runs ? 1 : 0);
-    glUniform1i(uniform(p, "u_mode"), mode);
-    glUniform1i(uniform(p, "u_base_source"), base);
-    glUniform1i(uniform(p, "u_lit"), lit);
-    glUniform1i(uniform(p, "u_vertex_light"), mode == kSmooth && lit);
-    glUniform1i(uniform(p, "u_unlit_vertex_colors"), shading == Shading::Unlit && !mesh.colors.empty() && mode == kSmooth);
-    glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
-    glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
-    glUniform1i(uniform(p, "u_cull"), cull);
-    glUniform1i(uniform(p, "u_textured"), textured);
-    glUniform1i(uniform(p, "u_env"), phong && env);
-    glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);
-    glUniform3f(uniform(p, "u_material_color"), color.x, color.y, color.z);
-    const shading::Specular s(mat.specular, mat.shininess);
-    glUniform3f(uniform(p, "u_specular"), s.ks, s.exponent, s.cutoff);
-    if (textured) {
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, texture(tex ? *tex : *env));
-      glBindSampler(0, sampler(filter, tex ? mat.wrap : Wrap::Clamp));  // environment maps: clamped
-    }
-    if (phong && env) {
-      glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_2D, texture(*env));
-      glBindSampler(1, sampler(filter, Wrap::Clamp));
+    if (pbr) {
+      draw_pbr_slot(mesh, m, mat, p);
+    } else {
+      glUniform1i(uniform(p, "u_texture"), 0), glUniform1i(uniform(p, "u_env_map"), 1);
+      glUniform1i(uniform(p, "u_face_colors"), 2), glUniform1i(uniform(p, "u_order"), 3);
+      glUniform1i(uniform(p, "u_face_order"), runs ? 1 : 0);
+      glUniform1i(uniform(p, "u_mode"), mode);
+      glUniform1i(uniform(p, "u_base_source"), base);
+      glUniform1i(uniform(p, "u_lit"), lit);
+      glUniform1i(uniform(p, "u_vertex_light"), mode == kSmooth && lit);
+      glUniform1i(uniform(p, "u_unlit_vertex_colors"), shading == Shading::Unlit && !mesh.colors.empty() && mode == kSmooth);
+      glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
+      glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
+      glUniform1i(uniform(p, "u_cull"), cull);
+      glUniform1i(uniform(p, "u_textured"), textured);
+      glUniform1i(uniform(p, "u_env"), phong && env);
+      glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);
+      glUniform3f(uniform(p, "u_material_color"), color.x, color.y, color.z);
+      glUniform1i(uniform(p, "u_color_convert"), color_convert(mat.color_space, linear_));
+      // The flat kernel writes its colour encoded but not exposed or tone mapped
+      // (mesh_job.cpp's pack_flat); lines and points are display values.
+      set_output(p, lines || points ? 0 : mode == kFlat && !textured ? (linear_ ? 2 : 0) : (linear_ ? 1 : 0));
+      const shading::Specular s(mat.specular, mat.shininess);
+      glUniform3f(uniform(p, "u_specular"), s.ks, s.exponent, s.cutoff);
+      if (textured) {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, texture(tex ? *tex : *env, linear_));
+        glBindSampler(0, sampler(filter, tex ? mat.wrap : Wrap::Clamp));  // environment maps: clamped
+      }
+      if (phong && env) {
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, texture(*env, linear_));
+        glBindSampler(1, sampler(filter, Wrap::Clamp));
+      }
     }
     // Triangles are culled by GL (front faces clockwise: the flip); edges and corners
     // by the geometry shader.
@@ -502,15 +780,16 @@ void GpuBackend::draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& wor
       glUniform1i(uniform(p, "u_face_base"), GLint(begin));
       glDrawElements(GL_TRIANGLES, GLsizei(end - begin) * 3, GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(uintptr_t(begin) * 12));
-      continue;
+    } else {
+      for (const auto& [first, count] : *runs) {
+        // A run is one slot's faces (the sort keeps slots apart): draw it with its slot.
+        const uint32_t face = painter_faces_[first];
+        if (face < begin || face >= end) continue;
+        glUniform1i(uniform(p, "u_face_base"), GLint(first));
+        glDrawElements(GL_TRIANGLES, GLsizei(count) * 3, GL_UNSIGNED_INT, reinterpret_cast<const void*>(uintptr_t(first) * 12));
+      }
     }
-    for (const auto& [first, count] : *runs) {
-      // A run is one slot's faces (the sort keeps slots apart): draw it with its slot.
-      const uint32_t face = painter_faces_[first];
-      if (face < begin || face >= end) continue;
-      glUniform1i(uniform(p, "u_face_base"), GLint(first));
-      glDrawElements(GL_TRIANGLES, GLsizei(count) * 3, GL_UNSIGNED_INT, reinterpret_cast<const void*>(uintptr_t(first) * 12));
-    }
+    if (pbr && mat.alpha_mode == AlphaMode::Blend) glDisablei(GL_BLEND, 0), glDepthMask(GL_TRUE);
   }
   if (runs) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.buffers[4]);  // the VAO's own again
   glBindVertexArray(0);
@@ -526,8 +805,8 @@ void GpuBackend::draw_painter() {
     uint32_t draw, face;  // face: in the entry's slot order
   };
   std::vector<Key> keys;
-  for (uint32_t d = 0; d < painter_draws_.size(); ++d) {
-    const PainterDraw& pd = painter_draws_[d];
+  for (uint32_t d = 0; d < mesh_draws_.size(); ++d) {
+    const MeshDraw& pd = mesh_draws_[d];
     const Mesh& mesh = *pd.mesh;
     const Mat4 mvp = view_projection_ * pd.world;
     std::vector<float> z(mesh.positions.size());
@@ -546,7 +825,7 @@ void GpuBackend::draw_painter() {
   std::vector<uint32_t> indices(keys.size() * 3);
   painter_faces_.resize(keys.size());
   for (size_t i = 0; i < keys.size(); ++i) {
-    const PainterDraw& pd = painter_draws_[keys[i].draw];
+    const MeshDraw& pd = mesh_draws_[keys[i].draw];
     const Triangle& t = pd.mesh->triangles[pd.entry->face_of[keys[i].face]];
     for (int k = 0; k < 3; ++k) indices[i * 3 + size_t(k)] = t.v[k] < pd.mesh->positions.size() ? t.v[k] : 0;
     painter_faces_[i] = keys[i].face;
@@ -564,16 +843,16 @@ void GpuBackend::draw_painter() {
   size_t i = 0;
   while (i < keys.size()) {
     const uint32_t d = keys[i].draw;
-    const MeshEntry& m = *painter_draws_[d].entry;
+    MeshEntry& m = *mesh_draws_[d].entry;
     auto slot = [&](uint32_t f) { return std::upper_bound(m.slot_begin.begin(), m.slot_begin.end(), f) - m.slot_begin.begin(); };
     size_t j = i + 1;
     while (j < keys.size() && keys[j].draw == d && slot(keys[j].face) == slot(keys[i].face)) ++j;
     const std::vector<std::pair<uint32_t, uint32_t>> run = {{uint32_t(i), uint32_t(j - i)}};
-    const PainterDraw& pd = painter_draws_[d];
+    const MeshDraw& pd = mesh_draws_[d];
     draw_mesh(*pd.mesh, m, pd.world, pd.material, pd.object_id, &run);
     i = j;
   }
-  for (const PainterDraw& pd : painter_draws_) stats_.triangles_rasterized += pd.entry->face_of.size();
+  for (const MeshDraw& pd : mesh_draws_) stats_.triangles_rasterized += pd.entry->face_of.size();
 }
 
 namespace {
@@ -605,7 +884,11 @@ GLint gl_wrap(Wrap w) {
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
   stats_.objects++;
   if (primitives == 0) return;
-  context_->make_current();
+  commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});
+  batch_draws_.push_back({batch, state, primitives});
+}
+
+void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
   const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
   // The vertices of whole primitives whose indices are all in range (the rest are dropped).
   batch_indices_.clear();
@@ -745,7 +1028,11 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
 }
 
 void GpuBackend::clear(const ClearRequest& request) {
-  context_->make_current();
+  commands_.push_back({Command::Clear, uint32_t(clears_.size())});
+  clears_.push_back(request);
+}
+
+void GpuBackend::run_clear(const ClearRequest& request) {
   if (request.scissor) {
     glEnable(GL_SCISSOR_TEST);  // (rows from the top: the framebuffer is upside down)
     glScissor(request.x0, request.y0, std::max(request.x1 - request.x0, 0), std::max(request.y1 - request.y0, 0));
@@ -768,7 +1055,12 @@ void GpuBackend::clear(const ClearRequest& request) {
 
 const FrameStats& GpuBackend::end_frame() {
   context_->make_current();
-  if (!painter_draws_.empty()) draw_painter();
+  try {
+    replay();
+  } catch (...) {
+    context_->release();
+    throw;
+  }
   // Read back every sample into the CPU framebuffer (its tiled layout).
   const int w = width_ * ssaa_, h = height_ * ssaa_;
   samples_.keep_ids(options_.object_ids);
@@ -814,7 +1106,7 @@ void GpuBackend::scatter(const T* rows, T* tiled) const {
 // Drops what was not used for a while, and the least recently used beyond the budget.
 void GpuBackend::evict() {
   for (auto it = meshes_.begin(); it != meshes_.end();) {
-    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > kCacheBudget && it->second.last_frame != frame_)) {
+    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > budget_ && it->second.last_frame != frame_)) {
       cache_bytes_ -= it->second.bytes;
       free(it->second);
       it = meshes_.erase(it);
@@ -823,7 +1115,7 @@ void GpuBackend::evict() {
     }
   }
   for (auto it = textures_.begin(); it != textures_.end();) {
-    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > kCacheBudget && it->second.last_frame != frame_)) {
+    if (frame_ - it->second.last_frame > kEvictFrames || (cache_bytes_ > budget_ && it->second.last_frame != frame_)) {
       cache_bytes_ -= it->second.bytes;
       glDeleteTextures(1, &it->second.texture);
       it = textures_.erase(it);

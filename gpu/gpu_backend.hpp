@@ -55,22 +55,46 @@ class GpuBackend final : public Backend {
  private:
   struct MeshEntry;
   struct TextureEntry;
-  struct PainterDraw {
+  // The frame as recorded (Backend: draws and clears run by end_frame), so that the
+  // colour pipeline (RenderOptions::color's Auto: Linear when any draw is Pbr) is known
+  // before the first pixel, and blended draws go after the opaque ones, as on the CPU.
+  struct MeshDraw {
     const Mesh* mesh;
-    const MeshEntry* entry;
+    MeshEntry* entry;
     Mat4 world;
     const Material* material;
     uint32_t object_id;
+    bool blend;  // a glTF BLEND material: drawn after the opaque draws, far to near
+    float depth; // eye-space z of the bounding sphere's centre (blended draws' order)
+  };
+  struct BatchDraw {
+    PrimitiveBatch batch;
+    PixelState state;
+    uint32_t primitives;
+  };
+  struct Command {
+    enum Kind { Mesh, Batch, Clear } kind;
+    uint32_t index;
   };
 
   void resize(int w, int h, int k);
   GLuint program(bool affine, int primitive);
+  GLuint pbr_program(bool affine);
   GLint uniform(GLuint program, const char* name);
   MeshEntry& mesh_entry(const Mesh& mesh);
-  GLuint texture(const Texture& t);
+  GLuint texture(const Texture& t, bool srgb = false);
+  void set_budget();
+  void reserve(size_t bytes, const std::string& what);
+  void check_size(const Texture& t) const;
+  void ensure_tangents(const Mesh& mesh, MeshEntry& m, int uv_set);
+  void set_output(GLuint program, int output);
+  void draw_pbr_slot(const Mesh& mesh, MeshEntry& m, const Material& mat, GLuint program);
+  void draw_batch(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives);
+  void run_clear(const ClearRequest& request);
+  void replay();
   GLuint sampler(Filter filter, Wrap wrap);
   void upload_lights(GLuint program);
-  void draw_mesh(const Mesh& mesh, const MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
+  void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
   void draw_painter();
   void free(MeshEntry& m);
@@ -84,19 +108,27 @@ class GpuBackend final : public Backend {
   GLint max_texture_ = 0;
   GLuint fbo_ = 0, renderbuffers_[3] = {};
   GLuint programs_[8] = {};  // [affine * 4 + primitive]
+  GLuint pbr_programs_[2] = {};  // [affine]
   std::map<std::pair<GLuint, std::string>, GLint> uniforms_;
   std::unordered_map<const Mesh*, MeshEntry> meshes_;
-  std::unordered_map<const Texture*, TextureEntry> textures_;
+  std::map<std::pair<const Texture*, bool>, TextureEntry> textures_;  // (texture, sRGB-decoded)
   std::unordered_map<int, GLuint> samplers_;
   size_t cache_bytes_ = 0, uploads_ = 0;
+  size_t budget_ = 0, frame_bytes_ = 0;  // GPU memory: a frame's meshes and textures at most budget_
+  std::string budget_source_;
   uint64_t frame_ = 0;
 
   RenderOptions options_;
   Mat4 view_, projection_, view_projection_, flipped_view_projection_;
   shading::EyeLights lights_;
-  bool lights_uploaded_[8] = {};
+  bool lights_uploaded_[10] = {};  // the mesh programs, then the Pbr ones
+  bool orthographic_ = false;
+  bool linear_ = false;  // the frame's colour pipeline (geometry::finish_color_plan)
   Material default_material_;
-  std::vector<PainterDraw> painter_draws_;
+  std::vector<MeshDraw> mesh_draws_;
+  std::vector<BatchDraw> batch_draws_;
+  std::vector<ClearRequest> clears_;
+  std::vector<Command> commands_;
   std::vector<uint32_t> painter_faces_;
   GLuint painter_indices_ = 0, order_buffer_ = 0, order_texture_ = 0;
   // pGL's path: its program, streamed arrays and samplers (by SamplerState).

@@ -36,33 +36,142 @@ void add_light(inout Terms t, vec3 n, vec3 to_light, vec3 color, vec3 to_eye) {
   }
 }
 
+// shading::detail::punctual: point light i seen from p (falloff, range window, spot
+// cone, in that order); sets the unit direction to the light (along n at the light).
+float punctual(int i, vec3 p, vec3 n, out vec3 to_light) {
+  vec3 v = u_point_position[i] - p;
+  float dist = length(v);
+  vec3 a = u_point_attenuation[i], f = u_point_falloff[i];
+  float d2 = dot(v, v);
+  float att = f.x > 0.5 ? 1.0 / max(d2, 0.01) : 1.0 / max(a.x + (a.z * dist + a.y) * dist, 1e-6);
+  to_light = d2 > 0.0 ? v / dist : n;
+  if (f.y > 0.0) {
+    float w = clamp(1.0 - d2 * d2 * f.y, 0.0, 1.0);
+    att *= w * w;
+  }
+  if (f.z > 0.5) {
+    float c = clamp(-dot(u_point_spot_axis[i], to_light) * u_point_spot_cone[i].x + u_point_spot_cone[i].y, 0.0, 1.0);
+    att *= c * c;
+  }
+  return att;
+}
+
 Terms light(vec3 n, vec3 p) {
   Terms t = Terms(u_ambient, vec3(0.0));
   vec3 to_eye = u_specular.x > 0.0 ? normalize(-p) : vec3(0.0);
   for (int i = 0; i < u_directional_count; ++i)
     add_light(t, n, u_directional_to_light[i], u_directional_color[i], to_eye);
   for (int i = 0; i < u_point_count; ++i) {
-    vec3 v = u_point_position[i] - p;
-    float dist = length(v);
-    vec3 a = u_point_attenuation[i], f = u_point_falloff[i];
-    float d2 = dot(v, v);
-    // shading::detail::punctual: falloff, range window, spot cone, in that order.
-    float att = f.x > 0.5 ? 1.0 / max(d2, 0.01) : 1.0 / max(a.x + (a.z * dist + a.y) * dist, 1e-6);
-    vec3 to_light = dist > 0.0 ? v / dist : n;
-    if (f.y > 0.0) {
-      float w = clamp(1.0 - d2 * d2 * f.y, 0.0, 1.0);
-      att *= w * w;
-    }
-    if (f.z > 0.5) {
-      float c = clamp(-dot(u_point_spot_axis[i], to_light) * u_point_spot_cone[i].x + u_point_spot_cone[i].y, 0.0, 1.0);
-      att *= c * c;
-    }
+    vec3 to_light;
+    float att = punctual(i, p, n, to_light);
     add_light(t, n, to_light, u_point_color[i] * att, to_eye);
   }
   return t;
 }
 
 vec3 apply(Terms t, vec3 base) { return base * t.diffuse + t.specular; }
+)";
+
+// raster/shade_pbr-inl.h's BRDF (glTF 2.0 Appendix B) for one surface point, the same
+// terms in the same order with the same clamps: roughness at least 0.0525, N.V at
+// least 1e-4, N.H and V.H saturated, the floors of D's and Vis's denominators; the
+// ambient is a uniform radiance times c_diff, darkened by occlusion. Lights are
+// kLightingGlsl's uniforms and punctual().
+const char* const kPbrGlsl = R"(
+const float kInvPi = 0.318309886;
+
+vec3 pbr_add_light(vec3 n, vec3 view, vec3 l, vec3 radiance, vec3 cdiff, vec3 f0, float a2, float nv, float nv_term) {
+  float nl = dot(n, l);
+  if (nl <= 0.0) return vec3(0.0);
+  vec3 h = normalize(l + view);
+  float nh = clamp(dot(n, h), 0.0, 1.0), vh = clamp(dot(view, h), 0.0, 1.0);
+  float q = 1.0 - vh, q2 = q * q, q5 = q2 * q2 * q;
+  float dn = 1.0 - nh * nh * (1.0 - a2);  // (N.H)^2 (a^2 - 1) + 1
+  float dist = a2 * kInvPi / max(dn * dn, 1e-12);
+  float den = nl * nv_term + nv * sqrt(nl * nl * (1.0 - a2) + a2);
+  float spec = 0.5 * dist / max(den, 1e-12);
+  vec3 f = f0 + (1.0 - f0) * q5;  // Schlick
+  return (f * spec + (1.0 - f) * cdiff * kInvPi) * radiance * nl;
+}
+
+// n and view unit, p the eye-space position; ao the occlusion factor (1: none).
+vec3 pbr_light(vec3 n, vec3 view, vec3 p, vec3 base, float metallic, float roughness, float ao) {
+  float metal = clamp(metallic, 0.0, 1.0);
+  float rough = min(max(roughness, 0.0525), 1.0);
+  float a = rough * rough, a2 = a * a;
+  float dielectric = 1.0 - metal;
+  vec3 cdiff = base * dielectric;
+  vec3 f0 = base * metal + 0.04 * dielectric;
+  float nv = max(dot(n, view), 1e-4);
+  float nv_term = sqrt(nv * nv * (1.0 - a2) + a2);
+  vec3 c = cdiff * u_ambient * ao;
+  for (int i = 0; i < u_directional_count; ++i)
+    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i], cdiff, f0, a2, nv, nv_term);
+  for (int i = 0; i < u_point_count; ++i) {
+    vec3 to_light;
+    float att = punctual(i, p, n, to_light);
+    c += pbr_add_light(n, view, to_light, u_point_color[i] * att, cdiff, f0, a2, nv, nv_term);
+  }
+  return c;
+}
+)";
+
+// The frame's colour pipeline (geometry::pipeline_color, raster/output-inl.h):
+// to_pipeline() puts a vertex or face colour into the frame's space; finish() turns
+// light into the output's values: as they are (Display, clamped), or exposure, tone
+// map (ACES as three.js, Khronos PBR Neutral) and the sRGB encoding (Linear); or the
+// encoding alone (the flat kernel's packed colour, mesh_job.cpp's pack_flat).
+const char* const kColorGlsl = R"(
+uniform int u_color_convert;  // 0 as it is, 1 sRGB to linear, 2 linear to sRGB
+uniform int u_output;         // 0 display, 1 linear (exposure, tone map, encode), 2 encode only
+uniform float u_exposure;
+uniform int u_tone_map;       // ToneMap: 0 none, 1 ACES, 2 Khronos PBR Neutral
+
+vec3 srgb_to_linear(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+  return mix(pow((c + 0.055) / 1.055, vec3(2.4)), c / 12.92, lessThanEqual(c, vec3(0.04045)));
+}
+vec3 linear_to_srgb(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+  return mix(1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, c * 12.92, lessThanEqual(c, vec3(0.0031308)));
+}
+vec3 to_pipeline(vec3 c) {
+  if (u_color_convert == 1) return srgb_to_linear(c);
+  if (u_color_convert == 2) return linear_to_srgb(c);
+  return c;
+}
+
+vec3 aces_fit(vec3 v) { return (v * (v + 0.0245786) - 0.000090537) / (v * (0.983729 * v + 0.4329510) + 0.238081); }
+vec3 tone_map_aces(vec3 c) {
+  c *= 1.0 / 0.6;
+  vec3 t = vec3(dot(vec3(0.59719, 0.35458, 0.04823), c), dot(vec3(0.07600, 0.90834, 0.01566), c),
+                dot(vec3(0.02840, 0.13383, 0.83777), c));
+  t = aces_fit(t);
+  t = vec3(dot(vec3(1.60475, -0.53108, -0.07367), t), dot(vec3(-0.10208, 1.10813, -0.00605), t),
+           dot(vec3(-0.00327, -0.07276, 1.07602), t));
+  return clamp(t, 0.0, 1.0);
+}
+vec3 tone_map_neutral(vec3 c) {
+  const float kStart = 0.8 - 0.04, kDesaturation = 0.15, kD = 1.0 - kStart;
+  float x = min(c.r, min(c.g, c.b));
+  float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+  c -= offset;
+  float peak = max(c.r, max(c.g, c.b));
+  if (peak < kStart) return c;
+  float new_peak = 1.0 - kD * kD / (peak + kD - kStart);
+  float g = 1.0 - 1.0 / (kDesaturation * (peak - new_peak) + 1.0);
+  vec3 s = c * (new_peak / max(peak, 1e-6));
+  return mix(s, vec3(new_peak), g);
+}
+vec3 finish(vec3 c) {
+  if (u_output == 0) return clamp(c, 0.0, 1.0);
+  if (u_output == 1) {
+    c *= u_exposure;
+    if (u_tone_map == 1) c = tone_map_aces(c);
+    else if (u_tone_map == 2) c = tone_map_neutral(c);
+  }
+  return linear_to_srgb(c);
+}
 )";
 
 namespace {
@@ -139,7 +248,7 @@ void main() {
   gl_Position = u_mvp * vec4(a_position, 1.0);
   g.eye = (u_model_view * vec4(a_position, 1.0)).xyz;
   g.normal = normalize((u_normal_matrix * vec4(a_normal, 0.0)).xyz);
-  vec3 base = u_unlit_vertex_colors || u_base_source == 2 ? a_color : u_material_color;
+  vec3 base = u_unlit_vertex_colors || u_base_source == 2 ? to_pipeline(a_color) : u_material_color;
   g.front = g.back = base;
   if (u_mode == 1 && u_lit) {
     Terms t = light(g.normal, g.eye);
@@ -205,8 +314,8 @@ flat out vec3 g_flat_front;
 flat out vec3 g_flat_back;
 
 vec3 base_color(int i, int face) {
-  if (u_base_source == 1) return texelFetch(u_face_colors, face).rgb;
-  if (u_base_source == 2) return v[i].color;
+  if (u_base_source == 1) return to_pipeline(texelFetch(u_face_colors, face).rgb);
+  if (u_base_source == 2) return to_pipeline(v[i].color);
   return u_material_color;
 }
 
@@ -215,7 +324,7 @@ void main() {
   if (u_face_order) face = texelFetch(u_order, face).r;
   vec3 flat_front = vec3(1.0), flat_back = vec3(1.0);
   if (u_mode == 0) {
-    vec3 base = u_base_source == 2 ? (v[0].color + v[1].color + v[2].color) / 3.0 : base_color(0, face);
+    vec3 base = u_base_source == 2 ? to_pipeline((v[0].color + v[1].color + v[2].color) / 3.0) : base_color(0, face);
     vec3 n = normalize((u_normal_matrix * vec4(normalize(cross(v[1].object_position - v[0].object_position, v[2].object_position - v[0].object_position)), 0.0)).xyz);
     vec3 center = (u_model_view * vec4((v[0].object_position + v[1].object_position + v[2].object_position) / 3.0, 1.0)).xyz;
     flat_front = apply(light(n, center), base);
@@ -236,7 +345,7 @@ void main() {
 #else
   for (int i = 0; i < 3; ++i) {
 #endif
-    vec3 base = u_unlit_vertex_colors ? v[i].color : base_color(i, face);
+    vec3 base = u_unlit_vertex_colors ? to_pipeline(v[i].color) : base_color(i, face);
     g.front = g.back = base;
     if (u_mode == 1 && u_lit) {
       g.front = clamp(base * v[i].diffuse + v[i].specular, 0.0, 1.0);
@@ -261,7 +370,8 @@ void main() {
 )";
 
 // The pixel kernels (raster/shade_mesh-inl.h): Flat, FlatTex, Smooth, SmoothTex and
-// the Phong family, and the object id of the draw.
+// the Phong family, and the object id of the draw; the output as the frame's pipeline
+// says (finish: raster/output-inl.h).
 const char* const kMeshFragment = R"(
 in G {
   INTERP vec3 eye;
@@ -300,7 +410,7 @@ void main() {
     if (u_env) base = mix(base, texture(u_env_map, vec2(0.5) + vec2(0.5, -0.5) * n.xy).rgb, u_env_mix);
     c = apply(light(n, g.eye), base);
   }
-  o_color = vec4(clamp(c, 0.0, 1.0), 1.0);
+  o_color = vec4(finish(c), 1.0);
   o_id = u_object_id;
 }
 )";
@@ -352,10 +462,120 @@ GLuint build_program(const std::string& vertex, const std::string& geometry, con
 
 GLuint build_mesh_program(bool affine, int primitive) {
   const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") +
-                           "\n#define PRIMITIVE " + std::to_string(primitive) + "\n";
-  if (primitive == 3) return build_program(head + kLightingGlsl + kMeshVertexInputs + kMeshVertexDirect, "", head + kLightingGlsl + kMeshFragment);
-  return build_program(head + kLightingGlsl + kMeshVertexInputs + kMeshVertex, head + kLightingGlsl + kMeshGeometry,
-                       head + kLightingGlsl + kMeshFragment);
+                           "\n#define PRIMITIVE " + std::to_string(primitive) + "\n" + kLightingGlsl + kColorGlsl;
+  if (primitive == 3) return build_program(head + kMeshVertexInputs + kMeshVertexDirect, "", head + kMeshFragment);
+  return build_program(head + kMeshVertexInputs + kMeshVertex, head + kMeshGeometry, head + kMeshFragment);
+}
+
+namespace {
+
+// The Pbr kernels' vertex inputs (triangle/mesh_job.cpp's pbr_corner): eye normal and
+// position, the material's uv set, the eye-space tangent and its handedness, the vertex
+// colour (in the pipeline's space) and alpha.
+const char* const kPbrVertex = R"(
+layout(location = 4) in vec2 a_uv1;
+layout(location = 5) in vec4 a_tangent;
+layout(location = 6) in float a_alpha;
+uniform bool u_uv1;
+out P {
+  INTERP vec3 eye;
+  INTERP vec3 normal;
+  INTERP vec2 uv;
+  INTERP vec4 tangent;
+  INTERP vec4 color;
+} g;
+void main() {
+  gl_Position = u_mvp * vec4(a_position, 1.0);
+  g.eye = (u_model_view * vec4(a_position, 1.0)).xyz;
+  g.normal = normalize((u_normal_matrix * vec4(a_normal, 0.0)).xyz);
+  g.uv = u_uv1 ? a_uv1 : a_uv;
+  vec3 t = (u_model_view * vec4(a_tangent.xyz, 0.0)).xyz;
+  g.tangent = vec4(dot(t, t) > 0.0 ? normalize(t) : t, a_tangent.w < 0.0 ? -1.0 : 1.0);
+  g.color = vec4(to_pipeline(a_color), a_alpha);
+}
+)";
+
+// raster/shade_pbr-inl.h's PbrShader and pbr_kernel: base colour (factor x vertex colour
+// x texture), the normal through the normal map in the tangent frame (a back face of a
+// double-sided material flips the whole frame), metallic and roughness (B and G),
+// occlusion, emission, each texture through its own KHR_texture_transform; MASK
+// discards under the cut-off, BLEND leaves the mixing to GL's blending (over, in the
+// output's encoding).
+const char* const kPbrFragment = R"(
+in P {
+  INTERP vec3 eye;
+  INTERP vec3 normal;
+  INTERP vec2 uv;
+  INTERP vec4 tangent;
+  INTERP vec4 color;
+} g;
+uniform bool u_two_sided;
+uniform bool u_ortho;
+uniform bool u_vertex_colors;
+uniform bool u_tangents;
+uniform vec4 u_base;
+uniform vec4 u_pbr;  // metallic, roughness, normal scale, occlusion strength
+uniform vec3 u_emissive;
+uniform bool u_unlit;
+uniform int u_alpha_mode;  // AlphaMode: 0 opaque, 1 mask, 2 blend
+uniform float u_alpha_cutoff;
+// The textures: base colour, metallic-roughness, normal, occlusion, emissive; each
+// one's uv map as two rows (u' = a u + b v + c, v' = d u + e v + f).
+uniform sampler2D u_base_map, u_mr_map, u_normal_map, u_occlusion_map, u_emissive_map;
+uniform bool u_has_map[5];
+uniform vec3 u_map_uv[10];
+uniform uint u_object_id;
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out uint o_id;
+
+vec2 map_uv(int i) { return vec2(dot(u_map_uv[2 * i], vec3(g.uv, 1.0)), dot(u_map_uv[2 * i + 1], vec3(g.uv, 1.0))); }
+
+void main() {
+  vec3 c = u_base.rgb;
+  float alpha = u_base.a;
+  if (u_vertex_colors) c *= g.color.rgb, alpha *= g.color.a;
+  if (u_has_map[0]) {
+    vec4 t = texture(u_base_map, map_uv(0));
+    c *= t.rgb, alpha *= t.a;
+  }
+  if (u_alpha_mode == 1 && alpha < u_alpha_cutoff) discard;
+  if (!u_unlit) {
+    bool back = u_two_sided && !gl_FrontFacing;
+    vec3 n = normalize(g.normal);
+    if (back) n = -n;
+    if (u_tangents && u_has_map[2]) {
+      vec3 t = texture(u_normal_map, map_uv(2)).rgb * 2.0 - 1.0;
+      t.xy *= u_pbr.z;
+      vec3 tan = back ? -g.tangent.xyz : g.tangent.xyz;
+      tan = normalize(tan - n * dot(n, tan));
+      float w = (g.tangent.w < 0.0) != back ? -1.0 : 1.0;
+      vec3 bit = w * cross(n, tan);
+      n = normalize(tan * t.x + bit * t.y + n * t.z);
+    }
+    float metallic = u_pbr.x, roughness = u_pbr.y;
+    if (u_has_map[1]) {
+      vec4 t = texture(u_mr_map, map_uv(1));
+      metallic *= t.b, roughness *= t.g;
+    }
+    float ao = 1.0;
+    if (u_has_map[3]) ao = u_pbr.w * (texture(u_occlusion_map, map_uv(3)).r - 1.0) + 1.0;
+    vec3 view = u_ortho ? vec3(0.0, 0.0, 1.0) : normalize(-g.eye);
+    c = pbr_light(n, view, g.eye, c, metallic, roughness, ao);
+    vec3 e = u_emissive;
+    if (u_has_map[4]) e *= texture(u_emissive_map, map_uv(4)).rgb;
+    c += e;
+  }
+  o_color = vec4(finish(c), u_alpha_mode == 2 ? clamp(alpha, 0.0, 1.0) : 1.0);
+  o_id = u_object_id;
+}
+)";
+
+}  // namespace
+
+GLuint build_pbr_program(bool affine) {
+  const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") + "\n" +
+                           kLightingGlsl + kColorGlsl;
+  return build_program(head + kMeshVertexInputs + kPbrVertex, "", head + kPbrGlsl + kPbrFragment);
 }
 
 // Pre-transformed primitives with OpenGL 1.x's per-fragment state (primitives.hpp, the
@@ -483,6 +703,23 @@ void main() {
 )";
   static const char* const outputs[] = {"o_diffuse", "o_specular"};
   return link({compile(GL_VERTEX_SHADER, vs)}, outputs, 2);
+}
+
+GLuint build_pbr_test_program() {
+  const std::string vs = std::string(kVersion) + kLightingGlsl + kPbrGlsl + R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_view;
+layout(location = 3) in vec3 a_base;
+layout(location = 4) in vec3 a_material;  // metallic, roughness, occlusion
+out vec3 o_color;
+void main() {
+  o_color = pbr_light(a_normal, a_view, a_position, a_base, a_material.x, a_material.y, a_material.z);
+  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+}
+)";
+  static const char* const outputs[] = {"o_color"};
+  return link({compile(GL_VERTEX_SHADER, vs)}, outputs, 1);
 }
 
 }  // namespace velocity::gpu

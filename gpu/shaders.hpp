@@ -1,8 +1,9 @@
 // The GLSL programs of the GPU backend: one source for every mesh shading variant
 // (flat, Gouraud, Phong, unlit, wireframe, points; textures and sphere environment
-// maps), selected by uniforms, and the lighting model of src/shading/lighting.hpp
-// written once in GLSL (kLightingGlsl). The unit test GpuLighting.GlslIsTheScalarModel
-// holds the two to each other on random inputs.
+// maps), selected by uniforms, a second for glTF's metallic-roughness PBR; the lighting
+// model of src/shading/lighting.hpp written once in GLSL (kLightingGlsl), and the Pbr
+// kernel's BRDF (kPbrGlsl). The unit tests GpuLighting.GlslIsTheScalarModel and
+// PbrGlslIsTheKernelModel hold them to the CPU's on random inputs.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -17,6 +18,13 @@ inline constexpr int kMaxLights = 16;
 // light() and apply() of shading/lighting.hpp, term for term, in GLSL.
 extern const char* const kLightingGlsl;
 
+// raster/shade_pbr-inl.h's BRDF in GLSL (pbr_light), on kLightingGlsl's lights.
+extern const char* const kPbrGlsl;
+
+// The frame's colour pipeline in GLSL: to_pipeline() (geometry::pipeline_color) and
+// finish() (raster/output-inl.h: exposure, tone map, sRGB encoding).
+extern const char* const kColorGlsl;
+
 // What the mesh program's `u_mode` selects (the CPU's kernel families, raster/).
 enum Mode : int { kFlat = 0, kSmooth = 1, kPhong = 2, kSolid = 3 /* wireframe, points, replace: one colour */ };
 // Where a corner's base colour comes from (triangle/mesh_job.cpp's base_color).
@@ -30,11 +38,19 @@ GLuint build_program(const std::string& vertex, const std::string& geometry, con
 // shader), 3 triangles without one (Gouraud, Phong, unlit: no per-face colour).
 GLuint build_mesh_program(bool affine, int primitive);
 
+// The program for Shading::Pbr materials (no geometry stage: nothing per face).
+GLuint build_pbr_program(bool affine);
+
 // The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
 GLuint build_batch_program();
 
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.
 GLuint build_lighting_test_program();
+
+// For the test: a vertex shader that evaluates pbr_light() at `a_position` with normal
+// `a_normal`, direction to the eye `a_view`, base colour `a_base` and (metallic,
+// roughness, occlusion) `a_material` into the transform-feedback output `o_color`.
+GLuint build_pbr_test_program();
 
 }  // namespace velocity::gpu

@@ -2,27 +2,35 @@
 # Packs what a benchmark needs into one tarball, to measure on another x86-64 Linux
 # machine that has none of it installed (no network, another distribution, more cores),
 # with every shared library it loads except glibc's own (that machine's glibc must be
-# 2.36 or newer). Two parts, each small enough to travel alone:
+# 2.36 or newer). Three parts, each small enough to travel alone:
 #   render  the built `velocity` and Mesa's llvmpipe with ../shared's glref
 #   python  the built `velocity`, Debian's Python 3.11 with numpy and Dask, the Velocity
 #           package, and the batch benchmark's models from Debian's assimp-testmodels
+#   gpu     the built `velocity`, libvelocity-gpu with libepoxy and libglvnd's EGL and
+#           OpenGL dispatch, and scripts/bench_gpu.sh; the GPU's own EGL vendor (NVIDIA's
+#           libEGL_nvidia, Mesa's) must be that machine's: bench_gpu.sh says if it is not
 #
-#   scripts/bundle.sh render|python [OUT.tar.xz]   (default .bundle/velocity-PART.tar.xz)
+#   scripts/bundle.sh render|python|gpu [OUT.tar.xz]   (default .bundle/velocity-PART.tar.xz)
 #
 # On the other machine, from a copy of the repository:
 #   mkdir -p /tmp/vb && tar -xJf velocity-render.tar.xz -C /tmp/vb && source /tmp/vb/env.sh
 #   scripts/scaling.sh --threads "1 2 4 8 16"       (VELOCITY and GLREF point into the bundle)
 #   python3.11 python/bench/bench_batch.py --build "$VELOCITY_BUILD" --workers 1,2,4,8   (python)
+#   bench_gpu.sh                                     (gpu: the CPU and GPU backends' table)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 part="${1:-}"
-[[ "$part" == render || "$part" == python ]] || { echo "usage: scripts/bundle.sh render|python [OUT.tar.xz]" >&2; exit 2; }
+[[ "$part" == render || "$part" == python || "$part" == gpu ]] || { echo "usage: scripts/bundle.sh render|python|gpu [OUT.tar.xz]" >&2; exit 2; }
 out="${2:-$root/.bundle/velocity-$part.tar.xz}"
 stage="$(mktemp -d)"
 trap 'rm -rf "$stage"' EXIT
 
 # Binaries and the Python package, from the build tree.
-cmake --build "$root/build" --target velocity_cli velocity_python >/dev/null
+if [[ $part == gpu ]]; then
+  cmake --build "$root/build" --target velocity_cli velocity-gpu >/dev/null
+else
+  cmake --build "$root/build" --target velocity_cli velocity_python >/dev/null
+fi
 mkdir -p "$stage/bin" "$stage/build" "$stage/lib"
 cp "$root/build/velocity" "$stage/bin/"
 ln -s ../bin/velocity "$stage/build/velocity"
@@ -30,6 +38,12 @@ if [[ $part == render ]]; then
   # shellcheck source=lib/against_llvmpipe.sh
   source "$root/scripts/lib/against_llvmpipe.sh"  # builds glref if it is not there
   cp "$glref" "$stage/bin/"
+elif [[ $part == gpu ]]; then
+  cp "$root/build/gpu/libvelocity-gpu.so" "$stage/lib/"
+  cp "$root/scripts/bench_gpu.sh" "$stage/bin/"
+  # libepoxy opens these at run time (ldd below does not see them): libglvnd's EGL and
+  # OpenGL front ends, which load whichever vendor that machine's driver installs.
+  for l in libEGL.so.1 libGLdispatch.so.0 libOpenGL.so.0; do cp -L "/usr/lib/x86_64-linux-gnu/$l" "$stage/lib/"; done
 else
   mkdir -p "$stage/build/python" "$stage/py/usr/bin" "$stage/py/usr/lib"
   cp -r "$root/build/python/velocity" "$stage/build/python/"
@@ -71,6 +85,7 @@ export LD_LIBRARY_PATH="$b/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export PATH="$b/bin:$b/py/usr/bin:$PATH"
 [[ -d "$b/py" ]] && export PYTHONHOME="$b/py/usr" PYTHONPATH="$b/build/python:$b/py/dist" PYTHONNOUSERSITE=1
 export VELOCITY="$b/bin/velocity" GLREF="$b/bin/glref" VELOCITY_BUILD="$b/build"
+[[ -f "$b/lib/libvelocity-gpu.so" ]] && export VELOCITY_GPU_LIBRARY="$b/lib/libvelocity-gpu.so"
 [[ -d "$b/assimp" ]] && mkdir -p /usr/share/assimp && cp -rn "$b/assimp/models" /usr/share/assimp/ 2>/dev/null
 true
 EOF

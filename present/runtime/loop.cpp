@@ -132,8 +132,12 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   int mode = -1;  // index into kScreenModes once F2 is pressed; 4 = the window's size
   int asked_mode = -1;  // the last mode the program asked for
 
-  Renderer renderer(std::max(width, 1), std::max(height, 1));
+  Renderer renderer(std::max(width, 1), std::max(height, 1), o.backend);
   renderer.options.threads = o.threads;
+  if (o.backend != BackendChoice::Cpu && !o.quiet) {
+    std::printf("backend=%s (%s)\n", renderer.stats().backend, renderer.stats().backend_reason);
+    std::fflush(stdout);
+  }
   InputState input;
   std::vector<InputEvent> events;
   LoopResult result;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "runtime/program.hpp"
+#include "velocity/renderer.hpp"
 #include "runtime/script.hpp"
 
 namespace velocity::realtime {
@@ -51,6 +52,9 @@ struct LoopOptions {
   bool overlay = true;         // frame rate and frame time in the corner (F3 toggles)
   double linger = 0;           // after the last frame keep the window up this long (s)
   int threads = 0;             // rasterizer threads (0: every core)
+  // What draws (docs/gpu.md): the GPU backend renders offscreen and the frame is read
+  // back and presented as the CPU's is.
+  BackendChoice backend = BackendChoice::Cpu;
   Synth* synth = nullptr;      // where the program's sound goes, if anywhere
   bool quiet = false;          // no statistics line at exit
 };

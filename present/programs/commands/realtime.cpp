@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "runtime/loop.hpp"
@@ -33,6 +34,10 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_flag("--window-at-origin", a.at_origin, "Put the window at the screen's top-left corner");
   cmd->add_option("--linger", a.linger, "After the last frame, keep the window open this many seconds");
   cmd->add_option("--threads", a.threads, "Threads rasterizing tiles (0: every core)");
+  cmd->add_option("--backend", a.backend,
+                  "What draws: cpu, gpu (OpenGL 3.3 through EGL, the frame read back and shown) or auto (a hardware "
+                  "GPU, else cpu)")
+      ->capture_default_str();
 }
 
 void keep_settings(realtime::Shell& shell, const RealtimeArgs& a, bool replaying) {
@@ -63,6 +68,9 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
   lo.overlay = !a.no_overlay;
   lo.linger = a.linger;
   lo.threads = a.threads;
+  const std::optional<BackendChoice> backend = parse_backend(a.backend);
+  if (!backend) throw Error("--backend: expected cpu|gpu|auto, got '" + a.backend + "'");
+  lo.backend = *backend;
 
   // Ctrl+C and SIGTERM finish the frame in progress and the recording, then end.
   realtime::install_stop_signals();

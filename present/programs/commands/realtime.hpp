@@ -26,6 +26,7 @@ struct RealtimeArgs {
   bool at_origin = false;
   double linger = 0;
   int threads = 0;
+  std::string backend = "cpu";  // --backend: cpu, gpu or auto (docs/gpu.md)
   bool ends_itself = false;  // the program ends on its own (a replay): a run nobody sees may take it
 };
 
