@@ -13,6 +13,7 @@
 #include <memory>
 #include <new>
 
+#include "api_entry.hpp"
 #include "context.hpp"
 #include "pixels.hpp"
 
@@ -26,36 +27,8 @@ using velocity::gl::load_column_major;
 
 namespace {
 
-// Runs f on the current context now (never recorded).
-template <class F>
-void now(F&& f) {
-  Context* c = current();
-  if (!c) return;
-  try {
-    f(*c);
-  } catch (const std::exception&) {
-    c->error(GL_OUT_OF_MEMORY);
-  }
-}
-
-// Runs f on the current context, or records it into the list being compiled.
-template <class F>
-void compiled(F&& f) {
-  Context* c = current();
-  if (!c) return;
-  try {
-    if (c->compiling()) {
-      c->record(ListCommand(f));
-      if (!c->compile_and_execute()) return;
-    }
-    f(*c);
-  } catch (const std::exception&) {
-    c->error(GL_OUT_OF_MEMORY);
-  }
-}
-
-#define NOW(...) now([&](Context& c) { __VA_ARGS__; })
-#define LIST(...) compiled([=](Context& c) { __VA_ARGS__; })
+using velocity::gl::entry::compiled;
+using velocity::gl::entry::now;
 
 // GL's integer-to-float conversions for colours and normals.
 float b2f(GLbyte v) { return (2.0f * v + 1.0f) / 255.0f; }
@@ -472,11 +445,7 @@ void glTexEnvf(GLenum target, GLenum pname, GLfloat v) {
   LIST(c.tex_env(target, pname, p.data()));
 }
 void glTexEnvi(GLenum target, GLenum pname, GLint v) { glTexEnvf(target, pname, float(v)); }
-void glPixelStorei(GLenum pname, GLint v) {
-  NOW(if (c.in_begin_error()) return; if (pname != GL_UNPACK_ALIGNMENT && pname != GL_PACK_ALIGNMENT) return c.error(GL_INVALID_ENUM);
-      if (v != 1 && v != 2 && v != 4 && v != 8) return c.error(GL_INVALID_VALUE);
-      (pname == GL_UNPACK_ALIGNMENT ? c.unpack_alignment : c.pack_alignment) = v);
-}
+void glPixelStorei(GLenum pname, GLint v) { NOW(c.pixel_store(pname, v)); }
 
 // --- vertex arrays --------------------------------------------------------------
 

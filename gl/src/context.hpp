@@ -25,6 +25,8 @@
 //   lists.cpp         display lists
 //   queries.cpp       glGet*, glIsEnabled
 //   read_pixels.cpp   glReadPixels
+//   raster_pos.cpp    glRasterPos, glWindowPos
+//   draw_pixels.cpp   glBitmap, glDrawPixels, glCopyPixels, glPixelZoom, glPixelStore
 #pragma once
 
 #include <GL/gl.h>
@@ -33,6 +35,7 @@
 #include <memory>
 #include <vector>
 
+#include "pixel_ops.hpp"
 #include "state.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
@@ -183,7 +186,31 @@ class Context {
   void read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels);
   void finish();  // glFinish and glFlush: run the frame, colour to the caller's buffer
 
+  // --- raster position and pixel rectangles (raster_pos.cpp, draw_pixels.cpp)
+  PixelOpsState pixels;
+  void raster_pos(Vec4 v);
+  void window_pos(Vec3 v);
+  // `bits`: unpack_bitmap's, or null (the raster position only moves).
+  void bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove, float ymove, const std::vector<uint8_t>* bits);
+  // `image`: unpack_pixels' for `format`.
+  void draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector<Vec4>& image);
+  void copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type);
+  void pixel_zoom(float x, float y);
+  void pixel_store(GLenum pname, double value);
+  bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
+
  private:
+  // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
+  // triangles: the fragments whose centres it covers, with its colour and depth.
+  struct WindowRect {
+    float x0, y0, x1, y1, z;
+    Vec4 color;
+  };
+  void draw_window_rects(const std::vector<WindowRect>& rects);
+  void zoomed_rects(GLsizei w, GLsizei h, const Vec4* image, bool depth, std::vector<WindowRect>& out);
+  Vec4 lit_front(const Vec4& eye);  // (vertex.cpp) the current normal's lit front colour
+
+
   // --- frames and batches (frame.cpp)
   struct Pending {
     PrimitiveKind kind = PrimitiveKind::Triangles;

@@ -65,6 +65,13 @@ void Context::prepare_lighting() {
                                        lighting_.materials[back ? 1 : 0], back ? -n : n, eye));
 }
 
+Vec4 Context::lit_front(const Vec4& eye) {
+  prepare_lighting();
+  Vec3 n = transform_.normal_matrix.transform_vector(normal_);
+  if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
+  return lit(eye, n, false);
+}
+
 void Context::vertex(Vec4 v) {
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
   Vertex out;
