@@ -27,6 +27,7 @@
 //   read_pixels.cpp   glReadPixels
 //   raster_pos.cpp    glRasterPos, glWindowPos
 //   draw_pixels.cpp   glBitmap, glDrawPixels, glCopyPixels, glPixelZoom, glPixelStore
+//   clip_planes.cpp   glClipPlane, GL_CLIP_PLANEi
 #pragma once
 
 #include <GL/gl.h>
@@ -35,6 +36,7 @@
 #include <memory>
 #include <vector>
 
+#include "clip_planes.hpp"
 #include "pixel_ops.hpp"
 #include "state.hpp"
 #include "velocity/primitives.hpp"
@@ -49,6 +51,7 @@ struct Vertex {
   Vec4 front, back;  // lit colours (back only with two-sided lighting)
   Vec4 tex;
   float fog = 0;
+  float clip_distance[kMaxClipPlanes] = {};  // to the enabled user clip planes
 };
 
 class Context {
@@ -199,7 +202,16 @@ class Context {
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
 
+  // --- user clip planes (clip_planes.cpp)
+  UserClipState user_clip;
+  void clip_plane(GLenum plane, const double* eq);
+  bool get_clip_plane(GLenum plane, double* eq);  // false: not a plane's name
+  bool enable_clip_plane(GLenum cap, bool on);     // false: not a plane's name
+  bool outside_clip_planes(const Vec4& eye) const;
+
  private:
+  void update_clip_planes();
+
   // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
   // triangles: the fragments whose centres it covers, with its colour and depth.
   struct WindowRect {
@@ -220,10 +232,11 @@ class Context {
     // opened (a width or height of 0 here is an empty viewport: nothing is drawn).
     Viewport viewport;
     float point_size = 1, line_width = 1;
+    uint32_t clip_planes = 0;  // user clip distances per vertex (in clip_distance)
     std::vector<Vec4> position, color, texcoord;
-    std::vector<float> fog;
+    std::vector<float> fog, clip_distance;
     std::vector<uint32_t> index;
-    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), index.clear(); }
+    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear(); }
   };
   void ensure_frame();
   void submit_pending();

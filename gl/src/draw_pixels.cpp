@@ -21,10 +21,13 @@ void Context::draw_window_rects(const std::vector<WindowRect>& rects) {
   // The batch maps clip space onto the whole framebuffer with the depth range [0, 1];
   // the context's viewport and depth range are put back after, and the next primitive
   // opens a batch of its own.
+  // User clip planes apply to the raster position, not to its fragments.
   const Box viewport = transform_.viewport;
   const float near = transform_.depth_near, far = transform_.depth_far;
+  const uint32_t clip_planes = user_clip.count;
   transform_.viewport = {0, 0, width_, height_};
   transform_.depth_near = 0, transform_.depth_far = 1;
+  user_clip.count = 0;
   changed();
   const float sx = 2.0f / float(width_), sy = 2.0f / float(height_);
   const RasterPosition& rp = pixels.raster;
@@ -43,6 +46,7 @@ void Context::draw_window_rects(const std::vector<WindowRect>& rects) {
   }
   transform_.viewport = viewport;
   transform_.depth_near = near, transform_.depth_far = far;
+  user_clip.count = clip_planes;
   changed();
 }
 

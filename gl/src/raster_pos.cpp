@@ -14,10 +14,11 @@ void Context::raster_pos(Vec4 v) {
   const Vec4 eye = transform_.modelview.back() * v;
   const Vec4 clip = transform_.projection.back() * eye;
   RasterPosition& r = pixels.raster;
-  // Outside the view volume (NaN included) the position is invalid; the rest is kept.
+  // Outside the view volume or a user clip plane (NaN included) the position is
+  // invalid; the rest is kept.
   const bool inside = clip.x >= -clip.w && clip.x <= clip.w && clip.y >= -clip.w && clip.y <= clip.w &&
                       clip.z >= -clip.w && clip.z <= clip.w;
-  if (!inside) {
+  if (!inside || outside_clip_planes(eye)) {
     r.valid = false;
     return;
   }

@@ -1,7 +1,7 @@
 // Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
-// arguments (GLU's quadrics, the raster position and pixel rectangles and, where
-// libvelocity-glut is built, GLUT's shapes among them: they need no window). The
-// input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
+// arguments (GLU's quadrics, the raster position and pixel rectangles, user clip planes
+// and, where libvelocity-glut is built, GLUT's shapes among them: they need no window).
+// The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
 // without depth), then up to 512 calls among ~130 GL, GLU and OSMesa entry points,
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
@@ -162,6 +162,26 @@ void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, fl
       break;
     }
     default: glRasterPos3f(a, b, c), glBitmap(w, h, 0, 0, a, b, reinterpret_cast<const GLubyte*>(image.data())); break;
+  }
+}
+
+// User clip planes: any equation (NaN and infinities too), any plane name, enabled and
+// disabled between and inside glBegin/glEnd, read back.
+void clip_call(Bytes& in, float a, float b, float c, float d) {
+  const GLenum plane = GL_CLIP_PLANE0 + GLenum(in.below(8)) - (in.u8() & 1);
+  switch (in.below(3)) {
+    case 0: {
+      const GLdouble eq[4] = {a, b, c, d};
+      glClipPlane(plane, in.u8() & 1 ? eq : nullptr);
+      break;
+    }
+    case 1: (in.u8() & 1 ? glEnable : glDisable)(plane); break;
+    default: {
+      GLdouble eq[4];
+      glGetClipPlane(plane, eq);
+      glIsEnabled(plane);
+      break;
+    }
   }
 }
 
@@ -349,6 +369,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
         quadric_call(in, quadric, a, b, c, d, e1);
         pixel_call(in, pixels, a, b, c, d, e1, e2);
+        clip_call(in, a, b, c, d);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif

@@ -632,6 +632,16 @@ GLAPI void GLAPIENTRY glWindowPos3fv(const GLfloat *v);
 GLAPI void GLAPIENTRY glWindowPos3iv(const GLint *v);
 GLAPI void GLAPIENTRY glWindowPos3sv(const GLshort *v);
 
+/* User clip planes */
+#define GL_CLIP_PLANE0 0x3000
+#define GL_CLIP_PLANE1 0x3001
+#define GL_CLIP_PLANE2 0x3002
+#define GL_CLIP_PLANE3 0x3003
+#define GL_CLIP_PLANE4 0x3004
+#define GL_CLIP_PLANE5 0x3005
+GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
+GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
+
 /* Vertex arrays */
 GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
