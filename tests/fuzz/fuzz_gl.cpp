@@ -382,6 +382,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // Still a working context: finish any open primitive and list, draw, read back.
   glEnd();
   glEndList();
+  // What is pending is drawn first: its errors (the GPU backend refuses user clip
+  // planes, GL_OUT_OF_MEMORY) are the sequence's, not the final draw's.
+  glFinish();
   glGetError();
   glViewport(0, 0, w, h);
   glClearColor(0, 0, 1, 1);
