@@ -296,6 +296,75 @@ static void depth_and_copy(void) {
   conf_frame("depth_copy");
 }
 
+/* glPixelStore's unpack state applies to textures too: a 5 x 4 texture taken out of a
+ * 9-pixel-wide image (row length, skipped rows and pixels, alignment 2), and
+ * gluBuild2DMipmaps under the same state. (Not byte-swapped floats: Mesa 22's
+ * glTexImage2D reads them unswapped.) */
+static void texture_unpack(void) {
+  static GLubyte big[9 * 7 * 3 + 16];
+  int i;
+  for (i = 0; i < 9 * 7 * 3; ++i) big[i] = (GLubyte)(i * 37 % 251);
+  ortho();
+  glClear(GL_COLOR_BUFFER_BIT);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 9);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 5, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, big);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glEnable(GL_TEXTURE_2D);
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0), glVertex2i(4, 4);
+  glTexCoord2f(1, 0), glVertex2i(54, 4);
+  glTexCoord2f(1, 1), glVertex2i(54, 44);
+  glTexCoord2f(0, 1), glVertex2i(4, 44);
+  glEnd();
+  gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGB, 4, 4, GL_RGB, GL_UNSIGNED_BYTE, big);
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0), glVertex2i(4, 50);
+  glTexCoord2f(1, 0), glVertex2i(52, 50);
+  glTexCoord2f(1, 1), glVertex2i(52, 78);
+  glTexCoord2f(0, 1), glVertex2i(4, 78);
+  glEnd();
+  glDisable(GL_TEXTURE_2D);
+  values("glu_kept_row_length", GL_UNPACK_ROW_LENGTH, 1);
+  values("glu_kept_alignment", GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  conf_frame("texture_unpack");
+  /* glReadPixels under the pack state: row length, skips, byte-swapped floats. */
+  {
+    static GLubyte buf[7 * 4 * 3];
+    GLfloat fl[4];
+    char k[40];
+    memset(buf, 0xAB, sizeof buf);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 7);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 1);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 2);
+    glReadPixels(10, 10, 3, 2, GL_RGB, GL_UNSIGNED_BYTE, buf);
+    for (i = 0; i < 7 * 4 * 3; i += 5) {
+      snprintf(k, sizeof k, "packed_%d", i);
+      conf_value(k, buf[i]);
+    }
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    glReadPixels(70, 10, 1, 1, GL_RGBA, GL_FLOAT, fl);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (i = 0; i < 4; ++i) {
+      GLubyte* b = (GLubyte*)&fl[i];
+      snprintf(k, sizeof k, "swapped_float_%d", i);
+      conf_value(k, b[0] * 16777216.0 + b[1] * 65536.0 + b[2] * 256.0 + b[3]);
+    }
+  }
+}
+
 static void raster_state(void) {
   static const GLfloat pos[4] = {1, 2, 3, 0}, diffuse[4] = {0.8f, 0.4f, 0.2f, 1};
   ortho();
@@ -421,6 +490,7 @@ int main(int argc, char** argv) {
   draw_pixels();
   zoom();
   depth_and_copy();
+  texture_unpack();
   raster_state();
   misuse();
   return conf_end();
