@@ -2,7 +2,7 @@
  * includes the result). The glyphs are freeglut's: Debian's libglut (freeglut 3)
  * exports its font data (fgFontFixed8x13 ... fgStrokeMonoRoman) as data symbols, so
  * they are read from the installed library rather than typed into this project. The
- * structures below are freeglut 3's (src/fg_internal.h: SFG_Font, SFG_StrokeFont and
+ * structures below are freeglut 3's (its fg_internal.h: SFG_Font, SFG_StrokeFont and
  * their parts), which only describe that data; no freeglut function is called.
  *
  *   font_tables OUTPUT.inc */
