@@ -103,11 +103,12 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
 void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { LIST(c.copy_pixels(x, y, w, h, type)); }
 void glPixelZoom(GLfloat x, GLfloat y) { LIST(c.pixel_zoom(x, y)); }
 void glPixelStoref(GLenum pname, GLfloat v) {
-  // GL rounds a float count to the nearest integer (a boolean: non-zero is true).
+  // A float count is rounded to the nearest integer, halves away from zero as Mesa
+  // does (-0.5 is -1: GL_INVALID_VALUE); a boolean is true when non-zero.
   NOW(c.pixel_store(pname, pname == GL_UNPACK_SWAP_BYTES || pname == GL_UNPACK_LSB_FIRST || pname == GL_PACK_SWAP_BYTES ||
                                    pname == GL_PACK_LSB_FIRST
                                ? double(v != 0)
-                               : std::nearbyint(double(v))));
+                               : std::round(double(v))));
 }
 
 }  // extern "C"
