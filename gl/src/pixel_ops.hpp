@@ -40,8 +40,8 @@ struct PixelOpsState {
 };
 
 // Whether glDrawPixels takes `format` and `type`: GL_NO_ERROR, GL_INVALID_ENUM (an
-// unknown one, or GL_BITMAP, which only index formats take) or GL_INVALID_OPERATION (a
-// packed type with a format of another number of components).
+// unknown one, GL_COLOR_INDEX, or GL_BITMAP, which only the index formats take) or
+// GL_INVALID_OPERATION (a packed type with a format of another number of components).
 GLenum check_draw_format(GLenum format, GLenum type);
 
 // The width x height pixels at `data`, laid out as `store` says, converted to floats

@@ -105,7 +105,8 @@ size_t row_offset(const PixelStore& s, int width, int row, size_t group, size_t 
 }  // namespace
 
 GLenum check_draw_format(GLenum format, GLenum type) {
-  if (type == GL_BITMAP) return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
+  // (GL_BITMAP is for the index formats, which pGL's glDrawPixels does not take.)
+  if (type == GL_BITMAP) return GL_INVALID_ENUM;
   const int n = components(format);
   const Packed p = packed(type);
   if (!n || (!p.bytes && !type_bytes(type))) return GL_INVALID_ENUM;
