@@ -882,6 +882,8 @@ GLint gl_wrap(Wrap w) {
 // A batch of pre-transformed primitives (pGL's path), drawn at once in submission order
 // (painter's mode does not sort them). Vertex arrays are streamed per draw.
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
+  // (User clip planes are the CPU clipper's alone so far: refused rather than ignored.)
+  if (batch.clip_planes) throw Error("the GPU backend does not clip to user clip planes (glClipPlane) yet");
   stats_.objects++;
   if (primitives == 0) return;
   commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});

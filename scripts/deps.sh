@@ -35,7 +35,8 @@
 #   libglvnd-dev                     its interface to libglvnd (glvnd/libglxabi.h) and the system's
 #                                    libGL its tests link, as any GLX program does
 #   mesa-utils                       glxgears, run unmodified on the GLX vendor (gl/glx/tests)
-#   freeglut3-dev                    freeglut, whose shapes GLUT's are compared with (gl/glut/tests/shapes_test.py)
+#   freeglut3-dev                    freeglut: its font data become GLUT's fonts (gl/glut/font_tables.c);
+#                                    GLUT's shapes and fonts are compared with its (gl/glut/tests/shapes_test.py)
 #   libwaffle-1-0, python3-mako,     what piglit's GL 1.x tests need to run (scripts/piglit.sh unpacks
 #   python3-six                      piglit itself from its package, without its 2 GB of shader tests)
 #   chromium                         the glTF oracle: three.js in headless Chromium, WebGL on SwiftShader

@@ -91,6 +91,9 @@ void Renderer::draw(const PrimitiveBatch& batch, const PixelState& state) {
   if (!in_frame_) throw Error("Renderer::draw called outside begin_frame/end_frame");
   const uint32_t k = batch.kind == PrimitiveKind::Triangles ? 3 : batch.kind == PrimitiveKind::Lines ? 2 : 1;
   if (batch.vertex_count && !batch.position) throw Error("Renderer::draw: a primitive batch needs positions");
+  if (batch.clip_planes > kMaxUserClipPlanes || (batch.clip_planes && batch.vertex_count && !batch.clip_distance))
+    throw Error("Renderer::draw: " + std::to_string(batch.clip_planes) + " user clip planes (at most " +
+                std::to_string(kMaxUserClipPlanes) + ", each with a distance per vertex)");
   if (batch.indices && batch.index_count % k)
     throw Error("Renderer::draw: " + std::to_string(batch.index_count) + " indices do not make whole primitives of " +
                 std::to_string(k) + " vertices");

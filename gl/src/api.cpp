@@ -13,6 +13,7 @@
 #include <memory>
 #include <new>
 
+#include "api_entry.hpp"
 #include "context.hpp"
 #include "pixels.hpp"
 
@@ -26,36 +27,8 @@ using velocity::gl::load_column_major;
 
 namespace {
 
-// Runs f on the current context now (never recorded).
-template <class F>
-void now(F&& f) {
-  Context* c = current();
-  if (!c) return;
-  try {
-    f(*c);
-  } catch (const std::exception&) {
-    c->error(GL_OUT_OF_MEMORY);
-  }
-}
-
-// Runs f on the current context, or records it into the list being compiled.
-template <class F>
-void compiled(F&& f) {
-  Context* c = current();
-  if (!c) return;
-  try {
-    if (c->compiling()) {
-      c->record(ListCommand(f));
-      if (!c->compile_and_execute()) return;
-    }
-    f(*c);
-  } catch (const std::exception&) {
-    c->error(GL_OUT_OF_MEMORY);
-  }
-}
-
-#define NOW(...) now([&](Context& c) { __VA_ARGS__; })
-#define LIST(...) compiled([=](Context& c) { __VA_ARGS__; })
+using velocity::gl::entry::compiled;
+using velocity::gl::entry::now;
 
 // GL's integer-to-float conversions for colours and normals.
 float b2f(GLbyte v) { return (2.0f * v + 1.0f) / 255.0f; }
@@ -461,7 +434,7 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
           w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level) || border != 0 ||
           !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
-      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.unpack_alignment, pixels);
+      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
       const bool given = pixels != nullptr;
@@ -475,7 +448,7 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
           w > velocity::gl::kMaxTextureSize || h > velocity::gl::kMaxTextureSize)
           return c.error(GL_INVALID_VALUE);
-      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.unpack_alignment, pixels);
+      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);
       if (!pixels) return;
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
@@ -524,11 +497,7 @@ void glTexEnvf(GLenum target, GLenum pname, GLfloat v) {
   LIST(c.tex_env(target, pname, p.data()));
 }
 void glTexEnvi(GLenum target, GLenum pname, GLint v) { glTexEnvf(target, pname, float(v)); }
-void glPixelStorei(GLenum pname, GLint v) {
-  NOW(if (c.in_begin_error()) return; if (pname != GL_UNPACK_ALIGNMENT && pname != GL_PACK_ALIGNMENT) return c.error(GL_INVALID_ENUM);
-      if (v != 1 && v != 2 && v != 4 && v != 8) return c.error(GL_INVALID_VALUE);
-      (pname == GL_UNPACK_ALIGNMENT ? c.unpack_alignment : c.pack_alignment) = v);
-}
+void glPixelStorei(GLenum pname, GLint v) { NOW(c.pixel_store(pname, v)); }
 
 // --- vertex arrays --------------------------------------------------------------
 

@@ -32,6 +32,9 @@
 //   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
 //                     glClearStencil, its queries and its part of PixelState
+//   raster_pos.cpp    glRasterPos, glWindowPos
+//   draw_pixels.cpp   glBitmap, glDrawPixels, glCopyPixels, glPixelZoom, glPixelStore
+//   clip_planes.cpp   glClipPlane, GL_CLIP_PLANEi
 #pragma once
 
 #include <GL/gl.h>
@@ -40,6 +43,8 @@
 #include <memory>
 #include <vector>
 
+#include "clip_planes.hpp"
+#include "pixel_ops.hpp"
 #include "state.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
@@ -54,6 +59,7 @@ struct Vertex {
   Vec4 tex;
   float fog = 0;
   bool edge = true;  // glEdgeFlag: does a polygon's boundary edge start here?
+  float clip_distance[kMaxClipPlanes] = {};  // to the enabled user clip planes
 };
 
 class Context {
@@ -230,7 +236,40 @@ class Context {
   void read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels);
   void finish();  // glFinish and glFlush: run the frame, colour to the caller's buffer
 
+  // --- raster position and pixel rectangles (raster_pos.cpp, draw_pixels.cpp)
+  PixelOpsState pixels;
+  void raster_pos(Vec4 v);
+  void window_pos(Vec3 v);
+  // `bits`: unpack_bitmap's, or null (the raster position only moves).
+  void bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove, float ymove, const std::vector<uint8_t>* bits);
+  // `image`: unpack_pixels' for `format`.
+  void draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector<Vec4>& image);
+  void copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type);
+  void pixel_zoom(float x, float y);
+  void pixel_store(GLenum pname, double value);
+  bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
+
+  // --- user clip planes (clip_planes.cpp)
+  UserClipState user_clip;
+  void clip_plane(GLenum plane, const double* eq);
+  bool get_clip_plane(GLenum plane, double* eq);  // false: not a plane's name
+  bool enable_clip_plane(GLenum cap, bool on);     // false: not a plane's name
+  bool outside_clip_planes(const Vec4& eye) const;
+
  private:
+  void update_clip_planes();
+
+  // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
+  // triangles: the fragments whose centres it covers, with its colour and depth.
+  struct WindowRect {
+    float x0, y0, x1, y1, z;
+    Vec4 color;
+  };
+  void draw_window_rects(const std::vector<WindowRect>& rects);
+  void zoomed_rects(GLsizei w, GLsizei h, const Vec4* image, bool depth, std::vector<WindowRect>& out);
+  Vec4 lit_front(const Vec4& eye);  // (vertex.cpp) the current normal's lit front colour
+
+
   // --- frames and batches (frame.cpp)
   struct Pending {
     PrimitiveKind kind = PrimitiveKind::Triangles;
@@ -240,10 +279,11 @@ class Context {
     // opened (a width or height of 0 here is an empty viewport: nothing is drawn).
     Viewport viewport;
     float point_size = 1, line_width = 1;
+    uint32_t clip_planes = 0;  // user clip distances per vertex (in clip_distance)
     std::vector<Vec4> position, color, texcoord;
-    std::vector<float> fog;
+    std::vector<float> fog, clip_distance;
     std::vector<uint32_t> index;
-    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), index.clear(); }
+    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear(); }
   };
   void ensure_frame();
   void submit_pending();

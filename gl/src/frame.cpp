@@ -83,6 +83,8 @@ void Context::submit_pending() {
   b.viewport = kept.viewport;
   b.point_size = kept.point_size;
   b.line_width = kept.line_width;
+  b.clip_planes = kept.clip_planes;
+  b.clip_distance = kept.clip_planes ? kept.clip_distance.data() : nullptr;
   if (kept.viewport.width == 0 || kept.viewport.height == 0) return;  // nothing is drawn in an empty viewport
   renderer_->draw(b, kept.state);
   frame_vertices_ += kept.index.size();
@@ -237,6 +239,7 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
     pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};
     pending_.point_size = std::max(1.0f, raster_.point_size);
     pending_.line_width = std::max(1.0f, raster_.line_width);
+    pending_.clip_planes = user_clip.count;
     have_pending_ = true;
     if (++pending_gen_ == 0) {  // wrapped: forget every old mark
       for (Emitted& e : emitted_) e = {};
@@ -260,6 +263,7 @@ void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
   p.color.push_back(color);
   if (p.state.texture.texture) p.texcoord.push_back(v.tex);
   if (p.state.fog) p.fog.push_back(v.fog);
+  for (uint32_t k = 0; k < p.clip_planes; ++k) p.clip_distance.push_back(v.clip_distance[k]);
 }
 
 }  // namespace velocity::gl

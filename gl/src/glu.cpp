@@ -136,16 +136,24 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
   if (target != GL_TEXTURE_2D) return GLU_INVALID_ENUM;
   if (width < 1 || height < 1 || width > 65536 || height > 65536) return GLU_INVALID_VALUE;
   if (!velocity::gl::Context::base_format(internalFormat)) return GLU_INVALID_VALUE;
-  GLint alignment = 4;
-  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  // The caller's unpack state reads `data`; GLU's own uploads are tightly packed, with
+  // the caller's state put back after (as Mesa's GLU does).
+  static const GLenum kUnpack[6] = {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS,
+                                    GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST};
+  GLint saved[6] = {4, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &saved[i]);
+  velocity::gl::PixelStore store;
+  store.alignment = saved[0], store.row_length = saved[1], store.skip_rows = saved[2], store.skip_pixels = saved[3];
+  store.swap_bytes = saved[4] != 0;
   try {
-    auto texels = velocity::gl::unpack_rgba(format, type, width, height, alignment, data);
+    auto texels = velocity::gl::unpack_rgba(format, type, width, height, store, data);
     if (!texels) return GLU_INVALID_ENUM;
     const int w = std::min(nearest_power(width), velocity::gl::kMaxTextureSize);
     const int h = std::min(nearest_power(height), velocity::gl::kMaxTextureSize);
     velocity::Texture::Level level{w, h, std::move(*texels)};
     if (w != width || h != height) level.texels = scale(level.texels, width, height, w, h);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    static const GLint kPacked[6] = {4, 0, 0, 0, 0, 0};
+    for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], kPacked[i]);
     // Below level 0 the sides are powers of two, each level exactly half the one above:
     // the box filter over each 2x2 block is the engine's mip-map builder.
     for (int l = 0;; ++l) {
@@ -154,7 +162,7 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
       if (level.width == 1 && level.height == 1) break;
       level = velocity::next_mip_level(level);
     }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
   } catch (const std::exception&) {
     return GLU_OUT_OF_MEMORY;
   }

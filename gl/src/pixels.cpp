@@ -16,8 +16,8 @@ int format_components(GLenum format) {
   }
 }
 
-std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height, int alignment,
-                                                 const void* data) {
+std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height,
+                                                 const PixelStore& store, const void* data) {
   const int comps = format_components(format);
   if (!comps) return std::nullopt;
   size_t tsize;
@@ -28,9 +28,15 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
   }
   std::vector<uint32_t> out(size_t(width) * size_t(height), 0xff000000u);
   if (!data) return out;
-  const size_t align = size_t(std::max(alignment, 1));
-  const size_t row_bytes = (size_t(width) * comps * tsize + align - 1) / align * align;
-  const uint8_t* src = static_cast<const uint8_t*>(data);
+  // GL 1.5 section 3.6.4: rows of GL_UNPACK_ROW_LENGTH pixels (or width), padded to the
+  // alignment unless a component is as large; skipped rows and pixels first.
+  const size_t align = size_t(std::max(store.alignment, 1));
+  const size_t length = size_t(store.row_length > 0 ? store.row_length : width);
+  size_t row_bytes = length * comps * tsize;
+  if (tsize < align) row_bytes = (row_bytes + align - 1) / align * align;
+  const uint8_t* src = static_cast<const uint8_t*>(data) + size_t(store.skip_rows) * row_bytes +
+                       size_t(store.skip_pixels) * comps * tsize;
+  const bool swap = store.swap_bytes && tsize > 1;
   if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
     // The common upload is already the texels' layout (byte 0 red): rows copied whole.
     for (int y = 0; y < height; ++y)
@@ -45,8 +51,10 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
         if (type == GL_UNSIGNED_BYTE) {
           c[k] = p[k];
         } else {
+          uint8_t bytes[4];
+          for (int i = 0; i < 4; ++i) bytes[i] = p[4 * k + (swap ? 3 - i : i)];
           float f;
-          std::memcpy(&f, p + 4 * k, 4);
+          std::memcpy(&f, bytes, 4);
           c[k] = f > 0 ? uint32_t(std::lround(std::min(f, 1.0f) * 255.0f)) : 0u;  // NaN reads 0
         }
       }

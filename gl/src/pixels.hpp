@@ -1,4 +1,4 @@
-// Client pixel data (glTexImage2D's format and type, GL_UNPACK_ALIGNMENT) to RGBA8.
+// Client pixel data (glTexImage2D's format and type, glPixelStore's unpack state) to RGBA8.
 #pragma once
 
 #include <GL/gl.h>
@@ -7,15 +7,18 @@
 #include <optional>
 #include <vector>
 
+#include "pixel_ops.hpp"
+
 namespace velocity::gl {
 
 // Components per pixel of `format`, or 0 for a format glTexImage2D does not take.
 int format_components(GLenum format);
 
-// The width x height pixels at `data` as RGBA8 texels (byte 0 red), rows `alignment`
-// bytes aligned. nullopt: a format or type that is not supported (GL_INVALID_ENUM).
-// The caller has bounded width and height.
-std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height, int alignment,
-                                                 const void* data);
+// The width x height pixels at `data` as RGBA8 texels (byte 0 red), laid out as
+// `store` says (row length, skipped rows and pixels, alignment, byte swapping).
+// nullopt: a format or type that is not supported (GL_INVALID_ENUM). The caller has
+// bounded width and height.
+std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height,
+                                                 const PixelStore& store, const void* data);
 
 }  // namespace velocity::gl

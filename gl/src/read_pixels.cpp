@@ -64,9 +64,16 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
     sbuf.resize(size_t(width_) * size_t(height_));
     renderer_->read_stencil(sbuf.data());
   }
+  // glPixelStore's pack state (GL 1.5 section 4.3.2): rows of GL_PACK_ROW_LENGTH pixels
+  // (or w), padded to the alignment unless a component is as large; skipped rows and
+  // pixels first; bytes swapped for components of 2 and 4 bytes.
+  const PixelStore& pk = this->pixels.pack;
   const size_t align = size_t(std::max(pack_alignment, 1));
-  const size_t row_bytes = (size_t(w) * comps * tsize + align - 1) / align * align;
-  uint8_t* out = static_cast<uint8_t*>(pixels);
+  const size_t length = size_t(pk.row_length > 0 ? pk.row_length : w);
+  size_t row_bytes = length * comps * tsize;
+  if (tsize < align) row_bytes = (row_bytes + align - 1) / align * align;
+  uint8_t* out = static_cast<uint8_t*>(pixels) + size_t(pk.skip_rows) * row_bytes + size_t(pk.skip_pixels) * comps * tsize;
+  const bool swap = pk.swap_bytes && tsize > 1;
   for (GLsizei j = 0; j < h; ++j) {
     const int64_t wy = int64_t(y) + j;
     if (wy < 0 || wy >= height_) continue;
@@ -97,18 +104,21 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
       uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * comps * tsize;
       if (stencil) {  // an index: its value in any type, not scaled
         write_index(sbuf[at], type, dst);
+        if (swap) std::reverse(dst, dst + tsize);
         continue;
       }
       for (int k = 0; k < comps; ++k) {
         if (type == GL_UNSIGNED_BYTE) {
           dst[k] = uint8_t(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
-        } else if (type == GL_FLOAT) {
-          std::memcpy(dst + 4 * k, &c[k], 4);
-        } else if (type != GL_UNSIGNED_INT) {
-          write_normalized(c[k], type, dst + tsize * k);
+        } else if (type != GL_FLOAT && type != GL_UNSIGNED_INT) {
+          uint8_t* d = dst + tsize * k;
+          write_normalized(c[k], type, d);
+          if (swap) std::reverse(d, d + tsize);
         } else {
-          const uint32_t u = uint32_t(std::llround(double(std::clamp(c[k], 0.0f, 1.0f)) * 4294967295.0));
-          std::memcpy(dst + 4 * k, &u, 4);
+          const uint32_t u = type == GL_FLOAT ? 0u : uint32_t(std::llround(double(std::clamp(c[k], 0.0f, 1.0f)) * 4294967295.0));
+          uint8_t bytes[4];
+          std::memcpy(bytes, type == GL_FLOAT ? static_cast<const void*>(&c[k]) : &u, 4);
+          for (int b = 0; b < 4; ++b) dst[4 * k + b] = bytes[swap ? 3 - b : b];
         }
       }
     }

@@ -38,7 +38,7 @@ void Context::end() {
 // and the light model cannot change inside it; materials can).
 void Context::prepare_lighting() {
   lights_used_ = 0;
-  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer);
+  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count;
   if (!lighting_.enabled) return;
   for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
@@ -65,13 +65,24 @@ void Context::prepare_lighting() {
                                        lighting_.materials[back ? 1 : 0], back ? -n : n, eye));
 }
 
+Vec4 Context::lit_front(const Vec4& eye) {
+  prepare_lighting();
+  Vec3 n = transform_.normal_matrix.transform_vector(normal_);
+  if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
+  return lit(eye, n, false);
+}
+
 void Context::vertex(Vec4 v) {
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
   Vertex out;
   out.clip = transform_.mvp * v;
   out.edge = edge_flag_;
-  if (lighting_.enabled || raster_.fog) {
+  if (lighting_.enabled || need_eye_) {
     const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
+    for (uint32_t k = 0; k < user_clip.count; ++k) {
+      const Vec4& p = user_clip.active[k];
+      out.clip_distance[k] = p.x * eye.x + p.y * eye.y + p.z * eye.z + p.w * eye.w;
+    }
     if (lighting_.enabled) {
       Vec3 n = transform_.normal_matrix.transform_vector(normal_);
       if (transform_.normalize || transform_.rescale_normal) n = normalize(n);

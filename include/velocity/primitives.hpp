@@ -137,6 +137,9 @@ struct PixelState {
 
 enum class PrimitiveKind : uint8_t { Points, Lines, Triangles };
 
+// User clip planes a batch may carry (OpenGL's GL_MAX_CLIP_PLANES).
+inline constexpr uint32_t kMaxUserClipPlanes = 6;
+
 // glViewport and glDepthRange in framebuffer pixels, row 0 at the top. A zero width or
 // height means the whole framebuffer.
 struct Viewport {
@@ -162,6 +165,12 @@ struct PrimitiveBatch {
   // Points are size x size squares centred on the vertex, lines `width` pixels thick
   // across their minor axis (OpenGL's aliased wide points and lines), both >= 1.
   float point_size = 1, line_width = 1;
+  // User clip planes (OpenGL's glClipPlane): `clip_planes` (at most kMaxUserClipPlanes)
+  // signed distances per vertex, vertex v's at clip_distance[v * clip_planes + k]. The
+  // clipper keeps the part of each primitive where every distance, interpolated
+  // linearly in clip space, is >= 0; a point with a negative one is dropped.
+  const float* clip_distance = nullptr;
+  uint32_t clip_planes = 0;
   // Triangles are drawn whatever their winding: culling is the front end's decision.
 };
 

@@ -2,6 +2,7 @@
 // per primitive, reject and clip, then set up and bin. Culling, polygon modes and
 // lighting were the front end's work.
 #include <algorithm>
+#include <cmath>
 
 #include "triangle/clip.hpp"
 #include "triangle/setup.hpp"
@@ -46,6 +47,22 @@ class BatchPrimitives {
 
   ScreenVertex to_screen(const Vec4& c) const { return ScreenVertex::window(d_.viewport, c); }
 
+  // Vertex v's user clip distances (PrimitiveBatch::clip_distance), or null without.
+  const float* distances(uint32_t v) const {
+    return b_.clip_planes ? b_.clip_distance + size_t(v) * b_.clip_planes : nullptr;
+  }
+  // The user clip planes vertex v is outside of (bit k: plane k); a NaN distance counts
+  // as outside every plane, so that its primitive is dropped.
+  uint32_t user_code(uint32_t v) const {
+    uint32_t c = 0;
+    const float* d = distances(v);
+    for (uint32_t k = 0; k < b_.clip_planes; ++k) {
+      if (std::isnan(d[k])) return (1u << b_.clip_planes) - 1;
+      if (d[k] < 0) c |= 1u << k;
+    }
+    return c;
+  }
+
   // Varyings of vertex v: RGBA, then s, t, q, then the fog coordinate.
   void varyings(uint32_t v, float* out) const {
     const Vec4 c = b_.color ? b_.color[v] : Vec4{1, 1, 1, 1};
@@ -69,14 +86,24 @@ class BatchPrimitives {
       return;
     }
     if (c0 & c1 & c2 & geometry::kViewPlanes) return void(stats_.triangles_rejected++);
+    const uint32_t u0 = user_code(i0), u1 = user_code(i1), u2 = user_code(i2);
+    if (u0 & u1 & u2) return void(stats_.triangles_rejected++);
+    const uint32_t user = u0 | u1 | u2;
     const int nvar = d_.num_varyings;
     ClipVertex poly[kMaxClippedVertices];
     const uint32_t corners[3] = {i0, i1, i2};
     for (int k = 0; k < 3; ++k) poly[k].src = k, varyings(corners[k], poly[k].var);
-    if (!(any & geometry::kMustClipPlanes)) return emit(screen(i0), screen(i1), screen(i2), poly[0].var, poly[1].var, poly[2].var);
+    if (!(any & geometry::kMustClipPlanes) && !user)
+      return emit(screen(i0), screen(i1), screen(i2), poly[0].var, poly[1].var, poly[2].var);
     stats_.triangles_clipped++;
     for (int k = 0; k < 3; ++k) poly[k].pos = b_.position[corners[k]];
-    const int n = clip_polygon(poly, 3, any, d_.viewport.guard, nvar);
+    int n = 3;
+    if (user) {
+      for (int k = 0; k < 3; ++k)
+        for (uint32_t p = 0; p < b_.clip_planes; ++p) poly[k].dist[p] = distances(corners[k])[p];
+      n = clip_polygon_user(poly, n, user, b_.clip_planes, nvar);
+    }
+    n = clip_polygon(poly, n, any, d_.viewport.guard, nvar);
     if (n < 3) return void(stats_.triangles_culled++);
     ScreenVertex sv[kMaxClippedVertices];
     for (int k = 0; k < n; ++k)
@@ -101,10 +128,22 @@ class BatchPrimitives {
     float va[raster::kMaxVaryings], vb[raster::kMaxVaryings];
     varyings(a, va), varyings(b, vb);
     ScreenVertex sa, sb;
-    if (!((ca | cb) & geometry::kMustClipPlanes)) {
+    const bool user = (user_code(a) | user_code(b)) != 0;
+    if (!((ca | cb) & geometry::kMustClipPlanes) && !user) {
       sa = screen(a), sb = screen(b);
     } else {
       Vec4 pa = b_.position[a], pb = b_.position[b];
+      if (user) {
+        // The user planes first: the segment and its varyings cut to [u0, u1].
+        float u0, u1;
+        if (!clip_line_user(distances(a), distances(b), b_.clip_planes, &u0, &u1)) return;
+        const Vec4 d = pb - pa;
+        pb = pa + d * u1, pa = pa + d * u0;
+        for (int k = 0; k < d_.num_varyings; ++k) {
+          const float from = va[k], to = vb[k];
+          va[k] = from + (to - from) * u0, vb[k] = from + (to - from) * u1;
+        }
+      }
       float t0, t1;
       if (!clip_line(pa, pb, ca | cb, d_.viewport.guard, &t0, &t1)) return;
       for (int k = 0; k < d_.num_varyings; ++k) {
@@ -122,8 +161,10 @@ class BatchPrimitives {
   }
 
   void point(uint32_t v) {
-    // A point whose centre is outside the view volume is dropped whole (OpenGL).
+    // A point whose centre is outside the view volume or a user clip plane is dropped
+    // whole (OpenGL).
     if (codes_[v] & (geometry::kViewPlanes | geometry::kOutNonFinite | geometry::kOutUnsnapped)) return;
+    if (user_code(v)) return;
     float var[raster::kMaxVaryings];
     varyings(v, var);
     const ScreenVertex p = screen(v);

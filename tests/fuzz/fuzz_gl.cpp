@@ -1,9 +1,10 @@
 // Fuzz target: pGL's API (libvelocity-gl) driven by random call sequences with random
-// arguments (GLU's quadrics and, where libvelocity-glut is built, GLUT's shapes among
-// them: they need no window). The input's bytes choose a context (1..96 pixels a side, any OSMesa
-// format, with or without depth and stencil), then up to 512 calls among ~120 GL, GLU and OSMesa
-// entry points, with enums drawn from valid and invalid values and numbers that are
-// often NaN, infinite, huge or negative; glBegin/glEnd nesting, display lists
+// arguments (GLU's quadrics, the raster position and pixel rectangles, user clip planes
+// and, where libvelocity-glut is built, GLUT's shapes among them: they need no window).
+// The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
+// without depth and stencil), then up to 512 calls among ~150 GL, GLU and OSMesa entry points,
+// with enums drawn from valid and invalid values and numbers that are often NaN,
+// infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
 // with indices inside the arrays (the caller's contract), read-back.
 //
@@ -124,6 +125,68 @@ void quadric_call(Bytes& in, GLUquadric*& q, float a, float b, float c, float d,
     case 9: gluPartialDisk(q, a, b, n1, n2, c, d); break;
     case 10: gluDeleteQuadric(q), q = nullptr; break;
     default: gluSphere(nullptr, a, n1, n2), gluQuadricDrawStyle(nullptr, e1); break;
+  }
+}
+
+// The raster position and pixel rectangles: glRasterPos, glWindowPos, glBitmap,
+// glDrawPixels (any format and type, packed ones included), glCopyPixels, glPixelZoom
+// and glPixelStore with random unpack state. Sizes, skips and row lengths stay inside
+// `image` (the caller's contract); zooms and positions are anything.
+void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, float c, float d, GLenum e1, GLenum e2) {
+  static const GLenum formats[] = {GL_RGBA, GL_RGB, GL_BGRA, GL_BGR, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA,
+                                   GL_RED, GL_GREEN, GL_BLUE, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX, GL_COLOR_INDEX};
+  static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT, GL_UNSIGNED_INT, GL_INT,
+                                 GL_FLOAT, GL_BITMAP, GL_UNSIGNED_BYTE_3_3_2, GL_UNSIGNED_BYTE_2_3_3_REV,
+                                 GL_UNSIGNED_SHORT_5_6_5, GL_UNSIGNED_SHORT_5_6_5_REV, GL_UNSIGNED_SHORT_4_4_4_4,
+                                 GL_UNSIGNED_SHORT_4_4_4_4_REV, GL_UNSIGNED_SHORT_5_5_5_1,
+                                 GL_UNSIGNED_SHORT_1_5_5_5_REV, GL_UNSIGNED_INT_8_8_8_8, GL_UNSIGNED_INT_8_8_8_8_REV,
+                                 GL_UNSIGNED_INT_10_10_10_2, GL_UNSIGNED_INT_2_10_10_10_REV};
+  const GLenum format = in.u8() < 230 ? formats[in.below(13)] : e1;
+  const GLenum type = in.u8() < 230 ? types[in.below(20)] : e2;
+  // At most 16 x 16 pixels of 16 bytes, with skips and row lengths below 16: inside the
+  // 64 x 64 x 16-byte image.
+  const int w = in.below(18) - 1, h = in.below(18) - 1;
+  switch (in.below(10)) {
+    case 0: glRasterPos4f(a, b, c, d); break;
+    case 1: glRasterPos2i(in.integer(), in.integer()); break;
+    case 2: glWindowPos3f(a, b, c); break;
+    case 3: glBitmap(w, h, a, b, c, d, in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr); break;
+    case 4: glDrawPixels(w, h, format, type, in.u8() & 1 ? image.data() : nullptr); break;
+    case 5: glCopyPixels(in.integer() % 128, in.integer() % 128, w * (1 + in.below(8)), h, in.u8() & 1 ? GL_COLOR : e1); break;
+    case 6: glPixelZoom(a, b); break;
+    case 7: {
+      static const GLenum counts[] = {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
+      glPixelStorei(counts[in.below(3)], in.below(18) - 1);
+      break;
+    }
+    case 8: {
+      // Any value for the names that cannot move a read past `image` (and a bad name).
+      static const GLenum names[] = {GL_UNPACK_ALIGNMENT, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_PACK_SWAP_BYTES,
+                                     GL_UNPACK_IMAGE_HEIGHT, GL_RGBA};
+      glPixelStoref(names[in.below(6)], in.u8() & 1 ? float(in.below(10) - 1) : a);
+      break;
+    }
+    default: glRasterPos3f(a, b, c), glBitmap(w, h, 0, 0, a, b, reinterpret_cast<const GLubyte*>(image.data())); break;
+  }
+}
+
+// User clip planes: any equation (NaN and infinities too), any plane name, enabled and
+// disabled between and inside glBegin/glEnd, read back.
+void clip_call(Bytes& in, float a, float b, float c, float d) {
+  const GLenum plane = GL_CLIP_PLANE0 + GLenum(in.below(8)) - (in.u8() & 1);
+  switch (in.below(3)) {
+    case 0: {
+      const GLdouble eq[4] = {a, b, c, d};
+      glClipPlane(plane, in.u8() & 1 ? eq : nullptr);
+      break;
+    }
+    case 1: (in.u8() & 1 ? glEnable : glDisable)(plane); break;
+    default: {
+      GLdouble eq[4];
+      glGetClipPlane(plane, eq);
+      glIsEnabled(plane);
+      break;
+    }
   }
 }
 
@@ -365,6 +428,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
           fuzz_check(ww == w && hh == h && bytes == 4);
         }
         quadric_call(in, quadric, a, b, c, d, e1);
+        pixel_call(in, pixels, a, b, c, d, e1, e2);
+        clip_call(in, a, b, c, d);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif
@@ -377,6 +442,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // Still a working context: finish any open primitive and list, draw, read back.
   glEnd();
   glEndList();
+  // What is pending is drawn first: its errors (the GPU backend refuses user clip
+  // planes, GL_OUT_OF_MEMORY) are the sequence's, not the final draw's.
+  glFinish();
   glGetError();
   glViewport(0, 0, w, h);
   glClearColor(0, 0, 1, 1);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""GLUT's shapes against freeglut's.
+"""GLUT's shapes (or fonts: any program written for both) against freeglut's.
 
-    shapes_test.py VELOCITY_EXE FREEGLUT_EXE COMPARE WORKDIR
+    shapes_test.py VELOCITY_EXE FREEGLUT_EXE COMPARE WORKDIR [NAME]
 
 shapes.c built against Velocity's GLUT runs on SDL's dummy video driver; built against
 freeglut and the system's libGL it runs in a window of a private Xvfb, drawn by Mesa
@@ -53,7 +53,8 @@ def main():
     finally:
         server.terminate()
         server.wait(timeout=30)
-    return subprocess.run([compare, "glut_shapes", out_v, out_m, "35"]).returncode
+    name = sys.argv[5] if len(sys.argv) > 5 else "glut_shapes"
+    return subprocess.run([compare, name, out_v, out_m, "35"]).returncode
 
 
 if __name__ == "__main__":

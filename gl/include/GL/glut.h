@@ -146,6 +146,32 @@ void glutWireTetrahedron(void);
 void glutSolidTeapot(double size);
 void glutWireTeapot(double size);
 
+/* Fonts, freeglut's glyphs (gl/glut/fonts.cpp): bitmap fonts drawn with glBitmap at
+ * the raster position, stroke fonts as line strips in model space, 152.38 units high. */
+extern void *glutStrokeRoman, *glutStrokeMonoRoman, *glutBitmap9By15, *glutBitmap8By13, *glutBitmapTimesRoman10,
+    *glutBitmapTimesRoman24, *glutBitmapHelvetica10, *glutBitmapHelvetica12, *glutBitmapHelvetica18;
+#define GLUT_STROKE_ROMAN ((void *)&glutStrokeRoman)
+#define GLUT_STROKE_MONO_ROMAN ((void *)&glutStrokeMonoRoman)
+#define GLUT_BITMAP_9_BY_15 ((void *)&glutBitmap9By15)
+#define GLUT_BITMAP_8_BY_13 ((void *)&glutBitmap8By13)
+#define GLUT_BITMAP_TIMES_ROMAN_10 ((void *)&glutBitmapTimesRoman10)
+#define GLUT_BITMAP_TIMES_ROMAN_24 ((void *)&glutBitmapTimesRoman24)
+#define GLUT_BITMAP_HELVETICA_10 ((void *)&glutBitmapHelvetica10)
+#define GLUT_BITMAP_HELVETICA_12 ((void *)&glutBitmapHelvetica12)
+#define GLUT_BITMAP_HELVETICA_18 ((void *)&glutBitmapHelvetica18)
+void glutBitmapCharacter(void *font, int character);
+void glutBitmapString(void *font, const unsigned char *string);
+int glutBitmapWidth(void *font, int character);
+int glutBitmapLength(void *font, const unsigned char *string);
+int glutBitmapHeight(void *font);
+void glutStrokeCharacter(void *font, int character);
+void glutStrokeString(void *font, const unsigned char *string);
+int glutStrokeWidth(void *font, int character);
+GLfloat glutStrokeWidthf(void *font, int character);
+int glutStrokeLength(void *font, const unsigned char *string);
+GLfloat glutStrokeLengthf(void *font, const unsigned char *string);
+GLfloat glutStrokeHeight(void *font);
+
 /* State */
 int glutGet(GLenum what);
 int glutGetModifiers(void);

@@ -1,0 +1,59 @@
+// The state of GL's pixel operations (the raster position, glPixelZoom, glPixelStore)
+// and the unpacking of client pixel rectangles (glDrawPixels, glBitmap) that
+// raster_pos.cpp and draw_pixels.cpp use. Kept apart from state.hpp: its own GL area.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "velocity/math.hpp"
+
+namespace velocity::gl {
+
+// glRasterPos / glWindowPos's result (GL 1.5 section 2.13).
+struct RasterPosition {
+  Vec4 window{0, 0, 0, 1};  // x, y, z in window coordinates; w: the clip-space w
+  bool valid = true;
+  Vec4 color{1, 1, 1, 1};
+  Vec4 texcoord{0, 0, 0, 1};
+  float distance = 0;  // the eye's distance to it: the fog coordinate of its fragments
+};
+
+// One direction of glPixelStore (GL_UNPACK_* or GL_PACK_*).
+struct PixelStore {
+  GLint row_length = 0, skip_rows = 0, skip_pixels = 0, alignment = 4;
+  GLint image_height = 0, skip_images = 0;  // (3-D images: kept and reported only)
+  bool swap_bytes = false, lsb_first = false;
+};
+
+// glPixelStore's counts are kept below this, so that offsets into client memory are
+// computed without overflow (GL_INVALID_VALUE for a negative one).
+constexpr GLint kMaxPixelStoreCount = GLint(1) << 24;
+
+struct PixelOpsState {
+  RasterPosition raster;
+  float zoom_x = 1, zoom_y = 1;
+  // Their alignments are Context::unpack_alignment's and pack_alignment's, kept in step.
+  PixelStore unpack, pack;
+};
+
+// Whether glDrawPixels takes `format` and `type`: GL_NO_ERROR, GL_INVALID_ENUM (an
+// unknown one, GL_COLOR_INDEX, or GL_BITMAP, which only the index formats take) or
+// GL_INVALID_OPERATION (a packed type with a format of another number of components).
+GLenum check_draw_format(GLenum format, GLenum type);
+
+// The width x height pixels at `data`, laid out as `store` says, converted to floats
+// as GL's pixel transfer does with its default state: RGBA in [0, 1] (a missing colour
+// component 0, a missing alpha 1; luminance to red, green and blue); for
+// GL_DEPTH_COMPONENT the depth in x. Rows bottom first, as given. The format and type
+// are ones check_draw_format accepted; the caller bounds width and height.
+std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
+                                const void* data);
+
+// glBitmap's width x height bits at `data` (GL_BITMAP with `store`'s row length, skips,
+// alignment and bit order): one byte per pixel, 1 where a fragment is drawn.
+std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data);
+
+}  // namespace velocity::gl

@@ -1,0 +1,188 @@
+// Unpacking client pixel rectangles for glDrawPixels and glBitmap: GL's layout rules
+// (GL 1.5 section 3.6.4: row length, skipped rows and pixels, row alignment, byte
+// swapping, bitmap bit order), its formats and types (the packed types of GL 1.2
+// included) and its conversion of components to floats.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "pixel_ops.hpp"
+
+namespace velocity::gl {
+
+namespace {
+
+// Components of a format glDrawPixels takes (0: none).
+int components(GLenum format) {
+  switch (format) {
+    case GL_RGBA: case GL_BGRA: return 4;
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_LUMINANCE: case GL_ALPHA: case GL_RED: case GL_GREEN: case GL_BLUE: case GL_DEPTH_COMPONENT: return 1;
+    default: return 0;
+  }
+}
+
+// A packed type's bytes and its fields' widths, first component first; `rev`: the
+// first component is in the lowest bits (the _REV types), else in the highest.
+struct Packed {
+  int bytes = 0;
+  int bits[4] = {0, 0, 0, 0};
+  int fields = 0;
+  bool rev = false;
+};
+
+Packed packed(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: return {1, {3, 3, 2, 0}, 3, false};
+    case GL_UNSIGNED_BYTE_2_3_3_REV: return {1, {3, 3, 2, 0}, 3, true};
+    case GL_UNSIGNED_SHORT_5_6_5: return {2, {5, 6, 5, 0}, 3, false};
+    case GL_UNSIGNED_SHORT_5_6_5_REV: return {2, {5, 6, 5, 0}, 3, true};
+    case GL_UNSIGNED_SHORT_4_4_4_4: return {2, {4, 4, 4, 4}, 4, false};
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return {2, {4, 4, 4, 4}, 4, true};
+    case GL_UNSIGNED_SHORT_5_5_5_1: return {2, {5, 5, 5, 1}, 4, false};
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return {2, {5, 5, 5, 1}, 4, true};
+    case GL_UNSIGNED_INT_8_8_8_8: return {4, {8, 8, 8, 8}, 4, false};
+    case GL_UNSIGNED_INT_8_8_8_8_REV: return {4, {8, 8, 8, 8}, 4, true};
+    case GL_UNSIGNED_INT_10_10_10_2: return {4, {10, 10, 10, 2}, 4, false};
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return {4, {10, 10, 10, 2}, 4, true};
+    default: return {};
+  }
+}
+
+// Bytes of one component of a plain type (0: not one).
+int type_bytes(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+// An element of `bytes` bytes at p, byte-swapped if asked, as an unsigned integer.
+uint32_t load(const uint8_t* p, int bytes, bool swap) {
+  uint8_t b[4] = {0, 0, 0, 0};
+  for (int i = 0; i < bytes; ++i) b[i] = p[swap ? bytes - 1 - i : i];
+  if (bytes == 1) return b[0];
+  if (bytes == 2) {
+    uint16_t v;
+    std::memcpy(&v, b, 2);
+    return v;
+  }
+  uint32_t v;
+  std::memcpy(&v, b, 4);
+  return v;
+}
+
+// GL 1.5 table 2.9: unsigned c / (2^b - 1), signed (2c + 1) / (2^b - 1).
+float to_float(uint32_t raw, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return float(raw) / 255.0f;
+    case GL_BYTE: return (2.0f * float(int8_t(raw)) + 1.0f) / 255.0f;
+    case GL_UNSIGNED_SHORT: return float(raw) / 65535.0f;
+    case GL_SHORT: return (2.0f * float(int16_t(raw)) + 1.0f) / 65535.0f;
+    case GL_UNSIGNED_INT: return float(double(raw) / 4294967295.0);
+    case GL_INT: return float((2.0 * double(int32_t(raw)) + 1.0) / 4294967295.0);
+    default: {
+      float f;
+      std::memcpy(&f, &raw, 4);
+      return f;
+    }
+  }
+}
+
+// Where row `row` (0 the first after the skipped ones) begins, for groups of `group`
+// bytes made of elements of `element` bytes (GL 1.5 equation 3.11 and the skips).
+size_t row_offset(const PixelStore& s, int width, int row, size_t group, size_t element) {
+  const size_t length = size_t(s.row_length > 0 ? s.row_length : width);
+  const size_t align = size_t(std::max(s.alignment, 1));
+  size_t stride = length * group;
+  if (element < align) stride = (stride + align - 1) / align * align;
+  return (size_t(s.skip_rows) + size_t(row)) * stride + size_t(s.skip_pixels) * group;
+}
+
+}  // namespace
+
+GLenum check_draw_format(GLenum format, GLenum type) {
+  // (GL_BITMAP is for the index formats, which pGL's glDrawPixels does not take.)
+  if (type == GL_BITMAP) return GL_INVALID_ENUM;
+  const int n = components(format);
+  const Packed p = packed(type);
+  if (!n || (!p.bytes && !type_bytes(type))) return GL_INVALID_ENUM;
+  if (p.bytes && (p.fields != n || (n == 3 && format != GL_RGB) || (n == 4 && format == GL_DEPTH_COMPONENT)))
+    return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
+}
+
+std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
+                                const void* data) {
+  std::vector<Vec4> out(size_t(width) * size_t(height), Vec4{0, 0, 0, 1});
+  if (!data) return out;
+  const uint8_t* src = static_cast<const uint8_t*>(data);
+  const int n = components(format);
+  const Packed p = packed(type);
+  const size_t element = size_t(p.bytes ? p.bytes : type_bytes(type));
+  const size_t group = p.bytes ? element : element * size_t(n);
+  const bool swap = store.swap_bytes && element > 1;
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = src + row_offset(store, width, y, group, element);
+    for (int x = 0; x < width; ++x) {
+      const uint8_t* at = row + size_t(x) * group;
+      float c[4] = {0, 0, 0, 1};
+      if (p.bytes) {
+        // Fields from the top bits down (or, _REV, from the bottom up).
+        const uint32_t v = load(at, p.bytes, swap);
+        int shift = p.rev ? 0 : p.bytes * 8;
+        for (int k = 0; k < p.fields; ++k) {
+          const int b = p.bits[k];
+          if (!p.rev) shift -= b;
+          c[k] = float((v >> shift) & ((1u << b) - 1)) / float((1u << b) - 1);
+          if (p.rev) shift += b;
+        }
+      } else {
+        for (int k = 0; k < n; ++k) c[k] = to_float(load(at + size_t(k) * element, int(element), swap), type);
+      }
+      Vec4 rgba{0, 0, 0, 1};
+      switch (format) {
+        case GL_RGBA: rgba = {c[0], c[1], c[2], c[3]}; break;
+        case GL_BGRA: rgba = {c[2], c[1], c[0], c[3]}; break;
+        case GL_RGB: rgba = {c[0], c[1], c[2], 1}; break;
+        case GL_BGR: rgba = {c[2], c[1], c[0], 1}; break;
+        case GL_LUMINANCE_ALPHA: rgba = {c[0], c[0], c[0], c[1]}; break;
+        case GL_LUMINANCE: rgba = {c[0], c[0], c[0], 1}; break;
+        case GL_ALPHA: rgba = {0, 0, 0, c[0]}; break;
+        case GL_RED: rgba = {c[0], 0, 0, 1}; break;
+        case GL_GREEN: rgba = {0, c[0], 0, 1}; break;
+        case GL_BLUE: rgba = {0, 0, c[0], 1}; break;
+        default: rgba = {c[0], 0, 0, 1}; break;  // GL_DEPTH_COMPONENT
+      }
+      // Colours and depth are clamped to [0, 1] after the transfer (NaN reads 0).
+      auto clamp01 = [](float f) { return f > 0 ? (f < 1 ? f : 1.0f) : 0.0f; };
+      out[size_t(y) * size_t(width) + size_t(x)] = {clamp01(rgba.x), clamp01(rgba.y), clamp01(rgba.z), clamp01(rgba.w)};
+    }
+  }
+  return out;
+}
+
+std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data) {
+  std::vector<uint8_t> out(size_t(width) * size_t(height), 0);
+  if (!data) return out;
+  const uint8_t* src = static_cast<const uint8_t*>(data);
+  // Rows of ceil(length / 8) bytes, padded to the alignment; skip_pixels counts bits.
+  const size_t length = size_t(store.row_length > 0 ? store.row_length : width);
+  const size_t align = size_t(std::max(store.alignment, 1));
+  const size_t stride = ((length + 7) / 8 + align - 1) / align * align;
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = src + (size_t(store.skip_rows) + size_t(y)) * stride;
+    for (int x = 0; x < width; ++x) {
+      const size_t bit = size_t(store.skip_pixels) + size_t(x);
+      const uint8_t byte = row[bit / 8];
+      const int shift = store.lsb_first ? int(bit % 8) : 7 - int(bit % 8);
+      out[size_t(y) * size_t(width) + size_t(x)] = uint8_t((byte >> shift) & 1);
+    }
+  }
+  return out;
+}
+
+}  // namespace velocity::gl
