@@ -18,12 +18,9 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   bool known = false;
   const bool enabled = is_enabled(pname, &known);
   if (known) return out = {enabled ? 1.0 : 0.0}, true;
-<<<<<<< HEAD
   if (get_stencil(pname, out)) return true;
   if (get_blend(pname, out, kind)) return true;
-=======
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
->>>>>>> glp2
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -113,19 +110,11 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
       out = {1, double(kMaxPointLineSize)}; return true;
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
     // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
-<<<<<<< HEAD
-    // so a program that asks learns that they are missing (docs/gl.md): clip planes,
-    // evaluators, the selection name stack, pixel maps.
-    case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
-    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_CLIP_PLANES: case GL_MAX_EVAL_ORDER:
-=======
-    // so a program that asks learns that they are missing (docs/gl.md):
-    // evaluators, glPushAttrib and glPushClientAttrib, the selection name stack, pixel maps.
+    // so a program that asks learns that they are missing (docs/gl.md): evaluators,
+    // pixel maps.
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_EVAL_ORDER:
-    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: case GL_MAX_NAME_STACK_DEPTH:
->>>>>>> glp2
     case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
