@@ -30,6 +30,7 @@
 #include "geometry/tangents.hpp"
 #include "gpu_backend.hpp"
 #include "shaders.hpp"
+#include "shading/ggx_albedo.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/error.hpp"
 
@@ -490,6 +491,8 @@ GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
 void GpuBackend::upload_lights(GLuint p) {
   const shading::EyeLights& l = lights_;
   glUniform3f(uniform(p, "u_ambient"), l.ambient.x, l.ambient.y, l.ambient.z);
+  if (const GLint albedo = uniform(p, "u_ggx_albedo[0]"); albedo >= 0)  // PBR programs only
+    glUniform1fv(albedo, shading::kGgxAlbedoSize * shading::kGgxAlbedoSize, shading::ggx_albedo_table());
   glUniform1i(uniform(p, "u_directional_count"), GLint(l.directional.size()));
   glUniform1i(uniform(p, "u_point_count"), GLint(l.point.size()));
   std::vector<Vec3> a, b, c;

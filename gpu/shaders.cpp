@@ -73,14 +73,29 @@ vec3 apply(Terms t, vec3 base) { return base * t.diffuse + t.specular; }
 )";
 
 // raster/shade_pbr-inl.h's BRDF (glTF 2.0 Appendix B) for one surface point, the same
-// terms in the same order with the same clamps: roughness at least 0.0525, N.V at
+// terms in the same order with the same clamps: roughness at least 0.045, N.V at
 // least 1e-4, N.H and V.H saturated, the floors of D's and Vis's denominators; the
+// diffuse share 1 - F of the dielectric's Fresnel; the specular lobe times the
+// multiple-scattering factor M = 1 + f0 (1 / E - 1), E read bilinearly from the same
+// table (u_ggx_albedo: shading/ggx_albedo.hpp's, uploaded with the lights); the
 // ambient is a uniform radiance times c_diff, darkened by occlusion. Lights are
 // kLightingGlsl's uniforms and punctual().
 const char* const kPbrGlsl = R"(
 const float kInvPi = 0.318309886;
+uniform float u_ggx_albedo[256];  // 16 x 16: row j for N.V, column i for roughness
 
-vec3 pbr_add_light(vec3 n, vec3 view, vec3 l, vec3 radiance, vec3 cdiff, vec3 f0, float a2, float nv, float nv_term) {
+float ggx_albedo(float rough, float nv) {
+  float x = clamp(rough * 16.0 - 0.5, 0.0, 15.0), y = clamp(nv * 16.0 - 0.5, 0.0, 15.0);
+  float lx = min(floor(x), 14.0), ly = min(floor(y), 14.0);
+  int at = int(ly) * 16 + int(lx);
+  float fx = x - lx, fy = y - ly;
+  float top = mix(u_ggx_albedo[at], u_ggx_albedo[at + 1], fx);
+  float bottom = mix(u_ggx_albedo[at + 16], u_ggx_albedo[at + 17], fx);
+  return mix(top, bottom, fy);
+}
+
+vec3 pbr_add_light(vec3 n, vec3 view, vec3 l, vec3 radiance, vec3 cdiff, vec3 f0, vec3 ms, float a2, float nv,
+                   float nv_term) {
   float nl = dot(n, l);
   if (nl <= 0.0) return vec3(0.0);
   vec3 h = normalize(l + view);
@@ -90,14 +105,15 @@ vec3 pbr_add_light(vec3 n, vec3 view, vec3 l, vec3 radiance, vec3 cdiff, vec3 f0
   float dist = a2 * kInvPi / max(dn * dn, 1e-12);
   float den = nl * nv_term + nv * sqrt(nl * nl * (1.0 - a2) + a2);
   float spec = 0.5 * dist / max(den, 1e-12);
-  vec3 f = f0 + (1.0 - f0) * q5;  // Schlick
-  return (f * spec + (1.0 - f) * cdiff * kInvPi) * radiance * nl;
+  vec3 f = (f0 + (1.0 - f0) * q5) * ms;  // Schlick, times M
+  float diffuse_share = 0.96 - 0.96 * q5;  // 1 - F of the dielectric
+  return (f * spec + diffuse_share * cdiff * kInvPi) * radiance * nl;
 }
 
 // n and view unit, p the eye-space position; ao the occlusion factor (1: none).
 vec3 pbr_light(vec3 n, vec3 view, vec3 p, vec3 base, float metallic, float roughness, float ao) {
   float metal = clamp(metallic, 0.0, 1.0);
-  float rough = min(max(roughness, 0.0525), 1.0);
+  float rough = min(max(roughness, 0.045), 1.0);
   float a = rough * rough, a2 = a * a;
   float dielectric = 1.0 - metal;
   vec3 cdiff = base * dielectric;
@@ -105,12 +121,14 @@ vec3 pbr_light(vec3 n, vec3 view, vec3 p, vec3 base, float metallic, float rough
   float nv = max(dot(n, view), 1e-4);
   float nv_term = sqrt(nv * nv * (1.0 - a2) + a2);
   vec3 c = cdiff * u_ambient * ao;
+  vec3 ms = vec3(1.0);
+  if (u_directional_count + u_point_count > 0) ms = 1.0 + f0 * (1.0 / ggx_albedo(rough, nv) - 1.0);
   for (int i = 0; i < u_directional_count; ++i)
-    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i], cdiff, f0, a2, nv, nv_term);
+    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i], cdiff, f0, ms, a2, nv, nv_term);
   for (int i = 0; i < u_point_count; ++i) {
     vec3 to_light;
     float att = punctual(i, p, n, to_light);
-    c += pbr_add_light(n, view, to_light, u_point_color[i] * att, cdiff, f0, a2, nv, nv_term);
+    c += pbr_add_light(n, view, to_light, u_point_color[i] * att, cdiff, f0, ms, a2, nv, nv_term);
   }
   return c;
 }

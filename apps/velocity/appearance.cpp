@@ -15,7 +15,7 @@ void add_appearance_options(CLI::App* cmd, AppearanceArgs& a) {
       ->capture_default_str();
   cmd->add_option("--tone-map", a.tone_map, "Tone mapping in the linear pipeline: none|aces|neutral")->capture_default_str();
   cmd->add_option("--exposure", a.exposure, "Linear light is multiplied by this before tone mapping")->capture_default_str();
-  cmd->add_flag("--shadows", a.shadows, "Shadow maps for the lights that cast shadows (directional, spot, point), 3x3 PCF");
+  cmd->add_flag("--shadows", a.shadows, "Shadow maps for the lights that cast shadows (directional, spot, point), bilinear PCF");
   cmd->add_option("--shadow-map-size", a.shadow_map_size, "Side of each shadow map in texels, 16..8192")->capture_default_str();
 }
 

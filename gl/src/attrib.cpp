@@ -22,6 +22,9 @@ void Context::push_attrib(GLbitfield mask) {
   f.env_mode = texture_.env_mode, f.env_color = texture_.env_color;
   f.color = color_, f.texcoord = texcoord_, f.normal = normal_, f.edge_flag = edge_flag_;
   f.list_base = lists_.base;
+  f.raster_pos = pixels.raster;
+  f.zoom_x = pixels.zoom_x, f.zoom_y = pixels.zoom_y;
+  f.user_clip = user_clip;
   attrib_stack_.push_back(std::move(f));
 }
 
@@ -33,7 +36,11 @@ void Context::pop_attrib() {
   const GLbitfield m = f.mask;
   RasterState& r = raster_;
   const RasterState& s = f.raster;
-  if (m & GL_CURRENT_BIT) color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
+  if (m & GL_CURRENT_BIT) {
+    color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
+    pixels.raster = f.raster_pos;
+  }
+  if (m & GL_PIXEL_MODE_BIT) pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y;
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
   if (m & GL_LINE_BIT) r.line_width = s.line_width;
   if (m & GL_POLYGON_BIT) {
@@ -56,6 +63,8 @@ void Context::pop_attrib() {
   if (m & GL_TRANSFORM_BIT) {
     transform_.matrix_mode = f.matrix_mode;
     transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;
+    for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.planes[i] = f.user_clip.planes[i];
+    for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
   }
   if (m & GL_ENABLE_BIT) {
     r.alpha_test = s.alpha_test, r.blend = s.blend, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
@@ -66,6 +75,7 @@ void Context::pop_attrib() {
     transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;
     stencil_.test = f.stencil.test;
     texture_.enabled = f.texture_enabled;
+    for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
   }
   if (m & GL_COLOR_BUFFER_BIT) {
     r.alpha_test = s.alpha_test, r.alpha_func = s.alpha_func, r.alpha_ref = s.alpha_ref;
@@ -85,6 +95,7 @@ void Context::pop_attrib() {
     texture_.env_mode = f.env_mode, texture_.env_color = f.env_color;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;
+  update_clip_planes();
   transform_.derived_dirty = true;
   if (lighting_.color_material) apply_color_material();
   changed();
@@ -96,6 +107,7 @@ void Context::push_client_attrib(GLbitfield mask) {
   ClientAttribFrame f;
   f.mask = mask;
   f.unpack_alignment = unpack_alignment, f.pack_alignment = pack_alignment;
+  f.unpack = pixels.unpack, f.pack = pixels.pack;
   f.arrays = arrays;
   client_attrib_stack_.push_back(f);
 }
@@ -105,7 +117,10 @@ void Context::pop_client_attrib() {
   if (client_attrib_stack_.empty()) return error(GL_STACK_UNDERFLOW);
   const ClientAttribFrame f = client_attrib_stack_.back();
   client_attrib_stack_.pop_back();
-  if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) unpack_alignment = f.unpack_alignment, pack_alignment = f.pack_alignment;
+  if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {
+    unpack_alignment = f.unpack_alignment, pack_alignment = f.pack_alignment;
+    pixels.unpack = f.unpack, pixels.pack = f.pack;
+  }
   if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) arrays = f.arrays;
 }
 

@@ -15,6 +15,8 @@
 #include <memory>
 #include <vector>
 
+#include "clip_planes.hpp"
+#include "pixel_ops.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 #include "velocity/primitives.hpp"
@@ -249,11 +251,15 @@ struct AttribFrame {
   Vec3 normal;
   bool edge_flag = true;
   GLuint list_base = 0;
+  RasterPosition raster_pos;  // GL_CURRENT_BIT
+  float zoom_x = 1, zoom_y = 1;  // GL_PIXEL_MODE_BIT
+  UserClipState user_clip;  // GL_TRANSFORM_BIT (planes and enables), GL_ENABLE_BIT (enables)
 };
 
 struct ClientAttribFrame {
   GLbitfield mask = 0;
   GLint unpack_alignment = 4, pack_alignment = 4;
+  PixelStore unpack, pack;  // every GL_UNPACK_* and GL_PACK_* value
   ArrayState arrays;
 };
 

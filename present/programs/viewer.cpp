@@ -76,6 +76,7 @@ Mesh make_axis(int a, float length, Vec3 color) {
 ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
   options_.ssaa = std::clamp(o_.ssaa, 1, 3);  // what A cycles through
   options_.shadows = o_.shadows;
+  options_.shadow_map_size = o_.shadow_map_size;
   options_.cull_back_faces = true;  // materials decide: loaded models are two-sided (see velocity/view_setup.hpp)
   options_.color = o_.color, options_.tone_map = o_.tone_map, options_.exposure = o_.exposure;
   open(o_.model);

@@ -28,6 +28,7 @@ struct ViewerOptions {
   ToneMap tone_map = ToneMap::None;
   float exposure = 1.0f;
   bool shadows = false;  // to start with (O toggles)
+  int shadow_map_size = 2048;
 };
 
 class ViewerProgram : public Program {

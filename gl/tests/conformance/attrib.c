@@ -216,6 +216,53 @@ int main(int argc, char** argv) {
   glPopClientAttrib();
   error("client_underflow");
 
+  /* The raster position (GL_CURRENT_BIT), the pixel zoom (GL_PIXEL_MODE_BIT), the user
+   * clip planes (GL_TRANSFORM_BIT: equations and enables; GL_ENABLE_BIT: enables) and
+   * the pack/unpack row lengths (GL_CLIENT_PIXEL_STORE_BIT). */
+  {
+    static const GLdouble plane_a[4] = {1, 0, 0, 0.5}, plane_b[4] = {0, -1, 0, 0.25};
+    GLdouble eq[4];
+    glRasterPos2f(0.25f, -0.5f);
+    glPixelZoom(2, -1);
+    glClipPlane(GL_CLIP_PLANE1, plane_a);
+    glEnable(GL_CLIP_PLANE1);
+    glPushAttrib(GL_CURRENT_BIT | GL_PIXEL_MODE_BIT | GL_TRANSFORM_BIT);
+    glRasterPos2f(-0.75f, 0.5f);
+    glPixelZoom(0.5f, 3);
+    glClipPlane(GL_CLIP_PLANE1, plane_b);
+    glDisable(GL_CLIP_PLANE1);
+    glEnable(GL_CLIP_PLANE2);
+    glPopAttrib();
+    getf("raster_position", GL_CURRENT_RASTER_POSITION);
+    getf("zoom_x", GL_ZOOM_X);
+    getf("zoom_y", GL_ZOOM_Y);
+    get("clip1", GL_CLIP_PLANE1);
+    get("clip2", GL_CLIP_PLANE2);
+    glGetClipPlane(GL_CLIP_PLANE1, eq);
+    conf_value("clip1_a", eq[0]);
+    conf_value("clip1_d", eq[3]);
+    glPushAttrib(GL_ENABLE_BIT);
+    glDisable(GL_CLIP_PLANE1);
+    glClipPlane(GL_CLIP_PLANE1, plane_b);
+    glPopAttrib();
+    get("enable_clip1", GL_CLIP_PLANE1);
+    glGetClipPlane(GL_CLIP_PLANE1, eq);
+    conf_value("enable_clip1_kept_b", eq[1]);
+    glDisable(GL_CLIP_PLANE1);
+    glPixelZoom(1, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 3);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 2);
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 7);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 5);
+    glPopClientAttrib();
+    get("client_unpack_row_length", GL_UNPACK_ROW_LENGTH);
+    get("client_pack_skip_rows", GL_PACK_SKIP_ROWS);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    error("pixels_and_planes");
+  }
+
   /* Client state: the pixel store and the vertex arrays. */
   {
     static const GLfloat tri[6] = {-1, -1, 1, -1, 0, 1};

@@ -13,7 +13,6 @@ std::function<int()> add_view_command(CLI::App& app) {
     std::string model;
     bool cull = false, swap_yz = true;
     int ssaa = 1;
-    bool shadows = false;
     std::string shot = "velocity-shot";
     AppearanceArgs appearance;
   };
@@ -25,7 +24,6 @@ std::function<int()> add_view_command(CLI::App& app) {
   cmd->add_option("--ssaa", args->ssaa, "Super-sampling factor 1..3 to start with (A cycles)")
       ->check(CLI::Range(1, 3))
       ->capture_default_str();
-  cmd->add_flag("--shadows", args->shadows, "Shadow maps for the lights that cast shadows, to start with (O toggles)");
   cmd->add_option("--screenshot-prefix", args->shot, "Screenshots (C or F12) go to PREFIX-NNN.png")->capture_default_str();
   add_appearance_options(cmd, args->appearance);
   add_realtime_options(cmd, args->realtime);
@@ -37,7 +35,8 @@ std::function<int()> add_view_command(CLI::App& app) {
     o.load.swap_yz = args->swap_yz;
     o.cull_back_faces = args->cull;
     o.ssaa = args->ssaa;
-    o.shadows = args->shadows;
+    o.shadows = colour.shadows;  // to start with (O toggles)
+    o.shadow_map_size = colour.shadow_map_size;
     o.screenshot_prefix = args->shot;
     o.color = colour.color, o.tone_map = colour.tone_map, o.exposure = colour.exposure;
     realtime::ViewerProgram viewer(o);
