@@ -158,3 +158,32 @@ def test_pyrender_shadow_flags_reach_the_engine(flag, casts):
     assert got["shadows"] and got["cast_shadows"] == casts + [False]
     r.render(scene)
     assert not r._renderer.last_frame["shadows"]
+
+
+def test_pyrender_shadow_flag_darkens_the_floor_under_a_box():
+    # pyrender's SHADOWS_DIRECTIONAL, as a script asks for it: a floor with a block above
+    # it under a light from straight above. The floor under the block is in shadow (only
+    # the ambient light left), the floor beyond it as lit as without the flag.
+    scene = pyrender.Scene(ambient_light=(0.1, 0.1, 0.1), bg_color=(0, 0, 0))
+    floor = np.array([[-3, 0, -3], [3, 0, -3], [3, 0, 3], [-3, 0, 3]], float)
+    scene.add(pyrender.Mesh([pyrender.Primitive(positions=floor, normals=np.tile([0.0, 1.0, 0.0], (4, 1)),
+                                                indices=np.array([[0, 2, 1], [0, 3, 2]]))]))
+    top = np.array([[-0.5, 1, -0.5], [0.5, 1, -0.5], [0.5, 1, 0.5], [-0.5, 1, 0.5]], float)
+    scene.add(pyrender.Mesh([pyrender.Primitive(positions=top, normals=np.tile([0.0, 1.0, 0.0], (4, 1)),
+                                                indices=np.array([[0, 2, 1], [0, 3, 2]]))]))
+    # Seen from above and in front; the light comes from above and to the right, so the
+    # shadow falls to the left of the block, most of it where the camera sees the floor.
+    scene.add(pyrender.PerspectiveCamera(yfov=np.pi / 3.0), pose=velocity.look_at([0, 3, 3], [0, 0, 0]))
+    scene.add(pyrender.DirectionalLight(intensity=3.0), pose=velocity.look_at([4, 5, 0], [0, 0, 0]))
+    r = pyrender.OffscreenRenderer(96, 96)
+    lit, _ = r.render(scene)
+    shadowed, _ = r.render(scene, pyrender.RenderFlags.SHADOWS_DIRECTIONAL)
+    darker = np.abs(lit.astype(int) - shadowed.astype(int)).max(axis=2) > 40
+    assert darker.sum() > 100, "no shadow under the block"
+    # Where the floor is not under the block nothing changes: at most the shadow's edge.
+    changed = np.abs(lit.astype(int) - shadowed.astype(int)).max(axis=2) > 2
+    assert changed.sum() < darker.sum() * 1.3
+    # Left of the block, as the light falls.
+    cols = np.nonzero(darker.any(axis=0))[0]
+    assert cols.mean() < 48
+    r.delete()
