@@ -118,7 +118,7 @@ static void bitmaps(void) {
 }
 
 static void draw_pixels(void) {
-  static GLubyte rgba[13 * 7 * 4], rgb[13 * 7 * 3 + 64], lum[16 * 16];
+  static GLubyte rgba[13 * 7 * 4], rgb[13 * 7 * 3 + 64], lum[16 * 16 * 2]; /* LUMINANCE_ALPHA reads 2 a pixel */
   static GLushort s565[13 * 7], s4444[13 * 7], swapped[13 * 7 * 3];
   static GLuint u8888[13 * 7], u1010[13 * 7];
   static GLfloat f[13 * 7 * 4];
@@ -141,7 +141,7 @@ static void draw_pixels(void) {
   glRasterPos2i(34, 2);
   glDrawPixels(13, 7, GL_BGR, GL_UNSIGNED_BYTE, rgb);
   /* Luminance, alpha-only with blending, red only, a row length and skips. */
-  for (i = 0; i < 16 * 16; ++i) lum[i] = (GLubyte)((i % 16) * 16 + i / 16);
+  for (i = 0; i < 16 * 16 * 2; ++i) lum[i] = (GLubyte)((i % 16) * 16 + (i / 16) % 16);
   glRasterPos2i(50, 2);
   glDrawPixels(16, 16, GL_LUMINANCE, GL_UNSIGNED_BYTE, lum);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 16);
