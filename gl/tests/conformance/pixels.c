@@ -173,6 +173,9 @@ static void draw_pixels(void) {
     swapped[3 * i + 2] = (GLushort)(0x80 << 8 | 0x7f);
     f[4 * i] = p[2] / 255.0f, f[4 * i + 1] = p[0] / 255.0f, f[4 * i + 2] = 1.5f, f[4 * i + 3] = 1;
   }
+  /* Rows of 13 shorts (26 bytes) are packed: at the default alignment of 4 GL would
+   * pad them to 28 and read past these arrays. */
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
   glRasterPos2i(18, 22);
   glDrawPixels(13, 7, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, s565);
   glRasterPos2i(34, 22);
@@ -187,6 +190,7 @@ static void draw_pixels(void) {
   glRasterPos2i(2, 32);
   glDrawPixels(13, 7, GL_RGB, GL_UNSIGNED_SHORT, swapped);
   glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glRasterPos2i(18, 32);
   glDrawPixels(13, 7, GL_RGBA, GL_FLOAT, f);
   /* In a display list: the pixels are taken at glNewList time. */
