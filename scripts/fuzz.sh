@@ -40,7 +40,8 @@ done
 
 build="$root/build-fuzz"
 jobs="${FUZZ_BUILD_JOBS:-2}"
-CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON \
+# C too (GLUT's font tool is C): the fuzzing flags are clang's.
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON \
   -DVELOCITY_WERROR=OFF >/dev/null
 build_targets=("${targets[@]/#/velocity_fuzz_}")
 [[ " ${targets[*]} " == *" assimp "* ]] && build_targets+=(velocity_fuzz_glb_seed)
