@@ -75,6 +75,11 @@ void plan_pbr(const Material& mat, Filter filter, raster::PbrState& p) {
   view(m.occlusion, p.occlusion, p.occlusion_uv);
   view(m.emissive_map, p.emissive_map, p.emissive_uv);
   p.base_uv = uv_affine(mat.texture_uv);
+  if (!m.metallic_roughness) {
+    const float rough = m.roughness >= 0.045f ? std::min(m.roughness, 1.0f) : 0.045f;  // as the kernel clamps it
+    constexpr int n = shading::kGgxAlbedoSize;
+    for (int j = 0; j < n; ++j) p.lost_energy[j] = 1.0f / shading::ggx_albedo(rough, (float(j) + 0.5f) / n) - 1.0f;
+  }
 }
 
 // The uv set a Pbr material's textures read: the base colour texture's, else the

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "framebuffer/framebuffer.hpp"
+#include "shading/ggx_albedo.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/material.hpp"
 #include "velocity/primitives.hpp"
@@ -271,6 +272,10 @@ struct PbrState {
   // The textures (DrawState::texture is the base colour) and their uv maps.
   SamplerView metallic_roughness, normal, occlusion, emissive_map;
   UvAffine base_uv, mr_uv, normal_uv, occlusion_uv, emissive_uv;
+  // Without a metallic-roughness texture the roughness is the factor everywhere:
+  // 1 / E - 1 at N.V = (j + 0.5) / size for it (shading/ggx_albedo.hpp), computed
+  // once a draw by plan_pbr for the kernel's multiple-scattering term.
+  float lost_energy[shading::kGgxAlbedoSize] = {};
 };
 
 // Per-draw parameters the per-pixel kernels need.

@@ -87,14 +87,12 @@ HWY_INLINE VF ggx_albedo(const float* table, VF roughness, VF nv) {
 }
 
 // 1 / E - 1 along N.V for one roughness (a draw without a metallic-roughness texture):
-// the table's rows at that roughness, so a pixel reads two entries, not four, and
-// divides by nothing. Linear in N.V between the rows' centres, clamped at the ends.
+// PbrState::lost_energy, the row plan_pbr computed once for the draw, so a pixel reads
+// two entries, not four, and divides by nothing. Linear in N.V between the rows'
+// centres, clamped at the ends.
 struct LostEnergyRow {
   static constexpr int n = shading::kGgxAlbedoSize;
-  float lost[n];
-  explicit LostEnergyRow(float roughness) {
-    for (int j = 0; j < n; ++j) lost[j] = 1.0f / shading::ggx_albedo(roughness, (float(j) + 0.5f) / n) - 1.0f;
-  }
+  const float* lost;
   HWY_INLINE VF operator()(VF nv) const {
     const DF d;
     const DI di;
@@ -150,7 +148,7 @@ struct PbrShader {
       if (kTangent) use(normal, m.normal, m.normal_uv);
       use(occlusion, m.occlusion, m.occlusion_uv);
       use(emissive, m.emissive_map, m.emissive_uv);
-      if (!mr) lost_row.emplace(m.roughness >= 0.045f ? std::min(m.roughness, 1.0f) : 0.045f);  // as shade() clamps
+      if (!mr) lost_row = LostEnergyRow{m.lost_energy};
     }
   }
 
