@@ -212,6 +212,7 @@ GpuBackend::~GpuBackend() {
     for (GLuint p : pbr_programs_)
       if (p) glDeleteProgram(p);
     glDeleteFramebuffers(1, &fbo_);
+    if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_), glDeleteTextures(1, &shadow_maps_), glDeleteProgram(depth_program_);
     glDeleteRenderbuffers(3, renderbuffers_);
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
@@ -280,6 +281,8 @@ GLint GpuBackend::uniform(GLuint program, const char* name) {
 
 void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
                              const RenderOptions& options) {
+  if (options.shadows && (options.shadow_map_size < 16 || options.shadow_map_size > 8192))
+    throw Error("shadow map size " + std::to_string(options.shadow_map_size) + " is out of range (16..8192)");
   resize(width_, height_, options.ssaa);
   options_ = options;
   stats_ = {};
@@ -295,6 +298,20 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
   flipped_view_projection_ = flip * projection_ * view_;
   view_projection_ = projection_ * view_;
   shading::eye_lights(view_, lights, lights_);
+  // The lights that may cast (CpuBackend::begin_frame): no lights, kDefaultLight's
+  // directional light (given in eye space) casts.
+  casters_.clear();
+  caster_bounds_ = {{}, -1};
+  shadow_lights_.clear();
+  if (options.shadows) frame_lights_ = lights;
+  if (options.shadows && lights.empty()) {
+    const Mat4& v = view_;
+    const Vec3 t = normalize(kDefaultLight.towards);
+    frame_lights_ = {Light::directional({v.m[0][0] * t.x + v.m[1][0] * t.y + v.m[2][0] * t.z,
+                                         v.m[0][1] * t.x + v.m[1][1] * t.y + v.m[2][1] * t.z,
+                                         v.m[0][2] * t.x + v.m[1][2] * t.y + v.m[2][2] * t.z},
+                                        kDefaultLight.diffuse)};
+  }
   if (lights_.directional.size() > size_t(kMaxLights) || lights_.point.size() > size_t(kMaxLights))
     throw Error("the GPU backend takes at most " + std::to_string(kMaxLights) + " directional and " +
                 std::to_string(kMaxLights) + " point lights");
@@ -495,6 +512,7 @@ void GpuBackend::upload_lights(GLuint p) {
     glUniform1fv(albedo, shading::kGgxAlbedoSize * shading::kGgxAlbedoSize, shading::ggx_albedo_table());
   glUniform1i(uniform(p, "u_directional_count"), GLint(l.directional.size()));
   glUniform1i(uniform(p, "u_point_count"), GLint(l.point.size()));
+  upload_shadows(p);
   std::vector<Vec3> a, b, c;
   for (const auto& d : l.directional) a.push_back(d.to_light), b.push_back(d.color);
   if (!a.empty()) {
@@ -519,11 +537,111 @@ void GpuBackend::upload_lights(GLuint p) {
   }
 }
 
+// The frame's shadow maps (CpuBackend::render_shadows): the views of src/shadows.cpp,
+// each drawn into a layer of one depth texture with every caster, depth only, the
+// faces turned towards the light (both for a two-sided draw), in the frame's flipped
+// orientation so that a map's row 0 is the CPU's (kLightingGlsl reads it as the CPU
+// does). Then the frame's framebuffer and state again.
+void GpuBackend::render_shadows() {
+  const int size = options_.shadow_map_size;
+  plan_shadows(frame_lights_, view_, caster_bounds_, size, shadow_lights_);
+  int layers = 0;
+  for (const ShadowLight& l : shadow_lights_) layers += l.faces;
+  if (layers == 0) return;
+  reserve(size_t(size) * size_t(size) * 4 * size_t(layers), "the shadow maps");
+  if (!shadow_fbo_) glGenFramebuffers(1, &shadow_fbo_);
+  if (!depth_program_) depth_program_ = build_depth_program();
+  if (size != shadow_size_ || layers > shadow_layers_) {
+    if (shadow_maps_) glDeleteTextures(1, &shadow_maps_);
+    glGenTextures(1, &shadow_maps_);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, shadow_maps_);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    // Read with texelFetch: one level, no comparison.
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    check_gl("the shadow maps");
+    shadow_size_ = size, shadow_layers_ = layers;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+  glDrawBuffer(GL_NONE), glReadBuffer(GL_NONE);
+  glViewport(0, 0, size, size);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS), glDepthMask(GL_TRUE);
+  glUseProgram(depth_program_);
+  const GLint mvp = uniform(depth_program_, "u_mvp");
+  Mat4 flip;
+  flip.m[1][1] = -1;
+  int layer = 0;
+  for (const ShadowLight& l : shadow_lights_)
+    for (int f = 0; f < l.faces; ++f, ++layer) {
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, shadow_maps_, 0, layer);
+      const float one = 1.0f;
+      glClearBufferfv(GL_DEPTH, 0, &one);
+      const Mat4 view_projection = flip * l.views[f].projection * l.views[f].view;
+      for (const Caster& c : casters_) {
+        if (c.two_sided) glDisable(GL_CULL_FACE);
+        else glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
+        upload_matrix(mvp, view_projection * c.world);
+        glBindVertexArray(c.entry->vao);
+        glDrawElements(GL_TRIANGLES, GLsizei(c.entry->face_of.size() * 3), GL_UNSIGNED_INT, nullptr);
+      }
+    }
+  glBindVertexArray(0);
+  check_gl("the shadow maps");
+  // The frame's framebuffer and state (begin_frame's).
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glViewport(0, 0, width_ * ssaa_, height_ * ssaa_);
+  glDisable(GL_CULL_FACE);
+  if (options_.depth_mode == DepthMode::Painter) glDisable(GL_DEPTH_TEST);
+  glActiveTexture(GL_TEXTURE15);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, shadow_maps_);
+}
+
+// The shadows' uniforms (kLightingGlsl's visibility): which light has which maps, and
+// each map's matrix and texel size.
+void GpuBackend::upload_shadows(GLuint p) {
+  glUniform1i(uniform(p, "u_shadow_maps"), 15);  // (always: unit 0 holds another kind of texture)
+  glUniform1i(uniform(p, "u_shadows"), !shadow_lights_.empty());
+  if (shadow_lights_.empty()) return;
+  std::vector<GLint> directional(lights_.directional.size(), -1), point(lights_.point.size(), -1);
+  std::vector<GLint> first, faces;
+  std::vector<Vec3> position;
+  std::vector<Mat4> eye_to_clip;
+  std::vector<Vec2> texel;
+  for (const ShadowLight& l : shadow_lights_) {
+    (l.directional ? directional : point).at(l.index) = GLint(first.size());
+    first.push_back(GLint(eye_to_clip.size())), faces.push_back(l.faces), position.push_back(l.shadow.position);
+    for (int f = 0; f < l.faces; ++f) {
+      const shading::ShadowMap& m = l.shadow.face[f];
+      eye_to_clip.push_back(m.eye_to_clip), texel.push_back({m.texel, m.perspective ? 1.0f : 0.0f});
+    }
+  }
+  if (!directional.empty()) glUniform1iv(uniform(p, "u_directional_shadow"), GLsizei(directional.size()), directional.data());
+  if (!point.empty()) glUniform1iv(uniform(p, "u_point_shadow"), GLsizei(point.size()), point.data());
+  glUniform1iv(uniform(p, "u_shadow_first"), GLsizei(first.size()), first.data());
+  glUniform1iv(uniform(p, "u_shadow_faces"), GLsizei(faces.size()), faces.data());
+  glUniform3fv(uniform(p, "u_shadow_position"), GLsizei(position.size()), &position[0].x);
+  glUniformMatrix4fv(uniform(p, "u_shadow_eye_to_clip"), GLsizei(eye_to_clip.size()), GL_TRUE, &eye_to_clip[0].m[0][0]);
+  glUniform2fv(uniform(p, "u_shadow_texel"), GLsizei(texel.size()), &texel[0].x);
+  glUniform1i(uniform(p, "u_shadow_size"), shadow_size_);
+}
+
 void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) {
   stats_.objects++;
   stats_.triangles += mesh.triangles.size();
   if (mesh.triangles.empty()) return;
   context_->make_current();  // (a no-op unless another renderer's frame ran on this thread since)
+  if (options_.shadows) {
+    // Every mesh draw casts, seen or not (CpuBackend::draw): both faces for a two-sided material.
+    bool two_sided = material ? material->two_sided : mesh.materials.empty() && default_material_.two_sided;
+    if (!material)
+      for (const Material& mat : mesh.materials) two_sided = two_sided || mat.two_sided;
+    casters_.push_back({&mesh_entry(mesh), world, two_sided || !options_.cull_back_faces});
+    caster_bounds_ = merge_bounds(caster_bounds_, world_bounds(mesh, world));
+  }
   if (geometry::ViewVolume(view_projection_).outside(mesh, world)) return void(stats_.objects_culled++);
   MeshEntry& m = mesh_entry(mesh);
   // Blended (geometry::plan_mesh_draw's d.blend): a slot is Pbr with AlphaMode::Blend.
@@ -553,6 +671,7 @@ void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
 // (CpuBackend::order_blended_draws); in painter's mode, the batches and clears, then
 // every face of the frame sorted (draw_painter).
 void GpuBackend::replay() {
+  if (options_.shadows && !casters_.empty()) render_shadows();
   bool pbr = false;
   for (const MeshDraw& d : mesh_draws_) {
     const size_t slots = d.material ? 1 : 1 + d.mesh->materials.size();

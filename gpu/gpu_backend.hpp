@@ -14,6 +14,7 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "shading/lighting.hpp"
+#include "shadows.hpp"
 #include "velocity/backend.hpp"
 
 namespace velocity::gpu {
@@ -97,6 +98,8 @@ class GpuBackend final : public Backend {
   void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
   void draw_painter();
+  void render_shadows();
+  void upload_shadows(GLuint program);
   void free(MeshEntry& m);
   void evict();
   template <class T>
@@ -135,6 +138,19 @@ class GpuBackend final : public Backend {
   GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[5] = {};
   std::vector<uint32_t> batch_indices_;
   std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
+  // Shadows (RenderOptions::shadows; CpuBackend::render_shadows): every mesh draw of the
+  // frame casts, seen or not; the maps are layers of one depth texture.
+  struct Caster {
+    MeshEntry* entry;
+    Mat4 world;
+    bool two_sided;
+  };
+  std::vector<Light> frame_lights_;
+  std::vector<Caster> casters_;
+  Sphere caster_bounds_{{}, -1};
+  std::vector<ShadowLight> shadow_lights_;
+  GLuint shadow_fbo_ = 0, shadow_maps_ = 0, depth_program_ = 0;
+  int shadow_size_ = 0, shadow_layers_ = 0;
   FrameStats stats_;
   std::chrono::steady_clock::time_point t0_;
 

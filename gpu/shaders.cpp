@@ -26,6 +26,76 @@ uniform vec3 u_specular;               // ks, exponent, cutoff
 
 struct Terms { vec3 diffuse; vec3 specular; };
 
+// shading/shadow.hpp: visibility() and map_visibility(), step for step: the lookup point
+// moved kNormalOffset texels along the normal and kLightOffset towards the light (a
+// texel's world size at the point), projected into the light's map, and the bilinear
+// percentage-closer filter of the four texels around it (window depth, LESS as drawn);
+// outside a map: lit; N.L <= 0: in shadow. A point light's cube picks its face as the
+// CPU does. The maps are the layers of one depth texture, row 0 the CPU's row 0 (drawn
+// with the frame's flipped projection), read with texelFetch: the filter is this code's,
+// not the driver's, so that both backends weigh the same texels the same way.
+const float kNormalOffset = 2.0, kLightOffset = 1.0;
+uniform bool u_shadows;
+uniform int u_directional_shadow[16];  // the light's shadow (an index into u_shadow_*), -1: none
+uniform int u_point_shadow[16];
+uniform int u_shadow_first[4];         // its first map (a layer of u_shadow_maps)
+uniform int u_shadow_faces[4];         // 1, or a point light's 6 (+x, -x, +y, -y, +z, -z)
+uniform vec3 u_shadow_position[4];     // a cube's light, eye space
+uniform mat4 u_shadow_eye_to_clip[24]; // per map: the camera's eye space to the light's clip space
+uniform vec2 u_shadow_texel[24];       // per map: a texel's world size, perspective (0 or 1)
+uniform int u_shadow_size;
+uniform sampler2DArray u_shadow_maps;
+
+float shadow_lit(int map, int x, int y, float z) {
+  return z <= texelFetch(u_shadow_maps, ivec3(x, y, map), 0).r ? 1.0 : 0.0;
+}
+
+float map_visibility(int map, vec3 p, vec3 n, vec3 to_light) {
+  mat4 m = u_shadow_eye_to_clip[map];
+  float w0 = (m * vec4(p, 1.0)).w;
+  float texel = u_shadow_texel[map].y > 0.5 ? u_shadow_texel[map].x * w0 : u_shadow_texel[map].x;
+  vec3 q = p + n * (kNormalOffset * texel) + to_light * (kLightOffset * texel);
+  vec4 c = m * vec4(q, 1.0);
+  if (!(c.w > 0.0)) return 1.0;
+  float s = float(u_shadow_size);
+  float x = (c.x / c.w * 0.5 + 0.5) * s, y = (0.5 - 0.5 * c.y / c.w) * s, z = c.z / c.w * 0.5 + 0.5;
+  if (!(x >= 0.0 && x < s && y >= 0.0 && y < s && z <= 1.0)) return 1.0;
+  float gx = x - 0.5, gy = y - 0.5, fx0 = floor(gx), fy0 = floor(gy);
+  float fx = gx - fx0, fy = gy - fy0;
+  int x0 = max(int(fx0), 0), y0 = max(int(fy0), 0);
+  int x1 = min(int(fx0) + 1, u_shadow_size - 1), y1 = min(int(fy0) + 1, u_shadow_size - 1);
+  float l00 = shadow_lit(map, x0, y0, z), l10 = shadow_lit(map, x1, y0, z);
+  float l01 = shadow_lit(map, x0, y1, z), l11 = shadow_lit(map, x1, y1, z);
+  float top = l00 + (l10 - l00) * fx, bottom = l01 + (l11 - l01) * fx;
+  return top + (bottom - top) * fy;
+}
+
+int cube_face(vec3 v) {
+  vec3 a = abs(v);
+  if (a.x >= a.y && a.x >= a.z) return v.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return v.y >= 0.0 ? 2 : 3;
+  return v.z >= 0.0 ? 4 : 5;
+}
+
+float visibility(int k, vec3 p, vec3 n, vec3 to_light) {
+  if (!(dot(n, to_light) > 0.0)) return 0.0;
+  int first = u_shadow_first[k];
+  if (u_shadow_faces[k] == 1) return map_visibility(first, p, n, to_light);
+  // The face of the point the bias moves the lookup to.
+  int face = first + cube_face(p - u_shadow_position[k]);
+  float texel = u_shadow_texel[face].x * (u_shadow_eye_to_clip[face] * vec4(p, 1.0)).w;
+  vec3 q = p + n * (kNormalOffset * texel) + to_light * (kLightOffset * texel);
+  return map_visibility(first + cube_face(q - u_shadow_position[k]), p, n, to_light);
+}
+
+// A light's visibility factor: 1 where it casts no shadow.
+float directional_visibility(int i, vec3 p, vec3 n) {
+  return u_shadows && u_directional_shadow[i] >= 0 ? visibility(u_directional_shadow[i], p, n, u_directional_to_light[i]) : 1.0;
+}
+float point_visibility(int i, vec3 p, vec3 n, vec3 to_light) {
+  return u_shadows && u_point_shadow[i] >= 0 ? visibility(u_point_shadow[i], p, n, to_light) : 1.0;
+}
+
 void add_light(inout Terms t, vec3 n, vec3 to_light, vec3 color, vec3 to_eye) {
   float nl = dot(n, to_light);
   t.diffuse += color * max(nl, 0.0);
@@ -60,10 +130,11 @@ Terms light(vec3 n, vec3 p) {
   Terms t = Terms(u_ambient, vec3(0.0));
   vec3 to_eye = u_specular.x > 0.0 ? normalize(-p) : vec3(0.0);
   for (int i = 0; i < u_directional_count; ++i)
-    add_light(t, n, u_directional_to_light[i], u_directional_color[i], to_eye);
+    add_light(t, n, u_directional_to_light[i], u_directional_color[i] * directional_visibility(i, p, n), to_eye);
   for (int i = 0; i < u_point_count; ++i) {
     vec3 to_light;
     float att = punctual(i, p, n, to_light);
+    att *= point_visibility(i, p, n, to_light);
     add_light(t, n, to_light, u_point_color[i] * att, to_eye);
   }
   return t;
@@ -124,10 +195,12 @@ vec3 pbr_light(vec3 n, vec3 view, vec3 p, vec3 base, float metallic, float rough
   vec3 ms = vec3(1.0);
   if (u_directional_count + u_point_count > 0) ms = 1.0 + f0 * (1.0 / ggx_albedo(rough, nv) - 1.0);
   for (int i = 0; i < u_directional_count; ++i)
-    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i], cdiff, f0, ms, a2, nv, nv_term);
+    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i] * directional_visibility(i, p, n), cdiff,
+                       f0, ms, a2, nv, nv_term);
   for (int i = 0; i < u_point_count; ++i) {
     vec3 to_light;
     float att = punctual(i, p, n, to_light);
+    att *= point_visibility(i, p, n, to_light);
     c += pbr_add_light(n, view, to_light, u_point_color[i] * att, cdiff, f0, ms, a2, nv, nv_term);
   }
   return c;
@@ -702,6 +775,16 @@ void main() {
   o_id = 0u;
 }
 )";
+
+// A shadow map's depth pass (CpuBackend::render_shadows: the casters' depth, nothing else).
+GLuint build_depth_program() {
+  const std::string vs = std::string(kVersion) + R"(
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_mvp;
+void main() { gl_Position = u_mvp * vec4(a_position, 1.0); }
+)";
+  return build_program(vs, "", std::string(kVersion) + "void main() {}\n");
+}
 
 GLuint build_batch_program() {
   return build_program(std::string(kVersion) + kBatchVertex, "", std::string(kVersion) + kBatchFragment);

@@ -14,6 +14,8 @@ namespace velocity::gpu {
 
 // The most lights a frame may have of each kind (directional, point): uniform arrays.
 inline constexpr int kMaxLights = 16;
+// The shadow maps kLightingGlsl reads: shading::kShadowLights lights, 6 maps for a point light.
+inline constexpr int kMaxShadowMaps = 24;
 
 // light() and apply() of shading/lighting.hpp, term for term, in GLSL.
 extern const char* const kLightingGlsl;
@@ -40,6 +42,9 @@ GLuint build_mesh_program(bool affine, int primitive);
 
 // The program for Shading::Pbr materials (no geometry stage: nothing per face).
 GLuint build_pbr_program(bool affine);
+
+// The depth-only program of the shadow maps (`u_mvp`, positions at location 0).
+GLuint build_depth_program();
 
 // The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
 GLuint build_batch_program();
