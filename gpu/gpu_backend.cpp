@@ -216,7 +216,7 @@ GpuBackend::~GpuBackend() {
     glDeleteRenderbuffers(3, renderbuffers_);
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
-    if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(5, batch_buffers_);
+    if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(6, batch_buffers_);
   } catch (const Error&) {
     // A context that cannot be made current any more: its objects go with it.
   }
@@ -247,11 +247,12 @@ void GpuBackend::resize(int w, int h, int k) {
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, sw, sh);
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[2]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH32F_STENCIL8, sw, sh);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, renderbuffers_[1]);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
+  stencil_used_ = true;  // (read back at the next frame: the new buffer's contents)
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   check_gl("the GPU framebuffer");
   if (status != GL_FRAMEBUFFER_COMPLETE) throw Error("the GPU framebuffer is incomplete at " + std::to_string(sw) + "x" + std::to_string(sh));
@@ -336,6 +337,12 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
   if (start.clear_depth_buffer) {
     const float d = std::clamp(start.depth, 0.0f, 1.0f);
     glClearBufferfv(GL_DEPTH, 0, &d);
+  }
+  glDisable(GL_STENCIL_TEST), glStencilMask(0xff);
+  if (start.clear_stencil_buffer) {
+    const GLint value = start.stencil;
+    glClearBufferiv(GL_STENCIL, 0, &value);
+    stencil_used_ = true;
   }
   glFrontFace(GL_CW);  // (the flip above)
   if (options.depth_mode == DepthMode::Painter) {
@@ -981,6 +988,20 @@ namespace {
 
 GLenum gl_compare(CompareFunc f) { return GL_NEVER + GLenum(f); }  // the same order as GL's enums
 
+GLenum gl_stencil_op(StencilOp op) {
+  switch (op) {
+    case StencilOp::Keep: return GL_KEEP;
+    case StencilOp::Zero: return GL_ZERO;
+    case StencilOp::Replace: return GL_REPLACE;
+    case StencilOp::Increment: return GL_INCR;
+    case StencilOp::Decrement: return GL_DECR;
+    case StencilOp::Invert: return GL_INVERT;
+    case StencilOp::IncrementWrap: return GL_INCR_WRAP;
+    case StencilOp::DecrementWrap: return GL_DECR_WRAP;
+  }
+  return GL_KEEP;
+}
+
 GLenum gl_factor(BlendFactor f) {
   static const GLenum table[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
                                  GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
@@ -1004,8 +1025,10 @@ GLint gl_wrap(Wrap w) {
 // A batch of pre-transformed primitives (pGL's path), drawn at once in submission order
 // (painter's mode does not sort them). Vertex arrays are streamed per draw.
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
-  // (User clip planes are the CPU clipper's alone so far: refused rather than ignored.)
-  if (batch.clip_planes) throw Error("the GPU backend does not clip to user clip planes (glClipPlane) yet");
+  if (batch.clip_planes > kMaxUserClipPlanes)
+    throw Error("a primitive batch has " + std::to_string(batch.clip_planes) + " user clip planes (at most " +
+                std::to_string(kMaxUserClipPlanes) + ")");
+  if (batch.clip_planes && !batch.clip_distance) throw Error("a primitive batch has user clip planes but no clip distances");
   stats_.objects++;
   if (primitives == 0) return;
   commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});
@@ -1033,7 +1056,7 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   if (!batch_program_) {
     batch_program_ = build_batch_program();
     glGenVertexArrays(1, &batch_vao_);
-    glGenBuffers(5, batch_buffers_);
+    glGenBuffers(6, batch_buffers_);
   }
   const GLuint p = batch_program_;
   glUseProgram(p);
@@ -1055,6 +1078,27 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   stream(1, batch.color, n * sizeof(Vec4), 4, {1, 1, 1, 1});
   stream(2, batch.texcoord, n * sizeof(Vec4), 4, {0, 0, 0, 1});
   stream(3, batch.fog, n * sizeof(float), 1, {0, 0, 0, 1});
+  // User clip planes: each vertex's distances, the first four and the other two as two
+  // attributes of one buffer, written to gl_ClipDistance (GL clips where one is < 0,
+  // interpolated linearly in clip space, as the CPU's clipper does).
+  const uint32_t planes = batch.clip_planes;
+  if (planes) {
+    const GLsizei stride = GLsizei(planes * sizeof(float));
+    glBindBuffer(GL_ARRAY_BUFFER, batch_buffers_[5]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(n * planes * sizeof(float)), batch.clip_distance, GL_STREAM_DRAW);
+    glVertexAttribPointer(4, GLint(std::min(planes, 4u)), GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(4);
+    if (planes > 4) {
+      glVertexAttribPointer(5, GLint(planes - 4), GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(16));
+      glEnableVertexAttribArray(5);
+    } else {
+      glDisableVertexAttribArray(5);
+    }
+  } else {
+    glDisableVertexAttribArray(4), glDisableVertexAttribArray(5);
+  }
+  for (uint32_t c = 0; c < kMaxUserClipPlanes; ++c)
+    c < planes ? glEnable(GLenum(GL_CLIP_DISTANCE0 + c)) : glDisable(GLenum(GL_CLIP_DISTANCE0 + c));
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_buffers_[4]);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(batch_indices_.size() * 4), batch_indices_.data(), GL_STREAM_DRAW);
 
@@ -1127,6 +1171,16 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   } else {
     glDisablei(GL_BLEND, 0);
   }
+  // The stencil test (PixelState: the same test and operations as GL's).
+  if (state.stencil_test) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(gl_compare(state.stencil_func), state.stencil_ref, state.stencil_value_mask);
+    glStencilOp(gl_stencil_op(state.stencil_fail), gl_stencil_op(state.stencil_depth_fail), gl_stencil_op(state.stencil_pass));
+    glStencilMask(state.stencil_write_mask);
+    stencil_used_ = true;
+  } else {
+    glDisable(GL_STENCIL_TEST);
+  }
   const uint8_t m = state.color_mask;
   glColorMaski(0, m & 1, (m >> 1) & 1, (m >> 2) & 1, (m >> 3) & 1);
   glColorMaski(1, m != 0, GL_FALSE, GL_FALSE, GL_FALSE);  // the id goes with the colour
@@ -1148,6 +1202,8 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   if (painter) glDisable(GL_DEPTH_TEST);
   else glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
   glLineWidth(1);
+  glDisable(GL_STENCIL_TEST), glStencilMask(0xff);
+  for (uint32_t c = 0; c < planes; ++c) glDisable(GLenum(GL_CLIP_DISTANCE0 + c));
   glBindVertexArray(0);
 }
 
@@ -1174,6 +1230,13 @@ void GpuBackend::run_clear(const ClearRequest& request) {
     const float d = std::clamp(request.depth_value, 0.0f, 1.0f);
     glClearBufferfv(GL_DEPTH, 0, &d);
   }
+  if (request.stencil) {
+    const GLint value = request.stencil_value;
+    glStencilMask(request.stencil_mask);
+    glClearBufferiv(GL_STENCIL, 0, &value);
+    glStencilMask(0xff);
+    stencil_used_ = true;
+  }
   glDisable(GL_SCISSOR_TEST);
 }
 
@@ -1196,6 +1259,14 @@ const FrameStats& GpuBackend::end_frame() {
   glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
   scatter(rows_.data(), samples_.color.data());
   scatter(depth_rows_.data(), samples_.depth.data());
+  // The stencil, when the frame cleared or wrote it (else the copy is still right).
+  if (stencil_used_) {
+    stencil_rows_.resize(size_t(w) * size_t(h));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil_rows_.data());
+    scatter(stencil_rows_.data(), samples_.stencil.data());
+    stencil_used_ = false;
+  }
   if (options_.object_ids) {
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, rows_.data());
@@ -1258,8 +1329,7 @@ void GpuBackend::read_view_depth(float* out) const {
   velocity::read_view_depth(samples_, ssaa_, nullptr, projection_, out);
 }
 void GpuBackend::read_window_depth(float* out) const { velocity::read_window_depth(samples_, ssaa_, nullptr, out); }
-// The GPU's draws keep no stencil buffer (PixelState's stencil test is the CPU's alone).
-void GpuBackend::read_stencil(uint8_t*) const { throw Error("the GPU backend keeps no stencil buffer"); }
+void GpuBackend::read_stencil(uint8_t* out) const { velocity::read_stencil(samples_, ssaa_, out); }
 std::vector<uint32_t> GpuBackend::object_ids() const { return resolve_object_ids(samples_, ssaa_); }
 size_t GpuBackend::framebuffer_bytes() const {
   return samples_.color.size() * 4 + samples_.depth.size() * 4 + samples_.ids.size() * 4;

@@ -678,6 +678,9 @@ layout(location = 0) in vec4 a_position;
 layout(location = 1) in vec4 a_color;
 layout(location = 2) in vec4 a_texcoord;
 layout(location = 3) in float a_fog;
+layout(location = 4) in vec4 a_clip0;  // user clip planes 0-3 (PrimitiveBatch::clip_distance)
+layout(location = 5) in vec2 a_clip1;  // and 4-5; only the enabled ones clip
+out float gl_ClipDistance[6];
 uniform float u_point_size;
 out vec4 v_color;
 out vec3 v_texcoord;  // s, t, q: interpolated perspective-correct, divided per pixel
@@ -688,6 +691,8 @@ void main() {
   v_color = a_color;
   v_texcoord = vec3(a_texcoord.x, a_texcoord.y, a_texcoord.w);
   v_fog = a_fog;
+  gl_ClipDistance[0] = a_clip0.x, gl_ClipDistance[1] = a_clip0.y, gl_ClipDistance[2] = a_clip0.z;
+  gl_ClipDistance[3] = a_clip0.w, gl_ClipDistance[4] = a_clip1.x, gl_ClipDistance[5] = a_clip1.y;
 }
 )";
 
