@@ -216,7 +216,9 @@ GpuBackend::~GpuBackend() {
     glDeleteRenderbuffers(3, renderbuffers_);
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
-    if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(6, batch_buffers_);
+    for (GLuint p : batch_programs_)
+      if (p) glDeleteProgram(p);
+    if (batch_vao_) glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(6, batch_buffers_);
   } catch (const Error&) {
     // A context that cannot be made current any more: its objects go with it.
   }
@@ -1053,12 +1055,9 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   else if (k == 2) stats_.lines += batch_indices_.size() / 2;
   else stats_.points += batch_indices_.size();
 
-  if (!batch_program_) {
-    batch_program_ = build_batch_program();
-    glGenVertexArrays(1, &batch_vao_);
-    glGenBuffers(6, batch_buffers_);
-  }
-  const GLuint p = batch_program_;
+  if (!batch_vao_) glGenVertexArrays(1, &batch_vao_), glGenBuffers(6, batch_buffers_);
+  GLuint& p = batch_programs_[k == 2];
+  if (!p) p = build_batch_program(k == 2);
   glUseProgram(p);
   glBindVertexArray(batch_vao_);
   const size_t n = batch.vertex_count;
@@ -1111,7 +1110,15 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   glViewport(vx, vy, vw, vh);
-  glDepthRange(std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+  const float near = std::clamp(v.depth_near, 0.0f, 1.0f), far = std::clamp(v.depth_far, 0.0f, 1.0f);
+  glDepthRange(near, far);
+  if (k == 2) {  // the line program maps its ends to window pixels itself
+    glUniform4f(uniform(p, "u_viewport"), float(vx), float(vy), float(vw), float(vh));
+    glUniform2f(uniform(p, "u_depth_range"), near, far);
+    const float width = std::floor(batch.line_width + 0.5f);  // (as batch_job.cpp rounds it; NaN: 1)
+    glUniform1f(uniform(p, "u_line_width"), width >= 1.0f ? std::min(width, 255.0f) : 1.0f);
+    glUniform1i(uniform(p, "u_clip_planes"), GLint(planes));
+  }
 
   const TextureStage& t = state.texture;
   glUniform1i(uniform(p, "u_textured"), t.texture != nullptr);
@@ -1186,11 +1193,8 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   glColorMaski(1, m != 0, GL_FALSE, GL_FALSE, GL_FALSE);  // the id goes with the colour
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  if (k == 2) glLineWidth(std::max(batch.line_width, 1.0f));
   const GLenum mode = k == 3 ? GL_TRIANGLES : k == 2 ? GL_LINES : GL_POINTS;
   glDrawElements(mode, GLsizei(batch_indices_.size()), GL_UNSIGNED_INT, nullptr);
-  if (glGetError() == GL_INVALID_VALUE && k == 2)  // a core context may refuse wide lines
-    throw Error("the GPU backend's OpenGL context does not draw lines " + std::to_string(batch.line_width) + " pixels wide");
 
   // Back to the mesh draws' state.
   glViewport(0, 0, fw, fh);
@@ -1201,7 +1205,6 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   glDepthMask(GL_TRUE);
   if (painter) glDisable(GL_DEPTH_TEST);
   else glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
-  glLineWidth(1);
   glDisable(GL_STENCIL_TEST), glStencilMask(0xff);
   for (uint32_t c = 0; c < planes; ++c) glDisable(GLenum(GL_CLIP_DISTANCE0 + c));
   glBindVertexArray(0);

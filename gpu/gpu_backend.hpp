@@ -135,7 +135,8 @@ class GpuBackend final : public Backend {
   std::vector<uint32_t> painter_faces_;
   GLuint painter_indices_ = 0, order_buffer_ = 0, order_texture_ = 0;
   // pGL's path: its program, streamed arrays and samplers (by SamplerState).
-  GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[6] = {};  // position, colour, texcoord, fog, indices, clip distances
+  GLuint batch_programs_[2] = {};  // triangles and points, lines
+  GLuint batch_vao_ = 0, batch_buffers_[6] = {};  // position, colour, texcoord, fog, indices, clip distances
   std::vector<uint32_t> batch_indices_;
   std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
   // Shadows (RenderOptions::shadows; CpuBackend::render_shadows): every mesh draw of the

@@ -696,10 +696,115 @@ void main() {
 }
 )";
 
+// Lines (LINES defined): drawn as GL draws them on no particular driver, but by the
+// CPU's rule (raster/coverage-inl.h's line_blocks: GL's diamond exit along the major
+// axis, the ties on pixel boundaries where Mesa puts them, `width` pixels across), so
+// that every driver lights the same pixels. The geometry shader clips each segment
+// (near and far planes, user clip planes), maps its ends to window pixels (y down, as
+// the CPU's; snapped to 1/256 as the CPU's vertices are) and covers it with a quad;
+// the fragment shader keeps the pixels the rule lights and gives them the values at
+// the pixel centre's projection onto the segment (triangle/setup.cpp's setup_line).
+const char* const kBatchLineGeometry = R"(
+layout(lines) in;
+layout(triangle_strip, max_vertices = 4) out;
+in gl_PerVertex {
+  vec4 gl_Position;
+  float gl_PointSize;
+  float gl_ClipDistance[6];
+} gl_in[];
+out float gl_ClipDistance[6];  // (the segment is clipped here: nothing left to clip)
+in vec4 v_color[];
+in vec3 v_texcoord[];
+in float v_fog[];
+uniform vec4 u_viewport;     // x, y (from the top), width, height: pixels
+uniform vec2 u_depth_range;  // near, far
+uniform float u_line_width;
+uniform int u_clip_planes;
+flat out vec4 l_ends;        // x0, y0, x1, y1: window pixels, y down
+flat out vec4 l_shape;       // width, x-major (0 or 1), window depth at each end
+flat out vec2 l_inv_w;
+flat out vec4 l_color0, l_color1;
+flat out vec3 l_texcoord0, l_texcoord1;
+flat out vec2 l_fog;
+
+// Cuts the segment [t0, t1] of the line where distance d (at each end) is >= 0.
+bool cut(float d0, float d1, inout float t0, inout float t1) {
+  if (d0 < 0.0 && d1 < 0.0) return false;
+  if (d0 < 0.0) t0 = max(t0, d0 / (d0 - d1));
+  else if (d1 < 0.0) t1 = min(t1, d0 / (d0 - d1));
+  return t0 <= t1;
+}
+
+void main() {
+  vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position;
+  float t0 = 0.0, t1 = 1.0;
+  if (!cut(p0.w + p0.z, p1.w + p1.z, t0, t1) || !cut(p0.w - p0.z, p1.w - p1.z, t0, t1)) return;
+  for (int k = 0; k < u_clip_planes; ++k)
+    if (!cut(gl_in[0].gl_ClipDistance[k], gl_in[1].gl_ClipDistance[k], t0, t1)) return;
+  vec4 q0 = mix(p0, p1, t0), q1 = mix(p0, p1, t1);
+  if (!(q0.w > 0.0 && q1.w > 0.0)) return;
+  vec3 n0 = q0.xyz / q0.w, n1 = q1.xyz / q1.w;
+  vec2 w0 = u_viewport.xy + (n0.xy * 0.5 + 0.5) * u_viewport.zw, w1 = u_viewport.xy + (n1.xy * 0.5 + 0.5) * u_viewport.zw;
+  w0 = floor(w0 * 256.0 + 0.5) / 256.0, w1 = floor(w1 * 256.0 + 0.5) / 256.0;
+  vec2 d = w1 - w0;
+  if (!(dot(d, d) > 0.0)) return;
+  bool x_major = abs(d.x) >= abs(d.y);
+  l_ends = vec4(w0, w1);
+  l_shape = vec4(u_line_width, x_major ? 1.0 : 0.0, mix(u_depth_range.x, u_depth_range.y, n0.z * 0.5 + 0.5),
+                 mix(u_depth_range.x, u_depth_range.y, n1.z * 0.5 + 0.5));
+  l_inv_w = vec2(1.0 / q0.w, 1.0 / q1.w);
+  l_color0 = mix(v_color[0], v_color[1], t0), l_color1 = mix(v_color[0], v_color[1], t1);
+  l_texcoord0 = mix(v_texcoord[0], v_texcoord[1], t0), l_texcoord1 = mix(v_texcoord[0], v_texcoord[1], t1);
+  l_fog = vec2(mix(v_fog[0], v_fog[1], t0), mix(v_fog[0], v_fog[1], t1));
+  // A quad a pixel longer at each end, and the line's width and two pixels wider
+  // (every pixel the rule lights has its centre inside), back in the viewport's terms.
+  vec2 along = normalize(d), across = x_major ? vec2(0.0, 1.0) : vec2(1.0, 0.0);
+  float reach = u_line_width * 0.5 + 2.0;
+  vec2 a = w0 - along * 1.5, b = w1 + along * 1.5;
+  vec2 corners[4] = vec2[4](a - across * reach, a + across * reach, b - across * reach, b + across * reach);
+  for (int i = 0; i < 4; ++i) {
+    gl_Position = vec4((corners[i] - u_viewport.xy) / u_viewport.zw * 2.0 - 1.0, 0.0, 1.0);
+    for (int k = 0; k < 6; ++k) gl_ClipDistance[k] = 1.0;
+    EmitVertex();
+  }
+  EndPrimitive();
+}
+)";
+
 const char* const kBatchFragment = R"(
+#ifdef LINES
+flat in vec4 l_ends;
+flat in vec4 l_shape;
+flat in vec2 l_inv_w;
+flat in vec4 l_color0, l_color1;
+flat in vec3 l_texcoord0, l_texcoord1;
+flat in vec2 l_fog;
+
+// line_blocks' rule for the pixel at column x, row y (y down).
+bool line_covers(int x, int y) {
+  bool xm = l_shape.y > 0.5;
+  float a0 = xm ? l_ends.x : l_ends.y, a1 = xm ? l_ends.z : l_ends.w;
+  float b0 = xm ? l_ends.y : l_ends.x, b1 = xm ? l_ends.w : l_ends.z;
+  float len = a1 - a0;
+  int first = len >= 0.0 ? int(ceil(a0 - 0.5)) : int(floor(a1 - 0.5)) + 1;
+  int last = len >= 0.0 ? int(ceil(a1 - 0.5)) - 1 : int(floor(a0 - 0.5));
+  int a = xm ? x : y, b = xm ? y : x;
+  if (a < first || a > last) return false;
+  bool tie_up = xm && (b1 - b0) * len > 0.0;
+  bool skip_tied_start = len < 0.0 && (xm ? b1 - b0 >= 0.0 : b1 - b0 < 0.0);
+  float s = len != 0.0 ? (float(a) + 0.5 - a0) / len : 0.0;
+  float v = b0 + s * (b1 - b0);
+  float up = ceil(v);
+  int centre = int(up) - 1 + (tie_up && up == v ? 1 : 0);
+  if (skip_tied_start && up == v && float(a) + 0.5 == a0) return false;
+  int width = int(l_shape.x), half_width = (width - 1) / 2;
+  return b >= centre - half_width && b <= centre - half_width + width - 1;
+}
+#else
 in vec4 v_color;
 in vec3 v_texcoord;
 in float v_fog;
+#endif
 uniform bool u_textured;
 uniform int u_format;  // TexFormat: 0 RGBA, 1 RGB, 2 L, 3 LA, 4 A, 5 I
 uniform int u_env;     // TexEnvMode: 0 modulate, 1 replace, 2 decal, 3 blend, 4 add
@@ -760,8 +865,25 @@ vec4 environment(vec4 f, vec4 t) {
 }
 
 void main() {
+#ifdef LINES
+  // (The image is drawn upside down: GL's rows are the CPU's.)
+  bool covered = line_covers(int(floor(gl_FragCoord.x)), int(floor(gl_FragCoord.y)));
+  vec2 d = l_ends.zw - l_ends.xy;
+  float t = dot(floor(gl_FragCoord.xy) + 0.5 - l_ends.xy, d) / dot(d, d);
+  float inv_w = mix(l_inv_w.x, l_inv_w.y, t);
+  vec4 v_color = mix(l_color0 * l_inv_w.x, l_color1 * l_inv_w.y, t) / inv_w;
+  vec3 v_texcoord = mix(l_texcoord0 * l_inv_w.x, l_texcoord1 * l_inv_w.y, t) / inv_w;
+  float v_fog = mix(l_fog.x * l_inv_w.x, l_fog.y * l_inv_w.y, t) / inv_w;
+  float depth = mix(l_shape.z, l_shape.w, t);
+  float slope = max(abs((l_shape.w - l_shape.z) * d.x), abs((l_shape.w - l_shape.z) * d.y)) / dot(d, d);
+#else
+  bool covered = true;
+  float depth = gl_FragCoord.z;
+  float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
+#endif
   vec4 c = clamp(v_color, 0.0, 1.0);
   if (u_textured) c = environment(c, texture(u_texture, v_texcoord.xy / v_texcoord.z));
+  if (!covered) discard;
   if (u_fog) {
     float z = v_fog, f;
     if (u_fog_mode == 0) f = (u_fog_params.y - z) / (u_fog_params.y - u_fog_params.x);
@@ -771,11 +893,8 @@ void main() {
     c.rgb = f * c.rgb + (1.0 - f) * u_fog_color.rgb;
   }
   if (u_alpha_test && !compare(u_alpha_func, c.a, u_alpha_ref)) discard;
-  gl_FragDepth = gl_FragCoord.z;
-  if (u_offset) {
-    float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
-    gl_FragDepth = clamp(gl_FragCoord.z + u_offset_params.x * slope + u_offset_params.y * exp2(-24.0), 0.0, 1.0);
-  }
+  gl_FragDepth = depth;
+  if (u_offset) gl_FragDepth = clamp(depth + u_offset_params.x * slope + u_offset_params.y * exp2(-24.0), 0.0, 1.0);
   o_color = c;
   o_id = 0u;
 }
@@ -791,8 +910,9 @@ void main() { gl_Position = u_mvp * vec4(a_position, 1.0); }
   return build_program(vs, "", std::string(kVersion) + "void main() {}\n");
 }
 
-GLuint build_batch_program() {
-  return build_program(std::string(kVersion) + kBatchVertex, "", std::string(kVersion) + kBatchFragment);
+GLuint build_batch_program(bool lines) {
+  const std::string head = std::string(kVersion) + (lines ? "#define LINES\n" : "");
+  return build_program(head + kBatchVertex, lines ? head + kBatchLineGeometry : "", head + kBatchFragment);
 }
 
 GLuint build_lighting_test_program() {

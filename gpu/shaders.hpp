@@ -47,7 +47,9 @@ GLuint build_pbr_program(bool affine);
 GLuint build_depth_program();
 
 // The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
-GLuint build_batch_program();
+// `lines`: its variant for lines, drawn by the CPU's rule (a geometry shader makes a quad
+// of each, the fragment shader keeps the pixels the rule lights).
+GLuint build_batch_program(bool lines);
 
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.
