@@ -882,6 +882,10 @@ void GpuBackend::draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, co
       glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
       glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
       glUniform1i(uniform(p, "u_cull"), cull);
+      if (lines) {  // (the edges map their ends to window pixels themselves)
+        glUniform4f(uniform(p, "u_viewport"), 0, 0, float(width_ * ssaa_), float(height_ * ssaa_));
+        glUniform2f(uniform(p, "u_depth_range"), 0, 1);
+      }
       glUniform1i(uniform(p, "u_textured"), textured);
       glUniform1i(uniform(p, "u_env"), phong && env);
       glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);

@@ -265,6 +265,97 @@ vec3 finish(vec3 c) {
 }
 )";
 
+// Lines drawn by the CPU's rule rather than the driver's (pGL's line batches and
+// wireframe meshes): raster/coverage-inl.h's line_blocks (GL's diamond exit along the
+// major axis, the ties on pixel boundaries where Mesa puts them, `width` pixels across)
+// and triangle/setup.cpp's setup_line (values at the pixel centre's projection onto the
+// segment), so that every driver lights the pixels the CPU and Mesa light. The geometry
+// stage clips each segment, maps its ends to window pixels (y down, as the CPU's: the
+// image is drawn upside down; snapped to 1/256 as the CPU's vertices are) and covers it
+// with a quad (kLineQuadGlsl); the fragment stage keeps the pixels the rule lights
+// (kLineRuleGlsl).
+const char* const kLineQuadGlsl = R"(
+uniform vec4 u_viewport;     // x, y (from the top), width, height: pixels
+uniform vec2 u_depth_range;  // near, far
+flat out vec4 l_ends;        // x0, y0, x1, y1: window pixels, y down
+flat out vec4 l_shape;       // width, x-major (0 or 1), window depth at each end
+flat out vec2 l_inv_w;
+
+void line_vertex(float t0, float t1);  // the stage's own outputs at a vertex of the quad
+
+// Cuts the segment [t0, t1] of the line where distance d (at each end) is >= 0.
+bool cut(float d0, float d1, inout float t0, inout float t1) {
+  if (d0 < 0.0 && d1 < 0.0) return false;
+  if (d0 < 0.0) t0 = max(t0, d0 / (d0 - d1));
+  else if (d1 < 0.0) t1 = min(t1, d0 / (d0 - d1));
+  return t0 <= t1;
+}
+
+// The segment p0 p1 from t0 to t1 (already cut to any other planes) cut to the near
+// and far planes, its ends in window pixels, covered by a quad; false: nothing left.
+bool emit_line(vec4 p0, vec4 p1, float t0, float t1, float width) {
+  if (!cut(p0.w + p0.z, p1.w + p1.z, t0, t1) || !cut(p0.w - p0.z, p1.w - p1.z, t0, t1)) return false;
+  vec4 q0 = mix(p0, p1, t0), q1 = mix(p0, p1, t1);
+  if (!(q0.w > 0.0 && q1.w > 0.0)) return false;
+  vec3 n0 = q0.xyz / q0.w, n1 = q1.xyz / q1.w;
+  vec2 w0 = u_viewport.xy + (n0.xy * 0.5 + 0.5) * u_viewport.zw, w1 = u_viewport.xy + (n1.xy * 0.5 + 0.5) * u_viewport.zw;
+  w0 = floor(w0 * 256.0 + 0.5) / 256.0, w1 = floor(w1 * 256.0 + 0.5) / 256.0;
+  vec2 d = w1 - w0;
+  if (!(dot(d, d) > 0.0)) return false;
+  bool x_major = abs(d.x) >= abs(d.y);
+  // A quad a pixel and a half longer at each end, and the width and four pixels wider
+  // (every pixel the rule lights has its centre inside), in the viewport's terms.
+  vec2 along = normalize(d), across = x_major ? vec2(0.0, 1.0) : vec2(1.0, 0.0);
+  float reach = width * 0.5 + 2.0;
+  vec2 a = w0 - along * 1.5, b = w1 + along * 1.5;
+  vec2 corners[4] = vec2[4](a - across * reach, a + across * reach, b - across * reach, b + across * reach);
+  for (int i = 0; i < 4; ++i) {
+    l_ends = vec4(w0, w1);
+    l_shape = vec4(width, x_major ? 1.0 : 0.0, mix(u_depth_range.x, u_depth_range.y, n0.z * 0.5 + 0.5),
+                   mix(u_depth_range.x, u_depth_range.y, n1.z * 0.5 + 0.5));
+    l_inv_w = vec2(1.0 / q0.w, 1.0 / q1.w);
+    line_vertex(t0, t1);
+    gl_Position = vec4((corners[i] - u_viewport.xy) / u_viewport.zw * 2.0 - 1.0, 0.0, 1.0);
+    EmitVertex();
+  }
+  EndPrimitive();
+  return true;
+}
+)";
+
+const char* const kLineRuleGlsl = R"(
+flat in vec4 l_ends;
+flat in vec4 l_shape;
+flat in vec2 l_inv_w;
+
+// line_blocks' rule for the pixel at column x, row y (y down).
+bool line_covers(int x, int y) {
+  bool xm = l_shape.y > 0.5;
+  float a0 = xm ? l_ends.x : l_ends.y, a1 = xm ? l_ends.z : l_ends.w;
+  float b0 = xm ? l_ends.y : l_ends.x, b1 = xm ? l_ends.w : l_ends.z;
+  float len = a1 - a0;
+  int first = len >= 0.0 ? int(ceil(a0 - 0.5)) : int(floor(a1 - 0.5)) + 1;
+  int last = len >= 0.0 ? int(ceil(a1 - 0.5)) - 1 : int(floor(a0 - 0.5));
+  int a = xm ? x : y, b = xm ? y : x;
+  if (a < first || a > last) return false;
+  bool tie_up = xm && (b1 - b0) * len > 0.0;
+  bool skip_tied_start = len < 0.0 && (xm ? b1 - b0 >= 0.0 : b1 - b0 < 0.0);
+  float s = len != 0.0 ? (float(a) + 0.5 - a0) / len : 0.0;
+  float v = b0 + s * (b1 - b0);
+  float up = ceil(v);
+  int centre = int(up) - 1 + (tie_up && up == v ? 1 : 0);
+  if (skip_tied_start && up == v && float(a) + 0.5 == a0) return false;
+  int width = int(l_shape.x), half_width = (width - 1) / 2;
+  return b >= centre - half_width && b <= centre - half_width + width - 1;
+}
+
+// Where this fragment's pixel centre projects onto the segment (0 at its start).
+float line_t() {
+  vec2 d = l_ends.zw - l_ends.xy;
+  return dot(floor(gl_FragCoord.xy) + 0.5 - l_ends.xy, d) / dot(d, d);
+}
+)";
+
 namespace {
 
 const char* const kVersion = "#version 330 core\n";
@@ -365,7 +456,7 @@ layout(triangles) in;
 #if PRIMITIVE == 0
 layout(triangle_strip, max_vertices = 3) out;
 #elif PRIMITIVE == 1
-layout(line_strip, max_vertices = 6) out;
+layout(triangle_strip, max_vertices = 12) out;  // a quad per edge (kLineQuadGlsl)
 #else
 layout(points, max_vertices = 3) out;
 #endif
@@ -410,6 +501,15 @@ vec3 base_color(int i, int face) {
   return u_material_color;
 }
 
+#if PRIMITIVE == 1
+vec3 line_front, line_back;
+void line_vertex(float t0, float t1) {
+  g.eye = vec3(0.0), g.normal = vec3(0.0, 0.0, 1.0), g.uv = vec2(0.0);
+  g.front = g.back = line_front;
+  g_flat_front = line_front, g_flat_back = line_back;
+}
+#endif
+
 void main() {
   int face = u_face_base + gl_PrimitiveIDIn;
   if (u_face_order) face = texelFetch(u_order, face).r;
@@ -430,12 +530,13 @@ void main() {
   if (u_cull && det >= 0.0) return;
 #endif
 #if PRIMITIVE == 1
-  const int corners[6] = int[6](0, 1, 1, 2, 2, 0);
-  for (int k = 0; k < 6; ++k) {
-    int i = corners[k];
-#else
-  for (int i = 0; i < 3; ++i) {
+  // The edges by the CPU's line rule (triangle/mesh_job.cpp's edges: each from corner
+  // k to k + 1, one pixel wide), in the one colour of the draw.
+  line_front = flat_front, line_back = flat_back;
+  for (int k = 0; k < 3; ++k) emit_line(gl_in[k].gl_Position, gl_in[(k + 1) % 3].gl_Position, 0.0, 1.0, 1.0);
+  return;
 #endif
+  for (int i = 0; i < 3; ++i) {
     vec3 base = u_unlit_vertex_colors ? to_pipeline(v[i].color) : base_color(i, face);
     g.front = g.back = base;
     if (u_mode == 1 && u_lit) {
@@ -448,9 +549,7 @@ void main() {
     g_flat_front = flat_front, g_flat_back = flat_back;
     gl_Position = gl_in[i].gl_Position;
     EmitVertex();
-#if PRIMITIVE == 1
-    if (k % 2 == 1) EndPrimitive();
-#elif PRIMITIVE == 2
+#if PRIMITIVE == 2
     EndPrimitive();
 #endif
   }
@@ -485,6 +584,11 @@ uniform uint u_object_id;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_id;
 void main() {
+#if PRIMITIVE == 1
+  // (The image is drawn upside down: GL's rows are the CPU's.)
+  if (!line_covers(int(floor(gl_FragCoord.x)), int(floor(gl_FragCoord.y)))) discard;
+  gl_FragDepth = mix(l_shape.z, l_shape.w, line_t());
+#endif
   bool back = u_two_sided && !gl_FrontFacing;
   vec3 c;
   if (u_mode == 0 || u_mode == 3) {
@@ -555,6 +659,9 @@ GLuint build_mesh_program(bool affine, int primitive) {
   const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") +
                            "\n#define PRIMITIVE " + std::to_string(primitive) + "\n" + kLightingGlsl + kColorGlsl;
   if (primitive == 3) return build_program(head + kMeshVertexInputs + kMeshVertexDirect, "", head + kMeshFragment);
+  if (primitive == 1)  // edges by the CPU's line rule
+    return build_program(head + kMeshVertexInputs + kMeshVertex, head + kLineQuadGlsl + kMeshGeometry,
+                         head + kLineRuleGlsl + kMeshFragment);
   return build_program(head + kMeshVertexInputs + kMeshVertex, head + kMeshGeometry, head + kMeshFragment);
 }
 
@@ -696,14 +803,8 @@ void main() {
 }
 )";
 
-// Lines (LINES defined): drawn as GL draws them on no particular driver, but by the
-// CPU's rule (raster/coverage-inl.h's line_blocks: GL's diamond exit along the major
-// axis, the ties on pixel boundaries where Mesa puts them, `width` pixels across), so
-// that every driver lights the same pixels. The geometry shader clips each segment
-// (near and far planes, user clip planes), maps its ends to window pixels (y down, as
-// the CPU's; snapped to 1/256 as the CPU's vertices are) and covers it with a quad;
-// the fragment shader keeps the pixels the rule lights and gives them the values at
-// the pixel centre's projection onto the segment (triangle/setup.cpp's setup_line).
+// pGL's lines: the values of each end (cut where the segment was) for the fragment
+// stage, and user clip planes cut here too.
 const char* const kBatchLineGeometry = R"(
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
@@ -716,90 +817,34 @@ out float gl_ClipDistance[6];  // (the segment is clipped here: nothing left to 
 in vec4 v_color[];
 in vec3 v_texcoord[];
 in float v_fog[];
-uniform vec4 u_viewport;     // x, y (from the top), width, height: pixels
-uniform vec2 u_depth_range;  // near, far
 uniform float u_line_width;
 uniform int u_clip_planes;
-flat out vec4 l_ends;        // x0, y0, x1, y1: window pixels, y down
-flat out vec4 l_shape;       // width, x-major (0 or 1), window depth at each end
-flat out vec2 l_inv_w;
 flat out vec4 l_color0, l_color1;
 flat out vec3 l_texcoord0, l_texcoord1;
 flat out vec2 l_fog;
 
-// Cuts the segment [t0, t1] of the line where distance d (at each end) is >= 0.
-bool cut(float d0, float d1, inout float t0, inout float t1) {
-  if (d0 < 0.0 && d1 < 0.0) return false;
-  if (d0 < 0.0) t0 = max(t0, d0 / (d0 - d1));
-  else if (d1 < 0.0) t1 = min(t1, d0 / (d0 - d1));
-  return t0 <= t1;
-}
-
-void main() {
-  vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position;
-  float t0 = 0.0, t1 = 1.0;
-  if (!cut(p0.w + p0.z, p1.w + p1.z, t0, t1) || !cut(p0.w - p0.z, p1.w - p1.z, t0, t1)) return;
-  for (int k = 0; k < u_clip_planes; ++k)
-    if (!cut(gl_in[0].gl_ClipDistance[k], gl_in[1].gl_ClipDistance[k], t0, t1)) return;
-  vec4 q0 = mix(p0, p1, t0), q1 = mix(p0, p1, t1);
-  if (!(q0.w > 0.0 && q1.w > 0.0)) return;
-  vec3 n0 = q0.xyz / q0.w, n1 = q1.xyz / q1.w;
-  vec2 w0 = u_viewport.xy + (n0.xy * 0.5 + 0.5) * u_viewport.zw, w1 = u_viewport.xy + (n1.xy * 0.5 + 0.5) * u_viewport.zw;
-  w0 = floor(w0 * 256.0 + 0.5) / 256.0, w1 = floor(w1 * 256.0 + 0.5) / 256.0;
-  vec2 d = w1 - w0;
-  if (!(dot(d, d) > 0.0)) return;
-  bool x_major = abs(d.x) >= abs(d.y);
-  l_ends = vec4(w0, w1);
-  l_shape = vec4(u_line_width, x_major ? 1.0 : 0.0, mix(u_depth_range.x, u_depth_range.y, n0.z * 0.5 + 0.5),
-                 mix(u_depth_range.x, u_depth_range.y, n1.z * 0.5 + 0.5));
-  l_inv_w = vec2(1.0 / q0.w, 1.0 / q1.w);
+void line_vertex(float t0, float t1) {
   l_color0 = mix(v_color[0], v_color[1], t0), l_color1 = mix(v_color[0], v_color[1], t1);
   l_texcoord0 = mix(v_texcoord[0], v_texcoord[1], t0), l_texcoord1 = mix(v_texcoord[0], v_texcoord[1], t1);
   l_fog = vec2(mix(v_fog[0], v_fog[1], t0), mix(v_fog[0], v_fog[1], t1));
-  // A quad a pixel longer at each end, and the line's width and two pixels wider
-  // (every pixel the rule lights has its centre inside), back in the viewport's terms.
-  vec2 along = normalize(d), across = x_major ? vec2(0.0, 1.0) : vec2(1.0, 0.0);
-  float reach = u_line_width * 0.5 + 2.0;
-  vec2 a = w0 - along * 1.5, b = w1 + along * 1.5;
-  vec2 corners[4] = vec2[4](a - across * reach, a + across * reach, b - across * reach, b + across * reach);
-  for (int i = 0; i < 4; ++i) {
-    gl_Position = vec4((corners[i] - u_viewport.xy) / u_viewport.zw * 2.0 - 1.0, 0.0, 1.0);
-    for (int k = 0; k < 6; ++k) gl_ClipDistance[k] = 1.0;
-    EmitVertex();
-  }
-  EndPrimitive();
+  for (int k = 0; k < 6; ++k) gl_ClipDistance[k] = 1.0;
+}
+)";
+
+const char* const kBatchLineMain = R"(
+void main() {
+  float t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < u_clip_planes; ++k)
+    if (!cut(gl_in[0].gl_ClipDistance[k], gl_in[1].gl_ClipDistance[k], t0, t1)) return;
+  emit_line(gl_in[0].gl_Position, gl_in[1].gl_Position, t0, t1, u_line_width);
 }
 )";
 
 const char* const kBatchFragment = R"(
 #ifdef LINES
-flat in vec4 l_ends;
-flat in vec4 l_shape;
-flat in vec2 l_inv_w;
 flat in vec4 l_color0, l_color1;
 flat in vec3 l_texcoord0, l_texcoord1;
 flat in vec2 l_fog;
-
-// line_blocks' rule for the pixel at column x, row y (y down).
-bool line_covers(int x, int y) {
-  bool xm = l_shape.y > 0.5;
-  float a0 = xm ? l_ends.x : l_ends.y, a1 = xm ? l_ends.z : l_ends.w;
-  float b0 = xm ? l_ends.y : l_ends.x, b1 = xm ? l_ends.w : l_ends.z;
-  float len = a1 - a0;
-  int first = len >= 0.0 ? int(ceil(a0 - 0.5)) : int(floor(a1 - 0.5)) + 1;
-  int last = len >= 0.0 ? int(ceil(a1 - 0.5)) - 1 : int(floor(a0 - 0.5));
-  int a = xm ? x : y, b = xm ? y : x;
-  if (a < first || a > last) return false;
-  bool tie_up = xm && (b1 - b0) * len > 0.0;
-  bool skip_tied_start = len < 0.0 && (xm ? b1 - b0 >= 0.0 : b1 - b0 < 0.0);
-  float s = len != 0.0 ? (float(a) + 0.5 - a0) / len : 0.0;
-  float v = b0 + s * (b1 - b0);
-  float up = ceil(v);
-  int centre = int(up) - 1 + (tie_up && up == v ? 1 : 0);
-  if (skip_tied_start && up == v && float(a) + 0.5 == a0) return false;
-  int width = int(l_shape.x), half_width = (width - 1) / 2;
-  return b >= centre - half_width && b <= centre - half_width + width - 1;
-}
 #else
 in vec4 v_color;
 in vec3 v_texcoord;
@@ -869,7 +914,7 @@ void main() {
   // (The image is drawn upside down: GL's rows are the CPU's.)
   bool covered = line_covers(int(floor(gl_FragCoord.x)), int(floor(gl_FragCoord.y)));
   vec2 d = l_ends.zw - l_ends.xy;
-  float t = dot(floor(gl_FragCoord.xy) + 0.5 - l_ends.xy, d) / dot(d, d);
+  float t = line_t();
   float inv_w = mix(l_inv_w.x, l_inv_w.y, t);
   vec4 v_color = mix(l_color0 * l_inv_w.x, l_color1 * l_inv_w.y, t) / inv_w;
   vec3 v_texcoord = mix(l_texcoord0 * l_inv_w.x, l_texcoord1 * l_inv_w.y, t) / inv_w;
@@ -912,7 +957,9 @@ void main() { gl_Position = u_mvp * vec4(a_position, 1.0); }
 
 GLuint build_batch_program(bool lines) {
   const std::string head = std::string(kVersion) + (lines ? "#define LINES\n" : "");
-  return build_program(head + kBatchVertex, lines ? head + kBatchLineGeometry : "", head + kBatchFragment);
+  if (!lines) return build_program(head + kBatchVertex, "", head + kBatchFragment);
+  return build_program(head + kBatchVertex, head + kBatchLineGeometry + kLineQuadGlsl + kBatchLineMain,
+                       head + kLineRuleGlsl + kBatchFragment);
 }
 
 GLuint build_lighting_test_program() {
