@@ -557,6 +557,9 @@ void GpuBackend::render_shadows() {
   int layers = 0;
   for (const ShadowLight& l : shadow_lights_) layers += l.faces;
   if (layers == 0) return;
+  if (size > max_texture_)
+    throw Error("a shadow map of " + std::to_string(size) + " texels a side is larger than the GPU takes (" +
+                std::to_string(max_texture_) + ")");
   reserve(size_t(size) * size_t(size) * 4 * size_t(layers), "the shadow maps");
   if (!shadow_fbo_) glGenFramebuffers(1, &shadow_fbo_);
   if (!depth_program_) depth_program_ = build_depth_program();
