@@ -885,6 +885,12 @@ void GpuBackend::draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, co
       glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
       glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
       glUniform1i(uniform(p, "u_cull"), cull);
+      if (points) {
+        // mesh_job.cpp's point_size(): 1..64, times the super-sampling factor.
+        const float size = std::isfinite(options_.point_size) ? std::clamp(options_.point_size, 1.0f, 64.0f) : 1.0f;
+        glUniform1f(uniform(p, "u_point_size"), float(std::max(1, int(size * float(ssaa_) + 0.5f))));
+        glEnable(GL_PROGRAM_POINT_SIZE);
+      }
       if (lines) {  // (the edges map their ends to window pixels themselves)
         glUniform4f(uniform(p, "u_viewport"), 0, 0, float(width_ * ssaa_), float(height_ * ssaa_));
         glUniform2f(uniform(p, "u_depth_range"), 0, 1);

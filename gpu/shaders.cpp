@@ -461,6 +461,7 @@ layout(triangle_strip, max_vertices = 12) out;  // a quad per edge (kLineQuadGls
 layout(points, max_vertices = 3) out;
 #endif
 uniform bool u_cull;
+uniform float u_point_size;  // Points: RenderOptions::point_size in samples (mesh_job.cpp's point_size)
 in V {
   vec3 object_position;
   vec3 eye;
@@ -527,7 +528,13 @@ void main() {
   // Facing as the CPU's homogeneous test (triangle/cull.hpp), in the flipped frame.
   vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position, p2 = gl_in[2].gl_Position;
   float det = determinant(mat3(p0.xyw, p1.xyw, p2.xyw));
+#if PRIMITIVE == 2
+  // A point cloud's points are triangles with one corner three times: no facing.
+  bool cloud = v[0].object_position == v[1].object_position && v[1].object_position == v[2].object_position;
+  if (u_cull && det >= 0.0 && !cloud) return;
+#else
   if (u_cull && det >= 0.0) return;
+#endif
 #endif
 #if PRIMITIVE == 1
   // The edges by the CPU's line rule (triangle/mesh_job.cpp's edges: each from corner
@@ -548,6 +555,9 @@ void main() {
     g.uv = u_uv_from_env ? vec2(0.5) + vec2(0.5, -0.5) * v[i].normal.xy : v[i].uv;
     g_flat_front = flat_front, g_flat_back = flat_back;
     gl_Position = gl_in[i].gl_Position;
+#if PRIMITIVE == 2
+    gl_PointSize = u_point_size;
+#endif
     EmitVertex();
 #if PRIMITIVE == 2
     EndPrimitive();

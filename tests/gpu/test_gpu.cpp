@@ -260,6 +260,30 @@ TEST(GpuScenes, Points) {
   const double psnr = scene_psnr(mixed_scene(), o);
   std::printf("[gpu-parity] points psnr=%.2f\n", psnr);
   EXPECT_GE(psnr, 35.0);
+  // A point cloud (triangles with one corner three times: never culled) at
+  // RenderOptions::point_size, super-sampled too (the size is in output pixels). One
+  // colour: where the mixed scene's points of different materials overlap, the GPU's
+  // order (by material slot) decides which shows.
+  Mesh cloud;
+  cloud.positions = make_sphere(24).positions;
+  for (uint32_t i = 0; i < cloud.positions.size(); ++i) cloud.triangles.push_back({i, i, i});
+  Scene scene;
+  scene.camera.position = {0.2f, 0.3f, 3.0f};
+  scene.add_object("cloud", std::make_shared<const Mesh>(std::move(cloud)));
+  o.point_size = 3.4f;  // (rounded to 3, as the CPU's)
+  const double wide = scene_psnr(scene, o);
+  o.ssaa = 2;
+  const double wide_ssaa = scene_psnr(scene, o);
+  o.ssaa = 1, o.point_size = 1;
+  Renderer one(320, 240, BackendChoice::Cpu), three(320, 240, BackendChoice::Cpu);
+  one.options = o, one.render(scene);
+  three.options = o, three.options.point_size = 3, three.render(scene);
+  const double sizes = vref::compare(to_vref(one.color_image()), to_vref(three.color_image())).psnr;
+  std::printf("[gpu-parity] 3-pixel point cloud psnr=%.2f, at 2x2 super-sampling %.2f (1 against 3 pixels: %.2f)\n",
+              wide, wide_ssaa, sizes);
+  EXPECT_LT(sizes, 30.0) << "the size must matter";
+  EXPECT_GE(wide, 40.0);
+  EXPECT_GE(wide_ssaa, 40.0);
 }
 
 // The caches: a mesh and its texture are uploaded once, however many frames draw them;
