@@ -14,6 +14,7 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "shading/lighting.hpp"
+#include "shadows.hpp"
 #include "velocity/backend.hpp"
 
 namespace velocity::gpu {
@@ -97,6 +98,8 @@ class GpuBackend final : public Backend {
   void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
   void draw_painter();
+  void render_shadows();
+  void upload_shadows(GLuint program);
   void free(MeshEntry& m);
   void evict();
   template <class T>
@@ -132,15 +135,31 @@ class GpuBackend final : public Backend {
   std::vector<uint32_t> painter_faces_;
   GLuint painter_indices_ = 0, order_buffer_ = 0, order_texture_ = 0;
   // pGL's path: its program, streamed arrays and samplers (by SamplerState).
-  GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[5] = {};
+  GLuint batch_programs_[2] = {};  // triangles and points, lines
+  GLuint batch_vao_ = 0, batch_buffers_[6] = {};  // position, colour, texcoord, fog, indices, clip distances
   std::vector<uint32_t> batch_indices_;
   std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
+  // Shadows (RenderOptions::shadows; CpuBackend::render_shadows): every mesh draw of the
+  // frame casts, seen or not; the maps are layers of one depth texture.
+  struct Caster {
+    MeshEntry* entry;
+    Mat4 world;
+    bool two_sided;
+  };
+  std::vector<Light> frame_lights_;
+  std::vector<Caster> casters_;
+  Sphere caster_bounds_{{}, -1};
+  std::vector<ShadowLight> shadow_lights_;
+  GLuint shadow_fbo_ = 0, shadow_maps_ = 0, depth_program_ = 0;
+  int shadow_size_ = 0, shadow_layers_ = 0;
   FrameStats stats_;
   std::chrono::steady_clock::time_point t0_;
 
   Framebuffer samples_;  // the last frame, read back
   std::vector<uint32_t> rows_;
   std::vector<float> depth_rows_;
+  std::vector<uint8_t> stencil_rows_;
+  bool stencil_used_ = false;  // the frame cleared or wrote the stencil: read it back
 };
 
 }  // namespace velocity::gpu
