@@ -62,5 +62,8 @@ Mat4 pose(const NodeAnimation& node, float t);
 // Sets the `base` matrix of every animated object of `scene` to its pose at `t`
 // (NodeAnimation::node is an ObjectId there; ids not in the scene are skipped).
 void apply(const Animation& animation, float t, Scene& scene);
+// Puts every object `animation` moves back at its rest pose (before another animation
+// plays: nodes only the first one moves would otherwise keep its last pose).
+void rest(const Animation& animation, Scene& scene);
 
 }  // namespace velocity

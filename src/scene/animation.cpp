@@ -63,4 +63,11 @@ void apply(const Animation& animation, float t, Scene& scene) {
     if (n.node < scene.objects().size()) scene.object(ObjectId(n.node)).base = pose(n, t);
 }
 
+void rest(const Animation& animation, Scene& scene) {
+  for (const NodeAnimation& n : animation.nodes)
+    if (n.node < scene.objects().size())
+      scene.object(ObjectId(n.node)).base =
+          translate(n.rest_translation) * rotation_matrix(n.rest_rotation) * scale(n.rest_scale);
+}
+
 }  // namespace velocity
