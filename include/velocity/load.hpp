@@ -55,7 +55,8 @@ struct Model {
   std::vector<ModelNode> nodes;
   std::vector<Light> lights;
   std::vector<NamedCamera> cameras;
-  // glTF node animations (translation, rotation, scale), moving `nodes` by index.
+  // glTF node animations (translation, rotation, scale) and morph target weights,
+  // moving and morphing `nodes` by index.
   std::vector<Animation> animations;
 
   size_t vertex_count() const;
@@ -110,9 +111,9 @@ Model load_obj(const std::string& path, const LoadOptions& options = {});
 // NamedCameras placed by their node, KHR_lights_punctual lights Lights (intensity times
 // colour, inverse-square falloff with the range); 3D Studio cameras are not converted
 // (Assimp 5.2 loses their target), nor are 3D Studio lights. glTF node animations
-// (translation, rotation, scale; float keys) are read by Velocity from the JSON into
-// Model::animations; skins and morph targets are not converted (meshes come in their
-// bind pose).
+// (translation, rotation, scale; float keys) and morph target weights (with the POSITION
+// and NORMAL targets of the node's mesh) are read by Velocity from the JSON into
+// Model::animations; skins are not converted (meshes come in their bind pose).
 // Throws velocity::Error naming the file for a missing or malformed file (what
 // Velocity's own checks before Assimp found, with the line or byte offset: PLY whole,
 // ASCII STL whole, 3D Studio chunks, glTF JSON and node trees; else Assimp's message),

@@ -112,8 +112,9 @@ class Reader {
   }
 
   // The file's animations: each channel's keys (float accessors), grouped by the node
-  // they move, with the node's rest translation, rotation and scale. Morph target
-  // weights and channels of other component types are left out with a warning.
+  // they move, with the node's rest translation, rotation and scale; morph target
+  // weights with the targets of the node's mesh. Channels of other component types are
+  // left out with a warning.
   std::vector<Animation> animations() {
     std::vector<Animation> out;
     const json& anims = list("animations");
@@ -139,11 +140,7 @@ class Reader {
         const json* path = target ? member(*target, "path", json::value_t::string, w + "target: ") : nullptr;
         if (!path) fail(w + "expected a \"target\" with a \"path\"");
         const std::string what = path->get<std::string>();
-        if (what == "weights") {
-          skip("morph target weights are not animated");
-          continue;
-        }
-        if (what != "translation" && what != "rotation" && what != "scale")
+        if (what != "translation" && what != "rotation" && what != "scale" && what != "weights")
           fail(w + "target path \"" + what + "\", expected translation, rotation, scale or weights");
         if (!target->contains("node")) continue;  // the spec allows it (an extension's target)
         const size_t n = index((*target)["node"], nodes.size(), w + "target node");
@@ -152,10 +149,18 @@ class Reader {
         const std::string mode = sampler.value("interpolation", std::string("LINEAR"));
         if (mode != "LINEAR" && mode != "STEP" && mode != "CUBICSPLINE")
           fail(w + "interpolation \"" + mode + "\", expected LINEAR, STEP or CUBICSPLINE");
-        const size_t width = what == "rotation" ? 4 : 3;
+        std::shared_ptr<MorphTargets> targets;
+        if (what == "weights") {
+          const json& node = at(nodes, n, w + "target node: ");
+          if (!node.contains("mesh")) fail(w + "weights of node " + std::to_string(n) + ", which has no mesh");
+          targets = morph_targets(node, w + "target node: ");
+          if (!targets) continue;
+        }
+        // Weights: one scalar per target a key.
+        const size_t width = what == "rotation" ? 4 : targets ? targets->positions.size() : 3;
         std::vector<float> times, values;
         if (!floats(sampler.value("input", json(-1)), 1, times, w + "input") ||
-            !floats(sampler.value("output", json(-1)), width, values, w + "output")) {
+            !floats(sampler.value("output", json(-1)), targets ? 1 : width, values, w + "output")) {
           skip(w + "keys that are not 32-bit floats in a buffer view are not read");
           continue;
         }
@@ -167,6 +172,17 @@ class Reader {
           if (!std::isfinite(times[k]) || times[k] < 0 || (k && times[k] <= times[k - 1]))
             fail(w + "key time " + std::to_string(k) + " is " + std::to_string(times[k]) +
                  ", expected a finite time after the one before");
+        const Interpolation mode_of_keys = mode == "STEP" ? Interpolation::Step : Interpolation::Linear;
+        if (targets) {
+          MorphAnimation morph{n, {times, {}, mode_of_keys}, targets};
+          for (size_t k = 0; k < times.size(); ++k) {
+            const float* key = &values[(k * per_key + (per_key == 3)) * width];
+            morph.weights.values.emplace_back(key, key + width);
+          }
+          if (!times.empty()) result.duration = std::max(result.duration, times.back());
+          result.morphs.push_back(std::move(morph));
+          continue;
+        }
         auto [it, first] = by_node.try_emplace(n);
         NodeAnimation& node = it->second;
         if (first) rest_pose(at(nodes, n, w + "target node: "), node, w + "target node: ");
@@ -185,7 +201,7 @@ class Reader {
         if (!times.empty()) result.duration = std::max(result.duration, times.back());
       }
       for (auto& [n, node] : by_node) result.nodes.push_back(std::move(node));
-      if (!result.nodes.empty()) out.push_back(std::move(result));
+      if (!result.nodes.empty() || !result.morphs.empty()) out.push_back(std::move(result));
     }
     return out;
   }
@@ -443,6 +459,68 @@ class Reader {
     return true;
   }
 
+  // The morph targets of `node`'s mesh: each target's POSITION and NORMAL offsets, its
+  // primitives' one after another (the order the adapter merges them in; MorphTargets::base
+  // is left to it), and the node's or mesh's weights at rest. Null, with a warning, when
+  // an offset is not plain floats (a sparse accessor, say); null without targets.
+  std::shared_ptr<MorphTargets> morph_targets(const json& node, const std::string& where) {
+    const size_t m = index(node["mesh"], list("meshes").size(), where + "mesh");
+    auto& cached = morphs_[m];
+    if (cached.first) return cached.second;
+    cached.first = true;
+    const std::string w = where + "mesh " + std::to_string(m) + ": ";
+    const json& mesh = at(list("meshes"), m, w);
+    const json* prims = member(mesh, "primitives", json::value_t::array, w);
+    size_t count = 0;
+    for (size_t p = 0; prims && p < prims->size(); ++p)
+      if (const json* t = member(at(*prims, p, w), "targets", json::value_t::array, w)) count = std::max(count, t->size());
+    if (count == 0) return nullptr;
+    auto out = std::make_shared<MorphTargets>();
+    out->positions.resize(count), out->normals.resize(count);
+    bool any_normals = false;
+    for (size_t p = 0; p < prims->size(); ++p) {
+      const std::string wp = w + "primitive " + std::to_string(p) + ": ";
+      const json& prim = at(*prims, p, wp);
+      const json* attrs = member(prim, "attributes", json::value_t::object, wp);
+      if (!attrs || !attrs->contains("POSITION")) fail(wp + "expected a POSITION attribute");
+      const json& accessors = list("accessors");
+      const uint64_t vertices = whole(at(accessors, index((*attrs)["POSITION"], accessors.size(), wp + "POSITION"), wp),
+                                      "count", 0, wp);
+      // Every target holds an offset of each vertex, given or not: within the memory limit.
+      const uint64_t per_target = vertices * 2 * sizeof(Vec3);  // vertices <= the buffer's size
+      if (vertices > budget_ || (per_target && count > budget_ / per_target))
+        fail(wp + std::to_string(count) + " morph targets of " + std::to_string(vertices) +
+             " vertices need more than the memory limit");
+      budget_ -= size_t(count * per_target);
+      const json* targets = member(prim, "targets", json::value_t::array, wp);
+      for (size_t k = 0; k < count; ++k) {
+        const json* target = targets && k < targets->size() ? &at(*targets, k, wp + "target: ") : nullptr;
+        for (const char* attr : {"POSITION", "NORMAL"}) {
+          std::vector<float> v(size_t(vertices) * 3, 0.0f);
+          if (target && target->contains(attr)) {
+            const std::string wt = wp + "target " + std::to_string(k) + " " + attr;
+            if (!floats((*target)[attr], 3, v, wt)) {
+              warn(path_ + ": " + wt + ": offsets that are not 32-bit floats in a buffer view are not read "
+                                       "(the mesh is not morphed)");
+              return cached.second = nullptr;
+            }
+            if (v.size() != vertices * 3)
+              fail(wt + ": " + std::to_string(v.size() / 3) + " offsets for " + std::to_string(vertices) + " vertices");
+            any_normals |= attr == std::string_view("NORMAL");
+          }
+          std::vector<Vec3>& to = attr == std::string_view("POSITION") ? out->positions[k] : out->normals[k];
+          for (size_t i = 0; i + 2 < v.size(); i += 3) to.push_back({v[i], v[i + 1], v[i + 2]});
+        }
+      }
+    }
+    if (!any_normals) out->normals.clear();
+    // The rest weights: the node's, else the mesh's, else zeros.
+    const std::vector<float> zeros(count, 0.0f);
+    out->rest_weights = numbers(mesh, "weights", zeros, -1e30f, 1e30f, w);
+    out->rest_weights = numbers(node, "weights", out->rest_weights, -1e30f, 1e30f, where);
+    return cached.second = out;
+  }
+
   // An animated node's rest translation, rotation and scale (an animated node has no
   // "matrix", says the spec; one that has is decomposed no further: identity rest).
   void rest_pose(const json& node, NodeAnimation& out, const std::string& where) const {
@@ -512,6 +590,7 @@ class Reader {
   const std::string& path_;
   const LoadOptions& options_;
   size_t budget_;
+  std::map<size_t, std::pair<bool, std::shared_ptr<MorphTargets>>> morphs_;  // by mesh: read yet, the targets
   std::map<size_t, std::shared_ptr<const Texture>> images_;
   std::map<size_t, std::string> buffers_;
 };

@@ -407,7 +407,8 @@ void check_primitives(const json& root, const std::vector<uint64_t>& accessor_co
   }
 }
 
-// Velocity neither skins nor animates: those parts go (see gltf_check.hpp). Nor does it
+// Assimp gets no skins, animations or morph targets: those parts go (see gltf_check.hpp;
+// Velocity reads animations and morph targets from the JSON itself). Nor does it
 // draw lines from model files, and Assimp 5.2.5 crashes (a null pointer) on a LINE_LOOP
 // primitive (mode 2) whose first index is out of range, while it drops such indices in
 // a LINE_STRIP (mode 3): line loops are given to it as line strips.

@@ -9,6 +9,11 @@ namespace {
 
 Vec3 lerp(Vec3 a, Vec3 b, float u) { return a + (b - a) * u; }
 Quat lerp(Quat a, Quat b, float u) { return slerp(a, b, u); }
+std::vector<float> lerp(const std::vector<float>& a, const std::vector<float>& b, float u) {
+  std::vector<float> out(std::min(a.size(), b.size()));
+  for (size_t i = 0; i < out.size(); ++i) out[i] = a[i] + (b[i] - a[i]) * u;
+  return out;
+}
 
 // The key interval holding `t`, and how far into it; shared by both value types.
 template <typename T>
@@ -53,6 +58,30 @@ Mat4 rotation_matrix(Quat q) {
 Vec3 sample(const Keys<Vec3>& keys, float t, Vec3 rest) { return sample_keys(keys, t, rest); }
 Quat sample(const Keys<Quat>& keys, float t, Quat rest) { return sample_keys(keys, t, rest); }
 
+std::vector<float> sample(const Keys<std::vector<float>>& keys, float t, const std::vector<float>& rest) {
+  return sample_keys(keys, t, rest);
+}
+
+Mesh morph(const MorphTargets& targets, const std::vector<float>& weights) {
+  Mesh out = *targets.base;
+  const size_t n = out.positions.size();
+  bool normals = false;
+  for (size_t k = 0; k < weights.size(); ++k) {
+    const float w = weights[k];
+    if (w == 0 || !std::isfinite(w)) continue;
+    if (k < targets.positions.size() && targets.positions[k].size() == n)
+      for (size_t v = 0; v < n; ++v) out.positions[v] += targets.positions[k][v] * w;
+    if (k < targets.normals.size() && targets.normals[k].size() == n && out.normals.size() == n) {
+      for (size_t v = 0; v < n; ++v) out.normals[v] += targets.normals[k][v] * w;
+      normals = true;
+    }
+  }
+  if (normals)
+    for (Vec3& v : out.normals)
+      if (const float len = length(v); len > 1e-12f && std::isfinite(len)) v = v * (1 / len);
+  return out;
+}
+
 Mat4 pose(const NodeAnimation& node, float t) {
   return translate(sample(node.translation, t, node.rest_translation)) *
          rotation_matrix(sample(node.rotation, t, node.rest_rotation)) * scale(sample(node.scale, t, node.rest_scale));
@@ -61,6 +90,10 @@ Mat4 pose(const NodeAnimation& node, float t) {
 void apply(const Animation& animation, float t, Scene& scene) {
   for (const NodeAnimation& n : animation.nodes)
     if (n.node < scene.objects().size()) scene.object(ObjectId(n.node)).base = pose(n, t);
+  for (const MorphAnimation& m : animation.morphs)
+    if (m.node < scene.objects().size() && m.targets && m.targets->base)
+      scene.object(ObjectId(m.node)).mesh =
+          std::make_shared<const Mesh>(morph(*m.targets, sample(m.weights, t, m.targets->rest_weights)));
 }
 
 void rest(const Animation& animation, Scene& scene) {
@@ -68,6 +101,9 @@ void rest(const Animation& animation, Scene& scene) {
     if (n.node < scene.objects().size())
       scene.object(ObjectId(n.node)).base =
           translate(n.rest_translation) * rotation_matrix(n.rest_rotation) * scale(n.rest_scale);
+  for (const MorphAnimation& m : animation.morphs)
+    if (m.node < scene.objects().size() && m.targets && m.targets->base)
+      scene.object(ObjectId(m.node)).mesh = std::make_shared<const Mesh>(morph(*m.targets, m.targets->rest_weights));
 }
 
 }  // namespace velocity
