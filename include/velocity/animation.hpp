@@ -3,6 +3,8 @@
 // plays them by setting each animated object's `base` matrix every frame (apply).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,6 +66,17 @@ struct Animation {
   std::vector<MorphAnimation> morphs;
 };
 
+// A skinned mesh (a glTF skin): each vertex of `base` (the bind pose) moved by up to
+// four joints, by weight. Nodes are as NodeAnimation::node (ObjectIds in a scene).
+struct Skin {
+  size_t node = 0;  // the object whose mesh is skinned
+  std::shared_ptr<const Mesh> base;
+  std::vector<size_t> joints;
+  std::vector<Mat4> inverse_bind;  // one per joint: from the mesh's space to the joint's at bind
+  std::vector<std::array<uint16_t, 4>> vertex_joints;  // indices into `joints`, one set a vertex
+  std::vector<std::array<float, 4>> vertex_weights;
+};
+
 // The spherical interpolation from `a` to `b` by `u` in [0, 1], the short way round.
 Quat slerp(Quat a, Quat b, float u);
 // The rotation matrix of `q` (normalised first; a zero quaternion is no rotation).
@@ -86,6 +99,13 @@ Mat4 pose(const NodeAnimation& node, float t);
 // the mesh of every morphed one to its mesh at the weights at `t` (NodeAnimation::node
 // and MorphAnimation::node are ObjectIds there; ids not in the scene are skipped).
 void apply(const Animation& animation, float t, Scene& scene);
+// Sets each skin's object's mesh to its base with every vertex moved by its joints as
+// they stand in `scene` now (after apply): the weighted sum of inverse(the object's world
+// matrix) * the joint's world matrix * its inverse bind matrix, as glTF specifies.
+// Normals turn with it (renormalised). A vertex whose weights add to zero stays put; a
+// skin whose arrays do not match its base or whose ids are not in the scene is skipped.
+void skin(const std::vector<Skin>& skins, Scene& scene);
+
 // Puts every object `animation` moves back at its rest pose and rest weights (before another animation
 // plays: nodes only the first one moves would otherwise keep its last pose).
 void rest(const Animation& animation, Scene& scene);

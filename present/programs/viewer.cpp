@@ -85,11 +85,12 @@ ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
 void ViewerProgram::open(const std::string& path) {
   Scene scene;
   std::vector<Animation> animations;
+  std::vector<Skin> skins;
   if (path.empty()) {
     scene = make_demo_scene();
     name_ = "DEMO SCENE";
   } else {
-    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_), &animations);
+    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_), &animations, &skins);
     name_ = std::filesystem::path(path).filename().string();
   }
   triangles_ = points_ = 0;
@@ -135,10 +136,12 @@ void ViewerProgram::open(const std::string& path) {
   for (int a = 0; a < 3; ++a) axes_[a] = std::make_shared<const Mesh>(make_axis(a, radius_ * 0.6f, axis_colors[a]));
   scene_ = std::move(scene);
   animations_ = std::move(animations);
+  skins_ = std::move(skins);
   anim_time_ = 0;
   anim_ = 0;
   playing_ = true;
   if (!animations_.empty()) apply(animations_[0], 0.0f, scene_);
+  skin(skins_, scene_);
   reset_view();
 }
 
@@ -148,6 +151,7 @@ void ViewerProgram::seek(double t) {
   const double length = animations_[anim_].duration;
   anim_time_ = length > 0 ? t - std::floor(t / length) * length : 0.0;
   apply(animations_[anim_], float(anim_time_), scene_);
+  skin(skins_, scene_);  // the joints moved
   changed_ = true;
 }
 

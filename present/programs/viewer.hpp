@@ -99,6 +99,7 @@ class ViewerProgram : public Program {
   std::vector<Animation> animations_;
   double anim_time_ = 0;
   size_t anim_ = 0;  // the one playing
+  std::vector<Skin> skins_;  // posed after each step of the animation
   bool playing_ = true;
 };
 

@@ -646,6 +646,27 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
       });
       if (!a.nodes.empty() || !a.morphs.empty()) model.animations.push_back(std::move(a));
     }
+  // Skins: the skinned node's mesh is the bind pose (its vertices the primitives' in order).
+  if (gltf_appearance)
+    for (Skin skin : gltf_appearance->skins) {
+      auto it = model_node_of_gltf.find(skin.node);
+      if (it == model_node_of_gltf.end() || !model.nodes[it->second].mesh) continue;
+      skin.node = it->second;
+      skin.base = model.nodes[skin.node].mesh;
+      bool found = true;
+      for (size_t& j : skin.joints) {
+        auto joint = model_node_of_gltf.find(j);
+        found &= joint != model_node_of_gltf.end();
+        if (found) j = joint->second;
+      }
+      if (!found) continue;  // a joint outside the scene shown
+      if (skin.vertex_joints.size() != skin.base->positions.size()) {
+        warn(path + ": node \"" + model.nodes[skin.node].name + "\": its skin does not match its mesh's " +
+             std::to_string(skin.base->positions.size()) + " vertices (not skinned)");
+        continue;
+      }
+      model.skins.push_back(std::move(skin));
+    }
 
   const std::string ext = detail::lower_extension(path);
   const bool gltf = ext == "gltf" || ext == "glb";

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -436,6 +437,48 @@ class Reader {
     return it->second;
   }
 
+  // Accessor `v` of `type` (`width` components) as floats, whatever its component type:
+  // floats as they are, unsigned bytes and shorts as their value, or divided by their
+  // largest when "normalized". False for a sparse accessor or one without a buffer view.
+  bool elements(const json& v, const char* type, size_t width, std::vector<float>& out, const std::string& where) {
+    const json& acc = at(list("accessors"), index(v, list("accessors").size(), where + " accessor"), where + ": ");
+    if (acc.value("type", std::string()) != type)
+      fail(where + ": accessor type " + acc.value("type", json()).dump() + ", expected " + type);
+    const int component = acc.value("componentType", 0);
+    const size_t size = component == 5126 ? 4 : component == 5123 ? 2 : component == 5121 ? 1 : 0;
+    if (size == 0) fail(where + ": component type " + std::to_string(component) + ", expected 5121, 5123 or 5126");
+    if (!acc.contains("bufferView") || acc.contains("sparse")) return false;
+    const bool normalized = acc.value("normalized", false);
+    const uint64_t count = whole(acc, "count", 0, where + ": ");
+    const size_t view_index = index(acc["bufferView"], list("bufferViews").size(), where + ": bufferView");
+    const std::string_view bytes = buffer_view(view_index, path_);
+    const uint64_t offset = whole(acc, "byteOffset", 0, where + ": ");
+    const uint64_t stride =
+        whole(at(list("bufferViews"), view_index, where + ": "), "byteStride", width * size, where + ": ");
+    out.clear();
+    if (count == 0) return true;
+    if (stride < width * size || offset > bytes.size() || (count - 1) > (bytes.size() - offset) / stride ||
+        offset + (count - 1) * stride + width * size > bytes.size())
+      fail(where + ": accessor runs past the end of its buffer view");
+    out.resize(size_t(count) * width);
+    for (size_t k = 0; k < count; ++k)
+      for (size_t c = 0; c < width; ++c) {
+        const char* at_byte = bytes.data() + offset + k * stride + c * size;
+        float& to = out[k * width + c];
+        if (size == 4) {
+          std::memcpy(&to, at_byte, 4);  // glTF is little-endian, as we are
+        } else if (size == 2) {
+          uint16_t u;
+          std::memcpy(&u, at_byte, 2);
+          to = normalized ? float(u) / 65535.0f : float(u);
+        } else {
+          const uint8_t u = uint8_t(*at_byte);
+          to = normalized ? float(u) / 255.0f : float(u);
+        }
+      }
+    return true;
+  }
+
   // Accessor `v` as floats, `width` a element (SCALAR 1, VEC3 3, VEC4 4): false when it
   // is not plain 32-bit floats in a buffer view (gltf_check made sure it lies inside it).
   bool floats(const json& v, size_t width, std::vector<float>& out, const std::string& where) {
@@ -521,6 +564,87 @@ class Reader {
     return cached.second = out;
   }
 
+ public:
+  // The file's skins, one per node with a "skin" and a "mesh": the joints and inverse
+  // bind matrices, and each vertex's JOINTS_0 and WEIGHTS_0, its primitives' one after
+  // another (a primitive without them: weights zero, its vertices stay put). Skins whose
+  // accessors are sparse are left out with a warning.
+  std::vector<Skin> skins() {
+    std::vector<Skin> out;
+    const json& nodes = list("nodes");
+    const json& skins = list("skins");
+    const json& accessors = list("accessors");
+    for (size_t n = 0; n < nodes.size(); ++n) {
+      const std::string where = "node " + std::to_string(n) + ": ";
+      const json& node = at(nodes, n, where);
+      if (!node.contains("skin") || !node.contains("mesh")) continue;
+      const size_t si = index(node["skin"], skins.size(), where + "skin");
+      const std::string w = "skin " + std::to_string(si) + ": ";
+      const json& def = at(skins, si, w);
+      const json* joints = member(def, "joints", json::value_t::array, w);
+      if (!joints || joints->empty()) fail(w + "expected \"joints\", a list of nodes");
+      Skin skin;
+      skin.node = n;
+      for (const json& j : *joints) skin.joints.push_back(index(j, nodes.size(), w + "joint"));
+      skin.inverse_bind.assign(joints->size(), Mat4::identity());
+      if (def.contains("inverseBindMatrices")) {
+        std::vector<float> m;
+        if (!elements(def["inverseBindMatrices"], "MAT4", 16, m, w + "inverseBindMatrices")) {
+          warn(path_ + ": " + w + "inverse bind matrices that are not 32-bit floats are not read (not skinned)");
+          continue;
+        }
+        if (m.size() != joints->size() * 16)
+          fail(w + std::to_string(m.size() / 16) + " inverse bind matrices for " + std::to_string(joints->size()) +
+               " joints");
+        for (size_t j = 0; j < joints->size(); ++j)
+          for (int k = 0; k < 16; ++k) skin.inverse_bind[j].m[k % 4][k / 4] = m[j * 16 + size_t(k)];  // column-major
+      }
+      const size_t mi = index(node["mesh"], list("meshes").size(), where + "mesh");
+      const json* prims = member(at(list("meshes"), mi, where + "mesh: "), "primitives", json::value_t::array, where);
+      bool read = true;
+      for (size_t p = 0; prims && p < prims->size() && read; ++p) {
+        const std::string wp = where + "mesh " + std::to_string(mi) + ": primitive " + std::to_string(p) + ": ";
+        const json* attrs = member(at(*prims, p, wp), "attributes", json::value_t::object, wp);
+        if (!attrs || !attrs->contains("POSITION")) fail(wp + "expected a POSITION attribute");
+        const uint64_t vertices =
+            whole(at(accessors, index((*attrs)["POSITION"], accessors.size(), wp + "POSITION"), wp), "count", 0, wp);
+        // (Each skinned node holds its own copy: within the memory limit.)
+        constexpr size_t kBytesPerVertex = 2 * 4 * sizeof(float) + sizeof(std::array<uint16_t, 4>) + sizeof(std::array<float, 4>);
+        if (vertices > budget_ / kBytesPerVertex)
+          fail(wp + "skinning " + std::to_string(vertices) + " vertices needs more than the memory limit");
+        budget_ -= size_t(vertices) * kBytesPerVertex;
+        std::vector<float> j(size_t(vertices) * 4, 0.0f), wt(size_t(vertices) * 4, 0.0f);
+        if (attrs->contains("JOINTS_0") && attrs->contains("WEIGHTS_0")) {
+          read = elements((*attrs)["JOINTS_0"], "VEC4", 4, j, wp + "JOINTS_0") &&
+                 elements((*attrs)["WEIGHTS_0"], "VEC4", 4, wt, wp + "WEIGHTS_0");
+          if (!read) {
+            warn(path_ + ": " + wp + "sparse joints or weights are not read (not skinned)");
+            break;
+          }
+          if (j.size() != vertices * 4 || wt.size() != vertices * 4)
+            fail(wp + "JOINTS_0 and WEIGHTS_0 need one element per vertex (" + std::to_string(vertices) + ")");
+        }
+        for (size_t v = 0; v < vertices; ++v) {
+          std::array<uint16_t, 4> js{};
+          std::array<float, 4> ws{};
+          for (size_t k = 0; k < 4; ++k) {
+            const float index_value = j[v * 4 + k];
+            if (wt[v * 4 + k] != 0 && !(index_value >= 0 && index_value < float(joints->size())))
+              fail(wp + "JOINTS_0 of vertex " + std::to_string(v) + " is " + std::to_string(index_value) +
+                   ", expected a joint below " + std::to_string(joints->size()));
+            js[k] = uint16_t(index_value >= 0 && index_value < float(joints->size()) ? index_value : 0);
+            ws[k] = wt[v * 4 + k];
+          }
+          skin.vertex_joints.push_back(js);
+          skin.vertex_weights.push_back(ws);
+        }
+      }
+      if (read) out.push_back(std::move(skin));
+    }
+    return out;
+  }
+
+ private:
   // An animated node's rest translation, rotation and scale (an animated node has no
   // "matrix", says the spec; one that has is decomposed no further: identity rest).
   void rest_pose(const json& node, NodeAnimation& out, const std::string& where) const {
@@ -657,6 +781,7 @@ GltfAppearance read_gltf_appearance(std::string_view bytes, const std::string& p
   out.materials.push_back(Reader::default_material());
   out.lights = reader.lights();
   out.animations = reader.animations();
+  out.skins = reader.skins();
   return out;
 }
 

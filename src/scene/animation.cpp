@@ -82,6 +82,39 @@ Mesh morph(const MorphTargets& targets, const std::vector<float>& weights) {
   return out;
 }
 
+void skin(const std::vector<Skin>& skins, Scene& scene) {
+  if (skins.empty()) return;
+  const std::vector<Mat4> world = scene.world_matrices();
+  for (const Skin& s : skins) {
+    const size_t n = s.base ? s.base->positions.size() : 0;
+    bool fits = s.base && s.node < world.size() && s.inverse_bind.size() == s.joints.size() &&
+                s.vertex_joints.size() == n && s.vertex_weights.size() == n;
+    for (size_t j : s.joints) fits &= j < world.size();
+    Mat4 to_mesh;
+    if (!fits || !invert(world[s.node], to_mesh)) continue;
+    std::vector<Mat4> joint(s.joints.size());
+    for (size_t j = 0; j < joint.size(); ++j) joint[j] = to_mesh * world[s.joints[j]] * s.inverse_bind[j];
+    Mesh out = *s.base;
+    const bool normals = out.normals.size() == n;
+    for (size_t v = 0; v < n; ++v) {
+      Vec3 p, nn;
+      float total = 0;
+      for (int k = 0; k < 4; ++k) {
+        const float w = s.vertex_weights[v][k];
+        if (!(w > 0) || s.vertex_joints[v][k] >= joint.size()) continue;  // NaN too
+        const Mat4& m = joint[s.vertex_joints[v][k]];
+        p += m.transform_point(s.base->positions[v]) * w;
+        if (normals) nn += m.transform_vector(s.base->normals[v]) * w;
+        total += w;
+      }
+      if (!(total > 0) || !std::isfinite(total)) continue;
+      out.positions[v] = p * (1 / total);
+      if (const float len = length(nn); normals && len > 1e-12f && std::isfinite(len)) out.normals[v] = nn * (1 / len);
+    }
+    scene.object(ObjectId(s.node)).mesh = std::make_shared<const Mesh>(std::move(out));
+  }
+}
+
 Mat4 pose(const NodeAnimation& node, float t) {
   return translate(sample(node.translation, t, node.rest_translation)) *
          rotation_matrix(sample(node.rotation, t, node.rest_rotation)) * scale(sample(node.scale, t, node.rest_scale));

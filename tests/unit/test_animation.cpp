@@ -166,6 +166,75 @@ TEST(MorphFile, MorphCubeWeightsMoveTheTargetsVertices) {
   EXPECT_NEAR(scene.objects()[morph_keys.node].mesh->positions[5].y, -0.01f, 1e-6f);
 }
 
+// The glTF tutorial's SimpleSkin (Debian's assimp-testmodels: simple_skin.gltf): a strip
+// of 10 vertices, two joints at (0, 1, 0) (the second, a child of the first, turns about
+// Z: from none at 0 s to 45.03 degrees at 0.5 s), both inverse bind matrices a
+// translation by (-0.5, -1, 0), so the rest pose stands half a unit left of the bind
+// pose. Expected values worked out by hand from the file (a Python reading of its data
+// URIs): at 0.25 s the second joint has turned 22.514 degrees.
+TEST(SkinFile, SimpleSkinVerticesFollowTheirJointsByWeight) {
+  const std::string file = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf";
+  if (!fs::exists(file)) GTEST_SKIP() << "skipped: " << file << " is missing (Debian package assimp-testmodels)";
+  Model m = load_model(file);
+  ASSERT_EQ(m.skins.size(), 1u);
+  const Skin& sk = m.skins[0];
+  ASSERT_EQ(sk.joints.size(), 2u);
+  ASSERT_EQ(sk.vertex_weights.size(), 10u);
+  EXPECT_EQ(m.nodes[sk.joints[1]].parent, int(sk.joints[0])) << "the second joint is the first's child";
+  EXPECT_FLOAT_EQ(sk.vertex_weights[2][0], 0.75f);
+  EXPECT_FLOAT_EQ(sk.vertex_weights[2][1], 0.25f);
+  ASSERT_EQ(m.animations.size(), 1u);
+  Scene scene;
+  add_to_scene(scene, m);
+  // At rest: every vertex half a unit left (both joints where they were bound, less 0.5 in x).
+  skin(m.skins, scene);
+  const Mesh* mesh = scene.objects()[sk.node].mesh.get();
+  EXPECT_NEAR(mesh->positions[9].x, 0.5f, 1e-6f);
+  EXPECT_NEAR(mesh->positions[9].y, 2.0f, 1e-6f);
+  // 0.25 s: vertex 9 (1, 2, 0) on the second joint alone, vertex 5 (1, 1, 0) half and
+  // half, vertex 2 (0, 0.5, 0) three quarters on the first.
+  apply(m.animations[0], 0.25f, scene);
+  skin(m.skins, scene);
+  mesh = scene.objects()[sk.node].mesh.get();
+  EXPECT_NEAR(mesh->positions[9].x, 0.0789816f, 1e-4f);
+  EXPECT_NEAR(mesh->positions[9].y, 2.1152407f, 1e-4f);
+  EXPECT_NEAR(mesh->positions[5].x, 0.4809463f, 1e-4f);
+  EXPECT_NEAR(mesh->positions[5].y, 1.0957277f, 1e-4f);
+  EXPECT_NEAR(mesh->positions[2].x, -0.4426093f, 1e-4f);
+  EXPECT_NEAR(mesh->positions[2].y, 0.4616630f, 1e-4f);
+  EXPECT_NEAR(mesh->positions[2].z, 0.0f, 1e-6f);
+  for (const Vec3& n : mesh->normals) EXPECT_NEAR(length(n), 1.0f, 1e-4f);
+}
+
+// A joint that does not exist, and joints of a vertex past the skin's, are refused.
+TEST_F(AnimationFile, BadSkinsAreRefusedWithThePlaceNamed) {
+  const std::string file = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf";
+  if (!fs::exists(file)) GTEST_SKIP() << "skipped: " << file << " is missing (Debian package assimp-testmodels)";
+  std::ifstream in(file);
+  const nlohmann::json good = nlohmann::json::parse(in);
+  auto message = [&](auto change) {
+    nlohmann::json j = good;
+    change(j);
+    try {
+      load_model(write("bad.gltf", j.dump()));
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(loaded)");
+  };
+  std::string m = message([](nlohmann::json& j) { j["skins"][0]["joints"][1] = 7; });
+  EXPECT_NE(m.find("skin 0: joint is 7, expected an index below 3"), std::string::npos) << m;
+  // One joint only: the vertices' second joint (index 1) is past it.
+  m = message([](nlohmann::json& j) {
+    j["skins"][0]["joints"] = {1};
+    j["skins"][0].erase("inverseBindMatrices");
+  });
+  EXPECT_NE(m.find("JOINTS_0 of vertex 2 is 1.000000, expected a joint below 1"), std::string::npos) << m;
+  // Inverse bind matrices that are not MAT4.
+  m = message([](nlohmann::json& j) { j["skins"][0]["inverseBindMatrices"] = 1; });
+  EXPECT_NE(m.find("skin 0: inverseBindMatrices: accessor type \"VEC3\", expected MAT4"), std::string::npos) << m;
+}
+
 // Morph weights on a node without a mesh, and targets that do not fit their primitive,
 // are refused naming the channel or primitive.
 TEST_F(AnimationFile, BadMorphTargetsAreRefusedWithThePlaceNamed) {
