@@ -306,6 +306,10 @@ GLint glRenderMode(GLenum mode) {  // never compiled
   return r;
 }
 void glSelectBuffer(GLsizei size, GLuint* buffer) { NOW(c.select_buffer(size, buffer)); }  // never compiled
+void glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {  // never compiled
+  NOW(c.feedback_buffer(size, type, buffer));
+}
+void glPassThrough(GLfloat token) { LIST(c.pass_through(token)); }
 void glInitNames(void) { LIST(c.init_names()); }
 void glPushName(GLuint name) { LIST(c.push_name(name)); }
 void glPopName(void) { LIST(c.pop_name()); }

@@ -394,6 +394,25 @@ typedef double GLclampd;
 #define GL_RENDER_MODE 0x0C40
 #define GL_NAME_STACK_DEPTH 0x0D70
 #define GL_SELECTION_BUFFER_SIZE 0x0DF4
+#define GL_SELECTION_BUFFER_POINTER 0x0DF3
+
+/* Feedback (glRenderMode(GL_FEEDBACK), glFeedbackBuffer, glPassThrough) */
+#define GL_2D 0x0600
+#define GL_3D 0x0601
+#define GL_3D_COLOR 0x0602
+#define GL_3D_COLOR_TEXTURE 0x0603
+#define GL_4D_COLOR_TEXTURE 0x0604
+#define GL_PASS_THROUGH_TOKEN 0x0700
+#define GL_POINT_TOKEN 0x0701
+#define GL_LINE_TOKEN 0x0702
+#define GL_POLYGON_TOKEN 0x0703
+#define GL_BITMAP_TOKEN 0x0704
+#define GL_DRAW_PIXEL_TOKEN 0x0705
+#define GL_COPY_PIXEL_TOKEN 0x0706
+#define GL_LINE_RESET_TOKEN 0x0707
+#define GL_FEEDBACK_BUFFER_POINTER 0x0DF0
+#define GL_FEEDBACK_BUFFER_SIZE 0x0DF1
+#define GL_FEEDBACK_BUFFER_TYPE 0x0DF2
 
 /* Textures */
 #define GL_TEXTURE_2D 0x0DE1
@@ -584,6 +603,8 @@ GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
 GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *pointer);
 GLAPI GLint GLAPIENTRY glRenderMode(GLenum mode);
 GLAPI void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint *buffer);
+GLAPI void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
+GLAPI void GLAPIENTRY glPassThrough(GLfloat token);
 GLAPI void GLAPIENTRY glInitNames(void);
 GLAPI void GLAPIENTRY glPushName(GLuint name);
 GLAPI void GLAPIENTRY glPopName(void);
