@@ -374,6 +374,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         glColorPointer(3 + in.below(2), in.u8() & 1 ? GL_FLOAT : GL_UNSIGNED_BYTE, 0, attrib.data() + 4);
         glNormalPointer(GL_FLOAT, 0, attrib.data() + 8);
         glTexCoordPointer(1 + in.below(4), GL_FLOAT, 0, attrib.data() + 12);
+        // Or the interleaved formats (one past the last too) over `out`, packed or not.
+        if (in.u8() & 1) glInterleavedArrays(GL_V2F + GLenum(in.below(15)), GLsizei(in.below(18) * 4) - 4, out.data());
         break;
       }
       case 49: (in.u8() & 1 ? glEnableClientState : glDisableClientState)(e1); break;

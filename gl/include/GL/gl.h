@@ -382,6 +382,22 @@ typedef double GLclampd;
 #define GL_BLEND_DST_ALPHA 0x80CA
 #define GL_BLEND_SRC_ALPHA 0x80CB
 
+/* glInterleavedArrays' formats */
+#define GL_V2F 0x2A20
+#define GL_V3F 0x2A21
+#define GL_C4UB_V2F 0x2A22
+#define GL_C4UB_V3F 0x2A23
+#define GL_C3F_V3F 0x2A24
+#define GL_N3F_V3F 0x2A25
+#define GL_C4F_N3F_V3F 0x2A26
+#define GL_T2F_V3F 0x2A27
+#define GL_T4F_V4F 0x2A28
+#define GL_T2F_C4UB_V3F 0x2A29
+#define GL_T2F_C3F_V3F 0x2A2A
+#define GL_T2F_N3F_V3F 0x2A2B
+#define GL_T2F_C4F_N3F_V3F 0x2A2C
+#define GL_T4F_C4F_N3F_V4F 0x2A2D
+
 /* Edge flags (glEdgeFlag, glEdgeFlagPointer) */
 #define GL_EDGE_FLAG 0x0B43
 #define GL_EDGE_FLAG_ARRAY 0x8079
@@ -787,6 +803,7 @@ GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, c
 GLAPI void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 GLAPI void GLAPIENTRY glEnableClientState(GLenum cap);
 GLAPI void GLAPIENTRY glDisableClientState(GLenum cap);
 GLAPI void GLAPIENTRY glArrayElement(GLint i);
