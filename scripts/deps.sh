@@ -15,7 +15,8 @@
 #   libhwy-dev                       Google Highway: the SIMD kernels, one source for every instruction set
 #   libbenchmark-dev                 Google Benchmark: the stages' micro-benchmarks (tests/bench/micro.cpp)
 #   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
-#   libglu1-mesa-dev                 GLU for pGL's conformance programs built against Mesa (gl/tests)
+#   libglu1-mesa-dev                 GLU: the tessellator pGL programs link (gl/CMakeLists.txt), and GLU for
+#                                    pGL's conformance programs built against Mesa (gl/tests)
 #   pkg-config                       finds OSMesa
 #   python3-dev, pybind11-dev        the Python module (python/): headers and the bindings
 #   python3-numpy                    its arrays (colour, depth, masks, meshes)
