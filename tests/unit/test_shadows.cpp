@@ -351,7 +351,7 @@ Mesh cut_out_quad(bool vertex_alpha) {
       q.positions.push_back({kQuadHalf * (2 * u - 1), kQuadY, kQuadHalf * (2 * v - 1)});
       q.normals.push_back({0, 1, 0});
       q.uvs.push_back({u, v});
-      if (vertex_alpha) q.colors.push_back({1, 1, 1}), q.alphas.push_back(u);  // (alpha goes with a colour)
+      if (vertex_alpha) q.alphas.push_back(u);  // alone, without Mesh::colors
     }
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
