@@ -229,6 +229,8 @@ void CpuBackend::begin(const Mat4& view, const Mat4& projection, bool orthograph
   r.stats_ = {};
 }
 
+namespace {
+
 // Whether a draw of `mesh` with `material` (null: the mesh's own) has a slot whose
 // alpha decides which pixels it covers: a Pbr material (as the frame shades it) that is
 // MASK or BLEND. Such a draw casts through the Pbr kernel's alpha test.
@@ -239,6 +241,8 @@ bool casts_cut_out(const Mesh& mesh, const Material* material, const RenderOptio
   if (material) return cut(*material);
   return std::any_of(mesh.materials.begin(), mesh.materials.end(), cut);
 }
+
+}  // namespace
 
 void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) try {
   CpuBackend& r = *this;
