@@ -5,8 +5,8 @@
 // pipeline's own code on the same samples.
 //
 // What is uploaded when (docs/gpu.md): a mesh the first frame it is drawn, again only
-// when its contents change (a 64-bit fingerprint of every array it has, computed at each
-// draw); a texture and its mip levels the first frame it is read, again when its texels
+// when its contents change (a 64-bit fingerprint of every array it has, computed once a
+// frame on the renderer's threads); a texture and its mip levels the first frame it is read, again when its texels
 // change (the same fingerprint); lights and camera every frame (uniforms). Entries not
 // used for kEvictFrames frames, and the least recently used ones beyond the budget
 // bytes, are deleted.
@@ -17,10 +17,12 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
 #include "context.hpp"
+#include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
@@ -69,21 +71,71 @@ struct Fingerprint {
   uint64_t value() const { return lane[0] ^ (lane[1] * 3) ^ (lane[2] * 5) ^ (lane[3] * 7); }
 };
 
-uint64_t fingerprint(const Mesh& m) {
-  Fingerprint f;
+// The fingerprint of several arrays, hashed in chunks on a thread pool: every frame
+// checks every byte of what it draws (10 M triangles are some 300 MB), which one thread
+// does at a few GB/s. The sizes go in first, then each chunk's own fingerprint in
+// order, so the value does not depend on the number of threads.
+class ChunkedFingerprint {
+ public:
+  template <class T>
+  void add(const std::vector<T>& v) {
+    const uint64_t n = v.size();
+    sizes_.add(&n, sizeof n);
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(v.data());
+    const size_t bytes = v.size() * sizeof(T);
+    for (size_t at = 0; at < bytes; at += kChunk) chunks_.push_back({p + at, std::min(kChunk, bytes - at)});
+  }
+  void add_size(uint64_t n) { sizes_.add(&n, sizeof n); }
+  uint64_t value(ThreadPool& pool) {
+    std::vector<uint64_t> values(chunks_.size());
+    pool.run(int(chunks_.size()), [&](int i) {
+      Fingerprint f;
+      f.add(chunks_[size_t(i)].first, chunks_[size_t(i)].second);
+      values[size_t(i)] = f.value();
+    });
+    Fingerprint f = sizes_;
+    if (!values.empty()) f.add(values.data(), values.size() * sizeof(uint64_t));
+    return f.value();
+  }
+
+ private:
+  static constexpr size_t kChunk = size_t(1) << 20;
+  Fingerprint sizes_;
+  std::vector<std::pair<const unsigned char*, size_t>> chunks_;
+};
+
+uint64_t fingerprint(const Mesh& m, ThreadPool& pool) {
+  ChunkedFingerprint f;
   f.add(m.positions), f.add(m.normals), f.add(m.uvs), f.add(m.colors), f.add(m.triangles);
   f.add(m.uvs1), f.add(m.tangents), f.add(m.alphas);
   f.add(m.face_colors), f.add(m.face_materials);
-  const uint64_t materials = m.materials.size();
-  f.add(&materials, sizeof materials);
-  return f.value();
+  f.add_size(m.materials.size());
+  return f.value(pool);
 }
 
-uint64_t fingerprint(const Texture& t) {
-  Fingerprint f;
-  for (const Texture::Level& l : t.levels()) f.add(&l.width, sizeof l.width), f.add(&l.height, sizeof l.height), f.add(l.texels);
-  return f.value();
+uint64_t fingerprint(const Texture& t, ThreadPool& pool) {
+  ChunkedFingerprint f;
+  for (const Texture::Level& l : t.levels()) f.add_size(uint64_t(l.width)), f.add_size(uint64_t(l.height)), f.add(l.texels);
+  return f.value(pool);
 }
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Adds the time from construction to destruction to `total` (a stage's time, over the
+// calls that make it up).
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total) {}
+  ~StageTimer() { total_ += ms_since(t0_); }
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
 
 void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
 
@@ -237,8 +289,10 @@ void GpuBackend::resize(int w, int h, int k) {
                 std::to_string(k) + " super-sampling needs a sample buffer over " + std::to_string(max_side_) +
                 " a side (the GPU's or the renderer's limit)");
   if (w == width_ && h == height_ && k == ssaa_) return;
-  // The CPU copy first: when memory runs out nothing has changed.
+  // The CPU copy first: when memory runs out nothing has changed. The last frame goes
+  // (as the CPU's does): nothing is left to read back.
   samples_.resize(w * k, h * k);
+  pending_ = 0;
   Current current(*context_);
   const int sw = w * k, sh = h * k;
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
@@ -333,7 +387,8 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   // so its copies in the same frame cost no second pass over its bytes.
   auto it = meshes_.find(&mesh);
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
-  const uint64_t key = fingerprint(mesh);
+  StageTimer timer(stats_.upload_ms);
+  const uint64_t key = fingerprint(mesh, pool());
   if (it != meshes_.end() && it->second.fingerprint == key) {
     reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
@@ -435,7 +490,8 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
 GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   auto it = textures_.find({&t, srgb});
   if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
-  const uint64_t key = fingerprint(t);
+  StageTimer timer(stats_.upload_ms);
+  const uint64_t key = fingerprint(t, pool());
   const std::string what = "a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) + " texture";
   if (it != textures_.end() && it->second.fingerprint == key) {
     reserve(it->second.bytes, what);
@@ -470,6 +526,15 @@ GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   }
   cache_bytes_ += e.bytes;
   return textures_.emplace(std::make_pair(&t, srgb), e).first->second.texture;
+}
+
+// The renderer's threads (RenderOptions::threads: 0 is every core), for the fingerprints.
+ThreadPool& GpuBackend::pool() const {
+  int threads = options_.threads > 0 ? options_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, 256);
+  // A pool made before this process was forked has no workers here: a new one.
+  if (!pool_ || pool_->size() != threads || pool_->orphaned()) pool_ = std::make_unique<ThreadPool>(threads);
+  return *pool_;
 }
 
 GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
@@ -1061,51 +1126,80 @@ void GpuBackend::run_clear(const ClearRequest& request) {
 const FrameStats& GpuBackend::end_frame() {
   context_->make_current();
   try {
+    const auto t_submit = std::chrono::steady_clock::now();
+    const double uploads_before = stats_.upload_ms;
     replay();
+    stats_.submit_ms = ms_since(t_submit) - (stats_.upload_ms - uploads_before);
+    const auto t_wait = std::chrono::steady_clock::now();
+    glFinish();
+    stats_.gpu_wait_ms = ms_since(t_wait);
+    check_gl("the GPU frame");
+    context_->check_lost("the GPU frame");
   } catch (...) {
     context_->release();
     throw;
   }
-  // Read back every sample into the CPU framebuffer (its tiled layout).
+  // Nothing is read back yet: each read below fetches what it needs, once a frame.
+  {
+    std::lock_guard<std::mutex> lock(fetch_mutex_);
+    pending_ = kColor | kDepth | (options_.object_ids ? kIds : 0u);
+    samples_.keep_ids(options_.object_ids);
+  }
+  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
+  evict();
+  context_->release();
+  stats_.tile_ms = ms_since(t0_);
+  return stats_;
+}
+
+// Reads the planes in `what` (of the last frame, those not read yet) into the CPU
+// framebuffer's samples, where the CPU pipeline's own read-backs take them.
+void GpuBackend::fetch(unsigned what) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  what &= pending_;
+  if (!what) return;
+  const auto t0 = std::chrono::steady_clock::now();
   const int w = width_ * ssaa_, h = height_ * ssaa_;
-  samples_.keep_ids(options_.object_ids);
-  rows_.resize(size_t(w) * size_t(h));
-  depth_rows_.resize(size_t(w) * size_t(h));
+  Current current(*context_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
-  scatter(rows_.data(), samples_.color.data());
-  scatter(depth_rows_.data(), samples_.depth.data());
-  if (options_.object_ids) {
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  if (what & kColor) {
+    rows_.resize(size_t(w) * size_t(h));
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+    scatter(rows_.data(), samples_.color.data());
+  }
+  if (what & kDepth) {
+    depth_rows_.resize(size_t(w) * size_t(h));
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
+    scatter(depth_rows_.data(), samples_.depth.data());
+  }
+  if (what & kIds) {
+    rows_.resize(size_t(w) * size_t(h));
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, rows_.data());
     scatter(rows_.data(), samples_.ids.data());
   }
-  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
-  try {
-    check_gl("the GPU frame");
-    context_->check_lost("the GPU frame");
-  } catch (const Error&) {
-    context_->release();
-    throw;
-  }
-  evict();
-  context_->release();
-  stats_.tile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
-  return stats_;
+  check_gl("reading the GPU frame back");
+  pending_ &= ~what;
+  stats_.readback_ms += ms_since(t0);
 }
 
-// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks.
+// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks, a band of tile
+// rows to each of the renderer's threads (memory-bound: one thread cannot keep up).
 template <class T>
 void GpuBackend::scatter(const T* rows, T* tiled) const {
   const int w = samples_.width, h = samples_.height;
-  for (int y = 0; y < h; ++y) {
-    const T* row = rows + size_t(y) * size_t(w);
-    int x = 0;
-    for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
-    for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
-  }
+  constexpr int kBand = 64;
+  pool().run((h + kBand - 1) / kBand, [&](int band) {
+    for (int y = band * kBand; y < std::min(h, (band + 1) * kBand); ++y) {
+      const T* row = rows + size_t(y) * size_t(w);
+      int x = 0;
+      for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
+      for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
+    }
+  });
 }
 
 // Drops what was not used for a while, and the least recently used beyond the budget.
@@ -1130,18 +1224,53 @@ void GpuBackend::evict() {
   }
 }
 
-Image GpuBackend::color_image() const { return resolve_color(samples_, ssaa_); }
-Image GpuBackend::depth_image() const { return resolve_depth(samples_, ssaa_); }
+Image GpuBackend::color_image() const {
+  fetch(kColor);
+  return resolve_color(samples_, ssaa_);
+}
+Image GpuBackend::depth_image() const {
+  fetch(kDepth);
+  return resolve_depth(samples_, ssaa_);
+}
 void GpuBackend::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
-  velocity::read_color(samples_, ssaa_, nullptr, rgba, row_bytes, channels);
+  if (ssaa_ == 1 && channels == 4 && row_bytes % 4 == 0 && direct_read(rgba, row_bytes)) return;
+  fetch(kColor);
+  velocity::read_color(samples_, ssaa_, &pool(), rgba, row_bytes, channels);
 }
 void GpuBackend::read_view_depth(float* out) const {
-  velocity::read_view_depth(samples_, ssaa_, nullptr, projection_, out);
+  fetch(kDepth);
+  velocity::read_view_depth(samples_, ssaa_, &pool(), projection_, out);
 }
-void GpuBackend::read_window_depth(float* out) const { velocity::read_window_depth(samples_, ssaa_, nullptr, out); }
+void GpuBackend::read_window_depth(float* out) const {
+  fetch(kDepth);
+  velocity::read_window_depth(samples_, ssaa_, &pool(), out);
+}
+
+// Without super-sampling, RGBA rows are the GPU framebuffer's own pixels: read straight
+// into the caller's rows (no copy through the tiled samples). False when the colour was
+// already fetched (the samples then hold it, and the CPU's read is a copy).
+bool GpuBackend::direct_read(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  if (!(pending_ & kColor)) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  check_gl("reading the GPU frame back");
+  stats_.readback_ms += ms_since(t0);
+  return true;
+}
+
 // The GPU's draws keep no stencil buffer (PixelState's stencil test is the CPU's alone).
 void GpuBackend::read_stencil(uint8_t*) const { throw Error("the GPU backend keeps no stencil buffer"); }
-std::vector<uint32_t> GpuBackend::object_ids() const { return resolve_object_ids(samples_, ssaa_); }
+std::vector<uint32_t> GpuBackend::object_ids() const {
+  fetch(kIds);
+  return resolve_object_ids(samples_, ssaa_);
+}
 size_t GpuBackend::framebuffer_bytes() const {
   return samples_.color.size() * 4 + samples_.depth.size() * 4 + samples_.ids.size() * 4;
 }

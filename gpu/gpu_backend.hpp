@@ -6,6 +6,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -15,6 +16,10 @@
 #include "framebuffer/framebuffer.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/backend.hpp"
+
+namespace velocity {
+class ThreadPool;
+}
 
 namespace velocity::gpu {
 
@@ -93,6 +98,9 @@ class GpuBackend final : public Backend {
   void run_clear(const ClearRequest& request);
   void replay();
   GLuint sampler(Filter filter, Wrap wrap);
+  ThreadPool& pool() const;
+  void fetch(unsigned what) const;
+  bool direct_read(uint8_t* rgba, size_t row_bytes) const;
   void upload_lights(GLuint program);
   void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
@@ -135,12 +143,19 @@ class GpuBackend final : public Backend {
   GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[5] = {};
   std::vector<uint32_t> batch_indices_;
   std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
-  FrameStats stats_;
+  mutable std::unique_ptr<ThreadPool> pool_;
+  mutable FrameStats stats_;  // (readback_ms grows as the frame is read)
   std::chrono::steady_clock::time_point t0_;
 
-  Framebuffer samples_;  // the last frame, read back
-  std::vector<uint32_t> rows_;
-  std::vector<float> depth_rows_;
+  // The last frame, read back plane by plane as the reads ask (fetch): pending_ says
+  // which planes the GPU still holds alone. Reads may come from any thread, one
+  // renderer at a time, so fetching is under a lock.
+  enum Plane : unsigned { kColor = 1, kDepth = 2, kIds = 4 };
+  mutable std::mutex fetch_mutex_;
+  mutable unsigned pending_ = 0;
+  mutable Framebuffer samples_;
+  mutable std::vector<uint32_t> rows_;
+  mutable std::vector<float> depth_rows_;
 };
 
 }  // namespace velocity::gpu
