@@ -1144,6 +1144,7 @@ const FrameStats& GpuBackend::end_frame() {
     std::lock_guard<std::mutex> lock(fetch_mutex_);
     pending_ = kColor | kDepth | (options_.object_ids ? kIds : 0u);
     samples_.keep_ids(options_.object_ids);
+    stats_.readback_ms = reads_ms_, reads_ms_ = 0;  // the last frame's reads (FrameStats)
   }
   std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
   evict();
@@ -1183,7 +1184,7 @@ void GpuBackend::fetch(unsigned what) const {
   }
   check_gl("reading the GPU frame back");
   pending_ &= ~what;
-  stats_.readback_ms += ms_since(t0);
+  reads_ms_ += ms_since(t0);
 }
 
 // Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks, a band of tile
@@ -1261,7 +1262,7 @@ bool GpuBackend::direct_read(uint8_t* rgba, size_t row_bytes) const {
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   glPixelStorei(GL_PACK_ROW_LENGTH, 0);
   check_gl("reading the GPU frame back");
-  stats_.readback_ms += ms_since(t0);
+  reads_ms_ += ms_since(t0);
   return true;
 }
 

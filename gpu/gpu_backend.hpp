@@ -144,7 +144,7 @@ class GpuBackend final : public Backend {
   std::vector<uint32_t> batch_indices_;
   std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
   mutable std::unique_ptr<ThreadPool> pool_;
-  mutable FrameStats stats_;  // (readback_ms grows as the frame is read)
+  FrameStats stats_;
   std::chrono::steady_clock::time_point t0_;
 
   // The last frame, read back plane by plane as the reads ask (fetch): pending_ says
@@ -153,6 +153,7 @@ class GpuBackend final : public Backend {
   enum Plane : unsigned { kColor = 1, kDepth = 2, kIds = 4 };
   mutable std::mutex fetch_mutex_;
   mutable unsigned pending_ = 0;
+  mutable double reads_ms_ = 0;  // the read-backs since the last end_frame
   mutable Framebuffer samples_;
   mutable std::vector<uint32_t> rows_;
   mutable std::vector<float> depth_rows_;
