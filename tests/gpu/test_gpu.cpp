@@ -316,9 +316,10 @@ TEST(GpuCache, InPlaceEditsShowInTheNextFrame) {
     EXPECT_EQ(now, frame(fresh));  // and drawn as a new mesh and texture are
     last = now;
   };
-  // A band of vertices in the middle of the array (not its first chunk) pushed out.
-  for (size_t v = mesh.positions.size() / 2; v < mesh.positions.size() / 2 + 2000; ++v)
-    mesh.positions[v] = mesh.positions[v] * 1.3f;
+  // A band of vertices past the positions' first chunk pushed out.
+  const size_t first = (size_t(1) << 20) / sizeof(Vec3) + 100;
+  ASSERT_LT(first + 2000, mesh.positions.size());
+  for (size_t v = first; v < first + 2000; ++v) mesh.positions[v] = mesh.positions[v] * 1.3f;
   expect_edit_shows("positions", 3);
   for (Vec2& uv : mesh.uvs) uv.x = 1.0f - uv.x;  // mirrored in u
   expect_edit_shows("uvs", 4);
