@@ -265,6 +265,10 @@ GpuBackend::~GpuBackend() {
       if (p) glDeleteProgram(p);
     glDeleteFramebuffers(1, &fbo_);
     glDeleteRenderbuffers(3, renderbuffers_);
+    if (resolve_.program) {
+      glDeleteProgram(resolve_.program), glDeleteVertexArrays(1, &resolve_.vao), glDeleteTextures(1, &resolve_.samples);
+      glDeleteRenderbuffers(1, &resolve_.output), glDeleteFramebuffers(2, resolve_.framebuffers);
+    }
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
     if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(5, batch_buffers_);
@@ -1235,6 +1239,7 @@ Image GpuBackend::depth_image() const {
 }
 void GpuBackend::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
   if (ssaa_ == 1 && channels == 4 && row_bytes % 4 == 0 && direct_read(rgba, row_bytes)) return;
+  if (ssaa_ > 1 && channels == 4 && row_bytes % 4 == 0 && resolve_on_gpu(rgba, row_bytes)) return;
   fetch(kColor);
   velocity::read_color(samples_, ssaa_, &pool(), rgba, row_bytes, channels);
 }
@@ -1245,6 +1250,66 @@ void GpuBackend::read_view_depth(float* out) const {
 void GpuBackend::read_window_depth(float* out) const {
   fetch(kDepth);
   velocity::read_window_depth(samples_, ssaa_, &pool(), out);
+}
+
+// With super-sampling, RGBA rows are resolved on the GPU (build_resolve_program: the
+// CPU's integer box filter) and only the w x h output crosses the bus, not k x k times
+// as many samples. False when the colour was already fetched, as direct_read.
+bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  if (!(pending_ & kColor)) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  Resolve& r = resolve_;
+  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
+  if (!r.program) {
+    r.program = build_resolve_program();
+    glGenVertexArrays(1, &r.vao), glGenTextures(1, &r.samples), glGenRenderbuffers(1, &r.output);
+    glGenFramebuffers(2, r.framebuffers);
+  }
+  if (r.width != width_ || r.height != height_ || r.ssaa != ssaa_) {
+    glBindTexture(GL_TEXTURE_2D, r.samples);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, sw, sh, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[0]);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.samples, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, r.output);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[1]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r.output);
+    check_gl("the GPU resolve's buffers");
+    r.width = width_, r.height = height_, r.ssaa = ssaa_;
+  }
+  // The samples into the texture (the drawn framebuffer's colour is a renderbuffer),
+  // then one triangle over the output.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.framebuffers[0]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glBlitFramebuffer(0, 0, sw, sh, 0, 0, sw, sh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[1]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST), glDisable(GL_SCISSOR_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glUseProgram(r.program);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, r.samples);
+  glBindSampler(0, 0);
+  glUniform1i(glGetUniformLocation(r.program, "u_samples"), 0);
+  glUniform1i(glGetUniformLocation(r.program, "u_k"), ssaa_);
+  glBindVertexArray(r.vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);  // (begin_frame sets the rest of the draws' state)
+  check_gl("resolving the GPU frame");
+  reads_ms_ += ms_since(t0);
+  return true;
 }
 
 // Without super-sampling, RGBA rows are the GPU framebuffer's own pixels: read straight

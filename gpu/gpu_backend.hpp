@@ -101,6 +101,7 @@ class GpuBackend final : public Backend {
   ThreadPool& pool() const;
   void fetch(unsigned what) const;
   bool direct_read(uint8_t* rgba, size_t row_bytes) const;
+  bool resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const;
   void upload_lights(GLuint program);
   void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
@@ -154,6 +155,13 @@ class GpuBackend final : public Backend {
   mutable std::mutex fetch_mutex_;
   mutable unsigned pending_ = 0;
   mutable double reads_ms_ = 0;  // the read-backs since the last end_frame
+  // The super-sampling resolve on the GPU (resolve_on_gpu): a copy of the samples as a
+  // texture, the w x h output, their framebuffers and the pass's program.
+  struct Resolve {
+    GLuint program = 0, vao = 0, samples = 0, output = 0, framebuffers[2] = {};
+    int width = 0, height = 0, ssaa = 0;
+  };
+  mutable Resolve resolve_;
   mutable Framebuffer samples_;
   mutable std::vector<uint32_t> rows_;
   mutable std::vector<float> depth_rows_;

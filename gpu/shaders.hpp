@@ -44,6 +44,9 @@ GLuint build_pbr_program(bool affine);
 // The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
 GLuint build_batch_program();
 
+// The super-sampling resolve pass: u_samples (the k x k sample image), u_k.
+GLuint build_resolve_program();
+
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.
 GLuint build_lighting_test_program();
