@@ -327,9 +327,10 @@ TEST(GpuCache, InPlaceEditsShowInTheNextFrame) {
   expect_edit_shows("texture", 5);
 }
 
-// Reading without super-sampling goes straight from the GPU into the caller's rows;
-// with it, through the samples. Either way it is the CPU pipeline's read of the same
-// frame (color_image), RGBA and RGB, at a row pitch wider than the image.
+// RGBA rows are read straight from the GPU into the caller's rows, resolved on the GPU
+// with super-sampling; RGB rows go through the samples and the CPU. Either way they are
+// the CPU pipeline's read of the same frame (color_image), byte for byte, at a row pitch
+// wider than the image.
 TEST(GpuReadBack, DirectAndResolvedReadsAgree) {
   Mesh mesh = make_sphere(24);
   Material m;
