@@ -1257,11 +1257,12 @@ void GpuBackend::read_window_depth(float* out) const {
 // as many samples. False when the colour was already fetched, as direct_read.
 bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
   std::lock_guard<std::mutex> lock(fetch_mutex_);
-  if (!(pending_ & kColor)) return false;
+  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
+  // (A sample buffer larger than a texture may be: the samples are read, as fetch does.)
+  if (!(pending_ & kColor) || sw > max_texture_ || sh > max_texture_) return false;
   const auto t0 = std::chrono::steady_clock::now();
   Current current(*context_);
   Resolve& r = resolve_;
-  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
   if (!r.program) {
     r.program = build_resolve_program();
     glGenVertexArrays(1, &r.vao), glGenTextures(1, &r.samples), glGenRenderbuffers(1, &r.output);
