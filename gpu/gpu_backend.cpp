@@ -5,8 +5,8 @@
 // pipeline's own code on the same samples.
 //
 // What is uploaded when (docs/gpu.md): a mesh the first frame it is drawn, again only
-// when its contents change (a 64-bit fingerprint of every array it has, computed at each
-// draw); a texture and its mip levels the first frame it is read, again when its texels
+// when its contents change (a 64-bit fingerprint of every array it has, computed once a
+// frame on the renderer's threads); a texture and its mip levels the first frame it is read, again when its texels
 // change (the same fingerprint); lights and camera every frame (uniforms). Entries not
 // used for kEvictFrames frames, and the least recently used ones beyond the budget
 // bytes, are deleted.
@@ -17,10 +17,12 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
 #include "context.hpp"
+#include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
@@ -69,21 +71,71 @@ struct Fingerprint {
   uint64_t value() const { return lane[0] ^ (lane[1] * 3) ^ (lane[2] * 5) ^ (lane[3] * 7); }
 };
 
-uint64_t fingerprint(const Mesh& m) {
-  Fingerprint f;
+// The fingerprint of several arrays, hashed in chunks on a thread pool: every frame
+// checks every byte of what it draws (10 M triangles are some 300 MB), which one thread
+// does at a few GB/s. The sizes go in first, then each chunk's own fingerprint in
+// order, so the value does not depend on the number of threads.
+class ChunkedFingerprint {
+ public:
+  template <class T>
+  void add(const std::vector<T>& v) {
+    const uint64_t n = v.size();
+    sizes_.add(&n, sizeof n);
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(v.data());
+    const size_t bytes = v.size() * sizeof(T);
+    for (size_t at = 0; at < bytes; at += kChunk) chunks_.push_back({p + at, std::min(kChunk, bytes - at)});
+  }
+  void add_size(uint64_t n) { sizes_.add(&n, sizeof n); }
+  uint64_t value(ThreadPool& pool) {
+    std::vector<uint64_t> values(chunks_.size());
+    pool.run(int(chunks_.size()), [&](int i) {
+      Fingerprint f;
+      f.add(chunks_[size_t(i)].first, chunks_[size_t(i)].second);
+      values[size_t(i)] = f.value();
+    });
+    Fingerprint f = sizes_;
+    if (!values.empty()) f.add(values.data(), values.size() * sizeof(uint64_t));
+    return f.value();
+  }
+
+ private:
+  static constexpr size_t kChunk = size_t(1) << 20;
+  Fingerprint sizes_;
+  std::vector<std::pair<const unsigned char*, size_t>> chunks_;
+};
+
+uint64_t fingerprint(const Mesh& m, ThreadPool& pool) {
+  ChunkedFingerprint f;
   f.add(m.positions), f.add(m.normals), f.add(m.uvs), f.add(m.colors), f.add(m.triangles);
   f.add(m.uvs1), f.add(m.tangents), f.add(m.alphas);
   f.add(m.face_colors), f.add(m.face_materials);
-  const uint64_t materials = m.materials.size();
-  f.add(&materials, sizeof materials);
-  return f.value();
+  f.add_size(m.materials.size());
+  return f.value(pool);
 }
 
-uint64_t fingerprint(const Texture& t) {
-  Fingerprint f;
-  for (const Texture::Level& l : t.levels()) f.add(&l.width, sizeof l.width), f.add(&l.height, sizeof l.height), f.add(l.texels);
-  return f.value();
+uint64_t fingerprint(const Texture& t, ThreadPool& pool) {
+  ChunkedFingerprint f;
+  for (const Texture::Level& l : t.levels()) f.add_size(uint64_t(l.width)), f.add_size(uint64_t(l.height)), f.add(l.texels);
+  return f.value(pool);
 }
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Adds the time from construction to destruction to `total` (a stage's time, over the
+// calls that make it up).
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total) {}
+  ~StageTimer() { total_ += ms_since(t0_); }
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
 
 void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
 
@@ -214,6 +266,10 @@ GpuBackend::~GpuBackend() {
     glDeleteFramebuffers(1, &fbo_);
     if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_), glDeleteTextures(1, &shadow_maps_), glDeleteProgram(depth_program_);
     glDeleteRenderbuffers(3, renderbuffers_);
+    if (resolve_.program) {
+      glDeleteProgram(resolve_.program), glDeleteVertexArrays(1, &resolve_.vao), glDeleteTextures(1, &resolve_.samples);
+      glDeleteRenderbuffers(1, &resolve_.output), glDeleteFramebuffers(2, resolve_.framebuffers);
+    }
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
     for (GLuint p : batch_programs_)
@@ -240,8 +296,10 @@ void GpuBackend::resize(int w, int h, int k) {
                 std::to_string(k) + " super-sampling needs a sample buffer over " + std::to_string(max_side_) +
                 " a side (the GPU's or the renderer's limit)");
   if (w == width_ && h == height_ && k == ssaa_) return;
-  // The CPU copy first: when memory runs out nothing has changed.
+  // The CPU copy first: when memory runs out nothing has changed. The last frame goes
+  // (as the CPU's does): nothing is left to read back.
   samples_.resize(w * k, h * k);
+  pending_ = 0;
   Current current(*context_);
   const int sw = w * k, sh = h * k;
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
@@ -359,7 +417,8 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   // so its copies in the same frame cost no second pass over its bytes.
   auto it = meshes_.find(&mesh);
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
-  const uint64_t key = fingerprint(mesh);
+  StageTimer timer(stats_.upload_ms);
+  const uint64_t key = fingerprint(mesh, pool());
   if (it != meshes_.end() && it->second.fingerprint == key) {
     reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
@@ -461,7 +520,8 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
 GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   auto it = textures_.find({&t, srgb});
   if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
-  const uint64_t key = fingerprint(t);
+  StageTimer timer(stats_.upload_ms);
+  const uint64_t key = fingerprint(t, pool());
   const std::string what = "a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) + " texture";
   if (it != textures_.end() && it->second.fingerprint == key) {
     reserve(it->second.bytes, what);
@@ -496,6 +556,15 @@ GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   }
   cache_bytes_ += e.bytes;
   return textures_.emplace(std::make_pair(&t, srgb), e).first->second.texture;
+}
+
+// The renderer's threads (RenderOptions::threads: 0 is every core), for the fingerprints.
+ThreadPool& GpuBackend::pool() const {
+  int threads = options_.threads > 0 ? options_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, 256);
+  // A pool made before this process was forked has no workers here: a new one.
+  if (!pool_ || pool_->size() != threads || pool_->orphaned()) pool_ = std::make_unique<ThreadPool>(threads);
+  return *pool_;
 }
 
 GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
@@ -1259,59 +1328,90 @@ void GpuBackend::run_clear(const ClearRequest& request) {
 const FrameStats& GpuBackend::end_frame() {
   context_->make_current();
   try {
+    const auto t_submit = std::chrono::steady_clock::now();
+    const double uploads_before = stats_.upload_ms;
     replay();
+    stats_.submit_ms = ms_since(t_submit) - (stats_.upload_ms - uploads_before);
+    const auto t_wait = std::chrono::steady_clock::now();
+    glFinish();
+    stats_.gpu_wait_ms = ms_since(t_wait);
+    check_gl("the GPU frame");
+    context_->check_lost("the GPU frame");
   } catch (...) {
     context_->release();
     throw;
   }
-  // Read back every sample into the CPU framebuffer (its tiled layout).
+  // Nothing is read back yet: each read below fetches what it needs, once a frame.
+  {
+    std::lock_guard<std::mutex> lock(fetch_mutex_);
+    // (A stencil not fetched last frame is still the GPU's alone.)
+    pending_ = kColor | kDepth | (options_.object_ids ? kIds : 0u) | ((stencil_used_ || (pending_ & kStencil)) ? kStencil : 0u);
+    stencil_used_ = false;
+    samples_.keep_ids(options_.object_ids);
+    stats_.readback_ms = reads_ms_, reads_ms_ = 0;  // the last frame's reads (FrameStats)
+  }
+  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
+  evict();
+  context_->release();
+  stats_.tile_ms = ms_since(t0_);
+  return stats_;
+}
+
+// Reads the planes in `what` (of the last frame, those not read yet) into the CPU
+// framebuffer's samples, where the CPU pipeline's own read-backs take them.
+void GpuBackend::fetch(unsigned what) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  what &= pending_;
+  if (!what) return;
+  const auto t0 = std::chrono::steady_clock::now();
   const int w = width_ * ssaa_, h = height_ * ssaa_;
-  samples_.keep_ids(options_.object_ids);
-  rows_.resize(size_t(w) * size_t(h));
-  depth_rows_.resize(size_t(w) * size_t(h));
+  Current current(*context_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
-  scatter(rows_.data(), samples_.color.data());
-  scatter(depth_rows_.data(), samples_.depth.data());
-  // The stencil, when the frame cleared or wrote it (else the copy is still right).
-  if (stencil_used_) {
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  if (what & kColor) {
+    rows_.resize(size_t(w) * size_t(h));
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+    scatter(rows_.data(), samples_.color.data());
+  }
+  if (what & kDepth) {
+    depth_rows_.resize(size_t(w) * size_t(h));
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
+    scatter(depth_rows_.data(), samples_.depth.data());
+  }
+  if (what & kStencil) {
     stencil_rows_.resize(size_t(w) * size_t(h));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil_rows_.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
     scatter(stencil_rows_.data(), samples_.stencil.data());
-    stencil_used_ = false;
   }
-  if (options_.object_ids) {
+  if (what & kIds) {
+    rows_.resize(size_t(w) * size_t(h));
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, rows_.data());
     scatter(rows_.data(), samples_.ids.data());
   }
-  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
-  try {
-    check_gl("the GPU frame");
-    context_->check_lost("the GPU frame");
-  } catch (const Error&) {
-    context_->release();
-    throw;
-  }
-  evict();
-  context_->release();
-  stats_.tile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
-  return stats_;
+  check_gl("reading the GPU frame back");
+  pending_ &= ~what;
+  reads_ms_ += ms_since(t0);
 }
 
-// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks.
+// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks, a band of tile
+// rows to each of the renderer's threads (memory-bound: one thread cannot keep up).
 template <class T>
 void GpuBackend::scatter(const T* rows, T* tiled) const {
   const int w = samples_.width, h = samples_.height;
-  for (int y = 0; y < h; ++y) {
-    const T* row = rows + size_t(y) * size_t(w);
-    int x = 0;
-    for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
-    for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
-  }
+  constexpr int kBand = 64;
+  pool().run((h + kBand - 1) / kBand, [&](int band) {
+    for (int y = band * kBand; y < std::min(h, (band + 1) * kBand); ++y) {
+      const T* row = rows + size_t(y) * size_t(w);
+      int x = 0;
+      for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
+      for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
+    }
+  });
 }
 
 // Drops what was not used for a while, and the least recently used beyond the budget.
@@ -1336,17 +1436,117 @@ void GpuBackend::evict() {
   }
 }
 
-Image GpuBackend::color_image() const { return resolve_color(samples_, ssaa_); }
-Image GpuBackend::depth_image() const { return resolve_depth(samples_, ssaa_); }
+Image GpuBackend::color_image() const {
+  fetch(kColor);
+  return resolve_color(samples_, ssaa_);
+}
+Image GpuBackend::depth_image() const {
+  fetch(kDepth);
+  return resolve_depth(samples_, ssaa_);
+}
 void GpuBackend::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
-  velocity::read_color(samples_, ssaa_, nullptr, rgba, row_bytes, channels);
+  if (ssaa_ == 1 && channels == 4 && row_bytes % 4 == 0 && direct_read(rgba, row_bytes)) return;
+  if (ssaa_ > 1 && channels == 4 && row_bytes % 4 == 0 && resolve_on_gpu(rgba, row_bytes)) return;
+  fetch(kColor);
+  velocity::read_color(samples_, ssaa_, &pool(), rgba, row_bytes, channels);
 }
 void GpuBackend::read_view_depth(float* out) const {
-  velocity::read_view_depth(samples_, ssaa_, nullptr, projection_, out);
+  fetch(kDepth);
+  velocity::read_view_depth(samples_, ssaa_, &pool(), projection_, out);
 }
-void GpuBackend::read_window_depth(float* out) const { velocity::read_window_depth(samples_, ssaa_, nullptr, out); }
-void GpuBackend::read_stencil(uint8_t* out) const { velocity::read_stencil(samples_, ssaa_, out); }
-std::vector<uint32_t> GpuBackend::object_ids() const { return resolve_object_ids(samples_, ssaa_); }
+void GpuBackend::read_window_depth(float* out) const {
+  fetch(kDepth);
+  velocity::read_window_depth(samples_, ssaa_, &pool(), out);
+}
+
+// With super-sampling, RGBA rows are resolved on the GPU (build_resolve_program: the
+// CPU's integer box filter) and only the w x h output crosses the bus, not k x k times
+// as many samples. False when the colour was already fetched, as direct_read.
+bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
+  // (A sample buffer larger than a texture may be: the samples are read, as fetch does.)
+  if (!(pending_ & kColor) || sw > max_texture_ || sh > max_texture_) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  Resolve& r = resolve_;
+  if (!r.program) {
+    r.program = build_resolve_program();
+    glGenVertexArrays(1, &r.vao), glGenTextures(1, &r.samples), glGenRenderbuffers(1, &r.output);
+    glGenFramebuffers(2, r.framebuffers);
+  }
+  if (r.width != width_ || r.height != height_ || r.ssaa != ssaa_) {
+    glBindTexture(GL_TEXTURE_2D, r.samples);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, sw, sh, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[0]);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.samples, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, r.output);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[1]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r.output);
+    check_gl("the GPU resolve's buffers");
+    r.width = width_, r.height = height_, r.ssaa = ssaa_;
+  }
+  // The samples into the texture (the drawn framebuffer's colour is a renderbuffer),
+  // then one triangle over the output.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.framebuffers[0]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glBlitFramebuffer(0, 0, sw, sh, 0, 0, sw, sh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[1]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST), glDisable(GL_SCISSOR_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glUseProgram(r.program);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, r.samples);
+  glBindSampler(0, 0);
+  glUniform1i(glGetUniformLocation(r.program, "u_samples"), 0);
+  glUniform1i(glGetUniformLocation(r.program, "u_k"), ssaa_);
+  glBindVertexArray(r.vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);  // (begin_frame sets the rest of the draws' state)
+  check_gl("resolving the GPU frame");
+  reads_ms_ += ms_since(t0);
+  return true;
+}
+
+// Without super-sampling, RGBA rows are the GPU framebuffer's own pixels: read straight
+// into the caller's rows (no copy through the tiled samples). False when the colour was
+// already fetched (the samples then hold it, and the CPU's read is a copy).
+bool GpuBackend::direct_read(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  if (!(pending_ & kColor)) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  check_gl("reading the GPU frame back");
+  reads_ms_ += ms_since(t0);
+  return true;
+}
+
+void GpuBackend::read_stencil(uint8_t* out) const {
+  fetch(kStencil);
+  velocity::read_stencil(samples_, ssaa_, out);
+}
+std::vector<uint32_t> GpuBackend::object_ids() const {
+  fetch(kIds);
+  return resolve_object_ids(samples_, ssaa_);
+}
 size_t GpuBackend::framebuffer_bytes() const {
   return samples_.color.size() * 4 + samples_.depth.size() * 4 + samples_.ids.size() * 4;
 }

@@ -972,6 +972,32 @@ GLuint build_batch_program(bool lines) {
                        head + kLineRuleGlsl + kBatchFragment);
 }
 
+// The k x k box resolve (framebuffer/resolve.cpp's resolve_color_rows) as a pass over
+// the sample texture: one triangle covering the w x h output, each pixel the rounded
+// mean of its k x k samples' 8-bit values, in integers as the CPU computes it.
+GLuint build_resolve_program() {
+  const char* vs = R"(
+void main() {
+  vec2 p = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+  const char* fs = R"(
+uniform sampler2D u_samples;
+uniform int u_k;
+layout(location = 0) out vec4 o_color;
+void main() {
+  ivec2 at = ivec2(gl_FragCoord.xy) * u_k;
+  uvec4 sum = uvec4(0u);
+  for (int sy = 0; sy < u_k; ++sy)
+    for (int sx = 0; sx < u_k; ++sx) sum += uvec4(round(texelFetch(u_samples, at + ivec2(sx, sy), 0) * 255.0));
+  uint n = uint(u_k * u_k);
+  o_color = vec4((sum + uvec4(n / 2u)) / uvec4(n)) / 255.0;
+}
+)";
+  return build_program(std::string(kVersion) + vs, "", std::string(kVersion) + fs);
+}
+
 GLuint build_lighting_test_program() {
   const std::string vs = std::string(kVersion) + kLightingGlsl + R"(
 layout(location = 0) in vec3 a_position;

@@ -51,6 +51,9 @@ GLuint build_depth_program();
 // of each, the fragment shader keeps the pixels the rule lights).
 GLuint build_batch_program(bool lines);
 
+// The super-sampling resolve pass: u_samples (the k x k sample image), u_k.
+GLuint build_resolve_program();
+
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.
 GLuint build_lighting_test_program();

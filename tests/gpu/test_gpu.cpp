@@ -307,6 +307,85 @@ TEST(GpuCache, UploadsOnceAndAgainOnChange) {
   EXPECT_EQ(b.uploads(), 3u);  // the mesh again, not the texture
 }
 
+// An in-place edit of a cached mesh (its positions, then its uvs) and of a cached
+// texture (a new image at the same address) shows in the next frame: each edited frame
+// is the frame a fresh backend, with nothing cached, draws of the edited scene, and
+// differs from the frame before it. The fingerprints are taken on 3 threads, the
+// arrays being over one chunk (1 MiB), so the chunked hash is the one checked.
+TEST(GpuCache, InPlaceEditsShowInTheNextFrame) {
+  Mesh mesh = make_sphere(512);  // positions over 1 MiB: more than one chunk
+  ASSERT_GT(mesh.positions.size() * sizeof(Vec3), size_t(1) << 20);
+  auto texture = std::make_shared<Texture>(make_checkerboard(64, 8));
+  Material m;
+  m.texture = texture;
+  RenderOptions o;
+  o.threads = 3;
+  Camera camera;
+  auto frame = [&](gpu::GpuBackend& b) {
+    b.begin_frame(camera, {}, FrameStart{}, o);
+    b.draw(mesh, rotate_y(0.4f), &m, 1);
+    b.end_frame();
+    return b.color_image().pixels;
+  };
+  gpu::GpuBackend cached(96, 80, false);
+  std::vector<uint8_t> last = frame(cached);
+  EXPECT_EQ(frame(cached), last);
+  EXPECT_EQ(cached.uploads(), 2u);
+  auto expect_edit_shows = [&](const char* what, size_t uploads) {
+    SCOPED_TRACE(what);
+    const std::vector<uint8_t> now = frame(cached);
+    EXPECT_EQ(cached.uploads(), uploads);
+    EXPECT_NE(now, last);  // the edit is visible
+    gpu::GpuBackend fresh(96, 80, false);
+    EXPECT_EQ(now, frame(fresh));  // and drawn as a new mesh and texture are
+    last = now;
+  };
+  // A band of vertices past the positions' first chunk pushed out.
+  const size_t first = (size_t(1) << 20) / sizeof(Vec3) + 100;
+  ASSERT_LT(first + 2000, mesh.positions.size());
+  for (size_t v = first; v < first + 2000; ++v) mesh.positions[v] = mesh.positions[v] * 1.3f;
+  expect_edit_shows("positions", 3);
+  for (Vec2& uv : mesh.uvs) uv.x = 1.0f - uv.x;  // mirrored in u
+  expect_edit_shows("uvs", 4);
+  *texture = Texture(make_checkerboard(64, 16));  // the same Texture object, new texels
+  expect_edit_shows("texture", 5);
+}
+
+// RGBA rows are read straight from the GPU into the caller's rows, resolved on the GPU
+// with super-sampling; RGB rows go through the samples and the CPU. Either way they are
+// the CPU pipeline's read of the same frame (color_image), byte for byte, at a row pitch
+// wider than the image.
+TEST(GpuReadBack, DirectAndResolvedReadsAgree) {
+  Mesh mesh = make_sphere(24);
+  Material m;
+  m.texture = std::make_shared<const Texture>(make_checkerboard(32, 4));
+  Camera camera;
+  for (int ssaa : {1, 2, 3}) {
+    SCOPED_TRACE(ssaa);
+    gpu::GpuBackend b(53, 37, false);
+    RenderOptions o;
+    o.ssaa = ssaa;
+    o.threads = 2;
+    for (int channels : {4, 3}) {
+      b.begin_frame(camera, {}, FrameStart{}, o);
+      b.draw(mesh, rotate_y(0.3f), &m, 1);
+      b.end_frame();
+      const size_t pitch = 53 * 4 + 12;
+      std::vector<uint8_t> rows(pitch * 37, 0xAB);
+      b.read_color(rows.data(), pitch, channels);  // first read of the frame
+      const Image image = b.color_image();
+      for (int y = 0; y < 37; ++y)
+        for (int x = 0; x < 53; ++x)
+          for (int c = 0; c < channels; ++c)
+            ASSERT_EQ(rows[size_t(y) * pitch + size_t(x * channels + c)], image.pixels[size_t(y * 53 + x) * 4 + size_t(c)])
+                << "at " << x << "," << y;
+      EXPECT_EQ(rows[53 * 4 + 11], 0xAB);  // the pitch's padding untouched
+    }
+    b.begin_frame(camera, {}, FrameStart{}, o);
+    EXPECT_GT(b.end_frame().readback_ms, 0.0);  // the reads of the frame before
+  }
+}
+
 // The GLSL lighting (gpu/shaders.cpp) is the scalar model (shading/lighting.hpp): the
 // same random normals, points and lights through both, by transform feedback.
 TEST(GpuLighting, GlslIsTheScalarModel) {
