@@ -59,6 +59,15 @@ class AnimationFile : public ::testing::Test {
     std::ofstream(dir_ / name, std::ios::binary) << bytes;
     return (dir_ / name).string();
   }
+  // What loading the file says: its error, or "(loaded)".
+  static std::string message(const std::string& path) {
+    try {
+      load_model(path);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(loaded)");
+  }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };
@@ -98,14 +107,6 @@ TEST_F(AnimationFile, BadKeysAreRefusedWithTheChannelNamed) {
     nlohmann::json j = nlohmann::json::parse(test::animated_box_gltf(true));
     change(j);
     return write("bad.gltf", j.dump());
-  };
-  auto message = [&](const std::string& path) {
-    try {
-      load_model(path);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("(loaded)");
   };
   // Key times that are not times (a VEC3 accessor).
   std::string m = message(with([](nlohmann::json& j) { j["animations"][0]["samplers"][0]["input"] = 4; }));
@@ -245,14 +246,6 @@ TEST_F(AnimationFile, BadMorphTargetsAreRefusedWithThePlaceNamed) {
     j["animations"][0]["channels"].push_back({{"sampler", 0}, {"target", {{"node", 1}, {"path", "weights"}}}});
     change(j);
     return write("bad.gltf", j.dump());
-  };
-  auto message = [&](const std::string& path) {
-    try {
-      load_model(path);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("(loaded)");
   };
   // The weights sampler is the translation's (VEC3): weights must be scalars.
   std::string m = message(with([](nlohmann::json&) {}));
