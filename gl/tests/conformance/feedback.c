@@ -24,7 +24,9 @@ static void values(const char* name, GLint count) {
 }
 
 static void scene(void) {
-  static const GLubyte bits[2] = {0xa0, 0x40};
+  /* Two rows of a 3-wide bitmap: GL_UNPACK_ALIGNMENT is 4, so the second row starts at
+   * byte 4, not byte 1. */
+  static const GLubyte bits[8] = {0xa0, 0, 0, 0, 0x40, 0, 0, 0};
   static const GLubyte pixels[4 * 6] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255,
                                         9, 9, 9, 255, 90, 90, 90, 255, 200, 100, 0, 255};
   glBegin(GL_POINTS);
