@@ -25,6 +25,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.raster_pos = pixels.raster;
   f.zoom_x = pixels.zoom_x, f.zoom_y = pixels.zoom_y;
   f.user_clip = user_clip;
+  f.tex_gen = tex_gen_;
   attrib_stack_.push_back(std::move(f));
 }
 
@@ -76,6 +77,7 @@ void Context::pop_attrib() {
     stencil_.test = f.stencil.test;
     texture_.enabled = f.texture_enabled;
     for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
+    for (int i = 0; i < 4; ++i) tex_gen_.coords[i].enabled = f.tex_gen.coords[i].enabled;
   }
   if (m & GL_COLOR_BUFFER_BIT) {
     r.alpha_test = s.alpha_test, r.alpha_func = s.alpha_func, r.alpha_ref = s.alpha_ref;
@@ -93,6 +95,7 @@ void Context::pop_attrib() {
     // The binding comes back if its texture still exists (a deleted one binds 0).
     texture_.bound = f.texture_bound == 0 || texture_.objects.count(f.texture_bound) ? f.texture_bound : 0;
     texture_.env_mode = f.env_mode, texture_.env_color = f.env_color;
+    tex_gen_ = f.tex_gen;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;
   update_clip_planes();

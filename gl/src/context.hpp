@@ -35,6 +35,7 @@
 //   raster_pos.cpp    glRasterPos, glWindowPos
 //   draw_pixels.cpp   glBitmap, glDrawPixels, glCopyPixels, glPixelZoom, glPixelStore
 //   clip_planes.cpp   glClipPlane, GL_CLIP_PLANEi
+//   tex_gen.cpp       glTexGen, GL_TEXTURE_GEN_S..Q
 #pragma once
 
 #include <GL/gl.h>
@@ -46,6 +47,7 @@
 #include "clip_planes.hpp"
 #include "pixel_ops.hpp"
 #include "state.hpp"
+#include "tex_gen.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/texture.hpp"
@@ -256,8 +258,20 @@ class Context {
   bool enable_clip_plane(GLenum cap, bool on);     // false: not a plane's name
   bool outside_clip_planes(const Vec4& eye) const;
 
+  // --- texture coordinate generation (tex_gen.cpp)
+  void tex_gen(GLenum coord, GLenum pname, const double* params);
+  // false: not a coordinate's or a parameter's name; else `count` values in `out`.
+  bool get_tex_gen(GLenum coord, GLenum pname, double* out, int* count);
+  bool enable_tex_gen(GLenum cap, bool on);  // false: not GL_TEXTURE_GEN_S..Q
+  bool tex_gen_enabled(GLenum cap) const { return tex_gen_.coords[cap - GL_TEXTURE_GEN_S].enabled; }
+
  private:
   void update_clip_planes();
+  TexGenState tex_gen_;
+  bool tex_gen_needs_eye() const;
+  // The current texture coordinates with the enabled ones generated, for a vertex at
+  // `object` (object space) and `eye` (eye space; needed by all but object linear).
+  Vec4 generate_texcoord(const Vec4& object, const Vec4& eye) const;
 
   // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
   // triangles: the fragments whose centres it covers, with its colour and depth.

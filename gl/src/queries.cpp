@@ -142,6 +142,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   *known = true;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
+  if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
   switch (cap) {
     case GL_DEPTH_TEST: return raster_.depth_test;
     case GL_CULL_FACE: return raster_.cull;

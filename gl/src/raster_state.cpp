@@ -29,6 +29,7 @@ void Context::enable(GLenum cap, bool on) {
   if (in_begin_error()) return;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return void(lighting_.lights[cap - GL_LIGHT0].enabled = on);
   if (enable_clip_plane(cap, on)) return;  // (clip_planes.cpp)
+  if (enable_tex_gen(cap, on)) return;     // (tex_gen.cpp)
   switch (cap) {
     case GL_DEPTH_TEST: raster_.depth_test = on; break;
     case GL_CULL_FACE: raster_.cull = on; return;

@@ -17,6 +17,7 @@
 
 #include "clip_planes.hpp"
 #include "pixel_ops.hpp"
+#include "tex_gen.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 #include "velocity/primitives.hpp"
@@ -254,6 +255,7 @@ struct AttribFrame {
   RasterPosition raster_pos;  // GL_CURRENT_BIT
   float zoom_x = 1, zoom_y = 1;  // GL_PIXEL_MODE_BIT
   UserClipState user_clip;  // GL_TRANSFORM_BIT (planes and enables), GL_ENABLE_BIT (enables)
+  TexGenState tex_gen;      // GL_TEXTURE_BIT (all of it), GL_ENABLE_BIT (enables)
 };
 
 struct ClientAttribFrame {

@@ -38,7 +38,8 @@ void Context::end() {
 // and the light model cannot change inside it; materials can).
 void Context::prepare_lighting() {
   lights_used_ = 0;
-  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count;
+  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count ||
+              (texture_.enabled && tex_gen_needs_eye());
   if (!lighting_.enabled) return;
   for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
@@ -77,8 +78,9 @@ void Context::vertex(Vec4 v) {
   Vertex out;
   out.clip = transform_.mvp * v;
   out.edge = edge_flag_;
+  Vec4 eye{};
   if (lighting_.enabled || need_eye_) {
-    const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
+    if (need_eye_) eye = transform_.modelview.back() * v;
     for (uint32_t k = 0; k < user_clip.count; ++k) {
       const Vec4& p = user_clip.active[k];
       out.clip_distance[k] = p.x * eye.x + p.y * eye.y + p.z * eye.z + p.w * eye.w;
@@ -92,7 +94,10 @@ void Context::vertex(Vec4 v) {
     out.fog = std::fabs(eye.z);
   }
   if (!lighting_.enabled) out.front = out.back = clamp_color(color_);
-  if (texture_.enabled) out.tex = transform_.texture_identity ? texcoord_ : transform_.texture.back() * texcoord_;
+  if (texture_.enabled) {
+    const Vec4 t = tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_;  // (tex_gen.cpp)
+    out.tex = transform_.texture_identity ? t : transform_.texture.back() * t;
+  }
   push_vertex(out);
 }
 

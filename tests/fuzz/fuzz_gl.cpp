@@ -190,6 +190,39 @@ void clip_call(Bytes& in, float a, float b, float c, float d) {
   }
 }
 
+// Texture coordinate generation: any coordinate, name, mode and plane (NaN too) in
+// every form, enabled and disabled, read back; a textured triangle drawn with it.
+void tex_gen_call(Bytes& in, float a, float b, float c, float d, GLenum e1) {
+  static const GLenum names[] = {GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE, GL_TEXTURE_ENV_MODE};
+  static const GLenum modes[] = {GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP, GL_NORMAL_MAP, GL_REFLECTION_MAP};
+  const GLenum coord = GL_S + GLenum(in.below(5)) - (in.u8() & 1);
+  const GLenum pname = in.u8() & 1 ? names[in.below(4)] : e1;
+  const float fv[4] = {a, b, c, d};
+  const GLint iv[4] = {GLint(in.below(8)) - 3, GLint(modes[in.below(5)]), 0, 1};
+  const GLdouble dv[4] = {d, c, b, a};
+  switch (in.below(7)) {
+    case 0: glTexGeni(coord, pname, GLint(modes[in.below(5)])); break;
+    case 1: glTexGenf(coord, pname, in.u8() & 1 ? a : float(modes[in.below(5)])); break;
+    case 2: glTexGenfv(coord, pname, in.u8() & 1 ? fv : nullptr); break;
+    case 3: glTexGeniv(coord, pname, iv); break;
+    case 4: glTexGendv(coord, pname, dv); break;
+    case 5: (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_GEN_S + GLenum(in.below(5))); break;
+    default: {
+      GLfloat f[4];
+      GLint i[4];
+      GLdouble g[4];
+      glGetTexGenfv(coord, pname, f);
+      glGetTexGeniv(coord, pname, i);
+      glGetTexGendv(coord, pname, g);
+      glEnable(GL_TEXTURE_2D);
+      glBegin(GL_TRIANGLES);
+      glNormal3f(a, b, c), glVertex3f(a, b, 0), glVertex3f(b, c, d), glVertex3f(d, a, c);
+      glEnd();
+      break;
+    }
+  }
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -430,6 +463,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         quadric_call(in, quadric, a, b, c, d, e1);
         pixel_call(in, pixels, a, b, c, d, e1, e2);
         clip_call(in, a, b, c, d);
+        tex_gen_call(in, a, b, c, d, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif
