@@ -887,6 +887,7 @@ GLint gl_wrap(Wrap w) {
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
   // (User clip planes are the CPU clipper's alone so far: refused rather than ignored.)
   if (batch.clip_planes) throw Error("the GPU backend does not clip to user clip planes (glClipPlane) yet");
+  if (state.logic_op) throw Error("the GPU backend does not apply glLogicOp yet");
   stats_.objects++;
   if (primitives == 0) return;
   commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});

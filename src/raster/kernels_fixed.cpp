@@ -18,6 +18,29 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
 
+// glLogicOp on packed RGBA8 colours: s the fragment's, d the pixel's.
+HWY_INLINE VU logic_op(LogicOp op, VU s, VU d) {
+  const VU ones = hn::Set(DU(), 0xffffffffu);
+  switch (op) {
+    case LogicOp::Clear: return hn::Zero(DU());
+    case LogicOp::And: return hn::And(s, d);
+    case LogicOp::AndReverse: return hn::AndNot(d, s);
+    case LogicOp::Copy: return s;
+    case LogicOp::AndInverted: return hn::AndNot(s, d);
+    case LogicOp::Noop: return d;
+    case LogicOp::Xor: return hn::Xor(s, d);
+    case LogicOp::Or: return hn::Or(s, d);
+    case LogicOp::Nor: return hn::Xor(hn::Or(s, d), ones);
+    case LogicOp::Equiv: return hn::Xor(hn::Xor(s, d), ones);
+    case LogicOp::Invert: return hn::Xor(d, ones);
+    case LogicOp::OrReverse: return hn::Or(s, hn::Xor(d, ones));
+    case LogicOp::CopyInverted: return hn::Xor(s, ones);
+    case LogicOp::OrInverted: return hn::Or(hn::Xor(s, ones), d);
+    case LogicOp::Nand: return hn::Xor(hn::And(s, d), ones);
+    default: return ones;  // Set
+  }
+}
+
 // --- the fixed-function kernel (PrimitiveBatch draws).
 template <bool kTex, bool kFog>
 HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
@@ -71,11 +94,12 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       }
       if (writes_depth) hn::BlendedStore(z, m, d, zp);
       const VU dst = hn::Load(du, cp);
-      if (p.blend) {
+      if (p.blend && !p.logic_op) {
         const Rgba dc = unpack(dst);
         c = {blend_channel(p, 0, c, dc), blend_channel(p, 1, c, dc), blend_channel(p, 2, c, dc), blend_channel(p, 3, c, dc)};
       }
       VU out = pack_colors(c.r, c.g, c.b, c.a);
+      if (p.logic_op) out = logic_op(p.logic, out, dst);
       if (keep) out = hn::Or(hn::AndNot(hn::Set(du, keep), out), hn::And(dst, hn::Set(du, keep)));
       const auto mu = hn::RebindMask(du, m);
       hn::BlendedStore(out, mu, du, cp);
