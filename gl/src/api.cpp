@@ -330,6 +330,7 @@ GLboolean glIsEnabled(GLenum cap) {
 void glBlendFunc(GLenum s, GLenum d) { LIST(c.blend_func(s, d)); }
 void glBlendFuncSeparate(GLenum sr, GLenum dr, GLenum sa, GLenum da) { LIST(c.blend_func_separate(sr, dr, sa, da)); }
 void glBlendEquation(GLenum mode) { LIST(c.blend_equation(mode)); }
+void glLogicOp(GLenum opcode) { LIST(c.logic_op(opcode)); }
 void glBlendColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { LIST(c.blend_color({r, g, b, a})); }
 void glBlendFuncSeparateEXT(GLenum sr, GLenum dr, GLenum sa, GLenum da) { glBlendFuncSeparate(sr, dr, sa, da); }
 void glBlendEquationEXT(GLenum mode) { glBlendEquation(mode); }
@@ -414,6 +415,7 @@ void glPolygonMode(GLenum face, GLenum mode) { LIST(c.polygon_mode(face, mode));
 void glPolygonOffset(GLfloat factor, GLfloat units) { LIST(c.polygon_offset(factor, units)); }
 void glPointSize(GLfloat size) { LIST(c.point_size(size)); }
 void glLineWidth(GLfloat width) { LIST(c.line_width(width)); }
+void glLineStipple(GLint factor, GLushort pattern) { LIST(c.line_stipple(factor, pattern)); }
 
 // --- textures -------------------------------------------------------------------
 

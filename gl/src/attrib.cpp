@@ -43,7 +43,10 @@ void Context::pop_attrib() {
   }
   if (m & GL_PIXEL_MODE_BIT) pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y;
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
-  if (m & GL_LINE_BIT) r.line_width = s.line_width;
+  if (m & GL_LINE_BIT) {
+    r.line_width = s.line_width;
+    r.line_stipple = s.line_stipple, r.stipple_factor = s.stipple_factor, r.stipple_pattern = s.stipple_pattern;
+  }
   if (m & GL_POLYGON_BIT) {
     r.cull = s.cull, r.cull_mode = s.cull_mode, r.front_face = s.front_face;
     r.polygon_mode[0] = s.polygon_mode[0], r.polygon_mode[1] = s.polygon_mode[1];
@@ -68,9 +71,9 @@ void Context::pop_attrib() {
     for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
   }
   if (m & GL_ENABLE_BIT) {
-    r.alpha_test = s.alpha_test, r.blend = s.blend, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
+    r.alpha_test = s.alpha_test, r.blend = s.blend, r.logic_op = s.logic_op, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
     r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
-    r.scissor_test = s.scissor_test;
+    r.scissor_test = s.scissor_test, r.line_stipple = s.line_stipple;
     lighting_.enabled = f.lighting.enabled, lighting_.color_material = f.lighting.color_material;
     for (int i = 0; i < kMaxLights; ++i) lighting_.lights[i].enabled = f.lighting.lights[i].enabled;
     transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;
@@ -84,6 +87,7 @@ void Context::pop_attrib() {
     r.blend = s.blend, r.blend_src = s.blend_src, r.blend_dst = s.blend_dst;
     r.blend_src_alpha = s.blend_src_alpha, r.blend_dst_alpha = s.blend_dst_alpha;
     r.blend_equation = s.blend_equation, r.blend_color = s.blend_color;
+    r.logic_op = s.logic_op, r.logic_op_mode = s.logic_op_mode;
     for (int i = 0; i < 4; ++i) r.color_mask[i] = s.color_mask[i];
     r.clear_color = s.clear_color;
   }

@@ -29,13 +29,15 @@
 //   copy_texture.cpp  glCopyTexImage2D, glCopyTexSubImage2D, glGetTexLevelParameter,
 //                     glGetTexImage
 //   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
-//   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
+//   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor;
+//                     glLogicOp
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
 //                     glClearStencil, its queries and its part of PixelState
 //   raster_pos.cpp    glRasterPos, glWindowPos
 //   draw_pixels.cpp   glBitmap, glDrawPixels, glCopyPixels, glPixelZoom, glPixelStore
 //   clip_planes.cpp   glClipPlane, GL_CLIP_PLANEi
 //   tex_gen.cpp       glTexGen, GL_TEXTURE_GEN_S..Q
+//   line_stipple.cpp  glLineStipple, GL_LINE_STIPPLE
 #pragma once
 
 #include <GL/gl.h>
@@ -138,6 +140,7 @@ class Context {
   void blend_func_separate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);  // blend.cpp
   void blend_equation(GLenum mode);
   void blend_color(Vec4 c);
+  void logic_op(GLenum op);  // blend.cpp
   bool get_blend(GLenum pname, std::vector<double>& out, int& kind) const;
   void alpha_func(GLenum f, float ref);
   void fog(GLenum pname, const float* v);
@@ -265,8 +268,15 @@ class Context {
   bool enable_tex_gen(GLenum cap, bool on);  // false: not GL_TEXTURE_GEN_S..Q
   bool tex_gen_enabled(GLenum cap) const { return tex_gen_.coords[cap - GL_TEXTURE_GEN_S].enabled; }
 
+  // --- line stipple (line_stipple.cpp)
+  void line_stipple(GLint factor, GLushort pattern);
+
  private:
   void update_clip_planes();
+  // The "on" pieces of the line from prim_[a] (colour color_a) to prim_[b], as lines;
+  // the stipple counter goes on from stipple_counter_.
+  void stippled_line(uint32_t a, uint32_t b, Vec4 color_a, Vec4 color_b, bool offset);
+  uint32_t stipple_counter_ = 0;  // reset by glBegin, each GL_LINES line, each polygon
   TexGenState tex_gen_;
   bool tex_gen_needs_eye() const;
   // The current texture coordinates with the enabled ones generated, for a vertex at

@@ -212,6 +212,8 @@ PixelState Context::pixel_state(bool offset) {
   s.polygon_offset = offset;
   s.offset_factor = raster_.offset_factor, s.offset_units = raster_.offset_units;
   s.blend = raster_.blend;
+  s.logic_op = raster_.logic_op;
+  s.logic = LogicOp(raster_.logic_op_mode - GL_CLEAR);
   s.blend_src_rgb = blend_factor(raster_.blend_src), s.blend_src_alpha = blend_factor(raster_.blend_src_alpha);
   s.blend_dst_rgb = blend_factor(raster_.blend_dst), s.blend_dst_alpha = blend_factor(raster_.blend_dst_alpha);
   s.blend_op = raster_.blend_equation == GL_FUNC_SUBTRACT           ? BlendOp::Subtract

@@ -71,6 +71,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_POLYGON_OFFSET_UNITS: out = {raster_.offset_units}; return true;
     case GL_POINT_SIZE: out = {raster_.point_size}; return true;
     case GL_LINE_WIDTH: out = {raster_.line_width}; return true;
+    case GL_LINE_STIPPLE_PATTERN: out = {double(raster_.stipple_pattern)}; return true;
+    case GL_LINE_STIPPLE_REPEAT: out = {double(raster_.stipple_factor)}; return true;
     case GL_SHADE_MODEL: out = {double(lighting_.shade_model)}; return true;
     case GL_LIGHT_MODEL_AMBIENT: v4(lighting_.model_ambient), kind = 1; return true;
     case GL_LIGHT_MODEL_TWO_SIDE: out = {lighting_.two_side ? 1.0 : 0.0}; return true;
@@ -152,6 +154,8 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_COLOR_MATERIAL: return lighting_.color_material;
     case GL_TEXTURE_2D: return texture_.enabled;
     case GL_BLEND: return raster_.blend;
+    case GL_COLOR_LOGIC_OP: return raster_.logic_op;
+    case GL_LINE_STIPPLE: return raster_.line_stipple;
     case GL_ALPHA_TEST: return raster_.alpha_test;
     case GL_FOG: return raster_.fog;
     case GL_SCISSOR_TEST: return raster_.scissor_test;

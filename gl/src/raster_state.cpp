@@ -42,6 +42,8 @@ void Context::enable(GLenum cap, bool on) {
       return;
     case GL_TEXTURE_2D: texture_.enabled = on; break;
     case GL_BLEND: raster_.blend = on; break;
+    case GL_COLOR_LOGIC_OP: raster_.logic_op = on; break;
+    case GL_LINE_STIPPLE: raster_.line_stipple = on; return;
     case GL_ALPHA_TEST: raster_.alpha_test = on; break;
     case GL_FOG: raster_.fog = on; break;
     case GL_SCISSOR_TEST: raster_.scissor_test = on; break;

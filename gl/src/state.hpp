@@ -126,6 +126,8 @@ struct RasterState {
   GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // (RGB; glBlendFunc sets alpha's too)
   GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO, blend_equation = GL_FUNC_ADD;  // blend.cpp
   Vec4 blend_color{0, 0, 0, 0};
+  bool logic_op = false;  // GL_COLOR_LOGIC_OP
+  GLenum logic_op_mode = GL_COPY;
   bool alpha_test = false;
   GLenum alpha_func = GL_ALWAYS;
   float alpha_ref = 0;
@@ -140,6 +142,9 @@ struct RasterState {
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0, offset_units = 0;
   float point_size = 1, line_width = 1;
+  bool line_stipple = false;  // GL_LINE_STIPPLE (line_stipple.cpp)
+  GLint stipple_factor = 1;
+  GLushort stipple_pattern = 0xffff;
   uint8_t color_mask_bits() const {
     return uint8_t((color_mask[0] ? 1 : 0) | (color_mask[1] ? 2 : 0) | (color_mask[2] ? 4 : 0) | (color_mask[3] ? 8 : 0));
   }

@@ -21,6 +21,7 @@ void Context::begin(GLenum mode) {
   in_begin_ = true;
   mode_ = mode;
   prim_.clear(), order_.clear(), emitted_.clear();
+  stipple_counter_ = 0;
   ++pending_gen_;  // prim_ indices start again
   if (pending_gen_ == 0) pending_gen_ = 1;
   update_derived();
@@ -125,7 +126,10 @@ void Context::assemble(bool final) {
       for (uint32_t i = 0; i < n; ++i) point_vertex(o[i]);
       break;
     case GL_LINES:
-      for (uint32_t i = 0; i + 1 < n; i += 2) line_segment(o[i], o[i + 1], o[i + 1]);
+      for (uint32_t i = 0; i + 1 < n; i += 2) {
+        stipple_counter_ = 0;  // (each independent line starts the pattern again)
+        line_segment(o[i], o[i + 1], o[i + 1]);
+      }
       break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -231,10 +235,12 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
     const bool flags = mode_ == GL_TRIANGLES || mode_ == GL_QUADS || mode_ == GL_POLYGON;
     if (mode == GL_LINE) {
       target(PrimitiveKind::Lines, raster_.offset_line);
+      stipple_counter_ = 0;
       for (int k = 0; k < n; ++k) {
         const uint32_t a = idx[k], b = idx[(k + 1) % n];
         if (flags && !prim_[a].edge) continue;
-        emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
+        if (raster_.line_stipple) stippled_line(a, b, color(a), color(b), raster_.offset_line);
+        else emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
       }
     } else {
       target(PrimitiveKind::Points, raster_.offset_point);
@@ -249,8 +255,12 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
     const uint32_t ab[2] = {a, b};
     return select_hit(ab, 2, false);
   }
-  target(PrimitiveKind::Lines, false);
   const bool flat = lighting_.shade_model == GL_FLAT;
+  if (raster_.line_stipple) {  // (line_stipple.cpp)
+    const Vec4 ca = flat ? prim_[provoking].front : prim_[a].front, cb = flat ? prim_[provoking].front : prim_[b].front;
+    return stippled_line(a, b, ca, cb, false);
+  }
+  target(PrimitiveKind::Lines, false);
   emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat);
   emit_vertex(b, flat ? prim_[provoking].front : prim_[b].front, !flat);
 }

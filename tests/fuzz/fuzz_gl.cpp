@@ -453,7 +453,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         break;
       }
       case 61: (in.u8() & 1 ? glFinish : glFlush)(); break;
-      case 62: glRectf(a, b, c, d); break;
+      case 62:
+        if (in.u8() & 1) glLogicOp(e1);
+        if (in.u8() & 1) glLineStipple(in.integer(), GLushort(in.integer()));
+        (in.u8() & 1 ? glEnable : glDisable)(GL_LINE_STIPPLE);
+        (in.u8() & 1 ? glEnable : glDisable)(GL_COLOR_LOGIC_OP);
+        glRectf(a, b, c, d);
+        glBegin(in.u8() & 1 ? GL_LINE_LOOP : GL_LINES);
+        glVertex3f(a, b, c), glVertex3f(c, d, a), glVertex4f(d, a, b, c), glVertex2f(b, d);
+        glEnd();
+        break;
       default: {
         GLint ww, hh, bytes;
         void* depth = nullptr;
