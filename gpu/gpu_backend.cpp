@@ -888,6 +888,7 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
   // (User clip planes are the CPU clipper's alone so far: refused rather than ignored.)
   if (batch.clip_planes) throw Error("the GPU backend does not clip to user clip planes (glClipPlane) yet");
   if (state.logic_op) throw Error("the GPU backend does not apply glLogicOp yet");
+  if (state.polygon_stipple) throw Error("the GPU backend does not apply glPolygonStipple yet");
   stats_.objects++;
   if (primitives == 0) return;
   commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});

@@ -158,6 +158,12 @@ struct PixelState {
   StencilOp stencil_fail = StencilOp::Keep, stencil_depth_fail = StencilOp::Keep, stencil_pass = StencilOp::Keep;
 
   uint8_t color_mask = 0xf;  // bit 0 red, 1 green, 2 blue, 3 alpha (glColorMask)
+
+  // Polygon stipple (glPolygonStipple): a fragment at framebuffer pixel (x, y) is kept
+  // where bit x % 32 of stipple[y % 32] is set. The front end sets it for the draws of
+  // filled polygons only.
+  bool polygon_stipple = false;
+  uint32_t stipple[32] = {};
 };
 
 enum class PrimitiveKind : uint8_t { Points, Lines, Triangles };

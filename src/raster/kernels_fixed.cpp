@@ -41,6 +41,14 @@ HWY_INLINE VU logic_op(LogicOp op, VU s, VU d) {
   }
 }
 
+// The 4x4 block at framebuffer pixel (x, y) (x a multiple of 4) as the polygon stipple
+// keeps it, in a block mask's layout (bit row * 4 + column).
+HWY_INLINE uint16_t stipple_mask(const PixelState& p, int x, int y) {
+  uint32_t m = 0;
+  for (int row = 0; row < 4; ++row) m |= ((p.stipple[(y + row) & 31] >> (x & 31)) & 0xfu) << (4 * row);
+  return uint16_t(m);
+}
+
 // --- the fixed-function kernel (PrimitiveBatch draws).
 template <bool kTex, bool kFog>
 HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
@@ -62,7 +70,11 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
                           ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
   if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids) return;  // nothing would be written
   for (int b = 0; b < n; ++b) {
-    const Block& blk = blocks[b];
+    Block blk = blocks[b];
+    if (p.polygon_stipple) {
+      blk.mask &= stipple_mask(p, t.x0 + (blk.index & 15) * 4, t.y0 + (blk.index >> 4) * 4);
+      if (!blk.mask) continue;
+    }
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
