@@ -52,7 +52,9 @@ void Context::pop_attrib() {
     r.polygon_mode[0] = s.polygon_mode[0], r.polygon_mode[1] = s.polygon_mode[1];
     r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
     r.offset_factor = s.offset_factor, r.offset_units = s.offset_units;
+    r.polygon_stipple = s.polygon_stipple;
   }
+  if (m & GL_POLYGON_STIPPLE_BIT) r.stipple = s.stipple;
   if (m & GL_LIGHTING_BIT) lighting_ = f.lighting;
   if (m & GL_FOG_BIT) {
     r.fog = s.fog, r.fog_mode = s.fog_mode, r.fog_start = s.fog_start, r.fog_end = s.fog_end;
@@ -73,7 +75,7 @@ void Context::pop_attrib() {
   if (m & GL_ENABLE_BIT) {
     r.alpha_test = s.alpha_test, r.blend = s.blend, r.logic_op = s.logic_op, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
     r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
-    r.scissor_test = s.scissor_test, r.line_stipple = s.line_stipple;
+    r.scissor_test = s.scissor_test, r.line_stipple = s.line_stipple, r.polygon_stipple = s.polygon_stipple;
     lighting_.enabled = f.lighting.enabled, lighting_.color_material = f.lighting.color_material;
     for (int i = 0; i < kMaxLights; ++i) lighting_.lights[i].enabled = f.lighting.lights[i].enabled;
     transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;

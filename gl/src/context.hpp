@@ -38,6 +38,7 @@
 //   clip_planes.cpp   glClipPlane, GL_CLIP_PLANEi
 //   tex_gen.cpp       glTexGen, GL_TEXTURE_GEN_S..Q
 //   line_stipple.cpp  glLineStipple, GL_LINE_STIPPLE
+//   polygon_stipple.cpp  glPolygonStipple, glGetPolygonStipple, GL_POLYGON_STIPPLE
 #pragma once
 
 #include <GL/gl.h>
@@ -270,6 +271,9 @@ class Context {
 
   // --- line stipple (line_stipple.cpp)
   void line_stipple(GLint factor, GLushort pattern);
+  // --- polygon stipple (polygon_stipple.cpp)
+  void polygon_stipple(const std::array<uint32_t, 32>& rows);
+  void get_polygon_stipple(GLubyte* out) const;  // packed with the pixel store's pack state
 
  private:
   void update_clip_planes();
@@ -297,7 +301,7 @@ class Context {
   // --- frames and batches (frame.cpp)
   struct Pending {
     PrimitiveKind kind = PrimitiveKind::Triangles;
-    bool offset = false;
+    bool offset = false, stippled = false;
     PixelState state;
     // What the renderer's batch carries besides PixelState, as it was when the batch
     // opened (a width or height of 0 here is an empty viewport: nothing is drawn).
@@ -313,14 +317,15 @@ class Context {
   void submit_pending();
   void run_frame();  // end the frame, copy colour (and depth) out
   void copy_depth();
-  PixelState pixel_state(bool offset);
+  PixelState pixel_state(bool offset, bool stippled);
   void stencil_pixel_state(PixelState& s) const;          // stencil.cpp
   bool get_stencil(GLenum pname, std::vector<double>& out) const;  // stencil.cpp
   uint8_t stencil_clear_value() const;
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
   void emit_vertex(uint32_t i, const Vec4& color, bool shared);
-  Pending& target(PrimitiveKind kind, bool offset);
+  // `stippled`: the draws of filled polygons, which the polygon stipple applies to.
+  Pending& target(PrimitiveKind kind, bool offset, bool stippled = false);
   void changed() { pixel_dirty_ = true; }
 
   // --- the vertex stage (vertex.cpp)

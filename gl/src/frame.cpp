@@ -155,7 +155,7 @@ void Context::finish() {
   if (renderer_) run_frame();
 }
 
-PixelState Context::pixel_state(bool offset) {
+PixelState Context::pixel_state(bool offset, bool stippled) {
   PixelState s;
   if (texture_.enabled) {
     TextureObject* t = bound_texture();
@@ -224,18 +224,21 @@ PixelState Context::pixel_state(bool offset) {
   s.blend_color = raster_.blend_color;
   s.color_mask = raster_.color_mask_bits();
   stencil_pixel_state(s);
+  s.polygon_stipple = stippled && raster_.polygon_stipple;
+  if (s.polygon_stipple) std::copy(raster_.stipple.begin(), raster_.stipple.end(), s.stipple);
   return s;
 }
 
-Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
-  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset ||
+Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled) {
+  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset || pending_.stippled != stippled ||
                         pending_.index.size() >= kMaxBatchVertices))
     submit_pending();
   if (!have_pending_) {
     pending_.clear();
     pending_.kind = kind;
     pending_.offset = offset;
-    pending_.state = pixel_state(offset);
+    pending_.stippled = stippled;
+    pending_.state = pixel_state(offset, stippled);
     const Box& vp = transform_.viewport;
     // The framebuffer is kept bottom row first (see update_derived): GL's y as it is.
     pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};

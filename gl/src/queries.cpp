@@ -156,6 +156,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_BLEND: return raster_.blend;
     case GL_COLOR_LOGIC_OP: return raster_.logic_op;
     case GL_LINE_STIPPLE: return raster_.line_stipple;
+    case GL_POLYGON_STIPPLE: return raster_.polygon_stipple;
     case GL_ALPHA_TEST: return raster_.alpha_test;
     case GL_FOG: return raster_.fog;
     case GL_SCISSOR_TEST: return raster_.scissor_test;

@@ -44,6 +44,7 @@ void Context::enable(GLenum cap, bool on) {
     case GL_BLEND: raster_.blend = on; break;
     case GL_COLOR_LOGIC_OP: raster_.logic_op = on; break;
     case GL_LINE_STIPPLE: raster_.line_stipple = on; return;
+    case GL_POLYGON_STIPPLE: raster_.polygon_stipple = on; break;
     case GL_ALPHA_TEST: raster_.alpha_test = on; break;
     case GL_FOG: raster_.fog = on; break;
     case GL_SCISSOR_TEST: raster_.scissor_test = on; break;

@@ -142,6 +142,13 @@ struct RasterState {
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0, offset_units = 0;
   float point_size = 1, line_width = 1;
+  bool polygon_stipple = false;  // GL_POLYGON_STIPPLE (polygon_stipple.cpp)
+  std::array<uint32_t, 32> stipple = all_ones();  // bit x of row y: pixel (x, y) mod 32
+  static std::array<uint32_t, 32> all_ones() {
+    std::array<uint32_t, 32> a;
+    a.fill(~0u);
+    return a;
+  }
   bool line_stipple = false;  // GL_LINE_STIPPLE (line_stipple.cpp)
   GLint stipple_factor = 1;
   GLushort stipple_pattern = 0xffff;

@@ -224,7 +224,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
   const bool shared = !flat && !back_colors;
   const GLenum mode = raster_.polygon_mode[front ? 0 : 1];
   if (mode == GL_FILL) {
-    target(PrimitiveKind::Triangles, raster_.offset_fill);
+    target(PrimitiveKind::Triangles, raster_.offset_fill, true);
     auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
       emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared), emit_vertex(c, color(c), shared);
     };

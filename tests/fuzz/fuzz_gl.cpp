@@ -153,7 +153,21 @@ void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, fl
     case 3: glBitmap(w, h, a, b, c, d, in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr); break;
     case 4: glDrawPixels(w, h, format, type, in.u8() & 1 ? image.data() : nullptr); break;
     case 5: glCopyPixels(in.integer() % 128, in.integer() % 128, w * (1 + in.below(8)), h, in.u8() & 1 ? GL_COLOR : e1); break;
-    case 6: glPixelZoom(a, b); break;
+    case 6: {
+      // The polygon stipple through the random unpack state (48 rows of 8 bytes at
+      // most: inside `image`); read back into 32 rows of at most 8 bytes.
+      glPixelZoom(a, b);
+      glPolygonStipple(in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr);
+      (in.u8() & 1 ? glEnable : glDisable)(GL_POLYGON_STIPPLE);
+      GLubyte back[32 * 8];
+      glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+      glPixelStorei(GL_PACK_ROW_LENGTH, 0), glPixelStorei(GL_PACK_SKIP_ROWS, 0), glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+      glPixelStorei(GL_PACK_ALIGNMENT, 1 << in.below(4));
+      glPixelStorei(GL_PACK_LSB_FIRST, in.u8() & 1);
+      glGetPolygonStipple(back);
+      glPopClientAttrib();
+      break;
+    }
     case 7: {
       static const GLenum counts[] = {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
       glPixelStorei(counts[in.below(3)], in.below(18) - 1);

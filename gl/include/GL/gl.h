@@ -618,6 +618,11 @@ GLAPI void GLAPIENTRY glLogicOp(GLenum opcode);
 #define GL_LINE_STIPPLE_PATTERN 0x0B25
 #define GL_LINE_STIPPLE_REPEAT 0x0B26
 GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
+
+/* Polygon stipple */
+#define GL_POLYGON_STIPPLE 0x0B42
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glGetPolygonStipple(GLubyte *mask);
 GLAPI void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendEquationEXT(GLenum mode);
