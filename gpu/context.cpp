@@ -84,18 +84,21 @@ Context::Context(bool hardware_only) {
     display_ = EGL_NO_DISPLAY;
   }
   if (display_ == EGL_NO_DISPLAY) {
-    bool any_software = false;
-    for (const Device& d : devices) any_software = any_software || d.software;
-    if (hardware_only)
-      throw Error(devices.empty() ? "no EGL device (no GPU driver for EGL)"
-                                  : any_software ? "only a software OpenGL driver (Mesa's llvmpipe): the CPU pipeline is faster"
-                                                 : "no EGL device could be initialised");
+    // The surfaceless platform: Mesa's, and also NVIDIA's, whose devices need not be
+    // enumerable (an H200 in a virtual machine listed none). When only hardware will
+    // do, the renderer it gives is checked below.
     if (has_extension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless")) {
       display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
       where = "EGL surfaceless platform";
     }
     if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, nullptr, nullptr)) {
       display_ = EGL_NO_DISPLAY;
+      bool any_software = false;
+      for (const Device& d : devices) any_software = any_software || d.software;
+      if (hardware_only)
+        throw Error(devices.empty() ? "no EGL device (no GPU driver for EGL)"
+                                    : any_software ? "only a software OpenGL driver (Mesa's llvmpipe): the CPU pipeline is faster"
+                                                   : "no EGL device could be initialised");
       throw Error("no EGL device and no surfaceless EGL platform (" + egl_error() + ")");
     }
   }

@@ -5,8 +5,8 @@
 // pipeline's own code on the same samples.
 //
 // What is uploaded when (docs/gpu.md): a mesh the first frame it is drawn, again only
-// when its contents change (a 64-bit fingerprint of every array it has, computed at each
-// draw); a texture and its mip levels the first frame it is read, again when its texels
+// when its contents change (a 64-bit fingerprint of every array it has, computed once a
+// frame on the renderer's threads); a texture and its mip levels the first frame it is read, again when its texels
 // change (the same fingerprint); lights and camera every frame (uniforms). Entries not
 // used for kEvictFrames frames, and the least recently used ones beyond the budget
 // bytes, are deleted.
@@ -17,10 +17,12 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
 #include "context.hpp"
+#include "core/thread_pool.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/read_back.hpp"
 #include "framebuffer/resolve.hpp"
@@ -69,21 +71,71 @@ struct Fingerprint {
   uint64_t value() const { return lane[0] ^ (lane[1] * 3) ^ (lane[2] * 5) ^ (lane[3] * 7); }
 };
 
-uint64_t fingerprint(const Mesh& m) {
-  Fingerprint f;
+// The fingerprint of several arrays, hashed in chunks on a thread pool: every frame
+// checks every byte of what it draws (10 M triangles are some 300 MB), which one thread
+// does at a few GB/s. The sizes go in first, then each chunk's own fingerprint in
+// order, so the value does not depend on the number of threads.
+class ChunkedFingerprint {
+ public:
+  template <class T>
+  void add(const std::vector<T>& v) {
+    const uint64_t n = v.size();
+    sizes_.add(&n, sizeof n);
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(v.data());
+    const size_t bytes = v.size() * sizeof(T);
+    for (size_t at = 0; at < bytes; at += kChunk) chunks_.push_back({p + at, std::min(kChunk, bytes - at)});
+  }
+  void add_size(uint64_t n) { sizes_.add(&n, sizeof n); }
+  uint64_t value(ThreadPool& pool) {
+    std::vector<uint64_t> values(chunks_.size());
+    pool.run(int(chunks_.size()), [&](int i) {
+      Fingerprint f;
+      f.add(chunks_[size_t(i)].first, chunks_[size_t(i)].second);
+      values[size_t(i)] = f.value();
+    });
+    Fingerprint f = sizes_;
+    if (!values.empty()) f.add(values.data(), values.size() * sizeof(uint64_t));
+    return f.value();
+  }
+
+ private:
+  static constexpr size_t kChunk = size_t(1) << 20;
+  Fingerprint sizes_;
+  std::vector<std::pair<const unsigned char*, size_t>> chunks_;
+};
+
+uint64_t fingerprint(const Mesh& m, ThreadPool& pool) {
+  ChunkedFingerprint f;
   f.add(m.positions), f.add(m.normals), f.add(m.uvs), f.add(m.colors), f.add(m.triangles);
   f.add(m.uvs1), f.add(m.tangents), f.add(m.alphas);
   f.add(m.face_colors), f.add(m.face_materials);
-  const uint64_t materials = m.materials.size();
-  f.add(&materials, sizeof materials);
-  return f.value();
+  f.add_size(m.materials.size());
+  return f.value(pool);
 }
 
-uint64_t fingerprint(const Texture& t) {
-  Fingerprint f;
-  for (const Texture::Level& l : t.levels()) f.add(&l.width, sizeof l.width), f.add(&l.height, sizeof l.height), f.add(l.texels);
-  return f.value();
+uint64_t fingerprint(const Texture& t, ThreadPool& pool) {
+  ChunkedFingerprint f;
+  for (const Texture::Level& l : t.levels()) f.add_size(uint64_t(l.width)), f.add_size(uint64_t(l.height)), f.add(l.texels);
+  return f.value(pool);
 }
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Adds the time from construction to destruction to `total` (a stage's time, over the
+// calls that make it up).
+class StageTimer {
+ public:
+  explicit StageTimer(double& total) : total_(total) {}
+  ~StageTimer() { total_ += ms_since(t0_); }
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
 
 void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
 
@@ -212,10 +264,17 @@ GpuBackend::~GpuBackend() {
     for (GLuint p : pbr_programs_)
       if (p) glDeleteProgram(p);
     glDeleteFramebuffers(1, &fbo_);
+    if (shadow_fbo_) glDeleteFramebuffers(1, &shadow_fbo_), glDeleteTextures(1, &shadow_maps_), glDeleteProgram(depth_program_);
     glDeleteRenderbuffers(3, renderbuffers_);
+    if (resolve_.program) {
+      glDeleteProgram(resolve_.program), glDeleteVertexArrays(1, &resolve_.vao), glDeleteTextures(1, &resolve_.samples);
+      glDeleteRenderbuffers(1, &resolve_.output), glDeleteFramebuffers(2, resolve_.framebuffers);
+    }
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
-    if (batch_program_) glDeleteProgram(batch_program_), glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(5, batch_buffers_);
+    for (GLuint p : batch_programs_)
+      if (p) glDeleteProgram(p);
+    if (batch_vao_) glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(6, batch_buffers_);
   } catch (const Error&) {
     // A context that cannot be made current any more: its objects go with it.
   }
@@ -237,8 +296,10 @@ void GpuBackend::resize(int w, int h, int k) {
                 std::to_string(k) + " super-sampling needs a sample buffer over " + std::to_string(max_side_) +
                 " a side (the GPU's or the renderer's limit)");
   if (w == width_ && h == height_ && k == ssaa_) return;
-  // The CPU copy first: when memory runs out nothing has changed.
+  // The CPU copy first: when memory runs out nothing has changed. The last frame goes
+  // (as the CPU's does): nothing is left to read back.
   samples_.resize(w * k, h * k);
+  pending_ = 0;
   Current current(*context_);
   const int sw = w * k, sh = h * k;
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
@@ -246,11 +307,12 @@ void GpuBackend::resize(int w, int h, int k) {
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, sw, sh);
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[2]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, sw, sh);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH32F_STENCIL8, sw, sh);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, renderbuffers_[1]);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[2]);
+  stencil_used_ = true;  // (read back at the next frame: the new buffer's contents)
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   check_gl("the GPU framebuffer");
   if (status != GL_FRAMEBUFFER_COMPLETE) throw Error("the GPU framebuffer is incomplete at " + std::to_string(sw) + "x" + std::to_string(sh));
@@ -280,6 +342,8 @@ GLint GpuBackend::uniform(GLuint program, const char* name) {
 
 void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lights, const FrameStart& start,
                              const RenderOptions& options) {
+  if (options.shadows && (options.shadow_map_size < 16 || options.shadow_map_size > 8192))
+    throw Error("shadow map size " + std::to_string(options.shadow_map_size) + " is out of range (16..8192)");
   resize(width_, height_, options.ssaa);
   options_ = options;
   stats_ = {};
@@ -295,6 +359,20 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
   flipped_view_projection_ = flip * projection_ * view_;
   view_projection_ = projection_ * view_;
   shading::eye_lights(view_, lights, lights_);
+  // The lights that may cast (CpuBackend::begin_frame): no lights, kDefaultLight's
+  // directional light (given in eye space) casts.
+  casters_.clear();
+  caster_bounds_ = {{}, -1};
+  shadow_lights_.clear();
+  if (options.shadows) frame_lights_ = lights;
+  if (options.shadows && lights.empty()) {
+    const Mat4& v = view_;
+    const Vec3 t = normalize(kDefaultLight.towards);
+    frame_lights_ = {Light::directional({v.m[0][0] * t.x + v.m[1][0] * t.y + v.m[2][0] * t.z,
+                                         v.m[0][1] * t.x + v.m[1][1] * t.y + v.m[2][1] * t.z,
+                                         v.m[0][2] * t.x + v.m[1][2] * t.y + v.m[2][2] * t.z},
+                                        kDefaultLight.diffuse)};
+  }
   if (lights_.directional.size() > size_t(kMaxLights) || lights_.point.size() > size_t(kMaxLights))
     throw Error("the GPU backend takes at most " + std::to_string(kMaxLights) + " directional and " +
                 std::to_string(kMaxLights) + " point lights");
@@ -320,6 +398,12 @@ void GpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
     const float d = std::clamp(start.depth, 0.0f, 1.0f);
     glClearBufferfv(GL_DEPTH, 0, &d);
   }
+  glDisable(GL_STENCIL_TEST), glStencilMask(0xff);
+  if (start.clear_stencil_buffer) {
+    const GLint value = start.stencil;
+    glClearBufferiv(GL_STENCIL, 0, &value);
+    stencil_used_ = true;
+  }
   glFrontFace(GL_CW);  // (the flip above)
   if (options.depth_mode == DepthMode::Painter) {
     glDisable(GL_DEPTH_TEST);
@@ -333,7 +417,8 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   // so its copies in the same frame cost no second pass over its bytes.
   auto it = meshes_.find(&mesh);
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
-  const uint64_t key = fingerprint(mesh);
+  StageTimer timer(stats_.upload_ms);
+  const uint64_t key = fingerprint(mesh, pool());
   if (it != meshes_.end() && it->second.fingerprint == key) {
     reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
@@ -435,7 +520,8 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
 GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   auto it = textures_.find({&t, srgb});
   if (it != textures_.end() && it->second.last_frame == frame_) return it->second.texture;  // (as meshes)
-  const uint64_t key = fingerprint(t);
+  StageTimer timer(stats_.upload_ms);
+  const uint64_t key = fingerprint(t, pool());
   const std::string what = "a " + std::to_string(t.width()) + "x" + std::to_string(t.height()) + " texture";
   if (it != textures_.end() && it->second.fingerprint == key) {
     reserve(it->second.bytes, what);
@@ -472,6 +558,15 @@ GLuint GpuBackend::texture(const Texture& t, bool srgb) {
   return textures_.emplace(std::make_pair(&t, srgb), e).first->second.texture;
 }
 
+// The renderer's threads (RenderOptions::threads: 0 is every core), for the fingerprints.
+ThreadPool& GpuBackend::pool() const {
+  int threads = options_.threads > 0 ? options_.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, 256);
+  // A pool made before this process was forked has no workers here: a new one.
+  if (!pool_ || pool_->size() != threads || pool_->orphaned()) pool_ = std::make_unique<ThreadPool>(threads);
+  return *pool_;
+}
+
 GLuint GpuBackend::sampler(Filter filter, Wrap wrap) {
   const int key = int(filter) * 8 + int(wrap);
   auto it = samplers_.find(key);
@@ -495,6 +590,7 @@ void GpuBackend::upload_lights(GLuint p) {
     glUniform1fv(albedo, shading::kGgxAlbedoSize * shading::kGgxAlbedoSize, shading::ggx_albedo_table());
   glUniform1i(uniform(p, "u_directional_count"), GLint(l.directional.size()));
   glUniform1i(uniform(p, "u_point_count"), GLint(l.point.size()));
+  upload_shadows(p);
   std::vector<Vec3> a, b, c;
   for (const auto& d : l.directional) a.push_back(d.to_light), b.push_back(d.color);
   if (!a.empty()) {
@@ -519,11 +615,114 @@ void GpuBackend::upload_lights(GLuint p) {
   }
 }
 
+// The frame's shadow maps (CpuBackend::render_shadows): the views of src/shadows.cpp,
+// each drawn into a layer of one depth texture with every caster, depth only, the
+// faces turned towards the light (both for a two-sided draw), in the frame's flipped
+// orientation so that a map's row 0 is the CPU's (kLightingGlsl reads it as the CPU
+// does). Then the frame's framebuffer and state again.
+void GpuBackend::render_shadows() {
+  const int size = options_.shadow_map_size;
+  plan_shadows(frame_lights_, view_, caster_bounds_, size, shadow_lights_);
+  int layers = 0;
+  for (const ShadowLight& l : shadow_lights_) layers += l.faces;
+  if (layers == 0) return;
+  if (size > max_texture_)
+    throw Error("a shadow map of " + std::to_string(size) + " texels a side is larger than the GPU takes (" +
+                std::to_string(max_texture_) + ")");
+  reserve(size_t(size) * size_t(size) * 4 * size_t(layers), "the shadow maps");
+  if (!shadow_fbo_) glGenFramebuffers(1, &shadow_fbo_);
+  if (!depth_program_) depth_program_ = build_depth_program();
+  if (size != shadow_size_ || layers > shadow_layers_) {
+    if (shadow_maps_) glDeleteTextures(1, &shadow_maps_);
+    glGenTextures(1, &shadow_maps_);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, shadow_maps_);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    // Read with texelFetch: one level, no comparison.
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    check_gl("the shadow maps");
+    shadow_size_ = size, shadow_layers_ = layers;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+  glDrawBuffer(GL_NONE), glReadBuffer(GL_NONE);
+  glViewport(0, 0, size, size);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS), glDepthMask(GL_TRUE);
+  glUseProgram(depth_program_);
+  const GLint mvp = uniform(depth_program_, "u_mvp");
+  Mat4 flip;
+  flip.m[1][1] = -1;
+  int layer = 0;
+  for (const ShadowLight& l : shadow_lights_)
+    for (int f = 0; f < l.faces; ++f, ++layer) {
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, shadow_maps_, 0, layer);
+      const float one = 1.0f;
+      glClearBufferfv(GL_DEPTH, 0, &one);
+      const Mat4 view_projection = flip * l.views[f].projection * l.views[f].view;
+      for (const Caster& c : casters_) {
+        if (c.two_sided) glDisable(GL_CULL_FACE);
+        else glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
+        upload_matrix(mvp, view_projection * c.world);
+        glBindVertexArray(c.entry->vao);
+        glDrawElements(GL_TRIANGLES, GLsizei(c.entry->face_of.size() * 3), GL_UNSIGNED_INT, nullptr);
+      }
+    }
+  glBindVertexArray(0);
+  check_gl("the shadow maps");
+  // The frame's framebuffer and state (begin_frame's).
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glViewport(0, 0, width_ * ssaa_, height_ * ssaa_);
+  glDisable(GL_CULL_FACE);
+  if (options_.depth_mode == DepthMode::Painter) glDisable(GL_DEPTH_TEST);
+  glActiveTexture(GL_TEXTURE15);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, shadow_maps_);
+}
+
+// The shadows' uniforms (kLightingGlsl's visibility): which light has which maps, and
+// each map's matrix and texel size.
+void GpuBackend::upload_shadows(GLuint p) {
+  glUniform1i(uniform(p, "u_shadow_maps"), 15);  // (always: unit 0 holds another kind of texture)
+  glUniform1i(uniform(p, "u_shadows"), !shadow_lights_.empty());
+  if (shadow_lights_.empty()) return;
+  std::vector<GLint> directional(lights_.directional.size(), -1), point(lights_.point.size(), -1);
+  std::vector<GLint> first, faces;
+  std::vector<Vec3> position;
+  std::vector<Mat4> eye_to_clip;
+  std::vector<Vec2> texel;
+  for (const ShadowLight& l : shadow_lights_) {
+    (l.directional ? directional : point).at(l.index) = GLint(first.size());
+    first.push_back(GLint(eye_to_clip.size())), faces.push_back(l.faces), position.push_back(l.shadow.position);
+    for (int f = 0; f < l.faces; ++f) {
+      const shading::ShadowMap& m = l.shadow.face[f];
+      eye_to_clip.push_back(m.eye_to_clip), texel.push_back({m.texel, m.perspective ? 1.0f : 0.0f});
+    }
+  }
+  if (!directional.empty()) glUniform1iv(uniform(p, "u_directional_shadow"), GLsizei(directional.size()), directional.data());
+  if (!point.empty()) glUniform1iv(uniform(p, "u_point_shadow"), GLsizei(point.size()), point.data());
+  glUniform1iv(uniform(p, "u_shadow_first"), GLsizei(first.size()), first.data());
+  glUniform1iv(uniform(p, "u_shadow_faces"), GLsizei(faces.size()), faces.data());
+  glUniform3fv(uniform(p, "u_shadow_position"), GLsizei(position.size()), &position[0].x);
+  glUniformMatrix4fv(uniform(p, "u_shadow_eye_to_clip"), GLsizei(eye_to_clip.size()), GL_TRUE, &eye_to_clip[0].m[0][0]);
+  glUniform2fv(uniform(p, "u_shadow_texel"), GLsizei(texel.size()), &texel[0].x);
+  glUniform1i(uniform(p, "u_shadow_size"), shadow_size_);
+}
+
 void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) {
   stats_.objects++;
   stats_.triangles += mesh.triangles.size();
   if (mesh.triangles.empty()) return;
   context_->make_current();  // (a no-op unless another renderer's frame ran on this thread since)
+  if (options_.shadows) {
+    // Every mesh draw casts, seen or not (CpuBackend::draw): both faces for a two-sided material.
+    bool two_sided = material ? material->two_sided : mesh.materials.empty() && default_material_.two_sided;
+    if (!material)
+      for (const Material& mat : mesh.materials) two_sided = two_sided || mat.two_sided;
+    casters_.push_back({&mesh_entry(mesh), world, two_sided || !options_.cull_back_faces});
+    caster_bounds_ = merge_bounds(caster_bounds_, world_bounds(mesh, world));
+  }
   if (geometry::ViewVolume(view_projection_).outside(mesh, world)) return void(stats_.objects_culled++);
   MeshEntry& m = mesh_entry(mesh);
   // Blended (geometry::plan_mesh_draw's d.blend): a slot is Pbr with AlphaMode::Blend.
@@ -553,6 +752,7 @@ void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
 // (CpuBackend::order_blended_draws); in painter's mode, the batches and clears, then
 // every face of the frame sorted (draw_painter).
 void GpuBackend::replay() {
+  if (options_.shadows && !casters_.empty()) render_shadows();
   bool pbr = false;
   for (const MeshDraw& d : mesh_draws_) {
     const size_t slots = d.material ? 1 : 1 + d.mesh->materials.size();
@@ -754,6 +954,16 @@ void GpuBackend::draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, co
       glUniform1i(uniform(p, "u_uv_from_env"), uv_from_env);
       glUniform1i(uniform(p, "u_two_sided"), mat.two_sided);
       glUniform1i(uniform(p, "u_cull"), cull);
+      if (points) {
+        // mesh_job.cpp's point_size(): 1..64, times the super-sampling factor.
+        const float size = std::isfinite(options_.point_size) ? std::clamp(options_.point_size, 1.0f, 64.0f) : 1.0f;
+        glUniform1f(uniform(p, "u_point_size"), float(std::max(1, int(size * float(ssaa_) + 0.5f))));
+        glEnable(GL_PROGRAM_POINT_SIZE);
+      }
+      if (lines) {  // (the edges map their ends to window pixels themselves)
+        glUniform4f(uniform(p, "u_viewport"), 0, 0, float(width_ * ssaa_), float(height_ * ssaa_));
+        glUniform2f(uniform(p, "u_depth_range"), 0, 1);
+      }
       glUniform1i(uniform(p, "u_textured"), textured);
       glUniform1i(uniform(p, "u_env"), phong && env);
       glUniform1f(uniform(p, "u_env_mix"), mat.env_mix);
@@ -862,6 +1072,20 @@ namespace {
 
 GLenum gl_compare(CompareFunc f) { return GL_NEVER + GLenum(f); }  // the same order as GL's enums
 
+GLenum gl_stencil_op(StencilOp op) {
+  switch (op) {
+    case StencilOp::Keep: return GL_KEEP;
+    case StencilOp::Zero: return GL_ZERO;
+    case StencilOp::Replace: return GL_REPLACE;
+    case StencilOp::Increment: return GL_INCR;
+    case StencilOp::Decrement: return GL_DECR;
+    case StencilOp::Invert: return GL_INVERT;
+    case StencilOp::IncrementWrap: return GL_INCR_WRAP;
+    case StencilOp::DecrementWrap: return GL_DECR_WRAP;
+  }
+  return GL_KEEP;
+}
+
 GLenum gl_factor(BlendFactor f) {
   static const GLenum table[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
                                  GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
@@ -885,8 +1109,10 @@ GLint gl_wrap(Wrap w) {
 // A batch of pre-transformed primitives (pGL's path), drawn at once in submission order
 // (painter's mode does not sort them). Vertex arrays are streamed per draw.
 void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) {
-  // (User clip planes are the CPU clipper's alone so far: refused rather than ignored.)
-  if (batch.clip_planes) throw Error("the GPU backend does not clip to user clip planes (glClipPlane) yet");
+  if (batch.clip_planes > kMaxUserClipPlanes)
+    throw Error("a primitive batch has " + std::to_string(batch.clip_planes) + " user clip planes (at most " +
+                std::to_string(kMaxUserClipPlanes) + ")");
+  if (batch.clip_planes && !batch.clip_distance) throw Error("a primitive batch has user clip planes but no clip distances");
   if (state.logic_op) throw Error("the GPU backend does not apply glLogicOp yet");
   if (state.polygon_stipple) throw Error("the GPU backend does not apply glPolygonStipple yet");
   stats_.objects++;
@@ -913,12 +1139,9 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   else if (k == 2) stats_.lines += batch_indices_.size() / 2;
   else stats_.points += batch_indices_.size();
 
-  if (!batch_program_) {
-    batch_program_ = build_batch_program();
-    glGenVertexArrays(1, &batch_vao_);
-    glGenBuffers(5, batch_buffers_);
-  }
-  const GLuint p = batch_program_;
+  if (!batch_vao_) glGenVertexArrays(1, &batch_vao_), glGenBuffers(6, batch_buffers_);
+  GLuint& p = batch_programs_[k == 2];
+  if (!p) p = build_batch_program(k == 2);
   glUseProgram(p);
   glBindVertexArray(batch_vao_);
   const size_t n = batch.vertex_count;
@@ -938,6 +1161,27 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   stream(1, batch.color, n * sizeof(Vec4), 4, {1, 1, 1, 1});
   stream(2, batch.texcoord, n * sizeof(Vec4), 4, {0, 0, 0, 1});
   stream(3, batch.fog, n * sizeof(float), 1, {0, 0, 0, 1});
+  // User clip planes: each vertex's distances, the first four and the other two as two
+  // attributes of one buffer, written to gl_ClipDistance (GL clips where one is < 0,
+  // interpolated linearly in clip space, as the CPU's clipper does).
+  const uint32_t planes = batch.clip_planes;
+  if (planes) {
+    const GLsizei stride = GLsizei(planes * sizeof(float));
+    glBindBuffer(GL_ARRAY_BUFFER, batch_buffers_[5]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(n * planes * sizeof(float)), batch.clip_distance, GL_STREAM_DRAW);
+    glVertexAttribPointer(4, GLint(std::min(planes, 4u)), GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(4);
+    if (planes > 4) {
+      glVertexAttribPointer(5, GLint(planes - 4), GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(16));
+      glEnableVertexAttribArray(5);
+    } else {
+      glDisableVertexAttribArray(5);
+    }
+  } else {
+    glDisableVertexAttribArray(4), glDisableVertexAttribArray(5);
+  }
+  for (uint32_t c = 0; c < kMaxUserClipPlanes; ++c)
+    c < planes ? glEnable(GLenum(GL_CLIP_DISTANCE0 + c)) : glDisable(GLenum(GL_CLIP_DISTANCE0 + c));
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_buffers_[4]);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(batch_indices_.size() * 4), batch_indices_.data(), GL_STREAM_DRAW);
 
@@ -950,7 +1194,15 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   const int vx = v.width > 0 ? std::clamp(v.x, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   const int vy = v.height > 0 ? std::clamp(v.y, -kMaxFramebufferSide, kMaxFramebufferSide) : 0;
   glViewport(vx, vy, vw, vh);
-  glDepthRange(std::clamp(v.depth_near, 0.0f, 1.0f), std::clamp(v.depth_far, 0.0f, 1.0f));
+  const float near = std::clamp(v.depth_near, 0.0f, 1.0f), far = std::clamp(v.depth_far, 0.0f, 1.0f);
+  glDepthRange(near, far);
+  if (k == 2) {  // the line program maps its ends to window pixels itself
+    glUniform4f(uniform(p, "u_viewport"), float(vx), float(vy), float(vw), float(vh));
+    glUniform2f(uniform(p, "u_depth_range"), near, far);
+    const float width = std::floor(batch.line_width + 0.5f);  // (as batch_job.cpp rounds it; NaN: 1)
+    glUniform1f(uniform(p, "u_line_width"), width >= 1.0f ? std::min(width, 255.0f) : 1.0f);
+    glUniform1i(uniform(p, "u_clip_planes"), GLint(planes));
+  }
 
   const TextureStage& t = state.texture;
   glUniform1i(uniform(p, "u_textured"), t.texture != nullptr);
@@ -1010,16 +1262,23 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   } else {
     glDisablei(GL_BLEND, 0);
   }
+  // The stencil test (PixelState: the same test and operations as GL's).
+  if (state.stencil_test) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(gl_compare(state.stencil_func), state.stencil_ref, state.stencil_value_mask);
+    glStencilOp(gl_stencil_op(state.stencil_fail), gl_stencil_op(state.stencil_depth_fail), gl_stencil_op(state.stencil_pass));
+    glStencilMask(state.stencil_write_mask);
+    stencil_used_ = true;
+  } else {
+    glDisable(GL_STENCIL_TEST);
+  }
   const uint8_t m = state.color_mask;
   glColorMaski(0, m & 1, (m >> 1) & 1, (m >> 2) & 1, (m >> 3) & 1);
   glColorMaski(1, m != 0, GL_FALSE, GL_FALSE, GL_FALSE);  // the id goes with the colour
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  if (k == 2) glLineWidth(std::max(batch.line_width, 1.0f));
   const GLenum mode = k == 3 ? GL_TRIANGLES : k == 2 ? GL_LINES : GL_POINTS;
   glDrawElements(mode, GLsizei(batch_indices_.size()), GL_UNSIGNED_INT, nullptr);
-  if (glGetError() == GL_INVALID_VALUE && k == 2)  // a core context may refuse wide lines
-    throw Error("the GPU backend's OpenGL context does not draw lines " + std::to_string(batch.line_width) + " pixels wide");
 
   // Back to the mesh draws' state.
   glViewport(0, 0, fw, fh);
@@ -1030,7 +1289,8 @@ void GpuBackend::draw_batch(const PrimitiveBatch& batch, const PixelState& state
   glDepthMask(GL_TRUE);
   if (painter) glDisable(GL_DEPTH_TEST);
   else glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
-  glLineWidth(1);
+  glDisable(GL_STENCIL_TEST), glStencilMask(0xff);
+  for (uint32_t c = 0; c < planes; ++c) glDisable(GLenum(GL_CLIP_DISTANCE0 + c));
   glBindVertexArray(0);
 }
 
@@ -1057,57 +1317,103 @@ void GpuBackend::run_clear(const ClearRequest& request) {
     const float d = std::clamp(request.depth_value, 0.0f, 1.0f);
     glClearBufferfv(GL_DEPTH, 0, &d);
   }
+  if (request.stencil) {
+    const GLint value = request.stencil_value;
+    glStencilMask(request.stencil_mask);
+    glClearBufferiv(GL_STENCIL, 0, &value);
+    glStencilMask(0xff);
+    stencil_used_ = true;
+  }
   glDisable(GL_SCISSOR_TEST);
 }
 
 const FrameStats& GpuBackend::end_frame() {
   context_->make_current();
   try {
+    const auto t_submit = std::chrono::steady_clock::now();
+    const double uploads_before = stats_.upload_ms;
     replay();
+    stats_.submit_ms = ms_since(t_submit) - (stats_.upload_ms - uploads_before);
+    const auto t_wait = std::chrono::steady_clock::now();
+    glFinish();
+    stats_.gpu_wait_ms = ms_since(t_wait);
+    check_gl("the GPU frame");
+    context_->check_lost("the GPU frame");
   } catch (...) {
     context_->release();
     throw;
   }
-  // Read back every sample into the CPU framebuffer (its tiled layout).
+  // Nothing is read back yet: each read below fetches what it needs, once a frame.
+  {
+    std::lock_guard<std::mutex> lock(fetch_mutex_);
+    // (A stencil not fetched last frame is still the GPU's alone.)
+    pending_ = kColor | kDepth | (options_.object_ids ? kIds : 0u) | ((stencil_used_ || (pending_ & kStencil)) ? kStencil : 0u);
+    stencil_used_ = false;
+    samples_.keep_ids(options_.object_ids);
+    stats_.readback_ms = reads_ms_, reads_ms_ = 0;  // the last frame's reads (FrameStats)
+  }
+  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
+  evict();
+  context_->release();
+  stats_.tile_ms = ms_since(t0_);
+  return stats_;
+}
+
+// Reads the planes in `what` (of the last frame, those not read yet) into the CPU
+// framebuffer's samples, where the CPU pipeline's own read-backs take them.
+void GpuBackend::fetch(unsigned what) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  what &= pending_;
+  if (!what) return;
+  const auto t0 = std::chrono::steady_clock::now();
   const int w = width_ * ssaa_, h = height_ * ssaa_;
-  samples_.keep_ids(options_.object_ids);
-  rows_.resize(size_t(w) * size_t(h));
-  depth_rows_.resize(size_t(w) * size_t(h));
+  Current current(*context_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
-  scatter(rows_.data(), samples_.color.data());
-  scatter(depth_rows_.data(), samples_.depth.data());
-  if (options_.object_ids) {
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  if (what & kColor) {
+    rows_.resize(size_t(w) * size_t(h));
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+    scatter(rows_.data(), samples_.color.data());
+  }
+  if (what & kDepth) {
+    depth_rows_.resize(size_t(w) * size_t(h));
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth_rows_.data());
+    scatter(depth_rows_.data(), samples_.depth.data());
+  }
+  if (what & kStencil) {
+    stencil_rows_.resize(size_t(w) * size_t(h));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil_rows_.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    scatter(stencil_rows_.data(), samples_.stencil.data());
+  }
+  if (what & kIds) {
+    rows_.resize(size_t(w) * size_t(h));
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     glReadPixels(0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, rows_.data());
     scatter(rows_.data(), samples_.ids.data());
   }
-  std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
-  try {
-    check_gl("the GPU frame");
-    context_->check_lost("the GPU frame");
-  } catch (const Error&) {
-    context_->release();
-    throw;
-  }
-  evict();
-  context_->release();
-  stats_.tile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
-  return stats_;
+  check_gl("reading the GPU frame back");
+  pending_ &= ~what;
+  reads_ms_ += ms_since(t0);
 }
 
-// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks.
+// Rows (row 0 first) into the framebuffer's 64x64 tiles of 4x4 blocks, a band of tile
+// rows to each of the renderer's threads (memory-bound: one thread cannot keep up).
 template <class T>
 void GpuBackend::scatter(const T* rows, T* tiled) const {
   const int w = samples_.width, h = samples_.height;
-  for (int y = 0; y < h; ++y) {
-    const T* row = rows + size_t(y) * size_t(w);
-    int x = 0;
-    for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
-    for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
-  }
+  constexpr int kBand = 64;
+  pool().run((h + kBand - 1) / kBand, [&](int band) {
+    for (int y = band * kBand; y < std::min(h, (band + 1) * kBand); ++y) {
+      const T* row = rows + size_t(y) * size_t(w);
+      int x = 0;
+      for (; x + 4 <= w; x += 4) std::memcpy(tiled + samples_.index(x, y), row + x, 4 * sizeof(T));
+      for (; x < w; ++x) tiled[samples_.index(x, y)] = row[x];
+    }
+  });
 }
 
 // Drops what was not used for a while, and the least recently used beyond the budget.
@@ -1132,18 +1438,117 @@ void GpuBackend::evict() {
   }
 }
 
-Image GpuBackend::color_image() const { return resolve_color(samples_, ssaa_); }
-Image GpuBackend::depth_image() const { return resolve_depth(samples_, ssaa_); }
+Image GpuBackend::color_image() const {
+  fetch(kColor);
+  return resolve_color(samples_, ssaa_);
+}
+Image GpuBackend::depth_image() const {
+  fetch(kDepth);
+  return resolve_depth(samples_, ssaa_);
+}
 void GpuBackend::read_color(uint8_t* rgba, size_t row_bytes, int channels) const {
-  velocity::read_color(samples_, ssaa_, nullptr, rgba, row_bytes, channels);
+  if (ssaa_ == 1 && channels == 4 && row_bytes % 4 == 0 && direct_read(rgba, row_bytes)) return;
+  if (ssaa_ > 1 && channels == 4 && row_bytes % 4 == 0 && resolve_on_gpu(rgba, row_bytes)) return;
+  fetch(kColor);
+  velocity::read_color(samples_, ssaa_, &pool(), rgba, row_bytes, channels);
 }
 void GpuBackend::read_view_depth(float* out) const {
-  velocity::read_view_depth(samples_, ssaa_, nullptr, projection_, out);
+  fetch(kDepth);
+  velocity::read_view_depth(samples_, ssaa_, &pool(), projection_, out);
 }
-void GpuBackend::read_window_depth(float* out) const { velocity::read_window_depth(samples_, ssaa_, nullptr, out); }
-// The GPU's draws keep no stencil buffer (PixelState's stencil test is the CPU's alone).
-void GpuBackend::read_stencil(uint8_t*) const { throw Error("the GPU backend keeps no stencil buffer"); }
-std::vector<uint32_t> GpuBackend::object_ids() const { return resolve_object_ids(samples_, ssaa_); }
+void GpuBackend::read_window_depth(float* out) const {
+  fetch(kDepth);
+  velocity::read_window_depth(samples_, ssaa_, &pool(), out);
+}
+
+// With super-sampling, RGBA rows are resolved on the GPU (build_resolve_program: the
+// CPU's integer box filter) and only the w x h output crosses the bus, not k x k times
+// as many samples. False when the colour was already fetched, as direct_read.
+bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
+  // (A sample buffer larger than a texture may be: the samples are read, as fetch does.)
+  if (!(pending_ & kColor) || sw > max_texture_ || sh > max_texture_) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  Resolve& r = resolve_;
+  if (!r.program) {
+    r.program = build_resolve_program();
+    glGenVertexArrays(1, &r.vao), glGenTextures(1, &r.samples), glGenRenderbuffers(1, &r.output);
+    glGenFramebuffers(2, r.framebuffers);
+  }
+  if (r.width != width_ || r.height != height_ || r.ssaa != ssaa_) {
+    glBindTexture(GL_TEXTURE_2D, r.samples);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, sw, sh, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[0]);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.samples, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, r.output);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width_, height_);
+    glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[1]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, r.output);
+    check_gl("the GPU resolve's buffers");
+    r.width = width_, r.height = height_, r.ssaa = ssaa_;
+  }
+  // The samples into the texture (the drawn framebuffer's colour is a renderbuffer),
+  // then one triangle over the output.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.framebuffers[0]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glBlitFramebuffer(0, 0, sw, sh, 0, 0, sw, sh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, r.framebuffers[1]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST), glDisable(GL_SCISSOR_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glUseProgram(r.program);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, r.samples);
+  glBindSampler(0, 0);
+  glUniform1i(glGetUniformLocation(r.program, "u_samples"), 0);
+  glUniform1i(glGetUniformLocation(r.program, "u_k"), ssaa_);
+  glBindVertexArray(r.vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);  // (begin_frame sets the rest of the draws' state)
+  check_gl("resolving the GPU frame");
+  reads_ms_ += ms_since(t0);
+  return true;
+}
+
+// Without super-sampling, RGBA rows are the GPU framebuffer's own pixels: read straight
+// into the caller's rows (no copy through the tiled samples). False when the colour was
+// already fetched (the samples then hold it, and the CPU's read is a copy).
+bool GpuBackend::direct_read(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  if (!(pending_ & kColor)) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  check_gl("reading the GPU frame back");
+  reads_ms_ += ms_since(t0);
+  return true;
+}
+
+void GpuBackend::read_stencil(uint8_t* out) const {
+  fetch(kStencil);
+  velocity::read_stencil(samples_, ssaa_, out);
+}
+std::vector<uint32_t> GpuBackend::object_ids() const {
+  fetch(kIds);
+  return resolve_object_ids(samples_, ssaa_);
+}
 size_t GpuBackend::framebuffer_bytes() const {
   return samples_.color.size() * 4 + samples_.depth.size() * 4 + samples_.ids.size() * 4;
 }

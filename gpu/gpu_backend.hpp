@@ -6,6 +6,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -14,7 +15,12 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "shading/lighting.hpp"
+#include "shadows.hpp"
 #include "velocity/backend.hpp"
+
+namespace velocity {
+class ThreadPool;
+}
 
 namespace velocity::gpu {
 
@@ -93,10 +99,16 @@ class GpuBackend final : public Backend {
   void run_clear(const ClearRequest& request);
   void replay();
   GLuint sampler(Filter filter, Wrap wrap);
+  ThreadPool& pool() const;
+  void fetch(unsigned what) const;
+  bool direct_read(uint8_t* rgba, size_t row_bytes) const;
+  bool resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const;
   void upload_lights(GLuint program);
   void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
   void draw_painter();
+  void render_shadows();
+  void upload_shadows(GLuint program);
   void free(MeshEntry& m);
   void evict();
   template <class T>
@@ -132,15 +144,46 @@ class GpuBackend final : public Backend {
   std::vector<uint32_t> painter_faces_;
   GLuint painter_indices_ = 0, order_buffer_ = 0, order_texture_ = 0;
   // pGL's path: its program, streamed arrays and samplers (by SamplerState).
-  GLuint batch_program_ = 0, batch_vao_ = 0, batch_buffers_[5] = {};
+  GLuint batch_programs_[2] = {};  // triangles and points, lines
+  GLuint batch_vao_ = 0, batch_buffers_[6] = {};  // position, colour, texcoord, fog, indices, clip distances
   std::vector<uint32_t> batch_indices_;
   std::map<std::tuple<int, int, int, int, int, float, float, float, float>, GLuint> batch_samplers_;
+  // Shadows (RenderOptions::shadows; CpuBackend::render_shadows): every mesh draw of the
+  // frame casts, seen or not; the maps are layers of one depth texture.
+  struct Caster {
+    MeshEntry* entry;
+    Mat4 world;
+    bool two_sided;
+  };
+  std::vector<Light> frame_lights_;
+  std::vector<Caster> casters_;
+  Sphere caster_bounds_{{}, -1};
+  std::vector<ShadowLight> shadow_lights_;
+  GLuint shadow_fbo_ = 0, shadow_maps_ = 0, depth_program_ = 0;
+  int shadow_size_ = 0, shadow_layers_ = 0;
+  mutable std::unique_ptr<ThreadPool> pool_;
   FrameStats stats_;
   std::chrono::steady_clock::time_point t0_;
 
-  Framebuffer samples_;  // the last frame, read back
-  std::vector<uint32_t> rows_;
-  std::vector<float> depth_rows_;
+  // The last frame, read back plane by plane as the reads ask (fetch): pending_ says
+  // which planes the GPU still holds alone. Reads may come from any thread, one
+  // renderer at a time, so fetching is under a lock.
+  enum Plane : unsigned { kColor = 1, kDepth = 2, kIds = 4, kStencil = 8 };
+  mutable std::mutex fetch_mutex_;
+  mutable unsigned pending_ = 0;
+  mutable double reads_ms_ = 0;  // the read-backs since the last end_frame
+  // The super-sampling resolve on the GPU (resolve_on_gpu): a copy of the samples as a
+  // texture, the w x h output, their framebuffers and the pass's program.
+  struct Resolve {
+    GLuint program = 0, vao = 0, samples = 0, output = 0, framebuffers[2] = {};
+    int width = 0, height = 0, ssaa = 0;
+  };
+  mutable Resolve resolve_;
+  mutable Framebuffer samples_;
+  mutable std::vector<uint32_t> rows_;
+  mutable std::vector<float> depth_rows_;
+  mutable std::vector<uint8_t> stencil_rows_;
+  bool stencil_used_ = false;  // the frame cleared or wrote the stencil: fetch it
 };
 
 }  // namespace velocity::gpu

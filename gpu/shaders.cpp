@@ -26,6 +26,76 @@ uniform vec3 u_specular;               // ks, exponent, cutoff
 
 struct Terms { vec3 diffuse; vec3 specular; };
 
+// shading/shadow.hpp: visibility() and map_visibility(), step for step: the lookup point
+// moved kNormalOffset texels along the normal and kLightOffset towards the light (a
+// texel's world size at the point), projected into the light's map, and the bilinear
+// percentage-closer filter of the four texels around it (window depth, LESS as drawn);
+// outside a map: lit; N.L <= 0: in shadow. A point light's cube picks its face as the
+// CPU does. The maps are the layers of one depth texture, row 0 the CPU's row 0 (drawn
+// with the frame's flipped projection), read with texelFetch: the filter is this code's,
+// not the driver's, so that both backends weigh the same texels the same way.
+const float kNormalOffset = 2.0, kLightOffset = 1.0;
+uniform bool u_shadows;
+uniform int u_directional_shadow[16];  // the light's shadow (an index into u_shadow_*), -1: none
+uniform int u_point_shadow[16];
+uniform int u_shadow_first[4];         // its first map (a layer of u_shadow_maps)
+uniform int u_shadow_faces[4];         // 1, or a point light's 6 (+x, -x, +y, -y, +z, -z)
+uniform vec3 u_shadow_position[4];     // a cube's light, eye space
+uniform mat4 u_shadow_eye_to_clip[24]; // per map: the camera's eye space to the light's clip space
+uniform vec2 u_shadow_texel[24];       // per map: a texel's world size, perspective (0 or 1)
+uniform int u_shadow_size;
+uniform sampler2DArray u_shadow_maps;
+
+float shadow_lit(int map, int x, int y, float z) {
+  return z <= texelFetch(u_shadow_maps, ivec3(x, y, map), 0).r ? 1.0 : 0.0;
+}
+
+float map_visibility(int map, vec3 p, vec3 n, vec3 to_light) {
+  mat4 m = u_shadow_eye_to_clip[map];
+  float w0 = (m * vec4(p, 1.0)).w;
+  float texel = u_shadow_texel[map].y > 0.5 ? u_shadow_texel[map].x * w0 : u_shadow_texel[map].x;
+  vec3 q = p + n * (kNormalOffset * texel) + to_light * (kLightOffset * texel);
+  vec4 c = m * vec4(q, 1.0);
+  if (!(c.w > 0.0)) return 1.0;
+  float s = float(u_shadow_size);
+  float x = (c.x / c.w * 0.5 + 0.5) * s, y = (0.5 - 0.5 * c.y / c.w) * s, z = c.z / c.w * 0.5 + 0.5;
+  if (!(x >= 0.0 && x < s && y >= 0.0 && y < s && z <= 1.0)) return 1.0;
+  float gx = x - 0.5, gy = y - 0.5, fx0 = floor(gx), fy0 = floor(gy);
+  float fx = gx - fx0, fy = gy - fy0;
+  int x0 = max(int(fx0), 0), y0 = max(int(fy0), 0);
+  int x1 = min(int(fx0) + 1, u_shadow_size - 1), y1 = min(int(fy0) + 1, u_shadow_size - 1);
+  float l00 = shadow_lit(map, x0, y0, z), l10 = shadow_lit(map, x1, y0, z);
+  float l01 = shadow_lit(map, x0, y1, z), l11 = shadow_lit(map, x1, y1, z);
+  float top = l00 + (l10 - l00) * fx, bottom = l01 + (l11 - l01) * fx;
+  return top + (bottom - top) * fy;
+}
+
+int cube_face(vec3 v) {
+  vec3 a = abs(v);
+  if (a.x >= a.y && a.x >= a.z) return v.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return v.y >= 0.0 ? 2 : 3;
+  return v.z >= 0.0 ? 4 : 5;
+}
+
+float visibility(int k, vec3 p, vec3 n, vec3 to_light) {
+  if (!(dot(n, to_light) > 0.0)) return 0.0;
+  int first = u_shadow_first[k];
+  if (u_shadow_faces[k] == 1) return map_visibility(first, p, n, to_light);
+  // The face of the point the bias moves the lookup to.
+  int face = first + cube_face(p - u_shadow_position[k]);
+  float texel = u_shadow_texel[face].x * (u_shadow_eye_to_clip[face] * vec4(p, 1.0)).w;
+  vec3 q = p + n * (kNormalOffset * texel) + to_light * (kLightOffset * texel);
+  return map_visibility(first + cube_face(q - u_shadow_position[k]), p, n, to_light);
+}
+
+// A light's visibility factor: 1 where it casts no shadow.
+float directional_visibility(int i, vec3 p, vec3 n) {
+  return u_shadows && u_directional_shadow[i] >= 0 ? visibility(u_directional_shadow[i], p, n, u_directional_to_light[i]) : 1.0;
+}
+float point_visibility(int i, vec3 p, vec3 n, vec3 to_light) {
+  return u_shadows && u_point_shadow[i] >= 0 ? visibility(u_point_shadow[i], p, n, to_light) : 1.0;
+}
+
 void add_light(inout Terms t, vec3 n, vec3 to_light, vec3 color, vec3 to_eye) {
   float nl = dot(n, to_light);
   t.diffuse += color * max(nl, 0.0);
@@ -60,10 +130,11 @@ Terms light(vec3 n, vec3 p) {
   Terms t = Terms(u_ambient, vec3(0.0));
   vec3 to_eye = u_specular.x > 0.0 ? normalize(-p) : vec3(0.0);
   for (int i = 0; i < u_directional_count; ++i)
-    add_light(t, n, u_directional_to_light[i], u_directional_color[i], to_eye);
+    add_light(t, n, u_directional_to_light[i], u_directional_color[i] * directional_visibility(i, p, n), to_eye);
   for (int i = 0; i < u_point_count; ++i) {
     vec3 to_light;
     float att = punctual(i, p, n, to_light);
+    att *= point_visibility(i, p, n, to_light);
     add_light(t, n, to_light, u_point_color[i] * att, to_eye);
   }
   return t;
@@ -124,10 +195,12 @@ vec3 pbr_light(vec3 n, vec3 view, vec3 p, vec3 base, float metallic, float rough
   vec3 ms = vec3(1.0);
   if (u_directional_count + u_point_count > 0) ms = 1.0 + f0 * (1.0 / ggx_albedo(rough, nv) - 1.0);
   for (int i = 0; i < u_directional_count; ++i)
-    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i], cdiff, f0, ms, a2, nv, nv_term);
+    c += pbr_add_light(n, view, u_directional_to_light[i], u_directional_color[i] * directional_visibility(i, p, n), cdiff,
+                       f0, ms, a2, nv, nv_term);
   for (int i = 0; i < u_point_count; ++i) {
     vec3 to_light;
     float att = punctual(i, p, n, to_light);
+    att *= point_visibility(i, p, n, to_light);
     c += pbr_add_light(n, view, to_light, u_point_color[i] * att, cdiff, f0, ms, a2, nv, nv_term);
   }
   return c;
@@ -189,6 +262,97 @@ vec3 finish(vec3 c) {
     else if (u_tone_map == 2) c = tone_map_neutral(c);
   }
   return linear_to_srgb(c);
+}
+)";
+
+// Lines drawn by the CPU's rule rather than the driver's (pGL's line batches and
+// wireframe meshes): raster/coverage-inl.h's line_blocks (GL's diamond exit along the
+// major axis, the ties on pixel boundaries where Mesa puts them, `width` pixels across)
+// and triangle/setup.cpp's setup_line (values at the pixel centre's projection onto the
+// segment), so that every driver lights the pixels the CPU and Mesa light. The geometry
+// stage clips each segment, maps its ends to window pixels (y down, as the CPU's: the
+// image is drawn upside down; snapped to 1/256 as the CPU's vertices are) and covers it
+// with a quad (kLineQuadGlsl); the fragment stage keeps the pixels the rule lights
+// (kLineRuleGlsl).
+const char* const kLineQuadGlsl = R"(
+uniform vec4 u_viewport;     // x, y (from the top), width, height: pixels
+uniform vec2 u_depth_range;  // near, far
+flat out vec4 l_ends;        // x0, y0, x1, y1: window pixels, y down
+flat out vec4 l_shape;       // width, x-major (0 or 1), window depth at each end
+flat out vec2 l_inv_w;
+
+void line_vertex(float t0, float t1);  // the stage's own outputs at a vertex of the quad
+
+// Cuts the segment [t0, t1] of the line where distance d (at each end) is >= 0.
+bool cut(float d0, float d1, inout float t0, inout float t1) {
+  if (d0 < 0.0 && d1 < 0.0) return false;
+  if (d0 < 0.0) t0 = max(t0, d0 / (d0 - d1));
+  else if (d1 < 0.0) t1 = min(t1, d0 / (d0 - d1));
+  return t0 <= t1;
+}
+
+// The segment p0 p1 from t0 to t1 (already cut to any other planes) cut to the near
+// and far planes, its ends in window pixels, covered by a quad; false: nothing left.
+bool emit_line(vec4 p0, vec4 p1, float t0, float t1, float width) {
+  if (!cut(p0.w + p0.z, p1.w + p1.z, t0, t1) || !cut(p0.w - p0.z, p1.w - p1.z, t0, t1)) return false;
+  vec4 q0 = mix(p0, p1, t0), q1 = mix(p0, p1, t1);
+  if (!(q0.w > 0.0 && q1.w > 0.0)) return false;
+  vec3 n0 = q0.xyz / q0.w, n1 = q1.xyz / q1.w;
+  vec2 w0 = u_viewport.xy + (n0.xy * 0.5 + 0.5) * u_viewport.zw, w1 = u_viewport.xy + (n1.xy * 0.5 + 0.5) * u_viewport.zw;
+  w0 = floor(w0 * 256.0 + 0.5) / 256.0, w1 = floor(w1 * 256.0 + 0.5) / 256.0;
+  vec2 d = w1 - w0;
+  if (!(dot(d, d) > 0.0)) return false;
+  bool x_major = abs(d.x) >= abs(d.y);
+  // A quad a pixel and a half longer at each end, and the width and four pixels wider
+  // (every pixel the rule lights has its centre inside), in the viewport's terms.
+  vec2 along = normalize(d), across = x_major ? vec2(0.0, 1.0) : vec2(1.0, 0.0);
+  float reach = width * 0.5 + 2.0;
+  vec2 a = w0 - along * 1.5, b = w1 + along * 1.5;
+  vec2 corners[4] = vec2[4](a - across * reach, a + across * reach, b - across * reach, b + across * reach);
+  for (int i = 0; i < 4; ++i) {
+    l_ends = vec4(w0, w1);
+    l_shape = vec4(width, x_major ? 1.0 : 0.0, mix(u_depth_range.x, u_depth_range.y, n0.z * 0.5 + 0.5),
+                   mix(u_depth_range.x, u_depth_range.y, n1.z * 0.5 + 0.5));
+    l_inv_w = vec2(1.0 / q0.w, 1.0 / q1.w);
+    line_vertex(t0, t1);
+    gl_Position = vec4((corners[i] - u_viewport.xy) / u_viewport.zw * 2.0 - 1.0, 0.0, 1.0);
+    EmitVertex();
+  }
+  EndPrimitive();
+  return true;
+}
+)";
+
+const char* const kLineRuleGlsl = R"(
+flat in vec4 l_ends;
+flat in vec4 l_shape;
+flat in vec2 l_inv_w;
+
+// line_blocks' rule for the pixel at column x, row y (y down).
+bool line_covers(int x, int y) {
+  bool xm = l_shape.y > 0.5;
+  float a0 = xm ? l_ends.x : l_ends.y, a1 = xm ? l_ends.z : l_ends.w;
+  float b0 = xm ? l_ends.y : l_ends.x, b1 = xm ? l_ends.w : l_ends.z;
+  float len = a1 - a0;
+  int first = len >= 0.0 ? int(ceil(a0 - 0.5)) : int(floor(a1 - 0.5)) + 1;
+  int last = len >= 0.0 ? int(ceil(a1 - 0.5)) - 1 : int(floor(a0 - 0.5));
+  int a = xm ? x : y, b = xm ? y : x;
+  if (a < first || a > last) return false;
+  bool tie_up = xm && (b1 - b0) * len > 0.0;
+  bool skip_tied_start = len < 0.0 && (xm ? b1 - b0 >= 0.0 : b1 - b0 < 0.0);
+  float s = len != 0.0 ? (float(a) + 0.5 - a0) / len : 0.0;
+  float v = b0 + s * (b1 - b0);
+  float up = ceil(v);
+  int centre = int(up) - 1 + (tie_up && up == v ? 1 : 0);
+  if (skip_tied_start && up == v && float(a) + 0.5 == a0) return false;
+  int width = int(l_shape.x), half_width = (width - 1) / 2;
+  return b >= centre - half_width && b <= centre - half_width + width - 1;
+}
+
+// Where this fragment's pixel centre projects onto the segment (0 at its start).
+float line_t() {
+  vec2 d = l_ends.zw - l_ends.xy;
+  return dot(floor(gl_FragCoord.xy) + 0.5 - l_ends.xy, d) / dot(d, d);
 }
 )";
 
@@ -292,11 +456,12 @@ layout(triangles) in;
 #if PRIMITIVE == 0
 layout(triangle_strip, max_vertices = 3) out;
 #elif PRIMITIVE == 1
-layout(line_strip, max_vertices = 6) out;
+layout(triangle_strip, max_vertices = 12) out;  // a quad per edge (kLineQuadGlsl)
 #else
 layout(points, max_vertices = 3) out;
 #endif
 uniform bool u_cull;
+uniform float u_point_size;  // Points: RenderOptions::point_size in samples (mesh_job.cpp's point_size)
 in V {
   vec3 object_position;
   vec3 eye;
@@ -337,6 +502,15 @@ vec3 base_color(int i, int face) {
   return u_material_color;
 }
 
+#if PRIMITIVE == 1
+vec3 line_front, line_back;
+void line_vertex(float t0, float t1) {
+  g.eye = vec3(0.0), g.normal = vec3(0.0, 0.0, 1.0), g.uv = vec2(0.0);
+  g.front = g.back = line_front;
+  g_flat_front = line_front, g_flat_back = line_back;
+}
+#endif
+
 void main() {
   int face = u_face_base + gl_PrimitiveIDIn;
   if (u_face_order) face = texelFetch(u_order, face).r;
@@ -354,15 +528,22 @@ void main() {
   // Facing as the CPU's homogeneous test (triangle/cull.hpp), in the flipped frame.
   vec4 p0 = gl_in[0].gl_Position, p1 = gl_in[1].gl_Position, p2 = gl_in[2].gl_Position;
   float det = determinant(mat3(p0.xyw, p1.xyw, p2.xyw));
+#if PRIMITIVE == 2
+  // A point cloud's points are triangles with one corner three times: no facing.
+  bool cloud = v[0].object_position == v[1].object_position && v[1].object_position == v[2].object_position;
+  if (u_cull && det >= 0.0 && !cloud) return;
+#else
   if (u_cull && det >= 0.0) return;
 #endif
-#if PRIMITIVE == 1
-  const int corners[6] = int[6](0, 1, 1, 2, 2, 0);
-  for (int k = 0; k < 6; ++k) {
-    int i = corners[k];
-#else
-  for (int i = 0; i < 3; ++i) {
 #endif
+#if PRIMITIVE == 1
+  // The edges by the CPU's line rule (triangle/mesh_job.cpp's edges: each from corner
+  // k to k + 1, one pixel wide), in the one colour of the draw.
+  line_front = flat_front, line_back = flat_back;
+  for (int k = 0; k < 3; ++k) emit_line(gl_in[k].gl_Position, gl_in[(k + 1) % 3].gl_Position, 0.0, 1.0, 1.0);
+  return;
+#endif
+  for (int i = 0; i < 3; ++i) {
     vec3 base = u_unlit_vertex_colors ? to_pipeline(v[i].color) : base_color(i, face);
     g.front = g.back = base;
     if (u_mode == 1 && u_lit) {
@@ -374,10 +555,11 @@ void main() {
     g.uv = u_uv_from_env ? vec2(0.5) + vec2(0.5, -0.5) * v[i].normal.xy : v[i].uv;
     g_flat_front = flat_front, g_flat_back = flat_back;
     gl_Position = gl_in[i].gl_Position;
+#if PRIMITIVE == 2
+    gl_PointSize = u_point_size;
+#endif
     EmitVertex();
-#if PRIMITIVE == 1
-    if (k % 2 == 1) EndPrimitive();
-#elif PRIMITIVE == 2
+#if PRIMITIVE == 2
     EndPrimitive();
 #endif
   }
@@ -412,6 +594,11 @@ uniform uint u_object_id;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out uint o_id;
 void main() {
+#if PRIMITIVE == 1
+  // (The image is drawn upside down: GL's rows are the CPU's.)
+  if (!line_covers(int(floor(gl_FragCoord.x)), int(floor(gl_FragCoord.y)))) discard;
+  gl_FragDepth = mix(l_shape.z, l_shape.w, line_t());
+#endif
   bool back = u_two_sided && !gl_FrontFacing;
   vec3 c;
   if (u_mode == 0 || u_mode == 3) {
@@ -482,6 +669,9 @@ GLuint build_mesh_program(bool affine, int primitive) {
   const std::string head = std::string(kVersion) + "#define INTERP " + (affine ? "noperspective" : "smooth") +
                            "\n#define PRIMITIVE " + std::to_string(primitive) + "\n" + kLightingGlsl + kColorGlsl;
   if (primitive == 3) return build_program(head + kMeshVertexInputs + kMeshVertexDirect, "", head + kMeshFragment);
+  if (primitive == 1)  // edges by the CPU's line rule
+    return build_program(head + kMeshVertexInputs + kMeshVertex, head + kLineQuadGlsl + kMeshGeometry,
+                         head + kLineRuleGlsl + kMeshFragment);
   return build_program(head + kMeshVertexInputs + kMeshVertex, head + kMeshGeometry, head + kMeshFragment);
 }
 
@@ -605,6 +795,9 @@ layout(location = 0) in vec4 a_position;
 layout(location = 1) in vec4 a_color;
 layout(location = 2) in vec4 a_texcoord;
 layout(location = 3) in float a_fog;
+layout(location = 4) in vec4 a_clip0;  // user clip planes 0-3 (PrimitiveBatch::clip_distance)
+layout(location = 5) in vec2 a_clip1;  // and 4-5; only the enabled ones clip
+out float gl_ClipDistance[6];
 uniform float u_point_size;
 out vec4 v_color;
 out vec3 v_texcoord;  // s, t, q: interpolated perspective-correct, divided per pixel
@@ -615,13 +808,58 @@ void main() {
   v_color = a_color;
   v_texcoord = vec3(a_texcoord.x, a_texcoord.y, a_texcoord.w);
   v_fog = a_fog;
+  gl_ClipDistance[0] = a_clip0.x, gl_ClipDistance[1] = a_clip0.y, gl_ClipDistance[2] = a_clip0.z;
+  gl_ClipDistance[3] = a_clip0.w, gl_ClipDistance[4] = a_clip1.x, gl_ClipDistance[5] = a_clip1.y;
+}
+)";
+
+// pGL's lines: the values of each end (cut where the segment was) for the fragment
+// stage, and user clip planes cut here too.
+const char* const kBatchLineGeometry = R"(
+layout(lines) in;
+layout(triangle_strip, max_vertices = 4) out;
+in gl_PerVertex {
+  vec4 gl_Position;
+  float gl_PointSize;
+  float gl_ClipDistance[6];
+} gl_in[];
+out float gl_ClipDistance[6];  // (the segment is clipped here: nothing left to clip)
+in vec4 v_color[];
+in vec3 v_texcoord[];
+in float v_fog[];
+uniform float u_line_width;
+uniform int u_clip_planes;
+flat out vec4 l_color0, l_color1;
+flat out vec3 l_texcoord0, l_texcoord1;
+flat out vec2 l_fog;
+
+void line_vertex(float t0, float t1) {
+  l_color0 = mix(v_color[0], v_color[1], t0), l_color1 = mix(v_color[0], v_color[1], t1);
+  l_texcoord0 = mix(v_texcoord[0], v_texcoord[1], t0), l_texcoord1 = mix(v_texcoord[0], v_texcoord[1], t1);
+  l_fog = vec2(mix(v_fog[0], v_fog[1], t0), mix(v_fog[0], v_fog[1], t1));
+  for (int k = 0; k < 6; ++k) gl_ClipDistance[k] = 1.0;
+}
+)";
+
+const char* const kBatchLineMain = R"(
+void main() {
+  float t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < u_clip_planes; ++k)
+    if (!cut(gl_in[0].gl_ClipDistance[k], gl_in[1].gl_ClipDistance[k], t0, t1)) return;
+  emit_line(gl_in[0].gl_Position, gl_in[1].gl_Position, t0, t1, u_line_width);
 }
 )";
 
 const char* const kBatchFragment = R"(
+#ifdef LINES
+flat in vec4 l_color0, l_color1;
+flat in vec3 l_texcoord0, l_texcoord1;
+flat in vec2 l_fog;
+#else
 in vec4 v_color;
 in vec3 v_texcoord;
 in float v_fog;
+#endif
 uniform bool u_textured;
 uniform int u_format;  // TexFormat: 0 RGBA, 1 RGB, 2 L, 3 LA, 4 A, 5 I
 uniform int u_env;     // TexEnvMode: 0 modulate, 1 replace, 2 decal, 3 blend, 4 add
@@ -682,8 +920,25 @@ vec4 environment(vec4 f, vec4 t) {
 }
 
 void main() {
+#ifdef LINES
+  // (The image is drawn upside down: GL's rows are the CPU's.)
+  bool covered = line_covers(int(floor(gl_FragCoord.x)), int(floor(gl_FragCoord.y)));
+  vec2 d = l_ends.zw - l_ends.xy;
+  float t = line_t();
+  float inv_w = mix(l_inv_w.x, l_inv_w.y, t);
+  vec4 v_color = mix(l_color0 * l_inv_w.x, l_color1 * l_inv_w.y, t) / inv_w;
+  vec3 v_texcoord = mix(l_texcoord0 * l_inv_w.x, l_texcoord1 * l_inv_w.y, t) / inv_w;
+  float v_fog = mix(l_fog.x * l_inv_w.x, l_fog.y * l_inv_w.y, t) / inv_w;
+  float depth = mix(l_shape.z, l_shape.w, t);
+  float slope = max(abs((l_shape.w - l_shape.z) * d.x), abs((l_shape.w - l_shape.z) * d.y)) / dot(d, d);
+#else
+  bool covered = true;
+  float depth = gl_FragCoord.z;
+  float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
+#endif
   vec4 c = clamp(v_color, 0.0, 1.0);
   if (u_textured) c = environment(c, texture(u_texture, v_texcoord.xy / v_texcoord.z));
+  if (!covered) discard;
   if (u_fog) {
     float z = v_fog, f;
     if (u_fog_mode == 0) f = (u_fog_params.y - z) / (u_fog_params.y - u_fog_params.x);
@@ -693,18 +948,54 @@ void main() {
     c.rgb = f * c.rgb + (1.0 - f) * u_fog_color.rgb;
   }
   if (u_alpha_test && !compare(u_alpha_func, c.a, u_alpha_ref)) discard;
-  gl_FragDepth = gl_FragCoord.z;
-  if (u_offset) {
-    float slope = max(abs(dFdx(gl_FragCoord.z)), abs(dFdy(gl_FragCoord.z)));
-    gl_FragDepth = clamp(gl_FragCoord.z + u_offset_params.x * slope + u_offset_params.y * exp2(-24.0), 0.0, 1.0);
-  }
+  gl_FragDepth = depth;
+  if (u_offset) gl_FragDepth = clamp(depth + u_offset_params.x * slope + u_offset_params.y * exp2(-24.0), 0.0, 1.0);
   o_color = c;
   o_id = 0u;
 }
 )";
 
-GLuint build_batch_program() {
-  return build_program(std::string(kVersion) + kBatchVertex, "", std::string(kVersion) + kBatchFragment);
+// A shadow map's depth pass (CpuBackend::render_shadows: the casters' depth, nothing else).
+GLuint build_depth_program() {
+  const std::string vs = std::string(kVersion) + R"(
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_mvp;
+void main() { gl_Position = u_mvp * vec4(a_position, 1.0); }
+)";
+  return build_program(vs, "", std::string(kVersion) + "void main() {}\n");
+}
+
+GLuint build_batch_program(bool lines) {
+  const std::string head = std::string(kVersion) + (lines ? "#define LINES\n" : "");
+  if (!lines) return build_program(head + kBatchVertex, "", head + kBatchFragment);
+  return build_program(head + kBatchVertex, head + kBatchLineGeometry + kLineQuadGlsl + kBatchLineMain,
+                       head + kLineRuleGlsl + kBatchFragment);
+}
+
+// The k x k box resolve (framebuffer/resolve.cpp's resolve_color_rows) as a pass over
+// the sample texture: one triangle covering the w x h output, each pixel the rounded
+// mean of its k x k samples' 8-bit values, in integers as the CPU computes it.
+GLuint build_resolve_program() {
+  const char* vs = R"(
+void main() {
+  vec2 p = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+  const char* fs = R"(
+uniform sampler2D u_samples;
+uniform int u_k;
+layout(location = 0) out vec4 o_color;
+void main() {
+  ivec2 at = ivec2(gl_FragCoord.xy) * u_k;
+  uvec4 sum = uvec4(0u);
+  for (int sy = 0; sy < u_k; ++sy)
+    for (int sx = 0; sx < u_k; ++sx) sum += uvec4(round(texelFetch(u_samples, at + ivec2(sx, sy), 0) * 255.0));
+  uint n = uint(u_k * u_k);
+  o_color = vec4((sum + uvec4(n / 2u)) / uvec4(n)) / 255.0;
+}
+)";
+  return build_program(std::string(kVersion) + vs, "", std::string(kVersion) + fs);
 }
 
 GLuint build_lighting_test_program() {

@@ -14,6 +14,8 @@ namespace velocity::gpu {
 
 // The most lights a frame may have of each kind (directional, point): uniform arrays.
 inline constexpr int kMaxLights = 16;
+// The shadow maps kLightingGlsl reads: shading::kShadowLights lights, 6 maps for a point light.
+inline constexpr int kMaxShadowMaps = 24;
 
 // light() and apply() of shading/lighting.hpp, term for term, in GLSL.
 extern const char* const kLightingGlsl;
@@ -41,8 +43,16 @@ GLuint build_mesh_program(bool affine, int primitive);
 // The program for Shading::Pbr materials (no geometry stage: nothing per face).
 GLuint build_pbr_program(bool affine);
 
+// The depth-only program of the shadow maps (`u_mvp`, positions at location 0).
+GLuint build_depth_program();
+
 // The program for pre-transformed primitives with fixed-function pixel state (pGL's path).
-GLuint build_batch_program();
+// `lines`: its variant for lines, drawn by the CPU's rule (a geometry shader makes a quad
+// of each, the fragment shader keeps the pixels the rule lights).
+GLuint build_batch_program(bool lines);
+
+// The super-sampling resolve pass: u_samples (the k x k sample image), u_k.
+GLuint build_resolve_program();
 
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.

@@ -5,7 +5,7 @@
 #
 # Every dependency is a Debian package (no vendored copies, nothing downloaded else):
 #   cmake, ninja-build, g++          the build
-#   libstb-dev                       PNG/JPEG/... read and write (stb_image, stb_image_write)
+#   libstb-dev                       PNG/JPEG/... reading (stb_image)
 #   libtinyobjloader-dev             OBJ files
 #   libassimp-dev                    glTF 2.0, 3DS, PLY and STL files (Assimp)
 #   nlohmann-json3-dev               JSON, to check a glTF file before Assimp reads it
@@ -15,13 +15,14 @@
 #   libhwy-dev                       Google Highway: the SIMD kernels, one source for every instruction set
 #   libbenchmark-dev                 Google Benchmark: the stages' micro-benchmarks (tests/bench/micro.cpp)
 #   libosmesa6-dev                   the golden tests' reference: Mesa's llvmpipe through OSMesa
-#   libglu1-mesa-dev                 GLU for pGL's conformance programs built against Mesa (gl/tests)
+#   libglu1-mesa-dev                 GLU: the tessellator pGL programs link (gl/CMakeLists.txt), and GLU for
+#                                    pGL's conformance programs built against Mesa (gl/tests)
 #   pkg-config                       finds OSMesa
 #   python3-dev, pybind11-dev        the Python module (python/): headers and the bindings
 #   python3-numpy                    its arrays (colour, depth, masks, meshes)
 #   python3-pytest                   the Python tests, run by ctest
 #   python3-distributed              the batch renderer on a Dask cluster (and its tests)
-#   libpng-dev                       PNG files of the batch runner (python/src/png_encode.cpp): zlib's speed, 16-bit masks
+#   libpng-dev                       the engine's PNG writer (src/io/png_write.cpp), used by the CLI and Python: zlib's speed, 16-bit masks
 #   python3-pil                      pyrender's textures as PIL images (velocity.pyrender)
 #   python3-tqdm                     the batch runner's progress bar
 #   libepoxy-dev                     the GPU backend (gpu/): OpenGL entry points, loaded at run time

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (tests/fuzz) with clang in build-fuzz and runs each for
-# SECONDS (default 30).
+# SECONDS (default 30), FUZZ_JOBS targets at a time (default: the processor count).
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx script race
 #
@@ -97,9 +97,10 @@ max_len() {
   esac
 }
 
-status=0
-summary=()
-for t in "${targets[@]}"; do
+# One target's run; its result line goes to $logs/<target>.result. Targets run
+# FUZZ_JOBS at a time (default: one per processor), as libFuzzer uses one each.
+run_target() {
+  local t="$1"
   work="$build/corpus/$t"
   artifacts="$build/artifacts/$t"
   mkdir -p "$work" "$artifacts"
@@ -136,13 +137,30 @@ for t in "${targets[@]}"; do
   [[ -n "$execs" ]] || execs=$(grep -oE '^#[0-9]+: cov:' "$log" | tail -1 | grep -oE '[0-9]+' || true)
   cov=$(grep -oE '((INITED|DONE|REDUCE|NEW|pulse) +|^#[0-9]+: )cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+' || true)
   if ((rc != 0)); then
-    status=3
     found=$(ls -t "$artifacts" 2>/dev/null | head -1)
-    summary+=("$t: FINDING (exit $rc) execs=${execs:-?} ${cov} cpu=${cpu}s artifacts=$findings newest=$artifacts/$found")
+    echo "$t: FINDING (exit $rc) execs=${execs:-?} ${cov} cpu=${cpu}s artifacts=$findings newest=$artifacts/$found" >"$logs/$t.result"
     grep -m3 -E 'ERROR: |runtime error|fuzz_check failed|deadly signal|out-of-memory|timeout' "$log" | sed 's/^/    /' >&2 || true
   else
-    summary+=("$t: ok execs=${execs:-?} ${cov} cpu=${cpu}s")
+    echo "$t: ok execs=${execs:-?} ${cov} cpu=${cpu}s" >"$logs/$t.result"
   fi
+}
+fuzz_jobs="${FUZZ_JOBS:-$(nproc)}"
+for t in "${targets[@]}"; do
+  rm -f "$logs/$t.result"
+  while (( $(jobs -rp | wc -l) >= fuzz_jobs )); do wait -n || true; done
+  run_target "$t" &
+done
+wait
+status=0
+summary=()
+for t in "${targets[@]}"; do
+  if [[ ! -f "$logs/$t.result" ]]; then
+    summary+=("$t: no result (the script broke off; see the output above)")
+    status=1
+    continue
+  fi
+  summary+=("$(cat "$logs/$t.result")")
+  [[ "${summary[-1]}" == "$t: ok "* ]] || ((status)) || status=3
 done
 echo "fuzz.sh: results (${seconds}s per target)"
 printf '  %s\n' "${summary[@]}"

@@ -109,6 +109,8 @@ class CpuBackend final : public Backend {
     const Mesh* mesh;
     Mat4 world;
     bool two_sided;  // drawn with a two-sided material: both faces cast
+    const Material* material;  // the draw's own material (null: the mesh's)
+    bool cut_out;              // a MASK or BLEND material: cast where its alpha passes
   };
   bool shadows_ = false;
   std::vector<Light> frame_lights_;
@@ -227,6 +229,21 @@ void CpuBackend::begin(const Mat4& view, const Mat4& projection, bool orthograph
   r.stats_ = {};
 }
 
+namespace {
+
+// Whether a draw of `mesh` with `material` (null: the mesh's own) has a slot whose
+// alpha decides which pixels it covers: a Pbr material (as the frame shades it) that is
+// MASK or BLEND. Such a draw casts through the Pbr kernel's alpha test.
+bool casts_cut_out(const Mesh& mesh, const Material* material, const RenderOptions& o) {
+  auto cut = [&](const Material& m) {
+    return m.alpha_mode != AlphaMode::Opaque && o.shading.value_or(m.shading) == Shading::Pbr;
+  };
+  if (material) return cut(*material);
+  return std::any_of(mesh.materials.begin(), mesh.materials.end(), cut);
+}
+
+}  // namespace
+
 void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* material, uint32_t object_id) try {
   CpuBackend& r = *this;
   r.stats_.objects++;
@@ -236,7 +253,8 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
     bool two_sided = material ? material->two_sided : mesh.materials.empty() && r.default_material.two_sided;
     if (!material)
       for (const Material& m : mesh.materials) two_sided = two_sided || m.two_sided;
-    r.casters_.push_back({&mesh, world, two_sided || !r.plan.options.cull_back_faces});
+    r.casters_.push_back({&mesh, world, two_sided || !r.plan.options.cull_back_faces, material,
+                          casts_cut_out(mesh, material, r.plan.options)});
     r.caster_bounds_ = merge_bounds(r.caster_bounds_, world_bounds(mesh, world));
   }
   if (geometry::ViewVolume(r.view_projection).outside(mesh, world)) return void(r.stats_.objects_culled++);
@@ -248,7 +266,9 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   d.model_view = r.view * world;
   d.mvp = r.projection * d.model_view;
   d.normal_matrix = normal_matrix(d.model_view);
-  if (!mesh.normals.empty() || r.owner_) {  // (a depth pass reads no normals)
+  // A depth pass draws cut-out casters with their own materials (render_shadows).
+  const bool depth_only = r.owner_ && !casts_cut_out(mesh, material, r.plan.options);
+  if (!mesh.normals.empty() || depth_only) {  // (a depth-only draw reads no normals)
     d.normals = &mesh.normals;
   } else {
     if (r.averaged_used == r.averaged_normals.size()) r.averaged_normals.emplace_back();
@@ -259,13 +279,23 @@ void CpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
   geometry::plan_mesh_draw(p, r.draw_states, d, material, r.default_material);
   if (r.owner_) {
     // A depth pass: the flat kernel, no varyings, nothing computed per vertex but the
-    // position (its colour goes nowhere: TileInputs::depth_only).
+    // position (its colour goes nowhere: TileInputs::depth_only). A cut-out caster's
+    // MASK and BLEND slots keep the Pbr kernel, whose alpha test drops the pixels
+    // under the cut-off before they write depth; BLEND casts as MASK at 0.5
+    // (docs/appearance.md, "Shadows").
     for (uint32_t i = 0; i < d.slot_count; ++i) {
       geometry::SlotPlan& s = p.slots[d.slot_begin + i];
+      if (!depth_only && s.shading == Shading::Pbr && s.material->alpha_mode != AlphaMode::Opaque) {
+        raster::PbrState& pbr = r.draw_states[s.draw_state].pbr;
+        if (pbr.alpha_mode == AlphaMode::Blend) pbr.alpha_mode = AlphaMode::Mask, pbr.alpha_cutoff = 0.5f;
+        s.blend = false;
+        continue;
+      }
       s.kernel = uint8_t(raster::KernelId::Flat), s.num_varyings = 0, s.flat = false, s.lit = false;
       s.vertex_color = false, s.uv_from_env = false;
     }
-    d.light = d.normal = d.eye = d.vertex_color = d.vertex_specular_terms = false;
+    d.blend = false;
+    if (depth_only) d.light = d.normal = d.eye = d.vertex_color = d.vertex_specular_terms = false;
   }
   if (d.needs_tangents) {
     if (mesh.tangents.size() == mesh.positions.size() && !mesh.tangents.empty()) {
@@ -385,6 +415,9 @@ void CpuBackend::render_shadows() {
   RenderOptions o;
   o.threads = r.plan.options.threads;
   o.color = ColorPipeline::Display;
+  // As the frame shades and culls (a cut-out caster is drawn with its own materials).
+  o.shading = r.plan.options.shading;
+  o.cull_back_faces = r.plan.options.cull_back_faces;
   FrameStart start;
   start.color = {0, 0, 0, 0};
   static const std::vector<Light> kNoLights;
@@ -396,7 +429,8 @@ void CpuBackend::render_shadows() {
       b.resize(size, size, 1);
       BlockVector<uint32_t>().swap(b.framebuffer.color);  // never touched: depth only
       b.begin(s.views[f].view, s.views[f].projection, s.views[f].orthographic, kNoLights, start, o);
-      for (const Caster& c : r.casters_) b.draw(*c.mesh, c.world, c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
+      for (const Caster& c : r.casters_)
+        b.draw(*c.mesh, c.world, c.cut_out ? c.material : c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
       b.run_frame(false);
       s.shadow.face[f].depth = b.framebuffer.depth.data();
     }

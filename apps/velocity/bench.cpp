@@ -60,16 +60,24 @@ int run_bench(const BenchArgs& a) {
   Renderer renderer(w, h, *backend);
   renderer.options = look->options;
 
-  std::vector<double> ms, vertex_ms, triangle_ms, tile_ms, shadow_ms;
-  ms.reserve(size_t(a.frames)), vertex_ms.reserve(size_t(a.frames));
-  triangle_ms.reserve(size_t(a.frames)), tile_ms.reserve(size_t(a.frames)), shadow_ms.reserve(size_t(a.frames));
+  std::vector<double> ms, vertex_ms, triangle_ms, tile_ms, shadow_ms, read_ms;
+  std::vector<double> upload_ms, submit_ms, gpu_wait_ms, readback_ms;
+  // Each frame is read back as RGBA rows, as a caller that uses the pixels does: the GPU
+  // backend reads its framebuffer only when asked, so the frame's time includes it.
+  std::vector<uint8_t> pixels(size_t(w) * size_t(h) * 4);
   for (int frame = 0; frame < a.frames; ++frame) {
     auto t0 = std::chrono::steady_clock::now();
     bench::draw_frame(renderer, mesh, look->material, frame, a.frames, a.copies);
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    auto t1 = std::chrono::steady_clock::now();
+    renderer.read_color(pixels.data(), size_t(w) * 4, 4);
+    auto t2 = std::chrono::steady_clock::now();
+    ms.push_back(std::chrono::duration<double, std::milli>(t2 - t0).count());
+    read_ms.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
     const FrameStats& st = renderer.stats();
     vertex_ms.push_back(st.vertex_ms), triangle_ms.push_back(st.triangle_ms), tile_ms.push_back(st.tile_ms);
     shadow_ms.push_back(st.shadow_ms);
+    upload_ms.push_back(st.upload_ms), submit_ms.push_back(st.submit_ms), gpu_wait_ms.push_back(st.gpu_wait_ms);
+    readback_ms.push_back(st.readback_ms);
     if (frame == 0 && !a.out.empty()) write_image(a.out, renderer.color_image());
   }
   auto median_of = [](std::vector<double> v) {
@@ -91,8 +99,11 @@ int run_bench(const BenchArgs& a) {
                 simd_target(), a.threads, st.objects, st.objects_culled, st.triangles, st.triangles_rejected,
                 st.triangles_clipped, st.triangles_culled, st.triangles_nonfinite, st.triangles_rasterized, st.lines,
                 st.points);
-    std::printf("median stage ms: shadow=%.3f vertex=%.3f triangle=%.3f tile=%.3f\n", median_of(shadow_ms),
-                median_of(vertex_ms), median_of(triangle_ms), median_of(tile_ms));
+    std::printf("median stage ms: shadow=%.3f vertex=%.3f triangle=%.3f tile=%.3f read=%.3f\n", median_of(shadow_ms),
+                median_of(vertex_ms), median_of(triangle_ms), median_of(tile_ms), median_of(read_ms));
+    if (std::string(st.backend) == "gpu")
+      std::printf("median gpu stage ms: upload=%.3f submit=%.3f gpu_wait=%.3f readback=%.3f\n", median_of(upload_ms),
+                  median_of(submit_ms), median_of(gpu_wait_ms), median_of(readback_ms));
   }
   return 0;
 }

@@ -7,6 +7,8 @@
 
 #include <cstdio>
 
+#include "menu.hpp"
+
 namespace {
 
 // A bitmap font: each character's face is its width, then `height` rows (bottom row
@@ -223,3 +225,33 @@ GLfloat glutStrokeHeight(void* font) {
 }
 
 }  // extern "C"
+
+namespace velocity::glut {
+
+int menu_text_width(const char* text) {
+  int w = 0;
+  for (const unsigned char* c = reinterpret_cast<const unsigned char*>(text); *c; ++c) w += face(kHelvetica12, *c)[0];
+  return w;
+}
+
+// The glyphs' bits straight into the frame: rows bottom first, most significant bit
+// first, the origin (xorig, yorig) on the baseline as glBitmap places it.
+void menu_text(std::vector<uint8_t>& rgba, int w, int h, int x, int baseline, const char* text, const uint8_t rgb[3]) {
+  const BitmapFont& f = kHelvetica12;
+  for (const unsigned char* c = reinterpret_cast<const unsigned char*>(text); *c; ++c) {
+    const unsigned char* g = face(f, *c);
+    const int gw = g[0], stride = (gw + 7) / 8;
+    for (int r = 0; r < f.height; ++r) {
+      const int py = baseline + int(f.yorig) - r;
+      for (int b = 0; b < gw; ++b) {
+        const int px = x - int(f.xorig) + b;
+        if (px < 0 || py < 0 || px >= w || py >= h || !(g[1 + r * stride + b / 8] & (0x80 >> (b % 8)))) continue;
+        uint8_t* p = &rgba[(size_t(py) * size_t(w) + size_t(px)) * 4];
+        p[0] = rgb[0], p[1] = rgb[1], p[2] = rgb[2];
+      }
+    }
+    x += gw;
+  }
+}
+
+}  // namespace velocity::glut

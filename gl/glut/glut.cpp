@@ -31,6 +31,7 @@
 #include <thread>
 #include <vector>
 
+#include "menu.hpp"
 #include "runtime/input.hpp"
 #include "runtime/script.hpp"
 #include "sdl/presenter.hpp"
@@ -61,6 +62,7 @@ struct Glut {
   std::unique_ptr<velocity::present::SdlPresenter> window;
   OSMesaContext context = nullptr;
   std::vector<uint8_t> pixels;  // RGBA8, top row first
+  std::vector<uint8_t> overlaid;  // the pixels with the open menus drawn over them
   int width = 0, height = 0;
   bool double_buffered = false;
 
@@ -173,15 +175,24 @@ void end_if_past_limit(const Glut& g) {
   std::exit(0);
 }
 
+// The frame as shown: pGL's pixels, with the open menus drawn over a copy.
+const std::vector<uint8_t>& shown(Glut& g) {
+  if (!velocity::glut::menu_open()) return g.pixels;
+  g.overlaid = g.pixels;
+  velocity::glut::menu_overlay(g.overlaid, g.width, g.height);
+  return g.overlaid;
+}
+
 void show_frame(Glut& g) {
   glFinish();
-  g.window->present(g.pixels.data(), g.width, g.height);
+  const std::vector<uint8_t>& pixels = shown(g);
+  g.window->present(pixels.data(), g.width, g.height);
   if (!g.record_dir.empty() && g.frames == g.record_limit && g.max_frames == 0)
     std::fprintf(stderr, "velocity-glut: VELOCITY_GLUT_RECORD: %ld frames recorded, no more (VELOCITY_GLUT_FRAMES "
                  "sets how many)\n", g.record_limit);
   if (!g.record_dir.empty() && g.frames < g.record_limit) {
     velocity::Image image(g.width, g.height);
-    std::copy(g.pixels.begin(), g.pixels.end(), image.pixels.begin());
+    std::copy(pixels.begin(), pixels.end(), image.pixels.begin());
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05ld.png", g.frames);
     try {
@@ -220,6 +231,11 @@ void dispatch(Glut& g, const InputEvent& e) {
   g.modifiers = (g.input.held(velocity::realtime::KeyShift) ? GLUT_ACTIVE_SHIFT : 0) |
                 (g.input.held(velocity::realtime::KeyCtrl) ? GLUT_ACTIVE_CTRL : 0);
   const int mx = g.input.mouse_x() < 0 ? 0 : g.input.mouse_x(), my = g.input.mouse_y() < 0 ? 0 : g.input.mouse_y();
+  if ((e.kind == InputEvent::MouseDown || e.kind == InputEvent::MouseUp || e.kind == InputEvent::MouseMove) &&
+      velocity::glut::menu_event(e, g.width, g.height)) {
+    g.modifiers = 0;
+    return;  // a menu's (menu.cpp)
+  }
   switch (e.kind) {
     case InputEvent::KeyDown:
     case InputEvent::KeyUp: {
@@ -434,6 +450,11 @@ void glutMainLoop(void) {
     }
     fire_timers(g);
     if (g.leave) break;
+    if (velocity::glut::menu_changed() && !g.redisplay) {
+      // A menu opened, closed or moved its highlight: the last frame shown again, with
+      // it (not a new frame of the program's).
+      g.window->present(shown(g).data(), g.width, g.height);
+    }
     if (g.redisplay) {
       g.redisplay = false;
       g.in_display = true, g.posts_in_display = 0;
@@ -467,6 +488,7 @@ int glutGet(GLenum what) {
     case GLUT_INIT_WINDOW_WIDTH: return g.init_width;
     case GLUT_INIT_WINDOW_HEIGHT: return g.init_height;
     case GLUT_INIT_DISPLAY_MODE: return int(g.display_mode);
+    case GLUT_MENU_NUM_ITEMS: return velocity::glut::menu_items();
     default:
       std::fprintf(stderr, "velocity-glut: glutGet(0x%x): not a value this GLUT knows; returns -1\n", unsigned(what));
       return -1;

@@ -306,6 +306,10 @@ GLint glRenderMode(GLenum mode) {  // never compiled
   return r;
 }
 void glSelectBuffer(GLsizei size, GLuint* buffer) { NOW(c.select_buffer(size, buffer)); }  // never compiled
+void glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {  // never compiled
+  NOW(c.feedback_buffer(size, type, buffer));
+}
+void glPassThrough(GLfloat token) { LIST(c.pass_through(token)); }
 void glInitNames(void) { LIST(c.init_names()); }
 void glPushName(GLuint name) { LIST(c.push_name(name)); }
 void glPopName(void) { LIST(c.pop_name()); }
@@ -521,6 +525,50 @@ void glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p)
   NOW(if (size < 1 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, false, false)) return c.error(GL_INVALID_ENUM);
       set_array(c.arrays.texcoord, size, type, stride, p));
+}
+// GL 1.5 section 2.8, Table 2.5: each format's arrays, sizes and offsets in one record
+// (colours as 4 unsigned bytes take one float's room).
+void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* pointer) {  // never compiled
+  struct Layout {
+    GLenum format;
+    GLint st, sc, sv;  // texture, colour, vertex sizes (0: no such array)
+    GLenum tc;         // the colour's type
+    bool normal;
+    GLint pc, pn, pv, s;  // offsets and the record's size, in floats
+  };
+  static constexpr GLenum F = GL_FLOAT, UB = GL_UNSIGNED_BYTE;
+  static constexpr Layout layouts[] = {
+      {GL_V2F, 0, 0, 2, 0, false, 0, 0, 0, 2},
+      {GL_V3F, 0, 0, 3, 0, false, 0, 0, 0, 3},
+      {GL_C4UB_V2F, 0, 4, 2, UB, false, 0, 0, 1, 3},
+      {GL_C4UB_V3F, 0, 4, 3, UB, false, 0, 0, 1, 4},
+      {GL_C3F_V3F, 0, 3, 3, F, false, 0, 0, 3, 6},
+      {GL_N3F_V3F, 0, 0, 3, 0, true, 0, 0, 3, 6},
+      {GL_C4F_N3F_V3F, 0, 4, 3, F, true, 0, 4, 7, 10},
+      {GL_T2F_V3F, 2, 0, 3, 0, false, 0, 0, 2, 5},
+      {GL_T4F_V4F, 4, 0, 4, 0, false, 0, 0, 4, 8},
+      {GL_T2F_C4UB_V3F, 2, 4, 3, UB, false, 2, 0, 3, 6},
+      {GL_T2F_C3F_V3F, 2, 3, 3, F, false, 2, 0, 5, 8},
+      {GL_T2F_N3F_V3F, 2, 0, 3, 0, true, 0, 2, 5, 8},
+      {GL_T2F_C4F_N3F_V3F, 2, 4, 3, F, true, 2, 6, 9, 12},
+      {GL_T4F_C4F_N3F_V4F, 4, 4, 4, F, true, 4, 8, 11, 15},
+  };
+  NOW(if (stride < 0) return c.error(GL_INVALID_VALUE);
+      const Layout* l = nullptr;
+      for (const Layout& k : layouts) if (k.format == format) l = &k;
+      if (!l) return c.error(GL_INVALID_ENUM);
+      const GLsizei s = stride ? stride : GLsizei(l->s * sizeof(GLfloat));
+      const auto* base = static_cast<const char*>(pointer);
+      auto at = [&](GLint floats) { return base ? base + size_t(floats) * sizeof(GLfloat) : nullptr; };
+      c.arrays.edge_enabled = false;
+      c.arrays.texcoord.enabled = l->st != 0;
+      if (l->st) set_array(c.arrays.texcoord, l->st, F, s, base);
+      c.arrays.color.enabled = l->sc != 0;
+      if (l->sc) set_array(c.arrays.color, l->sc, l->tc, s, at(l->pc));
+      c.arrays.normal.enabled = l->normal;
+      if (l->normal) set_array(c.arrays.normal, 3, F, s, at(l->pn));
+      c.arrays.vertex.enabled = true;
+      set_array(c.arrays.vertex, l->sv, F, s, at(l->pv)));
 }
 void glEnableClientState(GLenum cap) { NOW(c.client_state(cap, true)); }
 void glDisableClientState(GLenum cap) { NOW(c.client_state(cap, false)); }

@@ -29,6 +29,7 @@
 //   copy_texture.cpp  glCopyTexImage2D, glCopyTexSubImage2D, glGetTexLevelParameter,
 //                     glGetTexImage
 //   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
+//   feedback.cpp      feedback: glFeedbackBuffer, glPassThrough, the tokens
 //   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor;
 //                     glLogicOp
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
@@ -169,6 +170,15 @@ class Context {
   void load_name(GLuint name);
   bool selecting() const { return select_.mode == GL_SELECT; }
   const SelectState& selection() const { return select_; }
+
+  // --- feedback (feedback.cpp)
+  void feedback_buffer(GLsizei size, GLenum type, GLfloat* buffer);
+  void pass_through(GLfloat token);
+  bool feeding_back() const { return select_.mode == GL_FEEDBACK; }
+  const FeedbackState& feedback() const { return feedback_; }
+  // glBitmap, glDrawPixels, glCopyPixels in select or feedback mode: a hit, or `token`
+  // and the raster position; true when nothing is to be drawn.
+  bool pixels_not_rendered(GLenum token);
 
   // --- attribute stacks (attrib.cpp)
   void push_attrib(GLbitfield mask);
@@ -374,6 +384,12 @@ class Context {
   RasterState raster_;
   StencilState stencil_;
   SelectState select_;
+  FeedbackState feedback_;
+  // feedback.cpp: a polygon, line or point in feedback mode, clipped to the view volume.
+  void feedback_polygon(const uint32_t* idx, int n, int provoking, bool back_colors);
+  void feedback_line(uint32_t a, uint32_t b);
+  void feedback_point(uint32_t a);
+  void feedback_value(GLfloat v);
   void select_hit(const uint32_t* idx, int n, bool closed);  // select.cpp
   std::vector<uint32_t> read_colour_rect(GLint x, GLint y, GLsizei w, GLsizei h);  // copy_texture.cpp
   void write_hit_record();

@@ -91,6 +91,7 @@ void Context::bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   RasterPosition& rp = pixels.raster;
   if (!rp.valid) return;
+  if (pixels_not_rendered(GL_BITMAP_TOKEN)) bits = nullptr;  // (the raster position still moves)
   if (bits && w > 0 && h > 0 && renderer_) {
     // The lower left fragment (GL 1.5 section 3.7): floor(raster - origin). Mesa adds
     // 1e-4 first, so that a position computed as 9.99999 for 10 lands on 10; so does pGL.
@@ -120,7 +121,7 @@ void Context::bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove
 void Context::draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector<Vec4>& image) {
   if (in_begin_error()) return;
   if (format == GL_DEPTH_COMPONENT && depth_bits_ <= 0) return error(GL_INVALID_OPERATION);
-  if (!pixels.raster.valid || !renderer_ || w <= 0 || h <= 0) return;
+  if (pixels_not_rendered(GL_DRAW_PIXEL_TOKEN) || !pixels.raster.valid || !renderer_ || w <= 0 || h <= 0) return;
   std::vector<WindowRect> rects;
   zoomed_rects(w, h, image.data(), format == GL_DEPTH_COMPONENT, rects);
   draw_window_rects(rects);
@@ -132,7 +133,7 @@ void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   // Stencil indices are not copied yet (docs/gl.md); no depth buffer without depth bits.
   if (type == GL_STENCIL || (type == GL_DEPTH && depth_bits_ <= 0)) return error(GL_INVALID_OPERATION);
-  if (!pixels.raster.valid || !renderer_ || w == 0 || h == 0) return;
+  if (pixels_not_rendered(GL_COPY_PIXEL_TOKEN) || !pixels.raster.valid || !renderer_ || w == 0 || h == 0) return;
   // Only the part of the source inside the framebuffer is copied (its pixels outside
   // are undefined), to the same place relative to the raster position.
   const int64_t x0 = std::max<int64_t>(x, 0), y0 = std::max<int64_t>(y, 0);

@@ -169,12 +169,12 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
   return 0;
 }
 
-// GLU 1.1's: the version (GLU_VERSION_1_1 in glu.h: 1.2's tessellator and 1.3's
-// calls are not here) and no GLU extensions.
+// GLU 1.1's: the version (1.2: the tessellator is Debian's libGLU, linked with pGL;
+// 1.3's calls are not here) and no GLU extensions.
 const GLubyte* gluGetString(GLenum name) {
   const char* s;
   switch (name) {
-    case GLU_VERSION: s = "1.1 Velocity pGL (a subset: docs/gl.md)"; break;
+    case GLU_VERSION: s = "1.2 Velocity pGL (a subset: docs/gl.md)"; break;
     case GLU_EXTENSIONS: s = ""; break;
     default: return nullptr;
   }

@@ -40,6 +40,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_NAME_STACK_DEPTH: out = {double(select_.names.size())}; return true;
     case GL_RENDER_MODE: out = {double(select_.mode)}; return true;
     case GL_SELECTION_BUFFER_SIZE: out = {double(select_.size)}; return true;
+    case GL_FEEDBACK_BUFFER_SIZE: out = {double(feedback_.size)}; return true;
+    case GL_FEEDBACK_BUFFER_TYPE: out = {double(feedback_.type)}; return true;
     case GL_ATTRIB_STACK_DEPTH: out = {double(attrib_depth())}; return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: out = {double(client_attrib_depth())}; return true;
     case GL_MAX_VIEWPORT_DIMS: out = {double(kMaxViewport), double(kMaxViewport)}; return true;

@@ -74,18 +74,22 @@ void Context::write_hit_record() {
 
 GLint Context::render_mode(GLenum mode) {
   if (in_begin_error()) return 0;
-  if (mode != GL_RENDER && mode != GL_SELECT) return error(GL_INVALID_ENUM), 0;
+  if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) return error(GL_INVALID_ENUM), 0;
   SelectState& s = select_;
   if (mode == GL_SELECT && !s.buffer) return error(GL_INVALID_OPERATION), 0;
+  if (mode == GL_FEEDBACK && feedback_.size == 0) return error(GL_INVALID_OPERATION), 0;
   GLint result = 0;
   if (s.mode == GL_SELECT) {
     write_hit_record();
     result = s.overflow ? -1 : GLint(s.hits);
+  } else if (s.mode == GL_FEEDBACK) {
+    result = feedback_.used > feedback_.size ? -1 : GLint(feedback_.used);  // (feedback.cpp)
   }
   submit_pending();
   s.mode = mode;
   s.used = 0, s.hits = 0, s.overflow = false, s.hit = false, s.min_z = 1, s.max_z = 0;
   s.names.clear();
+  feedback_.used = 0;
   changed();
   return result;
 }

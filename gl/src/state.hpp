@@ -246,6 +246,13 @@ struct SelectState {
   float min_z = 1, max_z = 0;
 };
 
+// --- feedback (feedback.cpp): glRenderMode(GL_FEEDBACK), glFeedbackBuffer -----------
+struct FeedbackState {
+  GLenum type = GL_2D;        // glFeedbackBuffer's: which values a vertex writes
+  GLfloat* buffer = nullptr;  // the program's
+  size_t size = 0, used = 0;  // values written (counted past `size` on overflow)
+};
+
 // --- attribute stacks (attrib.cpp): what glPushAttrib and glPushClientAttrib saved --
 struct AttribFrame {
   GLbitfield mask = 0;

@@ -95,6 +95,8 @@ void Context::vertex(Vec4 v) {
     out.fog = std::fabs(eye.z);
   }
   if (!lighting_.enabled) out.front = out.back = clamp_color(color_);
+  // (Feedback reports the coordinates untransformed while texturing is off, as Mesa does.)
+  if (!texture_.enabled && feeding_back()) out.tex = texcoord_;
   if (texture_.enabled) {
     const Vec4 t = tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_;  // (tex_gen.cpp)
     out.tex = transform_.texture_identity ? t : transform_.texture.back() * t;
@@ -223,6 +225,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
   auto color = [&](uint32_t i) -> const Vec4& { return flat ? flat_color : back_colors ? prim_[i].back : prim_[i].front; };
   const bool shared = !flat && !back_colors;
   const GLenum mode = raster_.polygon_mode[front ? 0 : 1];
+  if (feeding_back() && mode == GL_FILL) return feedback_polygon(idx, n, provoking, back_colors);
   if (mode == GL_FILL) {
     target(PrimitiveKind::Triangles, raster_.offset_fill, true);
     auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
@@ -239,13 +242,18 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
       for (int k = 0; k < n; ++k) {
         const uint32_t a = idx[k], b = idx[(k + 1) % n];
         if (flags && !prim_[a].edge) continue;
+        if (feeding_back()) {
+          feedback_line(a, b);
+          continue;
+        }
         if (raster_.line_stipple) stippled_line(a, b, color(a), color(b), raster_.offset_line);
         else emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
       }
     } else {
       target(PrimitiveKind::Points, raster_.offset_point);
       for (int k = 0; k < n; ++k)
-        if (!flags || prim_[idx[k]].edge) emit_vertex(idx[k], color(idx[k]), shared);
+        if (feeding_back() && (!flags || prim_[idx[k]].edge)) feedback_point(idx[k]);
+        else if (!flags || prim_[idx[k]].edge) emit_vertex(idx[k], color(idx[k]), shared);
     }
   }
 }
@@ -255,6 +263,7 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
     const uint32_t ab[2] = {a, b};
     return select_hit(ab, 2, false);
   }
+  if (feeding_back()) return feedback_line(a, b);
   const bool flat = lighting_.shade_model == GL_FLAT;
   if (raster_.line_stipple) {  // (line_stipple.cpp)
     const Vec4 ca = flat ? prim_[provoking].front : prim_[a].front, cb = flat ? prim_[provoking].front : prim_[b].front;
@@ -267,6 +276,7 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
 
 void Context::point_vertex(uint32_t a) {
   if (selecting()) return select_hit(&a, 1, false);
+  if (feeding_back()) return feedback_point(a);
   target(PrimitiveKind::Points, false);
   emit_vertex(a, prim_[a].front, true);
 }

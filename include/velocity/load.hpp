@@ -55,8 +55,11 @@ struct Model {
   std::vector<ModelNode> nodes;
   std::vector<Light> lights;
   std::vector<NamedCamera> cameras;
-  // glTF node animations (translation, rotation, scale), moving `nodes` by index.
+  // glTF node animations (translation, rotation, scale) and morph target weights,
+  // moving and morphing `nodes` by index.
   std::vector<Animation> animations;
+  // glTF skins, on `nodes` by index: skin(skins, scene) after each apply.
+  std::vector<Skin> skins;
 
   size_t vertex_count() const;
   size_t triangle_count() const;
@@ -110,9 +113,10 @@ Model load_obj(const std::string& path, const LoadOptions& options = {});
 // NamedCameras placed by their node, KHR_lights_punctual lights Lights (intensity times
 // colour, inverse-square falloff with the range); 3D Studio cameras are not converted
 // (Assimp 5.2 loses their target), nor are 3D Studio lights. glTF node animations
-// (translation, rotation, scale; float keys) are read by Velocity from the JSON into
-// Model::animations; skins and morph targets are not converted (meshes come in their
-// bind pose).
+// (translation, rotation, scale; float keys) and morph target weights (with the POSITION
+// and NORMAL targets of the node's mesh) are read by Velocity from the JSON into
+// Model::animations, and skins (JOINTS_0 / WEIGHTS_0, inverse bind matrices) into
+// Model::skins (meshes come in their bind pose until skin() poses them).
 // Throws velocity::Error naming the file for a missing or malformed file (what
 // Velocity's own checks before Assimp found, with the line or byte offset: PLY whole,
 // ASCII STL whole, 3D Studio chunks, glTF JSON and node trees; else Assimp's message),

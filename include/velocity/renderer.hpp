@@ -123,6 +123,12 @@ struct FrameStats {
   double triangle_ms = 0;  // reject, cull, clip, set up, bin: every triangle (and the painter's sort)
   double tile_ms = 0;      // clear, rasterize and shade: every tile (GPU: draw and read back)
   double shadow_ms = 0;    // the shadow maps' depth passes (RenderOptions::shadows), before the rest
+  // The GPU backend's own stages (0 on the CPU). Within tile_ms: finding changed meshes
+  // and textures (fingerprints) and uploading them; issuing the frame's GL calls; waiting
+  // for the GPU to finish the frame. Then reading pixels back, which the GPU backend does
+  // when the caller first reads each plane (color_image, read_color, the depths,
+  // object_ids), after end_frame: readback_ms is the PREVIOUS frame's reads.
+  double upload_ms = 0, submit_ms = 0, gpu_wait_ms = 0, readback_ms = 0;
   // The backend that drew ("cpu" or "gpu") and why it was chosen, e.g. "asked for" or
   // "auto: only a software OpenGL driver (llvmpipe), the CPU pipeline is faster". Set
   // from construction on, before any frame; valid while the Renderer lives.

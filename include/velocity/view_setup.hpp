@@ -32,10 +32,11 @@ void add_default_lights(Scene& scene);
 // the default light (add_default_lights), and the camera framing the model for an
 // image of `aspect` (width / height) from the front right and a little above, a
 // three-quarter view that shows a model's shape (in the rest pose). With `animations`,
-// the file's animations go there, each NodeAnimation::node an ObjectId of the scene.
+// the file's animations go there, each NodeAnimation::node an ObjectId of the scene;
+// with `skins`, its skins (the scene is then posed by them once, at rest).
 // Throws velocity::Error.
 Scene scene_from_model(const std::string& path, const LoadOptions& options, bool cull_back_faces, float aspect,
-                       std::vector<Animation>* animations = nullptr);
+                       std::vector<Animation>* animations = nullptr, std::vector<Skin>* skins = nullptr);
 
 // Why a frame drew nothing, from its statistics, as the end of a sentence that begins
 // "nothing was drawn: " ("" when something was drawn). `cull_back_faces`: whether the

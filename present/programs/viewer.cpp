@@ -85,11 +85,12 @@ ViewerProgram::ViewerProgram(ViewerOptions options) : o_(std::move(options)) {
 void ViewerProgram::open(const std::string& path) {
   Scene scene;
   std::vector<Animation> animations;
+  std::vector<Skin> skins;
   if (path.empty()) {
     scene = make_demo_scene();
     name_ = "DEMO SCENE";
   } else {
-    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_), &animations);
+    scene = scene_from_model(path, o_.load, o_.cull_back_faces, float(width_) / float(height_), &animations, &skins);
     name_ = std::filesystem::path(path).filename().string();
   }
   triangles_ = points_ = 0;
@@ -135,19 +136,30 @@ void ViewerProgram::open(const std::string& path) {
   for (int a = 0; a < 3; ++a) axes_[a] = std::make_shared<const Mesh>(make_axis(a, radius_ * 0.6f, axis_colors[a]));
   scene_ = std::move(scene);
   animations_ = std::move(animations);
+  skins_ = std::move(skins);
   anim_time_ = 0;
+  anim_ = 0;
   playing_ = true;
   if (!animations_.empty()) apply(animations_[0], 0.0f, scene_);
+  skin(skins_, scene_);
   reset_view();
 }
 
 // Moves the animation to `t` (wrapped into its length: it loops) and poses the scene.
 void ViewerProgram::seek(double t) {
   if (animations_.empty()) return;
-  const double length = animations_[0].duration;
+  const double length = animations_[anim_].duration;
   anim_time_ = length > 0 ? t - std::floor(t / length) * length : 0.0;
-  apply(animations_[0], float(anim_time_), scene_);
+  apply(animations_[anim_], float(anim_time_), scene_);
+  skin(skins_, scene_);  // the joints moved
   changed_ = true;
+}
+
+// The animation playing, for the status bar: "2/3 WALK" (its number; its name if it has one).
+std::string ViewerProgram::animation_label() const {
+  std::string label = std::to_string(anim_ + 1) + "/" + std::to_string(animations_.size());
+  if (!animations_[anim_].name.empty()) label += " " + upper(animations_[anim_].name);
+  return label;
 }
 
 // Back to the opening view: orbit angles, distance, and the pan undone.
@@ -297,6 +309,17 @@ void ViewerProgram::event(const InputEvent& e, const InputState& input) {
           playing_ = false;
           seek(anim_time_ + (e.key == Key('l') ? 0.1 : -0.1));
           break;
+        case 'n':
+          // The next of the file's animations, from its start (the one before at rest).
+          if (animations_.size() < 2) {
+            say(animations_.empty() ? "NO ANIMATION IN THIS FILE" : "THE FILE HAS ONE ANIMATION");
+            break;
+          }
+          rest(animations_[anim_], scene_);
+          anim_ = (anim_ + 1) % animations_.size();
+          seek(0);
+          say("ANIMATION " + animation_label());
+          break;
         case '[':
         case ']':
           // Points are squares this many pixels a side, whatever the super-sampling.
@@ -387,10 +410,12 @@ void ViewerProgram::frame(FrameDescription& out) {
       "H: HELP"};
   if (points_) items.insert(items.end() - 1, "POINTS " + std::to_string(int(options_.point_size)) + " PX");
   if (!animations_.empty()) {
-    char clock[96];
-    std::snprintf(clock, sizeof clock, "ANIMATION %.2f/%.2f S %s", anim_time_, double(animations_[0].duration),
+    char clock[64];
+    std::snprintf(clock, sizeof clock, " %.2f/%.2f S %s", anim_time_, double(animations_[anim_].duration),
                   playing_ ? "PLAYING" : "PAUSED");
-    items.insert(items.end() - 1, clock);
+    // (Which one, when there is a choice.)
+    const std::string which = animations_.size() > 1 ? " " + animation_label() : "";
+    items.insert(items.end() - 1, "ANIMATION" + which + clock);
   }
   std::vector<std::string> lines(1);
   for (const std::string& item : items) {
@@ -422,7 +447,7 @@ void ViewerProgram::frame(FrameDescription& out) {
         "S: SHADING   W: WIREFRAME   P: PAINTER / Z-BUFFER\n"
         "A: SSAA 1-3   T: AFFINE / PERSPECTIVE   B: BACK FACES\n"
         "[ ]: POINT SIZE   K: PLAY / PAUSE   J L: STEP BACK / ON\n"
-        "O: SHADOWS\n"
+        "O: SHADOWS   N: NEXT ANIMATION\n"
         "C or F12: SCREENSHOT   SHIFT+F12: WITH THIS TEXT\n"
         "F2: SCREEN MODE   F3: FPS\n"
         "F11: FULLSCREEN   DROP A FILE TO OPEN IT   ESC: QUIT";

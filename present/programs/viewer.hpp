@@ -53,9 +53,10 @@ class ViewerProgram : public Program {
   const RenderOptions& render_options() const { return options_; }
   const std::string& message() const { return message_; }
   size_t points() const { return points_; }
-  // The model's animations (the first plays, looping), the time into it, and whether it
-  // is playing (K pauses and plays, J / L step a tenth of a second back / on).
+  // The model's animations (one plays, looping: the first, N the next), the time into it,
+  // and whether it is playing (K pauses and plays, J / L step a tenth of a second back / on).
   const std::vector<Animation>& animations() const { return animations_; }
+  size_t animation() const { return anim_; }
   double animation_time() const { return anim_time_; }
   bool playing() const { return playing_; }
   // The direction towards the key light (the first directional one); zero if none.
@@ -69,6 +70,7 @@ class ViewerProgram : public Program {
   void open(const std::string& path);  // throws
   void reset_view();
   void seek(double t);
+  std::string animation_label() const;
   void place_camera();
   Light* key_light();  // the first directional light (Shift+drag turns it); null if none
 
@@ -96,6 +98,8 @@ class ViewerProgram : public Program {
   double message_time_ = 0;
   std::vector<Animation> animations_;
   double anim_time_ = 0;
+  size_t anim_ = 0;  // the one playing
+  std::vector<Skin> skins_;  // posed after each step of the animation
   bool playing_ = true;
 };
 

@@ -746,6 +746,41 @@ TEST(Viewer, PointCloudsWithAPointSizeKey) {
 // halfway, the STEP scale past its step), numerically and in pixels: the frame equals
 // the one of a still file with the node placed at that pose by hand. K pauses; J and L
 // step back and on.
+// N chooses the next animation: the one before goes back to its rest pose, the new one
+// plays from its start, and the status bar names it.
+TEST(Viewer, NextAnimationKeyChoosesAmongTheFilesAnimations) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("velocity_viewer_anims_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "two.gltf") << velocity::test::animated_box_gltf(true, {0, 0, 0}, {0, 0, 0, 1}, {1, 1, 1}, true);
+  ViewerOptions o;
+  o.model = (dir / "two.gltf").string();
+  ViewerProgram v(o);
+  v.resize(640, 480);
+  ASSERT_EQ(v.animations().size(), 2u);
+  EXPECT_EQ(v.animation(), 0u);
+  // "move" plays half a second, then N, K (pause) and four steps of a tenth: 0.4 s into "lift".
+  run_scripted(v, "0.5 press n\n0.5 press k\n0.6 press l\n0.7 press l\n0.8 press l\n0.9 press l\n", 1.0);
+  EXPECT_EQ(v.animation(), 1u);
+  EXPECT_FALSE(v.playing());
+  EXPECT_NEAR(v.animation_time(), 0.4, 1e-6);
+  FrameDescription f;
+  v.frame(f);
+  // "mover" at rest again (no translation, turn or scale of its own) under "base", lifted
+  // a quarter of the way from (0, 1, 0) to (0, 3, -1).
+  const Mat4 world = f.scene.world_matrices()[*f.scene.find("mover")];
+  const Mat4 expected = translate({0, 1.5f, -0.25f});
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(world.m[i][j], expected.m[i][j], 1e-5f) << i << "," << j;
+  std::string bar;
+  for (const DrawOp& op : f.overlay.ops()) bar += op.text + "|";
+  EXPECT_NE(bar.find("ANIMATION 2/2 LIFT 0.40/1.60 S PAUSED"), std::string::npos) << bar;
+  // And round again to the first, from its start.
+  run_scripted(v, "0 press n\n", 0.0);
+  EXPECT_EQ(v.animation(), 0u);
+  fs::remove_all(dir);
+}
+
 TEST(Viewer, GltfAnimationPlaysPausesAndSteps) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("velocity_viewer_anim_" + std::to_string(::getpid()));

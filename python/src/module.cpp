@@ -18,11 +18,11 @@
 #include <vector>
 
 #include "convert.hpp"
-#include "png_encode.hpp"
 #include "scene_graph.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/log.hpp"
+#include "velocity/png.hpp"
 #include "velocity/texture.hpp"
 
 namespace py = pybind11;
@@ -539,7 +539,7 @@ py::array_t<double> projection_of(const Cam& cam, int width, int height) {
   return pose_array(m);
 }
 
-// numpy image -> PNG bytes (velocity.png.encode_png), encoded without the GIL.
+// numpy image -> PNG bytes (velocity.png.encode_png): the engine's encoder, run without the GIL.
 py::bytes png_bytes(const py::array& image, int level, const std::string& filter) {
   static const std::pair<const char*, PngFilter> kFilters[] = {
       {"none", PngFilter::None}, {"sub", PngFilter::Sub}, {"up", PngFilter::Up},
@@ -1094,8 +1094,8 @@ PYBIND11_MODULE(_velocity, m) {
   m.def("encode_png", &png_bytes, py::arg("image"), py::arg("level") = 3, py::arg("filter") = "up",
         "PNG bytes of a uint8 H x W (grey), H x W x 3 (RGB) or H x W x 4 (RGBA) image, or a uint16 H x W one "
         "(16-bit grey). level: zlib's, 0..9; filter: one PNG row filter for every row ('up', the default, "
-        "suits rendered frames), or 'adaptive' (libpng's choice per row: smaller, slower). libpng encodes; the "
-        "GIL is released meanwhile.");
+        "suits rendered frames), or 'adaptive' (libpng's choice per row: smaller, slower). The engine's encoder "
+        "(velocity::encode_png, libpng) encodes; the GIL is released meanwhile.");
   m.def("_rotation_from_angles", [](double yaw, double pitch, double roll) {
     double r[9];
     rotation_from_angles(yaw, pitch, roll, r);

@@ -1,8 +1,9 @@
 """PNG files of numpy images, to bytes (so that the batch runners write them
 atomically): 8-bit grey, RGB and RGBA, and 16-bit grey (segmentation masks).
 
-Encoded by libpng in the engine's module (velocity._velocity.encode_png; the GIL is
-released meanwhile) with one row filter, Up, and zlib level 3: 2.6x faster than Pillow's
+Encoded by the engine's own PNG encoder (velocity::encode_png, libpng), the one behind
+its write_png and the command-line program, called through velocity._velocity.encode_png
+with the GIL released. One row filter, Up, and zlib level 3: 2.6x faster than Pillow's
 adaptive filter, files 8% larger (docs/python.md). Decoding is Pillow's (python3-pil).
 """
 from __future__ import annotations

@@ -58,8 +58,15 @@ void resolve_color_rows(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_
     return;
   }
   std::vector<uint32_t> rows;
+  const uint32_t* rows_at[16];
   for (int y = y0; y < y1; ++y) {
-    read_sample_rows(fb, k, y, rows, &Framebuffer::read_color_row);
+    // Up to k = 16 the samples are read where the tiles hold them (no row copies): the
+    // offset of sample column sx from its row's start in the first tile.
+    if (k <= 16)
+      for (int sy = 0; sy < k; ++sy) rows_at[sy] = fb.color.data() + fb.index(0, y * k + sy);
+    else
+      read_sample_rows(fb, k, y, rows, &Framebuffer::read_color_row);
+    auto offset = [](int sx) { return size_t((sx & ~63) << 6 | (sx & 60) << 2 | (sx & 3)); };
     for (int x = 0; x < w; ++x) {
       // Two channels a 32-bit add, each in a 16-bit lane (channels 0 and 2, then 1 and
       // 3): k * k samples of 255 fit a lane up to k = 16, and the sums are the exact ones
@@ -68,9 +75,12 @@ void resolve_color_rows(const Framebuffer& fb, int k, uint8_t* rgba, size_t row_
       uint32_t sum[4] = {0, 0, 0, 0};
       if (k <= 16) {
         uint32_t even = 0, odd = 0;
-        for (int sy = 0; sy < k; ++sy) {
-          const uint32_t* row = rows.data() + size_t(sy) * fb.width + size_t(x) * k;
-          for (int sx = 0; sx < k; ++sx) even += row[sx] & 0x00ff00ffu, odd += (row[sx] >> 8) & 0x00ff00ffu;
+        for (int sx = x * k; sx < (x + 1) * k; ++sx) {
+          const size_t at = offset(sx);
+          for (int sy = 0; sy < k; ++sy) {
+            const uint32_t v = rows_at[sy][at];
+            even += v & 0x00ff00ffu, odd += (v >> 8) & 0x00ff00ffu;
+          }
         }
         sum[0] = even & 0xffffu, sum[1] = odd & 0xffffu, sum[2] = even >> 16, sum[3] = odd >> 16;
       } else {

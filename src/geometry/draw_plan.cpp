@@ -120,7 +120,7 @@ void plan_mesh_draw(DrawList& plan, std::vector<raster::DrawState>& states, Mesh
     const Filter filter = o.filter.value_or(mat.filter);
     if (s.shading == Shading::Pbr) {
       s.pbr_tangents = bool(mat.pbr.normal);
-      s.pbr_colors = !mesh.colors.empty();
+      s.pbr_colors = !mesh.colors.empty() || !mesh.alphas.empty();  // vertex alpha alone: white vertices
       s.blend = mat.alpha_mode == AlphaMode::Blend;
       s.uv_set = pbr_uv_set(mat);
       s.cull = o.cull_back_faces && !mat.two_sided;

@@ -612,7 +612,10 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
   if (dropped)
     warn(path + ": " + std::to_string(dropped) + " lines dropped (Velocity draws triangles and points only)");
 
-  // Animations, moving Model nodes (a node outside the scene shown is not moved).
+  // Animations, moving Model nodes (a node outside the scene shown is not moved). Morph
+  // targets get the node's mesh as their base: its vertices are the primitives' in order,
+  // so a count that differs (a primitive of lines left out) means they do not fit.
+  std::map<const MorphTargets*, std::shared_ptr<const MorphTargets>> based;
   if (gltf_appearance)
     for (Animation a : gltf_appearance->animations) {
       std::erase_if(a.nodes, [&](NodeAnimation& n) {
@@ -621,7 +624,48 @@ Model convert_scene(const aiScene& scene, const std::string& path, const detail:
         n.node = it->second;
         return false;
       });
-      if (!a.nodes.empty()) model.animations.push_back(std::move(a));
+      std::erase_if(a.morphs, [&](MorphAnimation& m) {
+        auto it = model_node_of_gltf.find(m.node);
+        if (it == model_node_of_gltf.end() || !m.targets) return true;
+        m.node = it->second;
+        const std::shared_ptr<Mesh>& mesh = model.nodes[m.node].mesh;
+        auto [at, fresh] = based.try_emplace(m.targets.get());
+        std::shared_ptr<const MorphTargets>& with_base = at->second;
+        if (fresh && mesh) {
+          auto t = std::make_shared<MorphTargets>(*m.targets);
+          t->base = mesh;
+          bool fits = true;
+          for (const auto& offsets : t->positions) fits &= offsets.size() == mesh->positions.size();
+          if (fits) with_base = std::move(t);
+          else warn(path + ": node \"" + model.nodes[m.node].name + "\": its morph targets do not match its mesh's " +
+                    std::to_string(mesh->positions.size()) + " vertices (not morphed)");
+        }
+        if (!with_base) return true;
+        m.targets = with_base;
+        return false;
+      });
+      if (!a.nodes.empty() || !a.morphs.empty()) model.animations.push_back(std::move(a));
+    }
+  // Skins: the skinned node's mesh is the bind pose (its vertices the primitives' in order).
+  if (gltf_appearance)
+    for (Skin skin : gltf_appearance->skins) {
+      auto it = model_node_of_gltf.find(skin.node);
+      if (it == model_node_of_gltf.end() || !model.nodes[it->second].mesh) continue;
+      skin.node = it->second;
+      skin.base = model.nodes[skin.node].mesh;
+      bool found = true;
+      for (size_t& j : skin.joints) {
+        auto joint = model_node_of_gltf.find(j);
+        found &= joint != model_node_of_gltf.end();
+        if (found) j = joint->second;
+      }
+      if (!found) continue;  // a joint outside the scene shown
+      if (skin.vertex_joints.size() != skin.base->positions.size()) {
+        warn(path + ": node \"" + model.nodes[skin.node].name + "\": its skin does not match its mesh's " +
+             std::to_string(skin.base->positions.size()) + " vertices (not skinned)");
+        continue;
+      }
+      model.skins.push_back(std::move(skin));
     }
 
   const std::string ext = detail::lower_extension(path);

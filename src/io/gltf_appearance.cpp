@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -112,8 +113,9 @@ class Reader {
   }
 
   // The file's animations: each channel's keys (float accessors), grouped by the node
-  // they move, with the node's rest translation, rotation and scale. Morph target
-  // weights and channels of other component types are left out with a warning.
+  // they move, with the node's rest translation, rotation and scale; morph target
+  // weights with the targets of the node's mesh. Channels of other component types are
+  // left out with a warning.
   std::vector<Animation> animations() {
     std::vector<Animation> out;
     const json& anims = list("animations");
@@ -139,11 +141,7 @@ class Reader {
         const json* path = target ? member(*target, "path", json::value_t::string, w + "target: ") : nullptr;
         if (!path) fail(w + "expected a \"target\" with a \"path\"");
         const std::string what = path->get<std::string>();
-        if (what == "weights") {
-          skip("morph target weights are not animated");
-          continue;
-        }
-        if (what != "translation" && what != "rotation" && what != "scale")
+        if (what != "translation" && what != "rotation" && what != "scale" && what != "weights")
           fail(w + "target path \"" + what + "\", expected translation, rotation, scale or weights");
         if (!target->contains("node")) continue;  // the spec allows it (an extension's target)
         const size_t n = index((*target)["node"], nodes.size(), w + "target node");
@@ -152,10 +150,18 @@ class Reader {
         const std::string mode = sampler.value("interpolation", std::string("LINEAR"));
         if (mode != "LINEAR" && mode != "STEP" && mode != "CUBICSPLINE")
           fail(w + "interpolation \"" + mode + "\", expected LINEAR, STEP or CUBICSPLINE");
-        const size_t width = what == "rotation" ? 4 : 3;
+        std::shared_ptr<MorphTargets> targets;
+        if (what == "weights") {
+          const json& node = at(nodes, n, w + "target node: ");
+          if (!node.contains("mesh")) fail(w + "weights of node " + std::to_string(n) + ", which has no mesh");
+          targets = morph_targets(node, w + "target node: ");
+          if (!targets) continue;
+        }
+        // Weights: one scalar per target a key.
+        const size_t width = what == "rotation" ? 4 : targets ? targets->positions.size() : 3;
         std::vector<float> times, values;
         if (!floats(sampler.value("input", json(-1)), 1, times, w + "input") ||
-            !floats(sampler.value("output", json(-1)), width, values, w + "output")) {
+            !floats(sampler.value("output", json(-1)), targets ? 1 : width, values, w + "output")) {
           skip(w + "keys that are not 32-bit floats in a buffer view are not read");
           continue;
         }
@@ -167,6 +173,17 @@ class Reader {
           if (!std::isfinite(times[k]) || times[k] < 0 || (k && times[k] <= times[k - 1]))
             fail(w + "key time " + std::to_string(k) + " is " + std::to_string(times[k]) +
                  ", expected a finite time after the one before");
+        const Interpolation mode_of_keys = mode == "STEP" ? Interpolation::Step : Interpolation::Linear;
+        if (targets) {
+          MorphAnimation morph{n, {times, {}, mode_of_keys}, targets};
+          for (size_t k = 0; k < times.size(); ++k) {
+            const float* key = &values[(k * per_key + (per_key == 3)) * width];
+            morph.weights.values.emplace_back(key, key + width);
+          }
+          if (!times.empty()) result.duration = std::max(result.duration, times.back());
+          result.morphs.push_back(std::move(morph));
+          continue;
+        }
         auto [it, first] = by_node.try_emplace(n);
         NodeAnimation& node = it->second;
         if (first) rest_pose(at(nodes, n, w + "target node: "), node, w + "target node: ");
@@ -185,7 +202,7 @@ class Reader {
         if (!times.empty()) result.duration = std::max(result.duration, times.back());
       }
       for (auto& [n, node] : by_node) result.nodes.push_back(std::move(node));
-      if (!result.nodes.empty()) out.push_back(std::move(result));
+      if (!result.nodes.empty() || !result.morphs.empty()) out.push_back(std::move(result));
     }
     return out;
   }
@@ -420,6 +437,48 @@ class Reader {
     return it->second;
   }
 
+  // Accessor `v` of `type` (`width` components) as floats, whatever its component type:
+  // floats as they are, unsigned bytes and shorts as their value, or divided by their
+  // largest when "normalized". False for a sparse accessor or one without a buffer view.
+  bool elements(const json& v, const char* type, size_t width, std::vector<float>& out, const std::string& where) {
+    const json& acc = at(list("accessors"), index(v, list("accessors").size(), where + " accessor"), where + ": ");
+    if (acc.value("type", std::string()) != type)
+      fail(where + ": accessor type " + acc.value("type", json()).dump() + ", expected " + type);
+    const int component = acc.value("componentType", 0);
+    const size_t size = component == 5126 ? 4 : component == 5123 ? 2 : component == 5121 ? 1 : 0;
+    if (size == 0) fail(where + ": component type " + std::to_string(component) + ", expected 5121, 5123 or 5126");
+    if (!acc.contains("bufferView") || acc.contains("sparse")) return false;
+    const bool normalized = acc.value("normalized", false);
+    const uint64_t count = whole(acc, "count", 0, where + ": ");
+    const size_t view_index = index(acc["bufferView"], list("bufferViews").size(), where + ": bufferView");
+    const std::string_view bytes = buffer_view(view_index, path_);
+    const uint64_t offset = whole(acc, "byteOffset", 0, where + ": ");
+    const uint64_t stride =
+        whole(at(list("bufferViews"), view_index, where + ": "), "byteStride", width * size, where + ": ");
+    out.clear();
+    if (count == 0) return true;
+    if (stride < width * size || offset > bytes.size() || (count - 1) > (bytes.size() - offset) / stride ||
+        offset + (count - 1) * stride + width * size > bytes.size())
+      fail(where + ": accessor runs past the end of its buffer view");
+    out.resize(size_t(count) * width);
+    for (size_t k = 0; k < count; ++k)
+      for (size_t c = 0; c < width; ++c) {
+        const char* at_byte = bytes.data() + offset + k * stride + c * size;
+        float& to = out[k * width + c];
+        if (size == 4) {
+          std::memcpy(&to, at_byte, 4);  // glTF is little-endian, as we are
+        } else if (size == 2) {
+          uint16_t u;
+          std::memcpy(&u, at_byte, 2);
+          to = normalized ? float(u) / 65535.0f : float(u);
+        } else {
+          const uint8_t u = uint8_t(*at_byte);
+          to = normalized ? float(u) / 255.0f : float(u);
+        }
+      }
+    return true;
+  }
+
   // Accessor `v` as floats, `width` a element (SCALAR 1, VEC3 3, VEC4 4): false when it
   // is not plain 32-bit floats in a buffer view (gltf_check made sure it lies inside it).
   bool floats(const json& v, size_t width, std::vector<float>& out, const std::string& where) {
@@ -443,6 +502,149 @@ class Reader {
     return true;
   }
 
+  // The morph targets of `node`'s mesh: each target's POSITION and NORMAL offsets, its
+  // primitives' one after another (the order the adapter merges them in; MorphTargets::base
+  // is left to it), and the node's or mesh's weights at rest. Null, with a warning, when
+  // an offset is not plain floats (a sparse accessor, say); null without targets.
+  std::shared_ptr<MorphTargets> morph_targets(const json& node, const std::string& where) {
+    const size_t m = index(node["mesh"], list("meshes").size(), where + "mesh");
+    auto& cached = morphs_[m];
+    if (cached.first) return cached.second;
+    cached.first = true;
+    const std::string w = where + "mesh " + std::to_string(m) + ": ";
+    const json& mesh = at(list("meshes"), m, w);
+    const json* prims = member(mesh, "primitives", json::value_t::array, w);
+    size_t count = 0;
+    for (size_t p = 0; prims && p < prims->size(); ++p)
+      if (const json* t = member(at(*prims, p, w), "targets", json::value_t::array, w)) count = std::max(count, t->size());
+    if (count == 0) return nullptr;
+    auto out = std::make_shared<MorphTargets>();
+    out->positions.resize(count), out->normals.resize(count);
+    bool any_normals = false;
+    for (size_t p = 0; p < prims->size(); ++p) {
+      const std::string wp = w + "primitive " + std::to_string(p) + ": ";
+      const json& prim = at(*prims, p, wp);
+      const json* attrs = member(prim, "attributes", json::value_t::object, wp);
+      if (!attrs || !attrs->contains("POSITION")) fail(wp + "expected a POSITION attribute");
+      const json& accessors = list("accessors");
+      const uint64_t vertices = whole(at(accessors, index((*attrs)["POSITION"], accessors.size(), wp + "POSITION"), wp),
+                                      "count", 0, wp);
+      // Every target holds an offset of each vertex, given or not: within the memory limit.
+      const uint64_t per_target = vertices * 2 * sizeof(Vec3);  // vertices <= the buffer's size
+      if (vertices > budget_ || (per_target && count > budget_ / per_target))
+        fail(wp + std::to_string(count) + " morph targets of " + std::to_string(vertices) +
+             " vertices need more than the memory limit");
+      budget_ -= size_t(count * per_target);
+      const json* targets = member(prim, "targets", json::value_t::array, wp);
+      for (size_t k = 0; k < count; ++k) {
+        const json* target = targets && k < targets->size() ? &at(*targets, k, wp + "target: ") : nullptr;
+        for (const char* attr : {"POSITION", "NORMAL"}) {
+          std::vector<float> v(size_t(vertices) * 3, 0.0f);
+          if (target && target->contains(attr)) {
+            const std::string wt = wp + "target " + std::to_string(k) + " " + attr;
+            if (!floats((*target)[attr], 3, v, wt)) {
+              warn(path_ + ": " + wt + ": offsets that are not 32-bit floats in a buffer view are not read "
+                                       "(the mesh is not morphed)");
+              return cached.second = nullptr;
+            }
+            if (v.size() != vertices * 3)
+              fail(wt + ": " + std::to_string(v.size() / 3) + " offsets for " + std::to_string(vertices) + " vertices");
+            any_normals |= attr == std::string_view("NORMAL");
+          }
+          std::vector<Vec3>& to = attr == std::string_view("POSITION") ? out->positions[k] : out->normals[k];
+          for (size_t i = 0; i + 2 < v.size(); i += 3) to.push_back({v[i], v[i + 1], v[i + 2]});
+        }
+      }
+    }
+    if (!any_normals) out->normals.clear();
+    // The rest weights: the node's, else the mesh's, else zeros.
+    const std::vector<float> zeros(count, 0.0f);
+    out->rest_weights = numbers(mesh, "weights", zeros, -1e30f, 1e30f, w);
+    out->rest_weights = numbers(node, "weights", out->rest_weights, -1e30f, 1e30f, where);
+    return cached.second = out;
+  }
+
+ public:
+  // The file's skins, one per node with a "skin" and a "mesh": the joints and inverse
+  // bind matrices, and each vertex's JOINTS_0 and WEIGHTS_0, its primitives' one after
+  // another (a primitive without them: weights zero, its vertices stay put). Skins whose
+  // accessors are sparse are left out with a warning.
+  std::vector<Skin> skins() {
+    std::vector<Skin> out;
+    const json& nodes = list("nodes");
+    const json& skins = list("skins");
+    const json& accessors = list("accessors");
+    for (size_t n = 0; n < nodes.size(); ++n) {
+      const std::string where = "node " + std::to_string(n) + ": ";
+      const json& node = at(nodes, n, where);
+      if (!node.contains("skin") || !node.contains("mesh")) continue;
+      const size_t si = index(node["skin"], skins.size(), where + "skin");
+      const std::string w = "skin " + std::to_string(si) + ": ";
+      const json& def = at(skins, si, w);
+      const json* joints = member(def, "joints", json::value_t::array, w);
+      if (!joints || joints->empty()) fail(w + "expected \"joints\", a list of nodes");
+      Skin skin;
+      skin.node = n;
+      for (const json& j : *joints) skin.joints.push_back(index(j, nodes.size(), w + "joint"));
+      skin.inverse_bind.assign(joints->size(), Mat4::identity());
+      if (def.contains("inverseBindMatrices")) {
+        std::vector<float> m;
+        if (!elements(def["inverseBindMatrices"], "MAT4", 16, m, w + "inverseBindMatrices")) {
+          warn(path_ + ": " + w + "inverse bind matrices that are not 32-bit floats are not read (not skinned)");
+          continue;
+        }
+        if (m.size() != joints->size() * 16)
+          fail(w + std::to_string(m.size() / 16) + " inverse bind matrices for " + std::to_string(joints->size()) +
+               " joints");
+        for (size_t j = 0; j < joints->size(); ++j)
+          for (int k = 0; k < 16; ++k) skin.inverse_bind[j].m[k % 4][k / 4] = m[j * 16 + size_t(k)];  // column-major
+      }
+      const size_t mi = index(node["mesh"], list("meshes").size(), where + "mesh");
+      const json* prims = member(at(list("meshes"), mi, where + "mesh: "), "primitives", json::value_t::array, where);
+      bool read = true;
+      for (size_t p = 0; prims && p < prims->size() && read; ++p) {
+        const std::string wp = where + "mesh " + std::to_string(mi) + ": primitive " + std::to_string(p) + ": ";
+        const json* attrs = member(at(*prims, p, wp), "attributes", json::value_t::object, wp);
+        if (!attrs || !attrs->contains("POSITION")) fail(wp + "expected a POSITION attribute");
+        const uint64_t vertices =
+            whole(at(accessors, index((*attrs)["POSITION"], accessors.size(), wp + "POSITION"), wp), "count", 0, wp);
+        // (Each skinned node holds its own copy: within the memory limit.)
+        constexpr size_t kBytesPerVertex = 2 * 4 * sizeof(float) + sizeof(std::array<uint16_t, 4>) + sizeof(std::array<float, 4>);
+        if (vertices > budget_ / kBytesPerVertex)
+          fail(wp + "skinning " + std::to_string(vertices) + " vertices needs more than the memory limit");
+        budget_ -= size_t(vertices) * kBytesPerVertex;
+        std::vector<float> j(size_t(vertices) * 4, 0.0f), wt(size_t(vertices) * 4, 0.0f);
+        if (attrs->contains("JOINTS_0") && attrs->contains("WEIGHTS_0")) {
+          read = elements((*attrs)["JOINTS_0"], "VEC4", 4, j, wp + "JOINTS_0") &&
+                 elements((*attrs)["WEIGHTS_0"], "VEC4", 4, wt, wp + "WEIGHTS_0");
+          if (!read) {
+            warn(path_ + ": " + wp + "sparse joints or weights are not read (not skinned)");
+            break;
+          }
+          if (j.size() != vertices * 4 || wt.size() != vertices * 4)
+            fail(wp + "JOINTS_0 and WEIGHTS_0 need one element per vertex (" + std::to_string(vertices) + ")");
+        }
+        for (size_t v = 0; v < vertices; ++v) {
+          std::array<uint16_t, 4> js{};
+          std::array<float, 4> ws{};
+          for (size_t k = 0; k < 4; ++k) {
+            const float index_value = j[v * 4 + k];
+            if (wt[v * 4 + k] != 0 && !(index_value >= 0 && index_value < float(joints->size())))
+              fail(wp + "JOINTS_0 of vertex " + std::to_string(v) + " is " + std::to_string(index_value) +
+                   ", expected a joint below " + std::to_string(joints->size()));
+            js[k] = uint16_t(index_value >= 0 && index_value < float(joints->size()) ? index_value : 0);
+            ws[k] = wt[v * 4 + k];
+          }
+          skin.vertex_joints.push_back(js);
+          skin.vertex_weights.push_back(ws);
+        }
+      }
+      if (read) out.push_back(std::move(skin));
+    }
+    return out;
+  }
+
+ private:
   // An animated node's rest translation, rotation and scale (an animated node has no
   // "matrix", says the spec; one that has is decomposed no further: identity rest).
   void rest_pose(const json& node, NodeAnimation& out, const std::string& where) const {
@@ -512,6 +714,7 @@ class Reader {
   const std::string& path_;
   const LoadOptions& options_;
   size_t budget_;
+  std::map<size_t, std::pair<bool, std::shared_ptr<MorphTargets>>> morphs_;  // by mesh: read yet, the targets
   std::map<size_t, std::shared_ptr<const Texture>> images_;
   std::map<size_t, std::string> buffers_;
 };
@@ -578,6 +781,7 @@ GltfAppearance read_gltf_appearance(std::string_view bytes, const std::string& p
   out.materials.push_back(Reader::default_material());
   out.lights = reader.lights();
   out.animations = reader.animations();
+  out.skins = reader.skins();
   return out;
 }
 

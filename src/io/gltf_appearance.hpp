@@ -29,6 +29,8 @@ struct GltfAppearance {
   // Node animations; NodeAnimation::node is the glTF node's index (the adapter finds
   // the Model node through kNodeTag).
   std::vector<Animation> animations;
+  // Skins; Skin::node and joints are glTF node indices, `base` is left to the adapter.
+  std::vector<Skin> skins;
 };
 
 // Reads `bytes` (a .gltf or .glb file that prepare_gltf accepted) from `path`. Every

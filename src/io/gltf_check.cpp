@@ -407,7 +407,8 @@ void check_primitives(const json& root, const std::vector<uint64_t>& accessor_co
   }
 }
 
-// Velocity neither skins nor animates: those parts go (see gltf_check.hpp). Nor does it
+// Assimp gets no skins, animations or morph targets: those parts go (see gltf_check.hpp;
+// Velocity reads animations and morph targets from the JSON itself). Nor does it
 // draw lines from model files, and Assimp 5.2.5 crashes (a null pointer) on a LINE_LOOP
 // primitive (mode 2) whose first index is out of range, while it drops such indices in
 // a LINE_STRIP (mode 3): line loops are given to it as line strips.
@@ -420,25 +421,37 @@ void remove_what_velocity_does_not_draw(json& root) {
   if (root.contains("materials") && root["materials"].is_array())
     for (size_t i = 0; i < root["materials"].size(); ++i)
       if (root["materials"][i].is_object()) root["materials"][i]["name"] = kMaterialTag + std::to_string(i);
-  root.erase("skins");
-  // Animations are read by Velocity (io/gltf_appearance.hpp); the nodes they move are
-  // tagged with their index (kNodeTag) for the adapter.
-  if (root.contains("animations") && root["animations"].is_array() && root.contains("nodes") &&
-      root["nodes"].is_array())
+  // Animations and skins are read by Velocity (io/gltf_appearance.hpp); the nodes they
+  // move, the skins' joints and the skinned nodes are tagged with their index (kNodeTag)
+  // for the adapter.
+  const bool has_nodes = root.contains("nodes") && root["nodes"].is_array();
+  auto tag = [&](const json* node) {
+    if (!has_nodes || !node || !node->is_number_unsigned() || node->get<uint64_t>() >= root["nodes"].size()) return;
+    json& n = root["nodes"][node->get<size_t>()];
+    if (!n.is_object()) return;
+    const std::string name = n.contains("name") && n["name"].is_string() ? n["name"].get<std::string>() : "";
+    if (name.rfind(kNodeTag, 0) != 0) n["name"] = kNodeTag + std::to_string(node->get<size_t>()) + ":" + name;
+  };
+  if (root.contains("animations") && root["animations"].is_array())
     for (const json& anim : root["animations"]) {
       if (!anim.is_object() || !anim.contains("channels") || !anim["channels"].is_array()) continue;
-      for (const json& channel : anim["channels"]) {
-        const json* node = channel.is_object() && channel.contains("target") && channel["target"].is_object() &&
-                                   channel["target"].contains("node")
-                               ? &channel["target"]["node"]
-                               : nullptr;
-        if (!node || !node->is_number_unsigned() || node->get<uint64_t>() >= root["nodes"].size()) continue;
-        json& n = root["nodes"][node->get<size_t>()];
-        if (!n.is_object()) continue;
-        const std::string name = n.contains("name") && n["name"].is_string() ? n["name"].get<std::string>() : "";
-        if (name.rfind(kNodeTag, 0) != 0) n["name"] = kNodeTag + std::to_string(node->get<size_t>()) + ":" + name;
-      }
+      for (const json& channel : anim["channels"])
+        tag(channel.is_object() && channel.contains("target") && channel["target"].is_object() &&
+                    channel["target"].contains("node")
+                ? &channel["target"]["node"]
+                : nullptr);
     }
+  if (root.contains("skins") && root["skins"].is_array())
+    for (const json& skin : root["skins"])
+      if (skin.is_object() && skin.contains("joints") && skin["joints"].is_array())
+        for (const json& joint : skin["joints"]) tag(&joint);
+  if (has_nodes)
+    for (size_t i = 0; i < root["nodes"].size(); ++i)
+      if (const json& n = root["nodes"][i]; n.is_object() && n.contains("skin")) {
+        const json index = i;
+        tag(&index);
+      }
+  root.erase("skins");
   root.erase("animations");
   if (json* nodes = root.contains("nodes") ? &root["nodes"] : nullptr)
     for (json& node : *nodes) node.erase("skin"), node.erase("weights");

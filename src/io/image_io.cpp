@@ -1,6 +1,5 @@
-// Image files: PNG through stb_image_write, PPM by hand, reading through stb_image.
+// Image files: PNG through libpng (io/png_write.cpp), PPM by hand, reading through stb_image.
 #include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -12,6 +11,7 @@
 #include "io/read_file.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
+#include "velocity/png.hpp"
 
 namespace velocity {
 
@@ -107,8 +107,12 @@ bool pnm_is_16_bit(const uint8_t* d, size_t n) {
 
 void write_png(const std::string& path, const Image& image) {
   check_image(path, image);
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4))
-    throw Error(path + ": cannot write PNG (" + std::strerror(errno) + ")");
+  PngImage png;
+  png.pixels = image.pixels.data();
+  png.width = image.width, png.height = image.height;
+  png.channels = 4;
+  png.stride = ptrdiff_t(image.width) * 4;
+  write_png(path, png);
 }
 
 void write_ppm(const std::string& path, const Image& image) {

@@ -9,6 +9,11 @@ namespace {
 
 Vec3 lerp(Vec3 a, Vec3 b, float u) { return a + (b - a) * u; }
 Quat lerp(Quat a, Quat b, float u) { return slerp(a, b, u); }
+std::vector<float> lerp(const std::vector<float>& a, const std::vector<float>& b, float u) {
+  std::vector<float> out(std::min(a.size(), b.size()));
+  for (size_t i = 0; i < out.size(); ++i) out[i] = a[i] + (b[i] - a[i]) * u;
+  return out;
+}
 
 // The key interval holding `t`, and how far into it; shared by both value types.
 template <typename T>
@@ -53,6 +58,63 @@ Mat4 rotation_matrix(Quat q) {
 Vec3 sample(const Keys<Vec3>& keys, float t, Vec3 rest) { return sample_keys(keys, t, rest); }
 Quat sample(const Keys<Quat>& keys, float t, Quat rest) { return sample_keys(keys, t, rest); }
 
+std::vector<float> sample(const Keys<std::vector<float>>& keys, float t, const std::vector<float>& rest) {
+  return sample_keys(keys, t, rest);
+}
+
+Mesh morph(const MorphTargets& targets, const std::vector<float>& weights) {
+  Mesh out = *targets.base;
+  const size_t n = out.positions.size();
+  bool normals = false;
+  for (size_t k = 0; k < weights.size(); ++k) {
+    const float w = weights[k];
+    if (w == 0 || !std::isfinite(w)) continue;
+    if (k < targets.positions.size() && targets.positions[k].size() == n)
+      for (size_t v = 0; v < n; ++v) out.positions[v] += targets.positions[k][v] * w;
+    if (k < targets.normals.size() && targets.normals[k].size() == n && out.normals.size() == n) {
+      for (size_t v = 0; v < n; ++v) out.normals[v] += targets.normals[k][v] * w;
+      normals = true;
+    }
+  }
+  if (normals)
+    for (Vec3& v : out.normals)
+      if (const float len = length(v); len > 1e-12f && std::isfinite(len)) v = v * (1 / len);
+  return out;
+}
+
+void skin(const std::vector<Skin>& skins, Scene& scene) {
+  if (skins.empty()) return;
+  const std::vector<Mat4> world = scene.world_matrices();
+  for (const Skin& s : skins) {
+    const size_t n = s.base ? s.base->positions.size() : 0;
+    bool fits = s.base && s.node < world.size() && s.inverse_bind.size() == s.joints.size() &&
+                s.vertex_joints.size() == n && s.vertex_weights.size() == n;
+    for (size_t j : s.joints) fits &= j < world.size();
+    Mat4 to_mesh;
+    if (!fits || !invert(world[s.node], to_mesh)) continue;
+    std::vector<Mat4> joint(s.joints.size());
+    for (size_t j = 0; j < joint.size(); ++j) joint[j] = to_mesh * world[s.joints[j]] * s.inverse_bind[j];
+    Mesh out = *s.base;
+    const bool normals = out.normals.size() == n;
+    for (size_t v = 0; v < n; ++v) {
+      Vec3 p, nn;
+      float total = 0;
+      for (int k = 0; k < 4; ++k) {
+        const float w = s.vertex_weights[v][k];
+        if (!(w > 0) || s.vertex_joints[v][k] >= joint.size()) continue;  // NaN too
+        const Mat4& m = joint[s.vertex_joints[v][k]];
+        p += m.transform_point(s.base->positions[v]) * w;
+        if (normals) nn += m.transform_vector(s.base->normals[v]) * w;
+        total += w;
+      }
+      if (!(total > 0) || !std::isfinite(total)) continue;
+      out.positions[v] = p * (1 / total);
+      if (const float len = length(nn); normals && len > 1e-12f && std::isfinite(len)) out.normals[v] = nn * (1 / len);
+    }
+    scene.object(ObjectId(s.node)).mesh = std::make_shared<const Mesh>(std::move(out));
+  }
+}
+
 Mat4 pose(const NodeAnimation& node, float t) {
   return translate(sample(node.translation, t, node.rest_translation)) *
          rotation_matrix(sample(node.rotation, t, node.rest_rotation)) * scale(sample(node.scale, t, node.rest_scale));
@@ -61,6 +123,20 @@ Mat4 pose(const NodeAnimation& node, float t) {
 void apply(const Animation& animation, float t, Scene& scene) {
   for (const NodeAnimation& n : animation.nodes)
     if (n.node < scene.objects().size()) scene.object(ObjectId(n.node)).base = pose(n, t);
+  for (const MorphAnimation& m : animation.morphs)
+    if (m.node < scene.objects().size() && m.targets && m.targets->base)
+      scene.object(ObjectId(m.node)).mesh =
+          std::make_shared<const Mesh>(morph(*m.targets, sample(m.weights, t, m.targets->rest_weights)));
+}
+
+void rest(const Animation& animation, Scene& scene) {
+  for (const NodeAnimation& n : animation.nodes)
+    if (n.node < scene.objects().size())
+      scene.object(ObjectId(n.node)).base =
+          translate(n.rest_translation) * rotation_matrix(n.rest_rotation) * scale(n.rest_scale);
+  for (const MorphAnimation& m : animation.morphs)
+    if (m.node < scene.objects().size() && m.targets && m.targets->base)
+      scene.object(ObjectId(m.node)).mesh = std::make_shared<const Mesh>(morph(*m.targets, m.targets->rest_weights));
 }
 
 }  // namespace velocity

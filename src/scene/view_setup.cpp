@@ -23,12 +23,16 @@ void add_default_lights(Scene& scene) {
 }
 
 Scene scene_from_model(const std::string& path, const LoadOptions& options, bool cull_back_faces, float aspect,
-                       std::vector<Animation>* animations) {
+                       std::vector<Animation>* animations, std::vector<Skin>* skins) {
   Model model = load_model(path, options);
   if (!cull_back_faces) make_two_sided(model);
   Scene scene;
   add_to_scene(scene, model);  // node i is object i: the scene was empty
   if (animations) *animations = std::move(model.animations);
+  if (skins) {
+    skin(model.skins, scene);
+    *skins = std::move(model.skins);
+  }
   add_default_lights(scene);
   scene.frame_camera(aspect, Vec3{0.6f, 0.45f, 1.0f});
   return scene;

@@ -193,7 +193,8 @@ class MeshTriangles {
       at += 4;
     }
     if (s.pbr_colors) {
-      const Vec3 c = geometry::pipeline_color(mesh_.colors[v], s.material->color_space, plan_.linear);
+      const Vec3 c = mesh_.colors.empty() ? Vec3{1, 1, 1}
+                                          : geometry::pipeline_color(mesh_.colors[v], s.material->color_space, plan_.linear);
       out[at] = c.x, out[at + 1] = c.y, out[at + 2] = c.z;
       out[at + 3] = mesh_.alphas.empty() ? 1.0f : mesh_.alphas[v];
     }

@@ -321,7 +321,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 66:
         // Selection: the buffer is `out`'s memory; names and modes from the input.
         if (in.u8() & 1) glSelectBuffer(in.below(64) - 1, reinterpret_cast<GLuint*>(out.data()));
-        glRenderMode(in.u8() & 1 ? GL_SELECT : e1);
+        // Feedback: into `out` too, any size and type; the tokens while drawing.
+        if (in.u8() & 1) glFeedbackBuffer(in.below(64) - 1, in.u8() & 1 ? GL_2D + GLenum(in.below(6)) : e1, out.data());
+        if (in.u8() & 1) glPassThrough(a);
+        glRenderMode(in.u8() & 1 ? (in.u8() & 1 ? GL_SELECT : GL_FEEDBACK) : e1);
         (in.u8() & 1 ? glPushName(GLuint(iv4[0])) : in.u8() & 1 ? glPopName() : glLoadName(GLuint(iv4[1])));
         if (in.u8() & 1) glInitNames();
         break;
@@ -418,6 +421,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         glColorPointer(3 + in.below(2), in.u8() & 1 ? GL_FLOAT : GL_UNSIGNED_BYTE, 0, attrib.data() + 4);
         glNormalPointer(GL_FLOAT, 0, attrib.data() + 8);
         glTexCoordPointer(1 + in.below(4), GL_FLOAT, 0, attrib.data() + 12);
+        // Or the interleaved formats (one past the last too) over `out`, packed or not.
+        if (in.u8() & 1) glInterleavedArrays(GL_V2F + GLenum(in.below(15)), GLsizei(in.below(18) * 4) - 4, out.data());
         break;
       }
       case 49: (in.u8() & 1 ? glEnableClientState : glDisableClientState)(e1); break;

@@ -1,4 +1,5 @@
-// Fuzz target: the Python module's PNG encoder (python/src/png_encode.cpp, libpng).
+// Fuzz target: the engine's PNG encoder (src/io/png_write.cpp, libpng), which write_png
+// and the Python module's encode_png use.
 // The input: 8 header bytes (width, height, channels, bits, stride padding, level,
 // filter), then the pixels, as many rows as the bytes hold.
 // Property: encode_png returns a PNG or throws velocity::Error; a PNG decodes (through
@@ -6,13 +7,12 @@
 #include <algorithm>
 #include <cstring>
 
-#include "png_encode.hpp"
 #include "velocity/error.hpp"
 #include "velocity/image.hpp"
+#include "velocity/png.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace velocity;
-  using namespace velocity::python;
   if (size < 8) return 0;
   static const int kChannels[] = {1, 3, 4, 2, 0};
   PngImage im;

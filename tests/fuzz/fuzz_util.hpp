@@ -81,6 +81,17 @@ inline void check_model(const Model& model) {
   for (const Object& o : scene.objects())
     if (o.mesh) vertices += o.mesh->vertex_count(), triangles += o.mesh->triangle_count();
   fuzz_check(vertices == model.vertex_count() && triangles == model.triangle_count());
+  // Its animations play (poses, morphs and skins) at the start, middle and end, and rest
+  // again: the morphed and skinned meshes keep their vertex counts.
+  skin(model.skins, scene);
+  for (const Animation& a : model.animations) {
+    for (float t : {0.0f, a.duration / 2, a.duration}) apply(a, t, scene), skin(model.skins, scene);
+    rest(a, scene);
+  }
+  size_t after = 0;
+  for (const Object& o : scene.objects())
+    if (o.mesh) after += o.mesh->vertex_count();
+  fuzz_check(after == vertices);
 }
 
 // What every decoded image must satisfy.

@@ -260,6 +260,30 @@ TEST(GpuScenes, Points) {
   const double psnr = scene_psnr(mixed_scene(), o);
   std::printf("[gpu-parity] points psnr=%.2f\n", psnr);
   EXPECT_GE(psnr, 35.0);
+  // A point cloud (triangles with one corner three times: never culled) at
+  // RenderOptions::point_size, super-sampled too (the size is in output pixels). One
+  // colour: where the mixed scene's points of different materials overlap, the GPU's
+  // order (by material slot) decides which shows.
+  Mesh cloud;
+  cloud.positions = make_sphere(24).positions;
+  for (uint32_t i = 0; i < cloud.positions.size(); ++i) cloud.triangles.push_back({i, i, i});
+  Scene scene;
+  scene.camera.position = {0.2f, 0.3f, 3.0f};
+  scene.add_object("cloud", std::make_shared<const Mesh>(std::move(cloud)));
+  o.point_size = 3.4f;  // (rounded to 3, as the CPU's)
+  const double wide = scene_psnr(scene, o);
+  o.ssaa = 2;
+  const double wide_ssaa = scene_psnr(scene, o);
+  o.ssaa = 1, o.point_size = 1;
+  Renderer one(320, 240, BackendChoice::Cpu), three(320, 240, BackendChoice::Cpu);
+  one.options = o, one.render(scene);
+  three.options = o, three.options.point_size = 3, three.render(scene);
+  const double sizes = vref::compare(to_vref(one.color_image()), to_vref(three.color_image())).psnr;
+  std::printf("[gpu-parity] 3-pixel point cloud psnr=%.2f, at 2x2 super-sampling %.2f (1 against 3 pixels: %.2f)\n",
+              wide, wide_ssaa, sizes);
+  EXPECT_LT(sizes, 30.0) << "the size must matter";
+  EXPECT_GE(wide, 40.0);
+  EXPECT_GE(wide_ssaa, 40.0);
 }
 
 // The caches: a mesh and its texture are uploaded once, however many frames draw them;
@@ -281,6 +305,85 @@ TEST(GpuCache, UploadsOnceAndAgainOnChange) {
   b.draw(mesh, Mat4::identity(), &m, 1);
   b.end_frame();
   EXPECT_EQ(b.uploads(), 3u);  // the mesh again, not the texture
+}
+
+// An in-place edit of a cached mesh (its positions, then its uvs) and of a cached
+// texture (a new image at the same address) shows in the next frame: each edited frame
+// is the frame a fresh backend, with nothing cached, draws of the edited scene, and
+// differs from the frame before it. The fingerprints are taken on 3 threads, the
+// arrays being over one chunk (1 MiB), so the chunked hash is the one checked.
+TEST(GpuCache, InPlaceEditsShowInTheNextFrame) {
+  Mesh mesh = make_sphere(512);  // positions over 1 MiB: more than one chunk
+  ASSERT_GT(mesh.positions.size() * sizeof(Vec3), size_t(1) << 20);
+  auto texture = std::make_shared<Texture>(make_checkerboard(64, 8));
+  Material m;
+  m.texture = texture;
+  RenderOptions o;
+  o.threads = 3;
+  Camera camera;
+  auto frame = [&](gpu::GpuBackend& b) {
+    b.begin_frame(camera, {}, FrameStart{}, o);
+    b.draw(mesh, rotate_y(0.4f), &m, 1);
+    b.end_frame();
+    return b.color_image().pixels;
+  };
+  gpu::GpuBackend cached(96, 80, false);
+  std::vector<uint8_t> last = frame(cached);
+  EXPECT_EQ(frame(cached), last);
+  EXPECT_EQ(cached.uploads(), 2u);
+  auto expect_edit_shows = [&](const char* what, size_t uploads) {
+    SCOPED_TRACE(what);
+    const std::vector<uint8_t> now = frame(cached);
+    EXPECT_EQ(cached.uploads(), uploads);
+    EXPECT_NE(now, last);  // the edit is visible
+    gpu::GpuBackend fresh(96, 80, false);
+    EXPECT_EQ(now, frame(fresh));  // and drawn as a new mesh and texture are
+    last = now;
+  };
+  // A band of vertices past the positions' first chunk pushed out.
+  const size_t first = (size_t(1) << 20) / sizeof(Vec3) + 100;
+  ASSERT_LT(first + 2000, mesh.positions.size());
+  for (size_t v = first; v < first + 2000; ++v) mesh.positions[v] = mesh.positions[v] * 1.3f;
+  expect_edit_shows("positions", 3);
+  for (Vec2& uv : mesh.uvs) uv.x = 1.0f - uv.x;  // mirrored in u
+  expect_edit_shows("uvs", 4);
+  *texture = Texture(make_checkerboard(64, 16));  // the same Texture object, new texels
+  expect_edit_shows("texture", 5);
+}
+
+// RGBA rows are read straight from the GPU into the caller's rows, resolved on the GPU
+// with super-sampling; RGB rows go through the samples and the CPU. Either way they are
+// the CPU pipeline's read of the same frame (color_image), byte for byte, at a row pitch
+// wider than the image.
+TEST(GpuReadBack, DirectAndResolvedReadsAgree) {
+  Mesh mesh = make_sphere(24);
+  Material m;
+  m.texture = std::make_shared<const Texture>(make_checkerboard(32, 4));
+  Camera camera;
+  for (int ssaa : {1, 2, 3}) {
+    SCOPED_TRACE(ssaa);
+    gpu::GpuBackend b(53, 37, false);
+    RenderOptions o;
+    o.ssaa = ssaa;
+    o.threads = 2;
+    for (int channels : {4, 3}) {
+      b.begin_frame(camera, {}, FrameStart{}, o);
+      b.draw(mesh, rotate_y(0.3f), &m, 1);
+      b.end_frame();
+      const size_t pitch = 53 * 4 + 12;
+      std::vector<uint8_t> rows(pitch * 37, 0xAB);
+      b.read_color(rows.data(), pitch, channels);  // first read of the frame
+      const Image image = b.color_image();
+      for (int y = 0; y < 37; ++y)
+        for (int x = 0; x < 53; ++x)
+          for (int c = 0; c < channels; ++c)
+            ASSERT_EQ(rows[size_t(y) * pitch + size_t(x * channels + c)], image.pixels[size_t(y * 53 + x) * 4 + size_t(c)])
+                << "at " << x << "," << y;
+      EXPECT_EQ(rows[53 * 4 + 11], 0xAB);  // the pitch's padding untouched
+    }
+    b.begin_frame(camera, {}, FrameStart{}, o);
+    EXPECT_GT(b.end_frame().readback_ms, 0.0);  // the reads of the frame before
+  }
 }
 
 // The GLSL lighting (gpu/shaders.cpp) is the scalar model (shading/lighting.hpp): the
@@ -537,6 +640,97 @@ std::pair<double, double> scene_parity(const Scene& scene, const RenderOptions& 
     vref::write_png(base + "_cpu.png", a), vref::write_png(base + "_gpu.png", b);
   }
   return {psnr, agree};
+}
+
+// Shadows (RenderOptions::shadows): a box and a torus on a plane, seen in perspective
+// from an oblique camera, under one light of each kind, drawn by both backends in each
+// shading that lights per pixel, per vertex or per face. The CPU's shadows are held to
+// the scene's geometry by tests/unit/test_shadows.cpp; here the GPU's maps (its own
+// depth passes) and lookup (kLightingGlsl's visibility) are held to the CPU's.
+struct ShadowFrames {
+  vref::Image cpu, gpu, cpu_off;
+};
+
+ShadowFrames shadow_frames(const Light& light, Shading shading, int map_size) {
+  const Mesh plane = make_plane_grid(12.0f, 4), box = make_cube(2.0f), torus = make_torus(1.0f, 0.35f, 48, 24);
+  Material m;
+  m.color = {0.85f, 0.75f, 0.6f};
+  m.shading = shading;
+  m.specular = 0.3f;
+  if (shading == Shading::Pbr) m.pbr.metallic = 0, m.pbr.roughness = 0.6f;
+  Camera camera;
+  camera.position = {4.0f, 7.5f, 9.0f};
+  camera.look_at({0.5f, 0.0f, 0.0f});
+  const std::vector<Light> lights = {Light::ambient({0.15f, 0.15f, 0.15f}), light};
+  auto draw = [&](BackendChoice backend, bool shadows) {
+    Renderer r(256, 192, backend);
+    r.options.color = ColorPipeline::Display;
+    r.options.shadows = shadows;
+    r.options.shadow_map_size = map_size;
+    r.begin_frame(camera, lights, {0, 0, 0});
+    r.draw(plane, Mat4::identity(), &m);
+    r.draw(box, translate({-1.0f, 1.0f, -0.5f}), &m);
+    r.draw(torus, translate({2.0f, 0.6f, 1.5f}) * rotate_x(radians(60.0f)), &m);
+    r.end_frame();
+    return to_vref(r.color_image());
+  };
+  return {draw(BackendChoice::Cpu, true), draw(BackendChoice::Gpu, true), draw(BackendChoice::Cpu, false)};
+}
+
+// The two images agree to 40 dB (the floor for untextured shading; measured on
+// llvmpipe: 55-86 dB): the lookup is the same arithmetic on the same kind of map, but
+// each map is rasterized by its own backend, so a caster's silhouette texel may fall
+// either side (the CPU's 24.8 snapping and top-left rule; the driver's subpixel grid),
+// which moves a shadow's one-texel PCF ramp by up to a texel along its edges (and, in
+// flat shading, may turn a whole face lit at its centroid). That the shadow is there
+// is checked too: the CPU's image with shadows differs from the one without on many
+// pixels, and the GPU's is below 37 dB against the one without, so the 40 dB could not
+// be met without drawing the shadows.
+TEST(GpuShadows, EveryLightKindMatchesTheCpu) {
+  const Vec3 at{3.5f, 5.0f, 2.0f};
+  Light spot = Light::spot(at, at, {40, 40, 40}, 0.7f, 0.95f);  // pointing at the origin
+  spot.falloff = Falloff::InverseSquare;
+  Light point = Light::point({1.0f, 4.0f, -2.5f}, {30, 30, 30});
+  point.falloff = Falloff::InverseSquare;
+  const Light sun = Light::directional(normalize({1.0f, 0.9f, 0.45f}), {0.8f, 0.8f, 0.8f});
+  const struct {
+    const char* name;
+    Light light;
+  } kinds[] = {{"directional", sun}, {"spot", spot}, {"point", point}};
+  for (const auto& k : kinds)
+    for (Shading s : {Shading::Phong, Shading::Pbr, Shading::Gouraud, Shading::Flat}) {
+      const ShadowFrames f = shadow_frames(k.light, s, 1024);
+      const std::string name = std::string("shadows_") + k.name + "_" + std::string(to_string(s));
+      size_t shadowed = 0;
+      for (size_t i = 0; i < f.cpu.rgba.size(); i += 4)
+        shadowed += std::abs(int(f.cpu.rgba[i + 1]) - int(f.cpu_off.rgba[i + 1])) > 24;
+      const vref::Diff d = vref::compare(f.cpu, f.gpu);
+      const double without = vref::compare(f.cpu_off, f.gpu).psnr;
+      std::printf("[gpu-parity] %-34s psnr=%.2f max_abs=%d (gpu against the cpu without shadows: %.2f) shadowed=%zu\n",
+                  name.c_str(), d.psnr, d.max_abs, without, shadowed);
+      EXPECT_GT(shadowed, size_t(500)) << name << ": the scene must have shadows";
+      EXPECT_LT(without, 37.0) << name << ": the shadows must matter";
+      EXPECT_GE(d.psnr, 40.0) << name;
+      if (d.psnr < 40.0) {
+        std::filesystem::create_directories(VELOCITY_GPU_OUT);
+        const std::string base = std::string(VELOCITY_GPU_OUT) + "/" + name;
+        vref::write_png(base + "_cpu.png", f.cpu), vref::write_png(base + "_gpu.png", f.gpu);
+        vref::write_png(base + "_diff.png", vref::diff_image(f.cpu, f.gpu));
+      }
+    }
+}
+
+// The map size is checked as on the CPU.
+TEST(GpuShadows, MapSizeIsChecked) {
+  Renderer r(64, 48, BackendChoice::Gpu);
+  r.options.shadows = true;
+  r.options.shadow_map_size = 8;
+  try {
+    r.begin_frame(Camera{}, {}, {0, 0, 0});
+    ADD_FAILURE() << "a map of 8 texels was taken";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "shadow map size 8 is out of range (16..8192)");
+  }
 }
 
 // An asymmetric texture: four quadrants of different colours, a gradient in alpha
@@ -864,6 +1058,69 @@ struct BatchScene {
     r.end_frame();
   }
 };
+
+// pGL's stencil buffer and user clip planes on both backends, super-sampled (the read
+// functions resolve the samples): a clear to 3 under a mask, a scissored clear, quads
+// that replace, increment and invert it where the stencil test passes (one failing
+// its depth test), one drawn only where the stencil is 3, and a quad and a point set
+// clipped by two planes. The stencil values agree exactly; the images to 40 dB (edges).
+TEST(GpuBatches, StencilAndClipPlanesMatchTheCpu) {
+  BatchScene scene;
+  std::vector<float> clip;  // per vertex: x + 0.3 >= 0 and 0.7 - y - 0.5 x >= 0
+  for (const Vec4& p : scene.position) clip.push_back(p.x + 0.3f), clip.push_back(0.7f - p.y - 0.5f * p.x);
+  auto draw = [&](Renderer& r) {
+    r.options.ssaa = 2;
+    FrameStart start;
+    start.color = {0.1f, 0.2f, 0.3f, 1}, start.stencil = 3;
+    r.begin_frame(Camera{}, {}, start);
+    ClearRequest c;
+    c.color = c.depth = false, c.stencil = true, c.stencil_value = 0x41, c.stencil_mask = 0x0f;
+    c.scissor = true, c.x0 = 10, c.y0 = 20, c.x1 = 90, c.y1 = 70;
+    r.clear(c);
+    PrimitiveBatch b;
+    auto submit = [&](size_t first, size_t count, const PixelState& st, bool clipped = false,
+                      PrimitiveKind kind = PrimitiveKind::Triangles) {
+      b.kind = kind, b.position = &scene.position[first], b.color = &scene.color[first];
+      b.vertex_count = uint32_t(count);
+      b.clip_planes = clipped ? 2 : 0, b.clip_distance = clipped ? &clip[first * 2] : nullptr;
+      r.draw(b, st);
+    };
+    PixelState replace;
+    replace.stencil_test = true, replace.stencil_func = CompareFunc::Always, replace.stencil_ref = 7;
+    replace.stencil_pass = StencilOp::Replace;
+    submit(0, 6, replace);
+    PixelState incr = replace;
+    incr.stencil_func = CompareFunc::Equal, incr.stencil_ref = 3, incr.stencil_value_mask = 0x0f;
+    incr.stencil_fail = StencilOp::IncrementWrap, incr.stencil_pass = StencilOp::Increment;
+    incr.stencil_depth_fail = StencilOp::Invert, incr.stencil_write_mask = 0x3f;
+    submit(6, 6, incr);  // behind quad 0 where they overlap: its depth fails there
+    PixelState only = incr;
+    only.stencil_func = CompareFunc::Equal, only.stencil_ref = 4, only.stencil_value_mask = 0xff;
+    only.stencil_fail = only.stencil_depth_fail = only.stencil_pass = StencilOp::Keep;
+    only.depth_test = false;
+    submit(12, 6, only);
+    PixelState plain;
+    submit(24, 6, plain, true);
+    b.point_size = 3;
+    submit(18, 6, plain, true, PrimitiveKind::Points);
+    r.end_frame();
+  };
+  Renderer cpu(160, 120, BackendChoice::Cpu), gpu(160, 120, BackendChoice::Gpu);
+  draw(cpu), draw(gpu);
+  std::vector<uint8_t> sa(160 * 120), sb(160 * 120);
+  cpu.read_stencil(sa.data()), gpu.read_stencil(sb.data());
+  size_t same = 0, values[256] = {};
+  for (size_t i = 0; i < sa.size(); ++i) same += sa[i] == sb[i], values[sa[i]]++;
+  size_t kinds = 0;
+  for (size_t v : values) kinds += v > 0;
+  const vref::Diff d = vref::compare(to_vref(cpu.color_image()), to_vref(gpu.color_image()));
+  std::printf("[gpu-parity] stencil and clip planes psnr=%.2f stencil agrees on %zu of %zu, %zu values\n", d.psnr, same,
+              sa.size(), kinds);
+  EXPECT_GE(kinds, size_t(4)) << "the scene must write several stencil values";
+  // (A sample on a quad's edge may go either way: a few pixels.)
+  EXPECT_GE(same, sa.size() - sa.size() / 200);
+  EXPECT_GE(d.psnr, 40.0);
+}
 
 TEST(GpuBatches, FixedFunctionStateMatchesTheCpu) {
   BatchScene scene;

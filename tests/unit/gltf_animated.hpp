@@ -3,7 +3,9 @@
 // animation "move" runs 2 s: translation LINEAR (0, 0, 0) at 0 s to (2, 0, 0) at 2 s,
 // rotation LINEAR from none at 0 s to a quarter turn about +Y at 2 s, scale STEP 1 at
 // 0 s and 2 at 0.8 s. With `animated` false: no animation, and "mover" stands where
-// `t`, `r`, `s` put it (the pose the tests compare with).
+// `t`, `r`, `s` put it (the pose the tests compare with). With `second`, a second
+// animation "lift" moves "base" alone: translation LINEAR (0, 1, 0) at 0 s to (0, 3, -1)
+// at 1.6 s.
 #pragma once
 
 #include <cmath>
@@ -14,7 +16,8 @@
 namespace velocity::test {
 
 inline std::string animated_box_gltf(bool animated, std::vector<float> t = {0, 0, 0},
-                                     std::vector<float> r = {0, 0, 0, 1}, std::vector<float> s = {1, 1, 1}) {
+                                     std::vector<float> r = {0, 0, 0, 1}, std::vector<float> s = {1, 1, 1},
+                                     bool second = false) {
   GltfBuilder b;
   std::vector<float> p;
   for (int i = 0; i < 8; ++i) p.insert(p.end(), {i & 1 ? 0.6f : 0.0f, i & 2 ? 0.3f : 0.0f, i & 4 ? 0.2f : 0.0f});
@@ -45,6 +48,12 @@ inline std::string animated_box_gltf(bool animated, std::vector<float> t = {0, 0
           {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}},
            {{"sampler", 1}, {"target", {{"node", 1}, {"path", "rotation"}}}},
            {{"sampler", 2}, {"target", {{"node", 1}, {"path", "scale"}}}}}}}};
+  }
+  if (animated && second) {
+    const int times = b.floats({0, 1.6f}, "SCALAR", 1), lifts = b.floats({0, 1, 0, 0, 3, -1}, "VEC3", 3);
+    b.json["animations"].push_back({{"name", "lift"},
+                                    {"samplers", {{{"input", times}, {"output", lifts}}}},
+                                    {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}});
   }
   return b.gltf();
 }

@@ -329,6 +329,124 @@ TEST(Shadows, TorusShadowsItsOwnInnerRing) {
   EXPECT_EQ(brighter, 0);
 }
 
+// A MASK quad casts its cut-out, not its square: a 4x4 texture whose alpha spells an
+// asymmetric pattern (no mirror or turn of it is the same) over a plane, the sun 27
+// degrees above the plane so that the shadow falls beside the quad. Each plane pixel is
+// classed by a ray to the sun through the quad's texel. The same with the alpha in the
+// vertices (a ramp across x: the right half passes), and a BLEND quad, which casts as
+// MASK at 0.5.
+namespace {
+
+// The quad: y = 2 over x, z in [-1.6, 1.6]; uv (0, 0) at (-1.6, -1.6) (u along x, v
+// along z).
+constexpr float kQuadY = 2.0f, kQuadHalf = 1.6f;
+constexpr bool kCut[4][4] = {{1, 1, 1, 0}, {1, 0, 0, 0}, {1, 1, 0, 1}, {1, 0, 0, 1}};  // [v][u]: opaque
+
+Mesh cut_out_quad(bool vertex_alpha) {
+  Mesh q;
+  const int n = vertex_alpha ? 8 : 1;  // a grid, so that the vertex alpha ramps across it
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float u = float(i) / n, v = float(j) / n;
+      q.positions.push_back({kQuadHalf * (2 * u - 1), kQuadY, kQuadHalf * (2 * v - 1)});
+      q.normals.push_back({0, 1, 0});
+      q.uvs.push_back({u, v});
+      if (vertex_alpha) q.alphas.push_back(u);  // alone, without Mesh::colors
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = uint32_t(j * (n + 1) + i), b = a + uint32_t(n + 1);
+      q.triangles.push_back({a, b, b + 1});  // counter-clockwise seen from above (+y)
+      q.triangles.push_back({a, b + 1, a + 1});
+    }
+  return q;
+}
+
+// Whether the ray from plane point p to the sun passes through an opaque part of the
+// quad, and whether it passes near an edge of one (within `near` world units).
+bool quad_blocks(Vec3 p, Vec3 to_sun, bool vertex_alpha, float near, bool& unsure) {
+  const Vec3 c = p + to_sun * ((kQuadY - p.y) / to_sun.y);
+  const float u = (c.x + kQuadHalf) / (2 * kQuadHalf), v = (c.z + kQuadHalf) / (2 * kQuadHalf);
+  auto opaque = [&](float uu, float vv) {
+    if (uu < 0 || uu >= 1 || vv < 0 || vv >= 1) return false;
+    return vertex_alpha ? uu >= 0.5f : kCut[int(vv * 4)][int(uu * 4)];
+  };
+  const bool o = opaque(u, v);
+  const float e = near / (2 * kQuadHalf);  // world units to uv
+  unsure = false;
+  for (float du : {-e, 0.0f, e})
+    for (float dv : {-e, 0.0f, e}) unsure = unsure || opaque(u + du, v + dv) != o;
+  return o;
+}
+
+}  // namespace
+
+TEST(Shadows, MaskMaterialsCastTheirCutOut) {
+  Image alpha(4, 4);
+  for (int v = 0; v < 4; ++v)
+    for (int u = 0; u < 4; ++u) {
+      // Opaque texels 200 or 255 alpha, cut ones 40 or 100: all on their side of 0.5.
+      const uint8_t a = kCut[v][u] ? uint8_t(200 + 55 * ((u + v) & 1)) : uint8_t(40 + 60 * ((u + v) & 1));
+      uint8_t* px = &alpha.pixels[size_t(v * 4 + u) * 4];
+      px[0] = 200, px[1] = 180, px[2] = 160, px[3] = a;
+    }
+  const auto texture = std::make_shared<Texture>(alpha);
+  const Vec3 to_sun = normalize({2.0f, 1.0f, 0.3f});
+  const Light sun = Light::directional(to_sun, {0.8f, 0.8f, 0.8f});
+  const Light ambient = Light::ambient({0.15f, 0.15f, 0.15f});
+  const Mesh plane = make_plane_grid(kView, 1);
+  Material floor;
+  floor.shading = Shading::Pbr, floor.color = {0.8f, 0.8f, 0.8f}, floor.pbr.metallic = 0, floor.pbr.roughness = 0.6f;
+  struct Case {
+    const char* what;
+    bool vertex_alpha;
+    AlphaMode mode;
+  };
+  for (const Case& k : {Case{"texture alpha, MASK", false, AlphaMode::Mask}, Case{"vertex alpha, MASK", true, AlphaMode::Mask},
+                        Case{"texture alpha, BLEND", false, AlphaMode::Blend}}) {
+    SCOPED_TRACE(k.what);
+    const Mesh quad = cut_out_quad(k.vertex_alpha);
+    Material m = floor;
+    m.alpha_mode = k.mode, m.alpha_cutoff = 0.5f, m.two_sided = true;
+    m.filter = Filter::Nearest;
+    if (!k.vertex_alpha) m.texture = texture;
+    auto draw = [&](const std::vector<Light>& lights, bool shadows) {
+      Renderer r(kSize, kSize);
+      r.options.color = ColorPipeline::Display;
+      r.options.shadows = shadows;
+      r.options.shadow_map_size = 1024;
+      r.begin_frame(above(), lights, {0, 0, 0});
+      r.draw(plane, Mat4::identity(), &floor);
+      r.draw(quad, Mat4::identity(), &m);
+      r.end_frame();
+      return r.color_image();
+    };
+    const Image on = draw({ambient, sun}, true), off = draw({ambient, sun}, false), unlit = draw({ambient}, false);
+    auto diff = [](const Image& a, const Image& b, int i, int j) {
+      int d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.pixel(i, j)[c]) - int(b.pixel(i, j)[c])));
+      return d;
+    };
+    int lit = 0, shadow = 0, acne = 0, missing = 0;
+    for (int j = 0; j < kSize; ++j)
+      for (int i = 0; i < kSize; ++i) {
+        const Vec3 p = plane_point(i, j);
+        const float h = kQuadHalf + 0.2f;
+        if (p.x > -h && p.x < h && p.z > -h && p.z < h) continue;  // under the quad in view
+        bool unsure = false;
+        // Two pixels, or 3.5 texels of the map, from an edge of the cut-out is unsure.
+        const bool blocked = quad_blocks(p, to_sun, k.vertex_alpha, std::max(2 * kView / kSize, margin(1024)), unsure);
+        if (unsure) continue;
+        if (blocked) shadow++, missing += diff(on, unlit, i, j) > 1;
+        else lit++, acne += diff(on, off, i, j) > 0;
+      }
+    EXPECT_GT(lit, 10000);
+    EXPECT_GT(shadow, k.vertex_alpha ? 400 : 250);
+    EXPECT_EQ(acne, 0) << "plane pixels darkened where the cut-out lets the light through";
+    EXPECT_EQ(missing, 0) << "plane pixels lit where the cut-out's opaque part is in the way";
+  }
+}
+
 TEST(Shadows, MapSizeOutOfRangeIsAnError) {
   Renderer r(16, 16);
   r.options.shadows = true;

@@ -9,6 +9,10 @@
     glut_test.py stops GLUT_LOOP WORKDIR       a program looping in its display callback
                                               ends after VELOCITY_GLUT_FRAMES, records at
                                               most its bound, ends on SIGTERM and SIGINT
+    glut_test.py menus GLUT_MENUS WORKDIR      a script opens the right button's menu,
+                                              drags to an entry, clicks one, reaches into a
+                                              sub-menu, lets go outside: the callbacks and
+                                              the recorded frames show each
 """
 import os
 import signal
@@ -169,6 +173,48 @@ def stops(loop, work):
     return 0
 
 
+def menus(program, work):
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    first = subprocess.run([program], env=dict(env, VELOCITY_GLUT_FRAMES="1"), capture_output=True, text=True, timeout=60)
+    print(first.stdout, first.stderr)
+    assert first.returncode == 0
+    lines = first.stdout.splitlines()
+    assert lines[0] == "items 3" and lines[1] == "items 3 current 1", "removed, changed and added entries counted"
+    root_width = int(lines[2].split()[1])
+    # The root menu opens at (20, 20): entries 18 pixels high from row 21, its sub-menu
+    # (opened from the third, "More") at x = 20 + width - 2, level with that entry.
+    sub_x, sub_y = 20 + root_width - 2, 20 + 2 * 18
+    script = os.path.join(work, "script.txt")
+    with open(script, "w") as f:
+        f.write("# drag to Green; click-open then click Red; drag into More > Blue; let go outside\n"
+                "0.2 mousedown right 20 20\n0.35 move 40 47\n0.5 mouseup right 40 47\n"
+                "0.7 click 30 30 right\n0.9 click 40 40 left\n"
+                f"1.1 mousedown right 20 20\n1.2 move 40 65\n1.3 move {sub_x + 10} {sub_y + 9}\n"
+                f"1.45 mouseup right {sub_x + 10} {sub_y + 9}\n"
+                "1.6 mousedown right 20 20\n1.7 move 5 140\n1.8 mouseup right 5 140\n"
+                "2.0 click 100 100 left\n2.3 quit\n")
+    rec = os.path.join(work, "frames")
+    out = subprocess.run([program], env=dict(env, VELOCITY_GLUT_SCRIPT=script, VELOCITY_GLUT_RECORD=rec),
+                         capture_output=True, text=True, timeout=60)
+    print(out.stdout, out.stderr)
+    assert out.returncode == 0, f"menus exited with {out.returncode}"
+    got = [l for l in out.stdout.splitlines() if l.startswith(("menu", "mouse"))]
+    assert got == ["menu 2 current root items 3", "menu 1 current root items 3", "menu 3 current more items 1",
+                   "mouse 0 0 100 100", "mouse 0 1 100 100"], f"the choices and the program's own clicks: {got}"
+    frames = sorted(os.listdir(rec))
+    images = [read_png(os.path.join(rec, n)) for n in frames]
+    grey = [i for i, im in enumerate(images) if tuple(im[25, 60]) == (224, 224, 224)]
+    green = [i for i, im in enumerate(images) if tuple(im[100, 150]) == (0, 255, 0)]
+    blue = [i for i, im in enumerate(images) if tuple(im[100, 150]) == (0, 0, 255)]
+    assert grey, "a frame shows the open menu's face"
+    assert green and blue and green[0] < blue[0], "choosing Green, then Blue, changed what the program drew"
+    assert tuple(images[-1][25, 60]) != (224, 224, 224), "the menu is closed at the end"
+    # The labels are drawn: dark text pixels inside the open menu's first entry.
+    im = images[grey[0]]
+    assert (im[22:38, 22:20 + root_width - 2].max(axis=2) < 100).any(), "the entries' labels are drawn"
+    return 0
+
+
 def main():
     mode, demo, work = sys.argv[1:4]
     shutil.rmtree(work, ignore_errors=True)
@@ -177,6 +223,8 @@ def main():
         return callbacks(demo, work) or 0
     if mode == "stops":
         return stops(demo, work)
+    if mode == "menus":
+        return menus(demo, work)
     return window(demo, work)
 
 

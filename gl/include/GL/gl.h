@@ -382,6 +382,22 @@ typedef double GLclampd;
 #define GL_BLEND_DST_ALPHA 0x80CA
 #define GL_BLEND_SRC_ALPHA 0x80CB
 
+/* glInterleavedArrays' formats */
+#define GL_V2F 0x2A20
+#define GL_V3F 0x2A21
+#define GL_C4UB_V2F 0x2A22
+#define GL_C4UB_V3F 0x2A23
+#define GL_C3F_V3F 0x2A24
+#define GL_N3F_V3F 0x2A25
+#define GL_C4F_N3F_V3F 0x2A26
+#define GL_T2F_V3F 0x2A27
+#define GL_T4F_V4F 0x2A28
+#define GL_T2F_C4UB_V3F 0x2A29
+#define GL_T2F_C3F_V3F 0x2A2A
+#define GL_T2F_N3F_V3F 0x2A2B
+#define GL_T2F_C4F_N3F_V3F 0x2A2C
+#define GL_T4F_C4F_N3F_V4F 0x2A2D
+
 /* Edge flags (glEdgeFlag, glEdgeFlagPointer) */
 #define GL_EDGE_FLAG 0x0B43
 #define GL_EDGE_FLAG_ARRAY 0x8079
@@ -394,6 +410,25 @@ typedef double GLclampd;
 #define GL_RENDER_MODE 0x0C40
 #define GL_NAME_STACK_DEPTH 0x0D70
 #define GL_SELECTION_BUFFER_SIZE 0x0DF4
+#define GL_SELECTION_BUFFER_POINTER 0x0DF3
+
+/* Feedback (glRenderMode(GL_FEEDBACK), glFeedbackBuffer, glPassThrough) */
+#define GL_2D 0x0600
+#define GL_3D 0x0601
+#define GL_3D_COLOR 0x0602
+#define GL_3D_COLOR_TEXTURE 0x0603
+#define GL_4D_COLOR_TEXTURE 0x0604
+#define GL_PASS_THROUGH_TOKEN 0x0700
+#define GL_POINT_TOKEN 0x0701
+#define GL_LINE_TOKEN 0x0702
+#define GL_POLYGON_TOKEN 0x0703
+#define GL_BITMAP_TOKEN 0x0704
+#define GL_DRAW_PIXEL_TOKEN 0x0705
+#define GL_COPY_PIXEL_TOKEN 0x0706
+#define GL_LINE_RESET_TOKEN 0x0707
+#define GL_FEEDBACK_BUFFER_POINTER 0x0DF0
+#define GL_FEEDBACK_BUFFER_SIZE 0x0DF1
+#define GL_FEEDBACK_BUFFER_TYPE 0x0DF2
 
 /* Textures */
 #define GL_TEXTURE_2D 0x0DE1
@@ -584,6 +619,8 @@ GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
 GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *pointer);
 GLAPI GLint GLAPIENTRY glRenderMode(GLenum mode);
 GLAPI void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint *buffer);
+GLAPI void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
+GLAPI void GLAPIENTRY glPassThrough(GLfloat token);
 GLAPI void GLAPIENTRY glInitNames(void);
 GLAPI void GLAPIENTRY glPushName(GLuint name);
 GLAPI void GLAPIENTRY glPopName(void);
@@ -826,6 +863,7 @@ GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, c
 GLAPI void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 GLAPI void GLAPIENTRY glEnableClientState(GLenum cap);
 GLAPI void GLAPIENTRY glDisableClientState(GLenum cap);
 GLAPI void GLAPIENTRY glArrayElement(GLint i);

@@ -1,7 +1,9 @@
-/* Velocity's GLU subset (pGL): the GLU calls libvelocity-gl implements. GLU_VERSION_1_1
- * is defined (gluGetString, 1.1's addition, exists); GLU_VERSION_1_2 and _1_3 are not,
- * as their additions (the gluTess* tessellator, gluCheckExtension, gluBuild*MipmapLevels,
- * gluUnProject4) do not exist here: a program guarded by them takes its fallback. */
+/* Velocity's GLU (pGL): the GLU calls libvelocity-gl implements, and GLU 1.2's polygon
+ * tessellator (the gluTess* calls, gluBeginPolygon), which is Debian's libGLU: programs
+ * that link velocity-gl link it too (CMake's target, pkg-config's velocity-gl), and its
+ * GL calls reach libvelocity-gl, loaded before it. GLU_VERSION_1_1 and _1_2 are defined;
+ * GLU_VERSION_1_3 is not, as its additions (gluCheckExtension, gluBuild*MipmapLevels,
+ * gluUnProject4) do not exist here: a program guarded by it takes its fallback. */
 #ifndef __glu_h__
 #define __glu_h__
 
@@ -12,6 +14,7 @@ extern "C" {
 #endif
 
 #define GLU_VERSION_1_1 1
+#define GLU_VERSION_1_2 1
 
 #define GLU_FALSE 0
 #define GLU_TRUE 1
@@ -65,6 +68,71 @@ GLAPI void GLAPIENTRY gluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, 
 GLAPI void GLAPIENTRY gluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops,
                                      GLdouble start, GLdouble sweep);
 GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
+
+/* The tessellator (libGLU's; GLU 1.2 section 5). */
+#define GLU_TESS_BEGIN 100100
+#define GLU_BEGIN 100100
+#define GLU_TESS_VERTEX 100101
+#define GLU_VERTEX 100101
+#define GLU_TESS_END 100102
+#define GLU_END 100102
+#define GLU_TESS_ERROR 100103
+#define GLU_TESS_EDGE_FLAG 100104
+#define GLU_EDGE_FLAG 100104
+#define GLU_TESS_COMBINE 100105
+#define GLU_TESS_BEGIN_DATA 100106
+#define GLU_TESS_VERTEX_DATA 100107
+#define GLU_TESS_END_DATA 100108
+#define GLU_TESS_ERROR_DATA 100109
+#define GLU_TESS_EDGE_FLAG_DATA 100110
+#define GLU_TESS_COMBINE_DATA 100111
+#define GLU_CW 100120
+#define GLU_CCW 100121
+#define GLU_INTERIOR 100122
+#define GLU_EXTERIOR 100123
+#define GLU_UNKNOWN 100124
+#define GLU_TESS_WINDING_ODD 100130
+#define GLU_TESS_WINDING_NONZERO 100131
+#define GLU_TESS_WINDING_POSITIVE 100132
+#define GLU_TESS_WINDING_NEGATIVE 100133
+#define GLU_TESS_WINDING_ABS_GEQ_TWO 100134
+#define GLU_TESS_WINDING_RULE 100140
+#define GLU_TESS_BOUNDARY_ONLY 100141
+#define GLU_TESS_TOLERANCE 100142
+#define GLU_TESS_ERROR1 100151
+#define GLU_TESS_ERROR2 100152
+#define GLU_TESS_ERROR3 100153
+#define GLU_TESS_ERROR4 100154
+#define GLU_TESS_ERROR5 100155
+#define GLU_TESS_ERROR6 100156
+#define GLU_TESS_ERROR7 100157
+#define GLU_TESS_ERROR8 100158
+#define GLU_TESS_MISSING_BEGIN_POLYGON 100151
+#define GLU_TESS_MISSING_BEGIN_CONTOUR 100152
+#define GLU_TESS_MISSING_END_POLYGON 100153
+#define GLU_TESS_MISSING_END_CONTOUR 100154
+#define GLU_TESS_COORD_TOO_LARGE 100155
+#define GLU_TESS_NEED_COMBINE_CALLBACK 100156
+#define GLU_TESS_MAX_COORD 1.0e150
+
+typedef struct GLUtesselator GLUtesselator;
+typedef GLUtesselator GLUtesselatorObj;
+typedef GLUtesselator GLUtriangulatorObj;
+
+GLAPI GLUtesselator *GLAPIENTRY gluNewTess(void);
+GLAPI void GLAPIENTRY gluDeleteTess(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessCallback(GLUtesselator *tess, GLenum which, _GLUfuncptr callback);
+GLAPI void GLAPIENTRY gluTessProperty(GLUtesselator *tess, GLenum which, GLdouble data);
+GLAPI void GLAPIENTRY gluGetTessProperty(GLUtesselator *tess, GLenum which, GLdouble *data);
+GLAPI void GLAPIENTRY gluTessNormal(GLUtesselator *tess, GLdouble x, GLdouble y, GLdouble z);
+GLAPI void GLAPIENTRY gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data);
+GLAPI void GLAPIENTRY gluTessBeginContour(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *data);
+GLAPI void GLAPIENTRY gluTessEndContour(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluBeginPolygon(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluNextContour(GLUtesselator *tess, GLenum type);
+GLAPI void GLAPIENTRY gluEndPolygon(GLUtesselator *tess);
 
 #ifdef __cplusplus
 }

@@ -90,6 +90,7 @@ extern "C" {
 #define GLUT_INIT_WINDOW_HEIGHT 0x01F7
 #define GLUT_INIT_DISPLAY_MODE 0x01F8
 #define GLUT_ELAPSED_TIME 0x02BC
+#define GLUT_MENU_NUM_ITEMS 0x012C
 
 /* Initialisation */
 void glutInit(int *argcp, char **argv);
@@ -119,6 +120,21 @@ void glutMotionFunc(void (*callback)(int x, int y));
 void glutPassiveMotionFunc(void (*callback)(int x, int y));
 void glutIdleFunc(void (*callback)(void));
 void glutTimerFunc(unsigned int milliseconds, void (*callback)(int value), int value);
+
+/* Pop-up menus: drawn over the window's frame, opened by the attached mouse button;
+ * choosing an entry calls the menu's callback with its value. A call naming a menu or
+ * an item that does not exist prints what was wrong and ends the program (exit(1)). */
+int glutCreateMenu(void (*callback)(int value));
+void glutDestroyMenu(int menu);
+int glutGetMenu(void);
+void glutSetMenu(int menu);
+void glutAddMenuEntry(const char *label, int value);
+void glutAddSubMenu(const char *label, int submenu);
+void glutChangeToMenuEntry(int item, const char *label, int value);
+void glutChangeToSubMenu(int item, const char *label, int submenu);
+void glutRemoveMenuItem(int item);
+void glutAttachMenu(int button);
+void glutDetachMenu(int button);
 
 /* The main loop: never returns, except after glutLeaveMainLoop (freeglut's) or
  * VELOCITY_GLUT_FRAMES frames. Closing the window ends the program (exit(0)); SIGINT and

@@ -19,6 +19,10 @@ compared by PSNR over the whole image.
   transform    assimp's TextureTransformTest (Khronos's KHR_texture_transform sample:
                offset, rotation, scale, texCoord override), lit: >= 30 dB
   blend        an opaque quad behind two BLEND quads (alpha 0.5, 0.35): >= 25 dB
+  shadows      a box and a floating quad on a floor, a directional and a spot light
+               casting through 2048^2 maps (three.js's PCFShadowMap; Velocity's bilinear
+               PCF; three's bias 0 and normal bias 0.006, about our 2 texels): >= 38 dB
+               (44.9 measured; 18.5 with Velocity's shadows off)
 
 Usage: check_velocity.py CASE OUT_DIR (VELOCITY_CLI names the program). Exit 77 (skip)
 when Chromium is missing, as the other threejs_* checks; 0 at or over the floor, else 1.
@@ -315,6 +319,58 @@ def blend_doc() -> dict:
     return fixtures.gltf(quads)
 
 
+# The shadow case's lights: (KHR_lights_punctual light, position, along) for Velocity's
+# file and the same light as render.py's --light for three.js (whose shadows are cast by
+# --light lights only). The spot's inner cone holds the whole floor, so that the two
+# cone falloffs (three.js's smoothstep, the extension's ramp) do not enter the figure.
+SHADOW_LIGHTS = [
+    ({"type": "directional", "color": [1, 0.95, 0.9], "intensity": 2.5}, (0.0, 0.0, 0.0), (0.55, -1.0, -0.35),
+     "directional:0.55,-1,-0.35:1,0.95,0.9:2.5"),
+    ({"type": "spot", "color": [0.7, 0.8, 1.0], "intensity": 9,
+      "spot": {"innerConeAngle": math.radians(50), "outerConeAngle": math.radians(60)}},
+     (-0.9, 2.4, 1.1), (0.35, -1.0, -0.45), "spot:-0.9,2.4,1.1:0.35,-1,-0.45:0.7,0.8,1:9:50:60"),
+]
+
+
+def box(x0, x1, y0, y1, z0, z1):
+    """A box's 24 vertices (4 a face, flat normals) and 12 triangles, faces outwards."""
+    pos, nrm, idx = [], [], []
+    faces = [((1, 0, 0), [(x1, y0, z1), (x1, y0, z0), (x1, y1, z0), (x1, y1, z1)]),
+             ((-1, 0, 0), [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)]),
+             ((0, 1, 0), [(x0, y1, z1), (x1, y1, z1), (x1, y1, z0), (x0, y1, z0)]),
+             ((0, -1, 0), [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)]),
+             ((0, 0, 1), [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)]),
+             ((0, 0, -1), [(x1, y0, z0), (x0, y0, z0), (x0, y1, z0), (x1, y1, z0)])]
+    for n, corners in faces:
+        k = len(pos)
+        pos += corners
+        nrm += [n] * 4
+        idx += [k, k + 1, k + 2, k, k + 2, k + 3]
+    return pos, nrm, idx
+
+
+def shadows_doc() -> dict:
+    """A floor (y = -0.6, 4 x 4), a box standing on it off-centre and a two-sided quad
+    floating over it: the scene's box is centred on the origin (Velocity's --camera looks
+    at the model's centre), and no mirror of it is the same."""
+    doc = Doc()
+    y = -0.6
+    floor = [(-2.0, y, 2.0), (2.0, y, 2.0), (2.0, y, -2.0), (-2.0, y, -2.0)]
+    doc.mesh(floor, [0, 1, 2, 0, 2, 3], {"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.75, 0.7, 1],
+                                                                  "metallicFactor": 0, "roughnessFactor": 0.85}},
+             NORMAL=[(0.0, 1.0, 0.0)] * 4)
+    pos, nrm, idx = box(-1.1, -0.4, y, 0.6, -0.2, 0.5)
+    doc.mesh(pos, idx, {"pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.5, 0.8, 1], "metallicFactor": 0,
+                                                 "roughnessFactor": 0.6}}, NORMAL=nrm)
+    quad = [(0.3, 0.1, -0.3), (1.4, 0.1, -0.3), (1.4, 0.1, -1.3), (0.6, 0.1, -1.3)]  # a trapezoid
+    doc.mesh(quad, [0, 1, 2, 0, 2, 3], {"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.3, 0.2, 1],
+                                                                 "metallicFactor": 0, "roughnessFactor": 0.7},
+                                        "doubleSided": True}, NORMAL=[(0.0, 1.0, 0.0)] * 4)
+    for light, position, along, _ in SHADOW_LIGHTS:
+        doc.light(light, position=position, along=along)
+    return doc.json()
+
+
 def with_lights(doc: dict, lights: list[tuple[dict, list[float]]]) -> dict:
     """A glTF document from elsewhere with KHR_lights_punctual lights added at the scene's
     root: (light, node matrix) pairs."""
@@ -374,7 +430,12 @@ CASES = {
     # Velocity's x,y,z looks at the model's centre (the box's is the origin).
     "boxtextured": (boxtextured, 30.0, "2.2,1.6,2.6", "2.2,1.6,2.6,0,0,0"),
     "transform": (transform, 30.0, "0,0,4.6,0,0,0", "0,0,4.6,0,0,0"),
+    "shadows": (shadows_doc, 38.0, "0.8,3.2,4.6", "0.8,3.2,4.6,0,0,0"),
 }
+
+# Cases drawn with shadows: render.py's --light lights for three.js (its shadows are cast
+# by those only) in place of the file's, and --shadows on both sides, 2048^2 maps.
+SHADOW_CASES = {"shadows": [arg for *_, spec in SHADOW_LIGHTS for arg in ("--light", spec)]}
 
 
 def psnr(a: bytes, b: bytes) -> float:
@@ -397,9 +458,17 @@ def main() -> int:
             print(f"SKIP: assimp's test models are not installed ({ASSIMP_GLTF})")
             return SKIP
     three_png, velocity_png = os.path.join(out, f"{case}-three.png"), os.path.join(out, f"{case}-velocity.png")
+    lights = ["--file-lights"]
+    if case in SHADOW_CASES:
+        # three.js's depth bias is in the map's depth, which a spot light's perspective
+        # map stretches (0.0005 lifts its shadows ~0.75 units off this floor): a normal
+        # offset in world units instead, 0.006, about Velocity's 2 texels (0.0057 for the
+        # directional map, 0.005 for the spot's at 3 units).
+        lights = SHADOW_CASES[case] + ["--shadows", "--shadow-map", "2048", "--shadow-bias", "0",
+                                       "--shadow-normal-bias", "0.006"]
     run = subprocess.run([sys.executable, RENDER, model, "--out", three_png, "--size", f"{SIZE}x{SIZE}",
                           "--camera", three_camera, "--yfov", "45", "--znear", "0.1", "--zfar", "100",
-                          "--file-lights", "--bg", BACKGROUND], capture_output=True, text=True, timeout=120)
+                          "--bg", BACKGROUND] + lights, capture_output=True, text=True, timeout=120)
     if run.returncode == SKIP:
         print(f"SKIP: {run.stderr.strip()}")
         return SKIP
@@ -407,8 +476,10 @@ def main() -> int:
         print(f"FAIL: render.py: {run.stderr.strip()}")
         return 1
     cli = os.environ.get("VELOCITY_CLI", "velocity")
+    shadows = ["--shadows", "--shadow-map-size", "2048"] if case in SHADOW_CASES else []
     run = subprocess.run([cli, "render", model, "--out", velocity_png, "--size", f"{SIZE}x{SIZE}",
-                          "--camera", velocity_camera, "--fov", "45"], capture_output=True, text=True, timeout=120)
+                          "--camera", velocity_camera, "--fov", "45"] + shadows, capture_output=True, text=True,
+                         timeout=120)
     if run.returncode != 0:
         print(f"FAIL: velocity render: {run.stderr.strip()}")
         return 1

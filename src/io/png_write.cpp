@@ -1,19 +1,20 @@
 // PNG through libpng. libpng reports errors by longjmp: the function that calls setjmp
 // (write_png_rows) and the callbacks hold nothing with a destructor, so that no C++
 // object is skipped when libpng jumps back.
-#include "png_encode.hpp"
-
 #include <png.h>
 
+#include <cerrno>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <string>
 
 #include "velocity/error.hpp"
+#include "velocity/png.hpp"
 
-namespace velocity::python {
+namespace velocity {
 namespace {
 
 constexpr int kMaxSide = 65536;  // as velocity::Image
@@ -98,4 +99,19 @@ std::vector<uint8_t> encode_png(const PngImage& im, int level, PngFilter filter)
   return bytes;
 }
 
-}  // namespace velocity::python
+void write_png(const std::string& path, const PngImage& image, int level, PngFilter filter) {
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = encode_png(image, level, filter);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
+  if (!f) throw Error(path + ": cannot open for writing (" + std::strerror(errno) + ")");
+  if (std::fwrite(bytes.data(), 1, bytes.size(), f.get()) != bytes.size() || std::fflush(f.get()) != 0)
+    throw Error(path + ": write failed (" + std::strerror(errno) + ")");
+  // fclose reports what a full disk leaves until the buffer is handed over.
+  if (std::fclose(f.release()) != 0) throw Error(path + ": write failed (" + std::strerror(errno) + ")");
+}
+
+}  // namespace velocity

@@ -1,14 +1,15 @@
-// PNG bytes of an image in memory, through libpng (Debian's libpng-dev), for the Python
-// module's batch runner (velocity.png.encode_png). Fast settings for rendered frames:
-// one filter for every row, and a low zlib level (the figures are in docs/python.md).
-// Needs no Python, so that the C++ tests and the pyconvert fuzz target drive it too.
+// PNG files through libpng (Debian's libpng-dev): the one PNG encoder, used by
+// write_png (velocity/image.hpp), the command-line program and the Python module
+// (velocity.png.encode_png). Fast settings for rendered frames: one filter for every
+// row, and a low zlib level (the figures are in docs/python.md).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
-namespace velocity::python {
+namespace velocity {
 
 struct PngImage {
   const void* pixels = nullptr;  // rows top first, `stride` bytes apart
@@ -25,4 +26,8 @@ enum class PngFilter { None = 0, Sub = 1, Up = 2, Average = 3, Paeth = 4, Adapti
 // channel count or bit depth, or a level out of range.
 std::vector<uint8_t> encode_png(const PngImage& image, int level = 3, PngFilter filter = PngFilter::Up);
 
-}  // namespace velocity::python
+// Writes encode_png's bytes to `path`. Throws velocity::Error naming the file when it
+// cannot be written (the reason from errno: "No space left on device" on a full disk).
+void write_png(const std::string& path, const PngImage& image, int level = 3, PngFilter filter = PngFilter::Up);
+
+}  // namespace velocity
