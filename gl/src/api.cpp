@@ -122,7 +122,8 @@ void get_values(GLenum pname, T* params, Convert convert) {
 
 struct osmesa_context {
   Context gl;
-  osmesa_context(GLenum format, int depth_bits, int stencil_bits) : gl(format, depth_bits, stencil_bits) {}
+  osmesa_context(GLenum format, int depth_bits, int stencil_bits, int accum_bits)
+      : gl(format, depth_bits, stencil_bits, accum_bits) {}
 };
 
 namespace {
@@ -291,6 +292,8 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
 }
 void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
 void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
+void glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { LIST(c.clear_accum(r, g, b, a)); }
+void glAccum(GLenum op, GLfloat value) { LIST(c.accum(op, value)); }
 void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
 void glEdgeFlag(GLboolean flag) { LIST(c.set_edge_flag(flag != 0)); }  // (allowed between glBegin and glEnd)
 void glEdgeFlagv(const GLboolean* flag) {
@@ -746,13 +749,12 @@ void glFlush(void) { NOW(c.finish()); }
 
 OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits, GLint accumBits,
                                      OSMesaContext sharelist) {
-  (void)accumBits;
   if (sharelist) return nullptr;  // shared lists and textures: not supported (docs/gl.md)
   if (format != OSMESA_RGBA && format != OSMESA_BGRA && format != OSMESA_ARGB && format != OSMESA_RGB &&
       format != OSMESA_BGR)
     return nullptr;
   try {
-    return new osmesa_context(format, depthBits, stencilBits);
+    return new osmesa_context(format, depthBits, stencilBits, accumBits);
   } catch (const std::exception&) {
     return nullptr;
   }

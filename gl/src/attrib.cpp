@@ -14,6 +14,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.raster = raster_;
   f.lighting = lighting_;
   f.stencil = stencil_;
+  f.accum_clear = accum_clear_;
   f.viewport = transform_.viewport;
   f.depth_near = transform_.depth_near, f.depth_far = transform_.depth_far;
   f.matrix_mode = transform_.matrix_mode;
@@ -62,6 +63,7 @@ void Context::pop_attrib() {
   }
   if (m & GL_DEPTH_BUFFER_BIT) r.depth_test = s.depth_test, r.depth_func = s.depth_func, r.clear_depth = s.clear_depth, r.depth_write = s.depth_write;
   if (m & GL_STENCIL_BUFFER_BIT) stencil_ = f.stencil;
+  if (m & GL_ACCUM_BUFFER_BIT) accum_clear_ = f.accum_clear;
   if (m & GL_VIEWPORT_BIT) {
     transform_.viewport = f.viewport;
     transform_.depth_near = f.depth_near, transform_.depth_far = f.depth_far;

@@ -40,6 +40,7 @@
 //   tex_gen.cpp       glTexGen, GL_TEXTURE_GEN_S..Q
 //   line_stipple.cpp  glLineStipple, GL_LINE_STIPPLE
 //   polygon_stipple.cpp  glPolygonStipple, glGetPolygonStipple, GL_POLYGON_STIPPLE
+//   accum.cpp         the accumulation buffer: glAccum, glClearAccum
 #pragma once
 
 #include <GL/gl.h>
@@ -70,7 +71,7 @@ struct Vertex {
 
 class Context {
  public:
-  Context(GLenum format, int depth_bits, int stencil_bits = 0);
+  Context(GLenum format, int depth_bits, int stencil_bits = 0, int accum_bits = 0);
   ~Context();
 
   // --- OSMesa (context.cpp)
@@ -265,6 +266,10 @@ class Context {
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
 
+  // --- the accumulation buffer (accum.cpp)
+  void accum(GLenum op, float value);
+  void clear_accum(float r, float g, float b, float a);
+
   // --- user clip planes (clip_planes.cpp)
   UserClipState user_clip;
   void clip_plane(GLenum plane, const double* eq);
@@ -361,6 +366,13 @@ class Context {
   GLenum format_;
   int depth_bits_;
   int stencil_bits_;  // 0 or 8
+  int accum_bits_;    // 0 or 16 per component (accum.cpp)
+  std::vector<int16_t> accum_;  // RGBA, width_ x height_, bottom row first
+  Vec4 accum_clear_{0, 0, 0, 0};
+  bool accum_returning_ = false;  // GL_RETURN's rectangles: only scissor and colour mask
+  Box accum_region() const;
+  void clear_accum_buffer();
+  void accum_return(const Box& region, float value);
   void* buffer_ = nullptr;
   int width_ = 0, height_ = 0;
   std::unique_ptr<Renderer> renderer_;

@@ -157,6 +157,16 @@ void Context::finish() {
 
 PixelState Context::pixel_state(bool offset, bool stippled) {
   PixelState s;
+  if (accum_returning_) {  // glAccum(GL_RETURN): the scissor test and the colour mask only
+    s.scissor = raster_.scissor_test;
+    if (raster_.scissor_test) {
+      s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
+      s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
+    }
+    s.color_mask = raster_.color_mask_bits();
+    s.depth_test = s.depth_write = false;
+    return s;
+  }
   if (texture_.enabled) {
     TextureObject* t = bound_texture();
     if (const Texture* tex = texture_for_draw(*t)) {

@@ -94,11 +94,13 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ALPHA_BITS: out = {format_ == GL_RGB || format_ == 0x4 ? 0.0 : 8.0}; return true;
     case GL_DEPTH_BITS: out = {depth_bits_ > 0 ? 24.0 : 0.0}; return true;
     // The framebuffer: one RGBA colour buffer (OSMesa's, single-buffered: GL_FRONT),
-    // a depth buffer, a stencil buffer (stencil.cpp); no accumulation or auxiliary
-    // buffers, no colour index, no stereo, no multisampling (all 0 until they exist,
-    // whatever the context asked for).
+    // a depth buffer, a stencil buffer (stencil.cpp), an accumulation buffer
+    // (accum.cpp); no auxiliary buffers, no colour index, no stereo, no multisampling
+    // (all 0 until they exist, whatever the context asked for).
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS: case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
+    case GL_ACCUM_ALPHA_BITS: out = {double(accum_bits_)}; return true;
+    case GL_ACCUM_CLEAR_VALUE: v4(accum_clear_), kind = 1; return true;
+    case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
     case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
     case GL_DOUBLEBUFFER: out = {double_buffered ? 1.0 : 0.0}; return true;

@@ -77,6 +77,7 @@ void Context::clear(GLbitfield mask) {
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
   if (!renderer_) return;
+  if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer();  // (the context's own: accum.cpp)
   submit_pending();
   const RasterState& r = raster_;
   const bool color = mask & GL_COLOR_BUFFER_BIT, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;

@@ -259,6 +259,7 @@ struct AttribFrame {
   RasterState raster;
   LightingState lighting;
   StencilState stencil;
+  Vec4 accum_clear;
   Box viewport;
   float depth_near = 0, depth_far = 1;
   GLenum matrix_mode = GL_MODELVIEW;

@@ -268,7 +268,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const GLenum format = formats[in.below(5)];
   const int w = 1 + in.below(96), h = 1 + in.below(96);
   const int buffers = in.below(3);  // none, depth, depth and stencil
-  OSMesaContext ctx = OSMesaCreateContextExt(format, buffers ? 24 : 0, buffers == 2 ? 8 : 0, 0, nullptr);
+  OSMesaContext ctx = OSMesaCreateContextExt(format, buffers ? 24 : 0, buffers == 2 ? 8 : 0, buffers == 2 ? 16 : 0, nullptr);
   fuzz_check(ctx != nullptr);
   const size_t bpp = format == OSMESA_RGB || format == OSMESA_BGR ? 3 : 4;
   std::vector<uint8_t> buffer(size_t(w) * h * bpp);
@@ -301,6 +301,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             glStencilOp(e1, e2, in.enumerant());
             glStencilMask(GLuint(iv4[2]));
             glClearStencil(iv4[3]);
+            // The accumulation buffer (the context with every buffer has one).
+            glClearAccum(a, b, c, d);
+            glAccum(in.u8() & 1 ? GL_ACCUM + GLenum(in.below(5)) : e1, a * b);
             break;
           case 1: (in.u8() & 1 ? glPushAttrib(GLbitfield(iv4[0])) : glPopAttrib()); break;
           case 2: (in.u8() & 1 ? glPushClientAttrib(GLbitfield(iv4[0])) : glPopClientAttrib()); break;

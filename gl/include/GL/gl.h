@@ -264,6 +264,12 @@ typedef double GLclampd;
 /* The framebuffer and the implementation's limits (glGet: docs/gl.md says what each
  * answers; a feature pGL lacks has a limit of 0) */
 #define GL_STENCIL_BITS 0x0D57
+/* glAccum's operations (GL_ADD is also a texture environment mode) and its clear value */
+#define GL_ACCUM 0x0100
+#define GL_LOAD 0x0101
+#define GL_RETURN 0x0102
+#define GL_MULT 0x0103
+#define GL_ACCUM_CLEAR_VALUE 0x0B80
 #define GL_ACCUM_RED_BITS 0x0D58
 #define GL_ACCUM_GREEN_BITS 0x0D59
 #define GL_ACCUM_BLUE_BITS 0x0D5A
@@ -607,6 +613,9 @@ GLAPI void GLAPIENTRY glClear(GLbitfield mask);
 GLAPI void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 GLAPI void GLAPIENTRY glClearDepth(GLclampd depth);
 GLAPI void GLAPIENTRY glClearStencil(GLint s);
+/* The accumulation buffer (an OSMesa context's accumBits) */
+GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
+GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
 GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
                                        GLsizei height, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
