@@ -39,8 +39,16 @@ void Context::clear_accum(float r, float g, float b, float a) {
   accum_clear_ = {std::clamp(r, -1.0f, 1.0f), std::clamp(g, -1.0f, 1.0f), std::clamp(b, -1.0f, 1.0f), std::clamp(a, -1.0f, 1.0f)};
 }
 
+// The buffer, allocated when first used (a context that never uses it costs nothing).
+bool Context::accum_buffer_ready() {
+  if (accum_bits_ <= 0 || !renderer_) return false;
+  const size_t n = size_t(width_) * size_t(height_) * 4;
+  if (accum_.size() != n) accum_.assign(n, 0);
+  return true;
+}
+
 void Context::clear_accum_buffer() {
-  if (accum_bits_ <= 0 || accum_.size() != size_t(width_) * size_t(height_) * 4) return;
+  if (!accum_buffer_ready()) return;
   const Box r = accum_region();
   // (Mesa's FLOAT_TO_SHORT: (65535 c - 1) / 2.)
   int16_t v[4];
@@ -55,7 +63,7 @@ void Context::accum(GLenum op, float value) {
   if (in_begin_error()) return;
   if (accum_bits_ <= 0) return error(GL_INVALID_OPERATION);
   // (Selection and feedback draw nothing: Mesa leaves both buffers alone then.)
-  if (!renderer_ || selecting() || feeding_back() || accum_.size() != size_t(width_) * size_t(height_) * 4) return;
+  if (selecting() || feeding_back() || !accum_buffer_ready()) return;
   const Box r = accum_region();
   if (r.width <= 0 || r.height <= 0) return;
   if (op == GL_RETURN) return accum_return(r, value);

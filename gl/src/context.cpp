@@ -61,7 +61,7 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
   if (first || width != width_ || height != height_) {
     width_ = width, height_ = height;
     colour_.assign(size_t(width) * height * 4, 0);
-    if (accum_bits_ > 0) accum_.assign(size_t(width) * height * 4, 0);  // (undefined after a resize: zero)
+    accum_.clear();  // (undefined after a resize; allocated again when first used)
   }
   if (first) {
     viewport(0, 0, width, height);

@@ -371,6 +371,7 @@ class Context {
   Vec4 accum_clear_{0, 0, 0, 0};
   bool accum_returning_ = false;  // GL_RETURN's rectangles: only scissor and colour mask
   Box accum_region() const;
+  bool accum_buffer_ready();
   void clear_accum_buffer();
   void accum_return(const Box& region, float value);
   void* buffer_ = nullptr;
