@@ -357,7 +357,8 @@ int glutCreateWindow(const char* title) {
   sigaction(SIGTERM, &sigterm_action, nullptr);
   g.double_buffered = g.display_mode & GLUT_DOUBLE;
   g.context = OSMesaCreateContextExt(OSMESA_RGBA, (g.display_mode & GLUT_DEPTH) ? 24 : 0,
-                                     (g.display_mode & GLUT_STENCIL) ? 8 : 0, 0, nullptr);
+                                     (g.display_mode & GLUT_STENCIL) ? 8 : 0,
+                                     (g.display_mode & GLUT_ACCUM) ? 16 : 0, nullptr);
   if (!g.context) fail("cannot create the GL context");
   std::atexit(at_exit);  // after the GL library's own state exists: it runs first
   bind_buffer(g, options.width, options.height);

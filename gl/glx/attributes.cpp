@@ -10,7 +10,7 @@
 
 namespace velocity::glx {
 
-const Config kConfigs[kConfigCount] = {{1, true, 24, 8}, {2, false, 24, 8}, {3, true, 0, 0}, {4, false, 0, 0}};
+const Config kConfigs[kConfigCount] = {{1, true, 24, 8, 16}, {2, false, 24, 8, 16}, {3, true, 0, 0, 0}, {4, false, 0, 0, 0}};
 
 namespace {
 constexpr int kDontCare = int(GLX_DONT_CARE);
@@ -86,8 +86,9 @@ bool config_attribute(const Config& c, unsigned long visual, int attribute, int*
     case GLX_FBCONFIG_ID: v = c.id; break;
     case GLX_BUFFER_SIZE: v = 32; break;
     case GLX_STENCIL_SIZE: v = c.stencil; break;
-    case GLX_LEVEL: case GLX_STEREO: case GLX_AUX_BUFFERS:
     case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE: case GLX_ACCUM_ALPHA_SIZE:
+      v = c.accum; break;
+    case GLX_LEVEL: case GLX_STEREO: case GLX_AUX_BUFFERS:
     case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES:
     case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE: case GLX_TRANSPARENT_GREEN_VALUE:
     case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE:
@@ -121,7 +122,9 @@ bool satisfies(int i, int visuals, const Wanted& w) {
     if (b != kDontCare && b > 8) return false;
   if (w.depth != kDontCare && w.depth > c.depth) return false;
   if (w.stencil != kDontCare && w.stencil > c.stencil) return false;
-  for (int v : {w.accum[0], w.accum[1], w.accum[2], w.accum[3], w.aux, w.samples, w.sample_buffers})
+  for (int v : w.accum)
+    if (v != kDontCare && v > c.accum) return false;
+  for (int v : {w.aux, w.samples, w.sample_buffers})
     if (v != kDontCare && v > 0) return false;
   if (w.render_type != kDontCare && !(w.render_type & GLX_RGBA_BIT)) return false;
   int drawable_types = 0;

@@ -9,14 +9,16 @@
 namespace velocity::glx {
 
 // What exists: 8-bit red, green, blue and alpha, a 24-bit depth buffer with an 8-bit
-// stencil buffer or neither, single or double buffered. No accumulation, auxiliary
-// buffers, stereo or multisampling: pGL has none, so no configuration claims them. Configuration i is
+// stencil buffer and a 16-bit accumulation buffer, or none of them, single or double
+// buffered. No auxiliary buffers, stereo or multisampling: pGL has none, so no
+// configuration claims them. Configuration i is
 // shown in the screen's i-th usable X visual; one without a visual is for pbuffers.
 struct Config {
   int id;
   bool double_buffer;
   int depth;
   int stencil;
+  int accum;  // bits a component
 };
 constexpr int kConfigCount = 4;
 extern const Config kConfigs[kConfigCount];

@@ -386,7 +386,7 @@ GLXContext new_context(Display* dpy, const Config* config, int screen, GLXContex
     return nullptr;
   }
   auto c = std::make_unique<Context>();
-  c->osmesa = OSMesaCreateContextExt(OSMESA_BGRA, config->depth, config->stencil, 0, nullptr);
+  c->osmesa = OSMesaCreateContextExt(OSMESA_BGRA, config->depth, config->stencil, config->accum, nullptr);
   if (!c->osmesa) {
     velocity_glx_error(dpy, BadAlloc, 0, request, True);
     return nullptr;

@@ -122,7 +122,8 @@ void get_values(GLenum pname, T* params, Convert convert) {
 
 struct osmesa_context {
   Context gl;
-  osmesa_context(GLenum format, int depth_bits, int stencil_bits) : gl(format, depth_bits, stencil_bits) {}
+  osmesa_context(GLenum format, int depth_bits, int stencil_bits, int accum_bits)
+      : gl(format, depth_bits, stencil_bits, accum_bits) {}
 };
 
 namespace {
@@ -291,6 +292,8 @@ void glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
 }
 void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
 void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
+void glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { LIST(c.clear_accum(r, g, b, a)); }
+void glAccum(GLenum op, GLfloat value) { LIST(c.accum(op, value)); }
 void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
 void glEdgeFlag(GLboolean flag) { LIST(c.set_edge_flag(flag != 0)); }  // (allowed between glBegin and glEnd)
 void glEdgeFlagv(const GLboolean* flag) {
@@ -334,6 +337,7 @@ GLboolean glIsEnabled(GLenum cap) {
 void glBlendFunc(GLenum s, GLenum d) { LIST(c.blend_func(s, d)); }
 void glBlendFuncSeparate(GLenum sr, GLenum dr, GLenum sa, GLenum da) { LIST(c.blend_func_separate(sr, dr, sa, da)); }
 void glBlendEquation(GLenum mode) { LIST(c.blend_equation(mode)); }
+void glLogicOp(GLenum opcode) { LIST(c.logic_op(opcode)); }
 void glBlendColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { LIST(c.blend_color({r, g, b, a})); }
 void glBlendFuncSeparateEXT(GLenum sr, GLenum dr, GLenum sa, GLenum da) { glBlendFuncSeparate(sr, dr, sa, da); }
 void glBlendEquationEXT(GLenum mode) { glBlendEquation(mode); }
@@ -418,6 +422,7 @@ void glPolygonMode(GLenum face, GLenum mode) { LIST(c.polygon_mode(face, mode));
 void glPolygonOffset(GLfloat factor, GLfloat units) { LIST(c.polygon_offset(factor, units)); }
 void glPointSize(GLfloat size) { LIST(c.point_size(size)); }
 void glLineWidth(GLfloat width) { LIST(c.line_width(width)); }
+void glLineStipple(GLint factor, GLushort pattern) { LIST(c.line_stipple(factor, pattern)); }
 
 // --- textures -------------------------------------------------------------------
 
@@ -744,13 +749,12 @@ void glFlush(void) { NOW(c.finish()); }
 
 OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits, GLint accumBits,
                                      OSMesaContext sharelist) {
-  (void)accumBits;
   if (sharelist) return nullptr;  // shared lists and textures: not supported (docs/gl.md)
   if (format != OSMESA_RGBA && format != OSMESA_BGRA && format != OSMESA_ARGB && format != OSMESA_RGB &&
       format != OSMESA_BGR)
     return nullptr;
   try {
-    return new osmesa_context(format, depthBits, stencilBits);
+    return new osmesa_context(format, depthBits, stencilBits, accumBits);
   } catch (const std::exception&) {
     return nullptr;
   }

@@ -36,6 +36,12 @@ void compiled_error(GLenum e) {
 
 extern "C" {
 
+void glPolygonStipple(const GLubyte* mask) {
+  if (!mask) return;  // (no pattern to read: nothing changes, as in Mesa)
+  NOW(const auto rows = velocity::gl::stipple_rows(c.pixels.unpack, mask); compiled([=](Context& k) { k.polygon_stipple(rows); }));
+}
+void glGetPolygonStipple(GLubyte* mask) { NOW(if (c.in_begin_error()) return; c.get_polygon_stipple(mask)); }
+
 void glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { LIST(c.raster_pos({x, y, z, w})); }
 void glRasterPos2d(GLdouble x, GLdouble y) { glRasterPos4f(float(x), float(y), 0, 1); }
 void glRasterPos2f(GLfloat x, GLfloat y) { glRasterPos4f(x, y, 0, 1); }

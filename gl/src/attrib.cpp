@@ -14,6 +14,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.raster = raster_;
   f.lighting = lighting_;
   f.stencil = stencil_;
+  f.accum_clear = accum_clear_;
   f.viewport = transform_.viewport;
   f.depth_near = transform_.depth_near, f.depth_far = transform_.depth_far;
   f.matrix_mode = transform_.matrix_mode;
@@ -25,6 +26,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.raster_pos = pixels.raster;
   f.zoom_x = pixels.zoom_x, f.zoom_y = pixels.zoom_y;
   f.user_clip = user_clip;
+  f.tex_gen = tex_gen_;
   attrib_stack_.push_back(std::move(f));
 }
 
@@ -42,13 +44,18 @@ void Context::pop_attrib() {
   }
   if (m & GL_PIXEL_MODE_BIT) pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y;
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
-  if (m & GL_LINE_BIT) r.line_width = s.line_width;
+  if (m & GL_LINE_BIT) {
+    r.line_width = s.line_width;
+    r.line_stipple = s.line_stipple, r.stipple_factor = s.stipple_factor, r.stipple_pattern = s.stipple_pattern;
+  }
   if (m & GL_POLYGON_BIT) {
     r.cull = s.cull, r.cull_mode = s.cull_mode, r.front_face = s.front_face;
     r.polygon_mode[0] = s.polygon_mode[0], r.polygon_mode[1] = s.polygon_mode[1];
     r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
     r.offset_factor = s.offset_factor, r.offset_units = s.offset_units;
+    r.polygon_stipple = s.polygon_stipple;
   }
+  if (m & GL_POLYGON_STIPPLE_BIT) r.stipple = s.stipple;
   if (m & GL_LIGHTING_BIT) lighting_ = f.lighting;
   if (m & GL_FOG_BIT) {
     r.fog = s.fog, r.fog_mode = s.fog_mode, r.fog_start = s.fog_start, r.fog_end = s.fog_end;
@@ -56,6 +63,7 @@ void Context::pop_attrib() {
   }
   if (m & GL_DEPTH_BUFFER_BIT) r.depth_test = s.depth_test, r.depth_func = s.depth_func, r.clear_depth = s.clear_depth, r.depth_write = s.depth_write;
   if (m & GL_STENCIL_BUFFER_BIT) stencil_ = f.stencil;
+  if (m & GL_ACCUM_BUFFER_BIT) accum_clear_ = f.accum_clear;
   if (m & GL_VIEWPORT_BIT) {
     transform_.viewport = f.viewport;
     transform_.depth_near = f.depth_near, transform_.depth_far = f.depth_far;
@@ -67,21 +75,23 @@ void Context::pop_attrib() {
     for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
   }
   if (m & GL_ENABLE_BIT) {
-    r.alpha_test = s.alpha_test, r.blend = s.blend, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
+    r.alpha_test = s.alpha_test, r.blend = s.blend, r.logic_op = s.logic_op, r.cull = s.cull, r.depth_test = s.depth_test, r.fog = s.fog;
     r.offset_fill = s.offset_fill, r.offset_line = s.offset_line, r.offset_point = s.offset_point;
-    r.scissor_test = s.scissor_test;
+    r.scissor_test = s.scissor_test, r.line_stipple = s.line_stipple, r.polygon_stipple = s.polygon_stipple;
     lighting_.enabled = f.lighting.enabled, lighting_.color_material = f.lighting.color_material;
     for (int i = 0; i < kMaxLights; ++i) lighting_.lights[i].enabled = f.lighting.lights[i].enabled;
     transform_.normalize = f.normalize, transform_.rescale_normal = f.rescale_normal;
     stencil_.test = f.stencil.test;
     texture_.enabled = f.texture_enabled;
     for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
+    for (int i = 0; i < 4; ++i) tex_gen_.coords[i].enabled = f.tex_gen.coords[i].enabled;
   }
   if (m & GL_COLOR_BUFFER_BIT) {
     r.alpha_test = s.alpha_test, r.alpha_func = s.alpha_func, r.alpha_ref = s.alpha_ref;
     r.blend = s.blend, r.blend_src = s.blend_src, r.blend_dst = s.blend_dst;
     r.blend_src_alpha = s.blend_src_alpha, r.blend_dst_alpha = s.blend_dst_alpha;
     r.blend_equation = s.blend_equation, r.blend_color = s.blend_color;
+    r.logic_op = s.logic_op, r.logic_op_mode = s.logic_op_mode;
     for (int i = 0; i < 4; ++i) r.color_mask[i] = s.color_mask[i];
     r.clear_color = s.clear_color;
   }
@@ -93,6 +103,7 @@ void Context::pop_attrib() {
     // The binding comes back if its texture still exists (a deleted one binds 0).
     texture_.bound = f.texture_bound == 0 || texture_.objects.count(f.texture_bound) ? f.texture_bound : 0;
     texture_.env_mode = f.env_mode, texture_.env_color = f.env_color;
+    tex_gen_ = f.tex_gen;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;
   update_clip_planes();

@@ -1,7 +1,8 @@
 // GL 1.4's blending beyond glBlendFunc (raster_state.cpp): separate alpha factors
 // (glBlendFuncSeparate), the equation (glBlendEquation: add, subtract, reverse
 // subtract, min, max) and the constant colour (glBlendColor) the CONSTANT factors read.
-// The renderer blends with them (PixelState's blend_*).
+// The renderer blends with them (PixelState's blend_*). Also GL 1.1's logic op
+// (glLogicOp, GL_COLOR_LOGIC_OP), which takes blending's place when enabled.
 #include "context.hpp"
 
 namespace velocity::gl {
@@ -44,6 +45,13 @@ void Context::blend_color(Vec4 c) {
   changed();
 }
 
+void Context::logic_op(GLenum op) {
+  if (in_begin_error()) return;
+  if (op < GL_CLEAR || op > GL_SET) return error(GL_INVALID_ENUM);
+  raster_.logic_op_mode = op;
+  changed();
+}
+
 bool Context::get_blend(GLenum pname, std::vector<double>& out, int& kind) const {
   const RasterState& r = raster_;
   switch (pname) {
@@ -52,6 +60,7 @@ bool Context::get_blend(GLenum pname, std::vector<double>& out, int& kind) const
     case GL_BLEND_SRC_ALPHA: out = {double(r.blend_src_alpha)}; return true;
     case GL_BLEND_DST_ALPHA: out = {double(r.blend_dst_alpha)}; return true;
     case GL_BLEND_EQUATION: out = {double(r.blend_equation)}; return true;
+    case GL_LOGIC_OP_MODE: out = {double(r.logic_op_mode)}; return true;
     case GL_BLEND_COLOR: out = {r.blend_color.x, r.blend_color.y, r.blend_color.z, r.blend_color.w}, kind = 1; return true;
     default: return false;
   }

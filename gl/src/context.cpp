@@ -32,8 +32,8 @@ BackendChoice backend_from_environment() {
 Context* current() { return g_current; }
 void set_current(Context* c) { g_current = c; }
 
-Context::Context(GLenum format, int depth_bits, int stencil_bits)
-    : format_(format), depth_bits_(depth_bits), stencil_bits_(stencil_bits > 0 ? 8 : 0) {}
+Context::Context(GLenum format, int depth_bits, int stencil_bits, int accum_bits)
+    : format_(format), depth_bits_(depth_bits), stencil_bits_(stencil_bits > 0 ? 8 : 0), accum_bits_(accum_bits > 0 ? 16 : 0) {}
 
 Context::~Context() = default;
 
@@ -61,6 +61,7 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
   if (first || width != width_ || height != height_) {
     width_ = width, height_ = height;
     colour_.assign(size_t(width) * height * 4, 0);
+    accum_.clear();  // (undefined after a resize; allocated again when first used)
   }
   if (first) {
     viewport(0, 0, width, height);

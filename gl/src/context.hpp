@@ -30,12 +30,17 @@
 //                     glGetTexImage
 //   select.cpp        selection: glRenderMode, glSelectBuffer, the name stack
 //   feedback.cpp      feedback: glFeedbackBuffer, glPassThrough, the tokens
-//   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor
+//   blend.cpp         GL 1.4's blending: glBlendFuncSeparate, glBlendEquation, glBlendColor;
+//                     glLogicOp
 //   stencil.cpp       the stencil buffer: glStencilFunc, glStencilOp, glStencilMask,
 //                     glClearStencil, its queries and its part of PixelState
 //   raster_pos.cpp    glRasterPos, glWindowPos
 //   draw_pixels.cpp   glBitmap, glDrawPixels, glCopyPixels, glPixelZoom, glPixelStore
 //   clip_planes.cpp   glClipPlane, GL_CLIP_PLANEi
+//   tex_gen.cpp       glTexGen, GL_TEXTURE_GEN_S..Q
+//   line_stipple.cpp  glLineStipple, GL_LINE_STIPPLE
+//   polygon_stipple.cpp  glPolygonStipple, glGetPolygonStipple, GL_POLYGON_STIPPLE
+//   accum.cpp         the accumulation buffer: glAccum, glClearAccum
 #pragma once
 
 #include <GL/gl.h>
@@ -47,6 +52,7 @@
 #include "clip_planes.hpp"
 #include "pixel_ops.hpp"
 #include "state.hpp"
+#include "tex_gen.hpp"
 #include "velocity/primitives.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/texture.hpp"
@@ -65,7 +71,7 @@ struct Vertex {
 
 class Context {
  public:
-  Context(GLenum format, int depth_bits, int stencil_bits = 0);
+  Context(GLenum format, int depth_bits, int stencil_bits = 0, int accum_bits = 0);
   ~Context();
 
   // --- OSMesa (context.cpp)
@@ -137,6 +143,7 @@ class Context {
   void blend_func_separate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);  // blend.cpp
   void blend_equation(GLenum mode);
   void blend_color(Vec4 c);
+  void logic_op(GLenum op);  // blend.cpp
   bool get_blend(GLenum pname, std::vector<double>& out, int& kind) const;
   void alpha_func(GLenum f, float ref);
   void fog(GLenum pname, const float* v);
@@ -259,6 +266,10 @@ class Context {
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
 
+  // --- the accumulation buffer (accum.cpp)
+  void accum(GLenum op, float value);
+  void clear_accum(float r, float g, float b, float a);
+
   // --- user clip planes (clip_planes.cpp)
   UserClipState user_clip;
   void clip_plane(GLenum plane, const double* eq);
@@ -266,8 +277,30 @@ class Context {
   bool enable_clip_plane(GLenum cap, bool on);     // false: not a plane's name
   bool outside_clip_planes(const Vec4& eye) const;
 
+  // --- texture coordinate generation (tex_gen.cpp)
+  void tex_gen(GLenum coord, GLenum pname, const double* params);
+  // false: not a coordinate's or a parameter's name; else `count` values in `out`.
+  bool get_tex_gen(GLenum coord, GLenum pname, double* out, int* count);
+  bool enable_tex_gen(GLenum cap, bool on);  // false: not GL_TEXTURE_GEN_S..Q
+  bool tex_gen_enabled(GLenum cap) const { return tex_gen_.coords[cap - GL_TEXTURE_GEN_S].enabled; }
+
+  // --- line stipple (line_stipple.cpp)
+  void line_stipple(GLint factor, GLushort pattern);
+  // --- polygon stipple (polygon_stipple.cpp)
+  void polygon_stipple(const std::array<uint32_t, 32>& rows);
+  void get_polygon_stipple(GLubyte* out) const;  // packed with the pixel store's pack state
+
  private:
   void update_clip_planes();
+  // The "on" pieces of the line from prim_[a] (colour color_a) to prim_[b], as lines;
+  // the stipple counter goes on from stipple_counter_.
+  void stippled_line(uint32_t a, uint32_t b, Vec4 color_a, Vec4 color_b, bool offset);
+  uint32_t stipple_counter_ = 0;  // reset by glBegin, each GL_LINES line, each polygon
+  TexGenState tex_gen_;
+  bool tex_gen_needs_eye() const;
+  // The current texture coordinates with the enabled ones generated, for a vertex at
+  // `object` (object space) and `eye` (eye space; needed by all but object linear).
+  Vec4 generate_texcoord(const Vec4& object, const Vec4& eye) const;
 
   // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
   // triangles: the fragments whose centres it covers, with its colour and depth.
@@ -283,7 +316,7 @@ class Context {
   // --- frames and batches (frame.cpp)
   struct Pending {
     PrimitiveKind kind = PrimitiveKind::Triangles;
-    bool offset = false;
+    bool offset = false, stippled = false;
     PixelState state;
     // What the renderer's batch carries besides PixelState, as it was when the batch
     // opened (a width or height of 0 here is an empty viewport: nothing is drawn).
@@ -299,14 +332,15 @@ class Context {
   void submit_pending();
   void run_frame();  // end the frame, copy colour (and depth) out
   void copy_depth();
-  PixelState pixel_state(bool offset);
+  PixelState pixel_state(bool offset, bool stippled);
   void stencil_pixel_state(PixelState& s) const;          // stencil.cpp
   bool get_stencil(GLenum pname, std::vector<double>& out) const;  // stencil.cpp
   uint8_t stencil_clear_value() const;
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
   void emit_vertex(uint32_t i, const Vec4& color, bool shared);
-  Pending& target(PrimitiveKind kind, bool offset);
+  // `stippled`: the draws of filled polygons, which the polygon stipple applies to.
+  Pending& target(PrimitiveKind kind, bool offset, bool stippled = false);
   void changed() { pixel_dirty_ = true; }
 
   // --- the vertex stage (vertex.cpp)
@@ -332,6 +366,14 @@ class Context {
   GLenum format_;
   int depth_bits_;
   int stencil_bits_;  // 0 or 8
+  int accum_bits_;    // 0 or 16 per component (accum.cpp)
+  std::vector<int16_t> accum_;  // RGBA, width_ x height_, bottom row first
+  Vec4 accum_clear_{0, 0, 0, 0};
+  bool accum_returning_ = false;  // GL_RETURN's rectangles: only scissor and colour mask
+  Box accum_region() const;
+  bool accum_buffer_ready();
+  void clear_accum_buffer();
+  void accum_return(const Box& region, float value);
   void* buffer_ = nullptr;
   int width_ = 0, height_ = 0;
   std::unique_ptr<Renderer> renderer_;

@@ -155,8 +155,18 @@ void Context::finish() {
   if (renderer_) run_frame();
 }
 
-PixelState Context::pixel_state(bool offset) {
+PixelState Context::pixel_state(bool offset, bool stippled) {
   PixelState s;
+  if (accum_returning_) {  // glAccum(GL_RETURN): the scissor test and the colour mask only
+    s.scissor = raster_.scissor_test;
+    if (raster_.scissor_test) {
+      s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
+      s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
+    }
+    s.color_mask = raster_.color_mask_bits();
+    s.depth_test = s.depth_write = false;
+    return s;
+  }
   if (texture_.enabled) {
     TextureObject* t = bound_texture();
     if (const Texture* tex = texture_for_draw(*t)) {
@@ -212,6 +222,8 @@ PixelState Context::pixel_state(bool offset) {
   s.polygon_offset = offset;
   s.offset_factor = raster_.offset_factor, s.offset_units = raster_.offset_units;
   s.blend = raster_.blend;
+  s.logic_op = raster_.logic_op;
+  s.logic = LogicOp(raster_.logic_op_mode - GL_CLEAR);
   s.blend_src_rgb = blend_factor(raster_.blend_src), s.blend_src_alpha = blend_factor(raster_.blend_src_alpha);
   s.blend_dst_rgb = blend_factor(raster_.blend_dst), s.blend_dst_alpha = blend_factor(raster_.blend_dst_alpha);
   s.blend_op = raster_.blend_equation == GL_FUNC_SUBTRACT           ? BlendOp::Subtract
@@ -222,18 +234,21 @@ PixelState Context::pixel_state(bool offset) {
   s.blend_color = raster_.blend_color;
   s.color_mask = raster_.color_mask_bits();
   stencil_pixel_state(s);
+  s.polygon_stipple = stippled && raster_.polygon_stipple;
+  if (s.polygon_stipple) std::copy(raster_.stipple.begin(), raster_.stipple.end(), s.stipple);
   return s;
 }
 
-Context::Pending& Context::target(PrimitiveKind kind, bool offset) {
-  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset ||
+Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled) {
+  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset || pending_.stippled != stippled ||
                         pending_.index.size() >= kMaxBatchVertices))
     submit_pending();
   if (!have_pending_) {
     pending_.clear();
     pending_.kind = kind;
     pending_.offset = offset;
-    pending_.state = pixel_state(offset);
+    pending_.stippled = stippled;
+    pending_.state = pixel_state(offset, stippled);
     const Box& vp = transform_.viewport;
     // The framebuffer is kept bottom row first (see update_derived): GL's y as it is.
     pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};

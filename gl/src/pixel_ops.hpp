@@ -5,6 +5,7 @@
 
 #include <GL/gl.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -55,5 +56,9 @@ std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int heigh
 // glBitmap's width x height bits at `data` (GL_BITMAP with `store`'s row length, skips,
 // alignment and bit order): one byte per pixel, 1 where a fragment is drawn.
 std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data);
+
+// glPolygonStipple's 32x32 bitmap at `data` as rows, bit x of row y set where the
+// pattern keeps pixel (x, y) (polygon_stipple.cpp).
+std::array<uint32_t, 32> stipple_rows(const PixelStore& store, const void* data);
 
 }  // namespace velocity::gl

@@ -73,6 +73,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_POLYGON_OFFSET_UNITS: out = {raster_.offset_units}; return true;
     case GL_POINT_SIZE: out = {raster_.point_size}; return true;
     case GL_LINE_WIDTH: out = {raster_.line_width}; return true;
+    case GL_LINE_STIPPLE_PATTERN: out = {double(raster_.stipple_pattern)}; return true;
+    case GL_LINE_STIPPLE_REPEAT: out = {double(raster_.stipple_factor)}; return true;
     case GL_SHADE_MODEL: out = {double(lighting_.shade_model)}; return true;
     case GL_LIGHT_MODEL_AMBIENT: v4(lighting_.model_ambient), kind = 1; return true;
     case GL_LIGHT_MODEL_TWO_SIDE: out = {lighting_.two_side ? 1.0 : 0.0}; return true;
@@ -92,11 +94,13 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ALPHA_BITS: out = {format_ == GL_RGB || format_ == 0x4 ? 0.0 : 8.0}; return true;
     case GL_DEPTH_BITS: out = {depth_bits_ > 0 ? 24.0 : 0.0}; return true;
     // The framebuffer: one RGBA colour buffer (OSMesa's, single-buffered: GL_FRONT),
-    // a depth buffer, a stencil buffer (stencil.cpp); no accumulation or auxiliary
-    // buffers, no colour index, no stereo, no multisampling (all 0 until they exist,
-    // whatever the context asked for).
+    // a depth buffer, a stencil buffer (stencil.cpp), an accumulation buffer
+    // (accum.cpp); no auxiliary buffers, no colour index, no stereo, no multisampling
+    // (all 0 until they exist, whatever the context asked for).
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS: case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
+    case GL_ACCUM_ALPHA_BITS: out = {double(accum_bits_)}; return true;
+    case GL_ACCUM_CLEAR_VALUE: v4(accum_clear_), kind = 1; return true;
+    case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
     case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
     case GL_DOUBLEBUFFER: out = {double_buffered ? 1.0 : 0.0}; return true;
@@ -144,6 +148,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   *known = true;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
+  if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
   switch (cap) {
     case GL_DEPTH_TEST: return raster_.depth_test;
     case GL_CULL_FACE: return raster_.cull;
@@ -153,6 +158,9 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_COLOR_MATERIAL: return lighting_.color_material;
     case GL_TEXTURE_2D: return texture_.enabled;
     case GL_BLEND: return raster_.blend;
+    case GL_COLOR_LOGIC_OP: return raster_.logic_op;
+    case GL_LINE_STIPPLE: return raster_.line_stipple;
+    case GL_POLYGON_STIPPLE: return raster_.polygon_stipple;
     case GL_ALPHA_TEST: return raster_.alpha_test;
     case GL_FOG: return raster_.fog;
     case GL_SCISSOR_TEST: return raster_.scissor_test;

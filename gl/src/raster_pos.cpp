@@ -29,7 +29,7 @@ void Context::raster_pos(Vec4 v) {
               float(vp.y) + (clip.y * d + 1) * 0.5f * float(vp.height), n + (clip.z * d + 1) * 0.5f * (f - n), clip.w};
   r.valid = true;
   r.color = lighting_.enabled ? lit_front(eye) : Vec4{unit(color_.x), unit(color_.y), unit(color_.z), unit(color_.w)};
-  r.texcoord = transform_.texture.back() * texcoord_;
+  r.texcoord = transform_.texture.back() * (tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_);
   r.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
 }
 

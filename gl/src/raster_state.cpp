@@ -29,6 +29,7 @@ void Context::enable(GLenum cap, bool on) {
   if (in_begin_error()) return;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return void(lighting_.lights[cap - GL_LIGHT0].enabled = on);
   if (enable_clip_plane(cap, on)) return;  // (clip_planes.cpp)
+  if (enable_tex_gen(cap, on)) return;     // (tex_gen.cpp)
   switch (cap) {
     case GL_DEPTH_TEST: raster_.depth_test = on; break;
     case GL_CULL_FACE: raster_.cull = on; return;
@@ -41,6 +42,9 @@ void Context::enable(GLenum cap, bool on) {
       return;
     case GL_TEXTURE_2D: texture_.enabled = on; break;
     case GL_BLEND: raster_.blend = on; break;
+    case GL_COLOR_LOGIC_OP: raster_.logic_op = on; break;
+    case GL_LINE_STIPPLE: raster_.line_stipple = on; return;
+    case GL_POLYGON_STIPPLE: raster_.polygon_stipple = on; break;
     case GL_ALPHA_TEST: raster_.alpha_test = on; break;
     case GL_FOG: raster_.fog = on; break;
     case GL_SCISSOR_TEST: raster_.scissor_test = on; break;
@@ -73,6 +77,7 @@ void Context::clear(GLbitfield mask) {
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
   if (!renderer_) return;
+  if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer();  // (the context's own: accum.cpp)
   submit_pending();
   const RasterState& r = raster_;
   const bool color = mask & GL_COLOR_BUFFER_BIT, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;

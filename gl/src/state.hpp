@@ -17,6 +17,7 @@
 
 #include "clip_planes.hpp"
 #include "pixel_ops.hpp"
+#include "tex_gen.hpp"
 #include "shading/lighting.hpp"
 #include "velocity/math.hpp"
 #include "velocity/primitives.hpp"
@@ -125,6 +126,8 @@ struct RasterState {
   GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // (RGB; glBlendFunc sets alpha's too)
   GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO, blend_equation = GL_FUNC_ADD;  // blend.cpp
   Vec4 blend_color{0, 0, 0, 0};
+  bool logic_op = false;  // GL_COLOR_LOGIC_OP
+  GLenum logic_op_mode = GL_COPY;
   bool alpha_test = false;
   GLenum alpha_func = GL_ALWAYS;
   float alpha_ref = 0;
@@ -139,6 +142,16 @@ struct RasterState {
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0, offset_units = 0;
   float point_size = 1, line_width = 1;
+  bool polygon_stipple = false;  // GL_POLYGON_STIPPLE (polygon_stipple.cpp)
+  std::array<uint32_t, 32> stipple = all_ones();  // bit x of row y: pixel (x, y) mod 32
+  static std::array<uint32_t, 32> all_ones() {
+    std::array<uint32_t, 32> a;
+    a.fill(~0u);
+    return a;
+  }
+  bool line_stipple = false;  // GL_LINE_STIPPLE (line_stipple.cpp)
+  GLint stipple_factor = 1;
+  GLushort stipple_pattern = 0xffff;
   uint8_t color_mask_bits() const {
     return uint8_t((color_mask[0] ? 1 : 0) | (color_mask[1] ? 2 : 0) | (color_mask[2] ? 4 : 0) | (color_mask[3] ? 8 : 0));
   }
@@ -246,6 +259,7 @@ struct AttribFrame {
   RasterState raster;
   LightingState lighting;
   StencilState stencil;
+  Vec4 accum_clear;
   Box viewport;
   float depth_near = 0, depth_far = 1;
   GLenum matrix_mode = GL_MODELVIEW;
@@ -261,6 +275,7 @@ struct AttribFrame {
   RasterPosition raster_pos;  // GL_CURRENT_BIT
   float zoom_x = 1, zoom_y = 1;  // GL_PIXEL_MODE_BIT
   UserClipState user_clip;  // GL_TRANSFORM_BIT (planes and enables), GL_ENABLE_BIT (enables)
+  TexGenState tex_gen;      // GL_TEXTURE_BIT (all of it), GL_ENABLE_BIT (enables)
 };
 
 struct ClientAttribFrame {

@@ -21,6 +21,7 @@ void Context::begin(GLenum mode) {
   in_begin_ = true;
   mode_ = mode;
   prim_.clear(), order_.clear(), emitted_.clear();
+  stipple_counter_ = 0;
   ++pending_gen_;  // prim_ indices start again
   if (pending_gen_ == 0) pending_gen_ = 1;
   update_derived();
@@ -38,7 +39,8 @@ void Context::end() {
 // and the light model cannot change inside it; materials can).
 void Context::prepare_lighting() {
   lights_used_ = 0;
-  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count;
+  need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count ||
+              (texture_.enabled && tex_gen_needs_eye());
   if (!lighting_.enabled) return;
   for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
@@ -77,8 +79,9 @@ void Context::vertex(Vec4 v) {
   Vertex out;
   out.clip = transform_.mvp * v;
   out.edge = edge_flag_;
+  Vec4 eye{};
   if (lighting_.enabled || need_eye_) {
-    const Vec4 eye = need_eye_ ? transform_.modelview.back() * v : Vec4{};
+    if (need_eye_) eye = transform_.modelview.back() * v;
     for (uint32_t k = 0; k < user_clip.count; ++k) {
       const Vec4& p = user_clip.active[k];
       out.clip_distance[k] = p.x * eye.x + p.y * eye.y + p.z * eye.z + p.w * eye.w;
@@ -94,7 +97,10 @@ void Context::vertex(Vec4 v) {
   if (!lighting_.enabled) out.front = out.back = clamp_color(color_);
   // (Feedback reports the coordinates untransformed while texturing is off, as Mesa does.)
   if (!texture_.enabled && feeding_back()) out.tex = texcoord_;
-  if (texture_.enabled) out.tex = transform_.texture_identity ? texcoord_ : transform_.texture.back() * texcoord_;
+  if (texture_.enabled) {
+    const Vec4 t = tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_;  // (tex_gen.cpp)
+    out.tex = transform_.texture_identity ? t : transform_.texture.back() * t;
+  }
   push_vertex(out);
 }
 
@@ -122,7 +128,10 @@ void Context::assemble(bool final) {
       for (uint32_t i = 0; i < n; ++i) point_vertex(o[i]);
       break;
     case GL_LINES:
-      for (uint32_t i = 0; i + 1 < n; i += 2) line_segment(o[i], o[i + 1], o[i + 1]);
+      for (uint32_t i = 0; i + 1 < n; i += 2) {
+        stipple_counter_ = 0;  // (each independent line starts the pattern again)
+        line_segment(o[i], o[i + 1], o[i + 1]);
+      }
       break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -218,7 +227,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
   const GLenum mode = raster_.polygon_mode[front ? 0 : 1];
   if (feeding_back() && mode == GL_FILL) return feedback_polygon(idx, n, provoking, back_colors);
   if (mode == GL_FILL) {
-    target(PrimitiveKind::Triangles, raster_.offset_fill);
+    target(PrimitiveKind::Triangles, raster_.offset_fill, true);
     auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
       emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared), emit_vertex(c, color(c), shared);
     };
@@ -229,6 +238,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
     const bool flags = mode_ == GL_TRIANGLES || mode_ == GL_QUADS || mode_ == GL_POLYGON;
     if (mode == GL_LINE) {
       target(PrimitiveKind::Lines, raster_.offset_line);
+      stipple_counter_ = 0;
       for (int k = 0; k < n; ++k) {
         const uint32_t a = idx[k], b = idx[(k + 1) % n];
         if (flags && !prim_[a].edge) continue;
@@ -236,7 +246,8 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
           feedback_line(a, b);
           continue;
         }
-        emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
+        if (raster_.line_stipple) stippled_line(a, b, color(a), color(b), raster_.offset_line);
+        else emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
       }
     } else {
       target(PrimitiveKind::Points, raster_.offset_point);
@@ -253,8 +264,12 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
     return select_hit(ab, 2, false);
   }
   if (feeding_back()) return feedback_line(a, b);
-  target(PrimitiveKind::Lines, false);
   const bool flat = lighting_.shade_model == GL_FLAT;
+  if (raster_.line_stipple) {  // (line_stipple.cpp)
+    const Vec4 ca = flat ? prim_[provoking].front : prim_[a].front, cb = flat ? prim_[provoking].front : prim_[b].front;
+    return stippled_line(a, b, ca, cb, false);
+  }
+  target(PrimitiveKind::Lines, false);
   emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat);
   emit_vertex(b, flat ? prim_[provoking].front : prim_[b].front, !flat);
 }

@@ -51,6 +51,27 @@ enum class BlendFactor : uint8_t {
 // glBlendEquation: result = src * Fs (op) dst * Fd; Min and Max ignore the factors.
 enum class BlendOp : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
 
+// glLogicOp's operations on the framebuffer's 8-bit channels, s the fragment's colour,
+// d the pixel's, in GL's order (GL_CLEAR + n).
+enum class LogicOp : uint8_t {
+  Clear,         // 0
+  And,           // s & d
+  AndReverse,    // s & ~d
+  Copy,          // s
+  AndInverted,   // ~s & d
+  Noop,          // d
+  Xor,           // s ^ d
+  Or,            // s | d
+  Nor,           // ~(s | d)
+  Equiv,         // ~(s ^ d)
+  Invert,        // ~d
+  OrReverse,     // s | ~d
+  CopyInverted,  // ~s
+  OrInverted,    // ~s | d
+  Nand,          // ~(s & d)
+  Set,           // all ones
+};
+
 // glTexEnv's GL_TEXTURE_ENV_MODE.
 enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add };
 
@@ -122,6 +143,10 @@ struct PixelState {
   BlendFactor blend_src_alpha = BlendFactor::One, blend_dst_alpha = BlendFactor::Zero;
   BlendOp blend_op = BlendOp::Add;
   Vec4 blend_color{0, 0, 0, 0};
+  // The logic op (GL_COLOR_LOGIC_OP) takes the place of blending: the fragment's colour,
+  // as the framebuffer stores it, combined bit by bit with the pixel's.
+  bool logic_op = false;
+  LogicOp logic = LogicOp::Copy;
 
   // The stencil test, between the alpha and the depth test: it passes where
   // (ref & value_mask) func (stencil & value_mask); the stencil value then becomes
@@ -133,6 +158,12 @@ struct PixelState {
   StencilOp stencil_fail = StencilOp::Keep, stencil_depth_fail = StencilOp::Keep, stencil_pass = StencilOp::Keep;
 
   uint8_t color_mask = 0xf;  // bit 0 red, 1 green, 2 blue, 3 alpha (glColorMask)
+
+  // Polygon stipple (glPolygonStipple): a fragment at framebuffer pixel (x, y) is kept
+  // where bit x % 32 of stipple[y % 32] is set. The front end sets it for the draws of
+  // filled polygons only.
+  bool polygon_stipple = false;
+  uint32_t stipple[32] = {};
 };
 
 enum class PrimitiveKind : uint8_t { Points, Lines, Triangles };

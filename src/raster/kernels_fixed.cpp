@@ -18,6 +18,37 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
 
+// glLogicOp on packed RGBA8 colours: s the fragment's, d the pixel's.
+HWY_INLINE VU logic_op(LogicOp op, VU s, VU d) {
+  const VU ones = hn::Set(DU(), 0xffffffffu);
+  switch (op) {
+    case LogicOp::Clear: return hn::Zero(DU());
+    case LogicOp::And: return hn::And(s, d);
+    case LogicOp::AndReverse: return hn::AndNot(d, s);
+    case LogicOp::Copy: return s;
+    case LogicOp::AndInverted: return hn::AndNot(s, d);
+    case LogicOp::Noop: return d;
+    case LogicOp::Xor: return hn::Xor(s, d);
+    case LogicOp::Or: return hn::Or(s, d);
+    case LogicOp::Nor: return hn::Xor(hn::Or(s, d), ones);
+    case LogicOp::Equiv: return hn::Xor(hn::Xor(s, d), ones);
+    case LogicOp::Invert: return hn::Xor(d, ones);
+    case LogicOp::OrReverse: return hn::Or(s, hn::Xor(d, ones));
+    case LogicOp::CopyInverted: return hn::Xor(s, ones);
+    case LogicOp::OrInverted: return hn::Or(hn::Xor(s, ones), d);
+    case LogicOp::Nand: return hn::Xor(hn::And(s, d), ones);
+    default: return ones;  // Set
+  }
+}
+
+// The 4x4 block at framebuffer pixel (x, y) (x a multiple of 4) as the polygon stipple
+// keeps it, in a block mask's layout (bit row * 4 + column).
+HWY_INLINE uint16_t stipple_mask(const PixelState& p, int x, int y) {
+  uint32_t m = 0;
+  for (int row = 0; row < 4; ++row) m |= ((p.stipple[(y + row) & 31] >> (x & 31)) & 0xfu) << (4 * row);
+  return uint16_t(m);
+}
+
 // --- the fixed-function kernel (PrimitiveBatch draws).
 template <bool kTex, bool kFog>
 HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
@@ -39,7 +70,11 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
                           ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
   if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids) return;  // nothing would be written
   for (int b = 0; b < n; ++b) {
-    const Block& blk = blocks[b];
+    Block blk = blocks[b];
+    if (p.polygon_stipple) {
+      blk.mask &= stipple_mask(p, t.x0 + (blk.index & 15) * 4, t.y0 + (blk.index >> 4) * 4);
+      if (!blk.mask) continue;
+    }
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
@@ -71,11 +106,12 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       }
       if (writes_depth) hn::BlendedStore(z, m, d, zp);
       const VU dst = hn::Load(du, cp);
-      if (p.blend) {
+      if (p.blend && !p.logic_op) {
         const Rgba dc = unpack(dst);
         c = {blend_channel(p, 0, c, dc), blend_channel(p, 1, c, dc), blend_channel(p, 2, c, dc), blend_channel(p, 3, c, dc)};
       }
       VU out = pack_colors(c.r, c.g, c.b, c.a);
+      if (p.logic_op) out = logic_op(p.logic, out, dst);
       if (keep) out = hn::Or(hn::AndNot(hn::Set(du, keep), out), hn::And(dst, hn::Set(du, keep)));
       const auto mu = hn::RebindMask(du, m);
       hn::BlendedStore(out, mu, du, cp);

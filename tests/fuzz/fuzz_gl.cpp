@@ -153,7 +153,21 @@ void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, fl
     case 3: glBitmap(w, h, a, b, c, d, in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr); break;
     case 4: glDrawPixels(w, h, format, type, in.u8() & 1 ? image.data() : nullptr); break;
     case 5: glCopyPixels(in.integer() % 128, in.integer() % 128, w * (1 + in.below(8)), h, in.u8() & 1 ? GL_COLOR : e1); break;
-    case 6: glPixelZoom(a, b); break;
+    case 6: {
+      // The polygon stipple through the random unpack state (48 rows of 8 bytes at
+      // most: inside `image`); read back into 32 rows of at most 8 bytes.
+      glPixelZoom(a, b);
+      glPolygonStipple(in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr);
+      (in.u8() & 1 ? glEnable : glDisable)(GL_POLYGON_STIPPLE);
+      GLubyte back[32 * 8];
+      glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+      glPixelStorei(GL_PACK_ROW_LENGTH, 0), glPixelStorei(GL_PACK_SKIP_ROWS, 0), glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+      glPixelStorei(GL_PACK_ALIGNMENT, 1 << in.below(4));
+      glPixelStorei(GL_PACK_LSB_FIRST, in.u8() & 1);
+      glGetPolygonStipple(back);
+      glPopClientAttrib();
+      break;
+    }
     case 7: {
       static const GLenum counts[] = {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
       glPixelStorei(counts[in.below(3)], in.below(18) - 1);
@@ -190,6 +204,39 @@ void clip_call(Bytes& in, float a, float b, float c, float d) {
   }
 }
 
+// Texture coordinate generation: any coordinate, name, mode and plane (NaN too) in
+// every form, enabled and disabled, read back; a textured triangle drawn with it.
+void tex_gen_call(Bytes& in, float a, float b, float c, float d, GLenum e1) {
+  static const GLenum names[] = {GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE, GL_TEXTURE_ENV_MODE};
+  static const GLenum modes[] = {GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP, GL_NORMAL_MAP, GL_REFLECTION_MAP};
+  const GLenum coord = GL_S + GLenum(in.below(5)) - (in.u8() & 1);
+  const GLenum pname = in.u8() & 1 ? names[in.below(4)] : e1;
+  const float fv[4] = {a, b, c, d};
+  const GLint iv[4] = {GLint(in.below(8)) - 3, GLint(modes[in.below(5)]), 0, 1};
+  const GLdouble dv[4] = {d, c, b, a};
+  switch (in.below(7)) {
+    case 0: glTexGeni(coord, pname, GLint(modes[in.below(5)])); break;
+    case 1: glTexGenf(coord, pname, in.u8() & 1 ? a : float(modes[in.below(5)])); break;
+    case 2: glTexGenfv(coord, pname, in.u8() & 1 ? fv : nullptr); break;
+    case 3: glTexGeniv(coord, pname, iv); break;
+    case 4: glTexGendv(coord, pname, dv); break;
+    case 5: (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_GEN_S + GLenum(in.below(5))); break;
+    default: {
+      GLfloat f[4];
+      GLint i[4];
+      GLdouble g[4];
+      glGetTexGenfv(coord, pname, f);
+      glGetTexGeniv(coord, pname, i);
+      glGetTexGendv(coord, pname, g);
+      glEnable(GL_TEXTURE_2D);
+      glBegin(GL_TRIANGLES);
+      glNormal3f(a, b, c), glVertex3f(a, b, 0), glVertex3f(b, c, d), glVertex3f(d, a, c);
+      glEnd();
+      break;
+    }
+  }
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -221,7 +268,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const GLenum format = formats[in.below(5)];
   const int w = 1 + in.below(96), h = 1 + in.below(96);
   const int buffers = in.below(3);  // none, depth, depth and stencil
-  OSMesaContext ctx = OSMesaCreateContextExt(format, buffers ? 24 : 0, buffers == 2 ? 8 : 0, 0, nullptr);
+  OSMesaContext ctx = OSMesaCreateContextExt(format, buffers ? 24 : 0, buffers == 2 ? 8 : 0, buffers == 2 ? 16 : 0, nullptr);
   fuzz_check(ctx != nullptr);
   const size_t bpp = format == OSMESA_RGB || format == OSMESA_BGR ? 3 : 4;
   std::vector<uint8_t> buffer(size_t(w) * h * bpp);
@@ -254,6 +301,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             glStencilOp(e1, e2, in.enumerant());
             glStencilMask(GLuint(iv4[2]));
             glClearStencil(iv4[3]);
+            // The accumulation buffer (the context with every buffer has one).
+            glClearAccum(a, b, c, d);
+            glAccum(in.u8() & 1 ? GL_ACCUM + GLenum(in.below(5)) : e1, a * b);
             break;
           case 1: (in.u8() & 1 ? glPushAttrib(GLbitfield(iv4[0])) : glPopAttrib()); break;
           case 2: (in.u8() & 1 ? glPushClientAttrib(GLbitfield(iv4[0])) : glPopClientAttrib()); break;
@@ -425,7 +475,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         break;
       }
       case 61: (in.u8() & 1 ? glFinish : glFlush)(); break;
-      case 62: glRectf(a, b, c, d); break;
+      case 62:
+        if (in.u8() & 1) glLogicOp(e1);
+        if (in.u8() & 1) glLineStipple(in.integer(), GLushort(in.integer()));
+        (in.u8() & 1 ? glEnable : glDisable)(GL_LINE_STIPPLE);
+        (in.u8() & 1 ? glEnable : glDisable)(GL_COLOR_LOGIC_OP);
+        glRectf(a, b, c, d);
+        glBegin(in.u8() & 1 ? GL_LINE_LOOP : GL_LINES);
+        glVertex3f(a, b, c), glVertex3f(c, d, a), glVertex4f(d, a, b, c), glVertex2f(b, d);
+        glEnd();
+        break;
       default: {
         GLint ww, hh, bytes;
         void* depth = nullptr;
@@ -435,6 +494,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         quadric_call(in, quadric, a, b, c, d, e1);
         pixel_call(in, pixels, a, b, c, d, e1, e2);
         clip_call(in, a, b, c, d);
+        tex_gen_call(in, a, b, c, d, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif

@@ -46,11 +46,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         fuzz_check(found[i - 1]->double_buffer < found[i]->double_buffer ||
                 (found[i - 1]->double_buffer == found[i]->double_buffer && found[i - 1]->depth <= found[i]->depth));
       int stencil = -1, accum = -1;
-      // An 8-bit stencil buffer with the depth buffer, or neither; at least what was asked
-      // (unless a configuration was asked for by its id, which overrides the rest).
+      // An 8-bit stencil buffer and a 16-bit accumulation buffer with the depth buffer,
+      // or none of them; at least what was asked (unless a configuration was asked for by
+      // its id, which overrides the rest).
       fuzz_check(glx::config_attribute(*found[i], 0, 0x0D /*GLX_STENCIL_SIZE*/, &stencil) &&
                  stencil == (found[i]->depth ? 8 : 0) && (w.id != -1 || w.stencil == -1 || stencil >= w.stencil));
-      fuzz_check(glx::config_attribute(*found[i], 0, 0x0E /*GLX_ACCUM_RED_SIZE*/, &accum) && accum == 0);
+      fuzz_check(glx::config_attribute(*found[i], 0, 0x0E /*GLX_ACCUM_RED_SIZE*/, &accum) &&
+                 accum == (found[i]->depth ? 16 : 0) && (w.id != -1 || w.accum[0] == -1 || accum >= w.accum[0]));
     }
   }
   if (glx::parse_visual_attributes(list.data(), n, w)) {

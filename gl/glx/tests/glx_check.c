@@ -1,7 +1,7 @@
 /* The GLX vendor library used as any GLX program uses the system's libGL (this file
  * is built against the system's <GL/glx.h> and libglvnd's libGL, never against pGL):
  * run with __GLX_VENDOR_LIBRARY_NAME=velocity under an X server (glx_test.py).
- * Visuals and FBConfigs say what exists (depth, stencil, alpha, no accumulation); a double-buffered
+ * Visuals and FBConfigs say what exists (depth, stencil, alpha, accumulation); a double-buffered
  * window shows at glXSwapBuffers exactly what GL drew, a single-buffered one at
  * glFlush; contexts are created, made current, destroyed and created again;
  * GLX_ARB_create_context gives what pGL is and refuses the rest with X errors;
@@ -119,9 +119,15 @@ int main(void) {
   const int too_much_stencil[] = {GLX_STENCIL_SIZE, 9, None};
   GLXFBConfig* none = glXChooseFBConfig(dpy, screen, too_much_stencil, &n);
   CHECK(!none && n == 0, "a 9-bit stencil buffer is offered");
-  const int with_accum[] = {GLX_ACCUM_RED_SIZE, 1, None};
-  none = glXChooseFBConfig(dpy, screen, with_accum, &n);
-  CHECK(!none && n == 0, "an accumulation buffer is offered");
+  const int with_accum[] = {GLX_ACCUM_RED_SIZE, 1, GLX_ACCUM_ALPHA_SIZE, 16, None};
+  GLXFBConfig* accum = glXChooseFBConfig(dpy, screen, with_accum, &n);
+  CHECK(accum && n == 2 && config_attribute(accum[0], GLX_ACCUM_GREEN_SIZE) == 16 &&
+            config_attribute(accum[0], GLX_STENCIL_SIZE) == 8,
+        "%d configs with an accumulation buffer", n);
+  XFree(accum);
+  const int too_much_accum[] = {GLX_ACCUM_BLUE_SIZE, 17, None};
+  none = glXChooseFBConfig(dpy, screen, too_much_accum, &n);
+  CHECK(!none && n == 0, "a 17-bit accumulation buffer is offered");
   const int wanted[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, GLX_DOUBLEBUFFER, True,
                         GLX_RED_SIZE, 8, GLX_ALPHA_SIZE, 1, GLX_DEPTH_SIZE, 16, None};
   GLXFBConfig* configs = glXChooseFBConfig(dpy, screen, wanted, &n);
@@ -137,7 +143,7 @@ int main(void) {
   configs = glXChooseFBConfig(dpy, screen, single_no_depth, &n);
   CHECK(configs && n == 2 && config_attribute(configs[0], GLX_DEPTH_SIZE) == 0, "smaller depth first");
   XFree(configs);
-  printf("ok configs: 4, depth 24 and stencil 8 or neither, alpha 8, no accumulation buffer\n");
+  printf("ok configs: 4, depth 24, stencil 8 and accumulation 16 or none, alpha 8\n");
 
   int rgba_only[] = {GLX_RED_SIZE, 1, None};
   CHECK(!glXChooseVisual(dpy, screen, rgba_only), "a colour-index visual");

@@ -264,6 +264,12 @@ typedef double GLclampd;
 /* The framebuffer and the implementation's limits (glGet: docs/gl.md says what each
  * answers; a feature pGL lacks has a limit of 0) */
 #define GL_STENCIL_BITS 0x0D57
+/* glAccum's operations (GL_ADD is also a texture environment mode) and its clear value */
+#define GL_ACCUM 0x0100
+#define GL_LOAD 0x0101
+#define GL_RETURN 0x0102
+#define GL_MULT 0x0103
+#define GL_ACCUM_CLEAR_VALUE 0x0B80
 #define GL_ACCUM_RED_BITS 0x0D58
 #define GL_ACCUM_GREEN_BITS 0x0D59
 #define GL_ACCUM_BLUE_BITS 0x0D5A
@@ -607,6 +613,9 @@ GLAPI void GLAPIENTRY glClear(GLbitfield mask);
 GLAPI void GLAPIENTRY glClearColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 GLAPI void GLAPIENTRY glClearDepth(GLclampd depth);
 GLAPI void GLAPIENTRY glClearStencil(GLint s);
+/* The accumulation buffer (an OSMesa context's accumBits) */
+GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
+GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
 GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
                                        GLsizei height, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
@@ -627,6 +636,39 @@ GLAPI void GLAPIENTRY glPopName(void);
 GLAPI void GLAPIENTRY glLoadName(GLuint name);
 GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendEquation(GLenum mode);
+
+/* The logic op (GL 1.1's GL_COLOR_LOGIC_OP) */
+#define GL_LOGIC_OP_MODE 0x0BF0
+#define GL_INDEX_LOGIC_OP 0x0BF1
+#define GL_LOGIC_OP 0x0BF1
+#define GL_COLOR_LOGIC_OP 0x0BF2
+#define GL_CLEAR 0x1500
+#define GL_AND 0x1501
+#define GL_AND_REVERSE 0x1502
+#define GL_COPY 0x1503
+#define GL_AND_INVERTED 0x1504
+#define GL_NOOP 0x1505
+#define GL_XOR 0x1506
+#define GL_OR 0x1507
+#define GL_NOR 0x1508
+#define GL_EQUIV 0x1509
+#define GL_OR_REVERSE 0x150B
+#define GL_COPY_INVERTED 0x150C
+#define GL_OR_INVERTED 0x150D
+#define GL_NAND 0x150E
+#define GL_SET 0x150F
+GLAPI void GLAPIENTRY glLogicOp(GLenum opcode);
+
+/* Line stipple */
+#define GL_LINE_STIPPLE 0x0B24
+#define GL_LINE_STIPPLE_PATTERN 0x0B25
+#define GL_LINE_STIPPLE_REPEAT 0x0B26
+GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
+
+/* Polygon stipple */
+#define GL_POLYGON_STIPPLE 0x0B42
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glGetPolygonStipple(GLubyte *mask);
 GLAPI void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 GLAPI void GLAPIENTRY glBlendFuncSeparateEXT(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
 GLAPI void GLAPIENTRY glBlendEquationEXT(GLenum mode);
@@ -797,6 +839,33 @@ GLAPI void GLAPIENTRY glWindowPos3sv(const GLshort *v);
 #define GL_CLIP_PLANE5 0x3005
 GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
 GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
+
+/* Texture coordinate generation (GL 1.0; the normal and reflection maps GL 1.3). */
+#define GL_S 0x2000
+#define GL_T 0x2001
+#define GL_R 0x2002
+#define GL_Q 0x2003
+#define GL_TEXTURE_GEN_S 0x0C60
+#define GL_TEXTURE_GEN_T 0x0C61
+#define GL_TEXTURE_GEN_R 0x0C62
+#define GL_TEXTURE_GEN_Q 0x0C63
+#define GL_TEXTURE_GEN_MODE 0x2500
+#define GL_OBJECT_PLANE 0x2501
+#define GL_EYE_PLANE 0x2502
+#define GL_EYE_LINEAR 0x2400
+#define GL_OBJECT_LINEAR 0x2401
+#define GL_SPHERE_MAP 0x2402
+#define GL_NORMAL_MAP 0x8511
+#define GL_REFLECTION_MAP 0x8512
+GLAPI void GLAPIENTRY glTexGend(GLenum coord, GLenum pname, GLdouble param);
+GLAPI void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glTexGeni(GLenum coord, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+GLAPI void GLAPIENTRY glTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+GLAPI void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
 
 /* Vertex arrays */
 GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);

@@ -18,6 +18,7 @@ static unsigned char* conf_buffer;
 static int conf_width, conf_height;
 static const char* conf_dir = ".";
 static int conf_stencil_bits = 0; /* set before conf_init for a context with a stencil buffer */
+static int conf_accum_bits = 0;   /* and with an accumulation buffer */
 
 static void conf_fail(const char* what) {
   fprintf(stderr, "conformance: %s\n", what);
@@ -29,7 +30,7 @@ static void conf_fail(const char* what) {
 static void conf_init(int argc, char** argv, int width, int height) {
   if (argc > 1) conf_dir = argv[1];
   conf_width = width, conf_height = height;
-  conf_ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, conf_stencil_bits, 0, NULL);
+  conf_ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, conf_stencil_bits, conf_accum_bits, NULL);
   if (!conf_ctx) conf_fail("OSMesaCreateContextExt failed");
   conf_buffer = (unsigned char*)calloc((size_t)width * height, 4);
   if (!conf_buffer) conf_fail("out of memory");
