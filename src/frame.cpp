@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <new>
 
@@ -118,6 +119,24 @@ class CpuBackend final : public Backend {
   Sphere caster_bounds_{{}, -1};
   std::vector<ShadowLight> shadow_lights_;
   std::vector<std::unique_ptr<CpuBackend>> shadow_passes_;
+  // What the depth passes last drew (render_shadows): while a frame's is the same, the
+  // maps are kept, not drawn again. Cut-out casters are never compared (their textures
+  // and alpha could change unseen): a frame with one draws its maps.
+  struct ShadowKey {
+    struct Cast {
+      const Mesh* mesh;
+      Mat4 world;
+      bool two_sided;
+      uint64_t geometry;  // geometry_fingerprint of the mesh
+      bool operator==(const Cast&) const = default;
+    };
+    std::vector<Cast> casters;
+    std::vector<ShadowView> views;
+    int size = 0;
+    bool cull_back_faces = true, reusable = false;
+    bool same_as(const ShadowKey& k) const;
+  };
+  ShadowKey shadow_key_, next_shadow_key_;
   CpuBackend* owner_ = nullptr;  // a depth pass: its owner's frame and threads
   Material depth_material_, depth_two_sided_;
 
@@ -230,6 +249,32 @@ void CpuBackend::begin(const Mat4& view, const Mat4& projection, bool orthograph
 }
 
 namespace {
+
+// A fingerprint of what a depth pass reads of a mesh, its positions and triangles, so
+// that a mesh changed in place between frames has its maps drawn again. Four
+// multiply-xor chains over the 32-bit words, so that the multiplies overlap.
+uint64_t geometry_fingerprint(const Mesh& mesh) {
+  uint64_t h[4] = {0x9e3779b97f4a7c15u, 0xbf58476d1ce4e5b9u, 0x94d049bb133111ebu, 0x2545f4914f6cdd1du};
+  auto mix = [&](const void* data, size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    size_t i = 0;
+    for (; i + 16 <= bytes; i += 16)
+      for (int k = 0; k < 4; ++k) {
+        uint32_t w;
+        std::memcpy(&w, b + i + 4 * k, 4);
+        h[k] = (h[k] ^ w) * 0x100000001b3u;
+      }
+    for (; i + 4 <= bytes; i += 4) {
+      uint32_t w;
+      std::memcpy(&w, b + i, 4);
+      h[0] = (h[0] ^ w) * 0x100000001b3u;
+    }
+    h[1] = (h[1] ^ bytes) * 0x100000001b3u;
+  };
+  mix(mesh.positions.data(), mesh.positions.size() * sizeof(Vec3));
+  mix(mesh.triangles.data(), mesh.triangles.size() * sizeof(Triangle));
+  return h[0] ^ (h[1] << 1 | h[1] >> 63) ^ (h[2] << 2 | h[2] >> 62) ^ (h[3] << 3 | h[3] >> 61);
+}
 
 // Whether a draw of `mesh` with `material` (null: the mesh's own) has a slot whose
 // alpha decides which pixels it covers: a Pbr material (as the frame shades it) that is
@@ -421,11 +466,25 @@ void CpuBackend::render_shadows() {
   FrameStart start;
   start.color = {0, 0, 0, 0};
   static const std::vector<Light> kNoLights;
+  // The same casters, lights and camera as the last frame's: its maps are this one's.
+  ShadowKey& key = r.next_shadow_key_;
+  key.casters.clear(), key.views.clear();
+  key.size = size, key.cull_back_faces = o.cull_back_faces;
+  key.reusable = std::none_of(r.casters_.begin(), r.casters_.end(), [](const Caster& c) { return c.cut_out; });
+  if (key.reusable)
+    for (const Caster& c : r.casters_) key.casters.push_back({c.mesh, c.world, c.two_sided, geometry_fingerprint(*c.mesh)});
+  for (const ShadowLight& s : r.shadow_lights_) key.views.insert(key.views.end(), s.views, s.views + s.faces);
+  const bool keep = key.same_as(r.shadow_key_);
+  r.shadow_key_.reusable = keep;  // maps half drawn (an error below) match nothing
   size_t pass = 0;
   for (ShadowLight& s : r.shadow_lights_)
     for (int f = 0; f < s.faces; ++f, ++pass) {
       if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
       CpuBackend& b = *r.shadow_passes_[pass];
+      if (keep) {
+        s.shadow.face[f].depth = b.framebuffer.depth.data();
+        continue;
+      }
       b.resize(size, size, 1);
       BlockVector<uint32_t>().swap(b.framebuffer.color);  // never touched: depth only
       b.begin(s.views[f].view, s.views[f].projection, s.views[f].orthographic, kNoLights, start, o);
@@ -434,9 +493,20 @@ void CpuBackend::render_shadows() {
       b.run_frame(false);
       s.shadow.face[f].depth = b.framebuffer.depth.data();
     }
+  std::swap(r.shadow_key_, key);
   r.plan.lights.shadows = !r.shadow_lights_.empty();
   for (const ShadowLight& s : r.shadow_lights_)
     (s.directional ? r.plan.lights.directional[s.index].shadow : r.plan.lights.point[s.index].shadow) = &s.shadow;
+}
+
+bool CpuBackend::ShadowKey::same_as(const ShadowKey& k) const {
+  if (!reusable || !k.reusable || size != k.size || cull_back_faces != k.cull_back_faces) return false;
+  if (casters != k.casters || views.size() != k.views.size()) return false;
+  for (size_t i = 0; i < views.size(); ++i)
+    if (!(views[i].view == k.views[i].view) || !(views[i].projection == k.views[i].projection) ||
+        views[i].orthographic != k.views[i].orthographic)
+      return false;
+  return true;
 }
 
 // glTF's BLEND materials: their draws go after the opaque ones, farthest first (by the

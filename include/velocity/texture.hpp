@@ -46,10 +46,18 @@ class Texture {
   int width() const { return levels_[0].width; }
   int height() const { return levels_[0].height; }
   const std::vector<Level>& levels() const { return levels_; }
-  size_t memory_bytes() const;
+  // The levels' texels read as sRGB-encoded colours and decoded to linear light, 16
+  // bits a channel (RGBA16, red in the low bits; alpha as it is, times 257): what a
+  // linear frame's colour textures sample, so the kernels filter linear values and
+  // decode none per texel. Made on the first call (thread-safe), kept with the texture
+  // (and its copies) from then on: twice the memory of levels().
+  const std::vector<std::vector<uint64_t>>& linear_levels() const;
+  size_t memory_bytes() const;  // levels() only
 
  private:
+  struct LinearCache;
   std::vector<Level> levels_;
+  std::shared_ptr<LinearCache> linear_;
 };
 
 // The mip level below `above`: max(1, size / 2) on each side, each texel the rounded

@@ -1,7 +1,8 @@
 // sRGB's transfer function (IEC 61966-2-1) and the tables the pipeline uses: a
 // 256-entry decode of 8-bit sRGB values (super-sampling's resolve) and an encode of
 // linear light to 8 bits indexed by the value's 4096ths (the kernels' output;
-// docs/appearance.md). Textures are decoded by arithmetic (raster/sampler-inl.h).
+// docs/appearance.md). Textures are decoded once each, to 16 bits
+// (Texture::linear_levels).
 #pragma once
 
 #include <cstdint>

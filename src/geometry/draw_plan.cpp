@@ -177,7 +177,8 @@ void finish_color_plan(DrawList& plan, std::vector<raster::DrawState>& states) {
     const Material& mat = *s.material;
     raster::DrawState& st = states[s.draw_state];
     // Colour textures (base, environment, emissive) are sRGB-encoded in every format.
-    st.texture.srgb = st.env_map.srgb = st.pbr.emissive_map.srgb = plan.linear;
+    st.texture.read_as_srgb(plan.linear), st.env_map.read_as_srgb(plan.linear);
+    st.pbr.emissive_map.read_as_srgb(plan.linear);
     if (mat.color_space == ColorSpace::Linear) {  // lines are display values
       const Vec3 l = pipeline_color(mat.color, ColorSpace::Linear, false);
       s.line_color = raster::pack_rgba(l.x, l.y, l.z);

@@ -234,6 +234,7 @@ inline constexpr int fixed_varyings(bool textured, bool fog) { return 4 + (textu
 struct SamplerLevel {
   const uint32_t* texels = nullptr;
   int32_t width = 1, height = 1;
+  const uint64_t* linear = nullptr;  // srgb views: Texture::linear_levels(), RGBA16
 };
 struct SamplerView {
   static constexpr int kMaxLevels = 17;  // 65536 down to 1
@@ -244,14 +245,19 @@ struct SamplerView {
   SamplerState::Mip mip = SamplerState::Mip::Linear;
   float border[4] = {0, 0, 0, 0};
   // sRGB-encoded texels, decoded to linear light before filtering as a GPU's sRGB
-  // texture is (sampler-inl.h); false: the values as they are.
+  // texture is: the sampler reads the levels' `linear` texels, decoded once per
+  // texture (read_as_srgb); false: `texels`, the values as they are.
   bool srgb = false;
+  const Texture* texture = nullptr;  // what the levels point into
 
   SamplerView() = default;
   // The mesh path: a Filter and one wrap mode for both axes.
   SamplerView(const Texture& t, Filter f, Wrap w);
   // The fixed-function path.
   SamplerView(const Texture& t, const SamplerState& s);
+  // Sets srgb; on, points the levels at the texture's linear_levels() (decoding the
+  // texture on its first use so).
+  void read_as_srgb(bool on);
   explicit operator bool() const { return level_count > 0; }
 };
 

@@ -72,7 +72,7 @@ HWY_INLINE VU encode_srgb(VF x) {
   const DF d;
   const DI di;
   x = saturate(x);
-  const VF s = hn::Sqrt(x);
+  const VF s = sqrt_fast(x);
   VF p = hn::Set(d, -0.904863438f);
   p = hn::MulAdd(p, s, hn::Set(d, 3.23747163f));
   p = hn::MulAdd(p, s, hn::Set(d, -4.72147221f));

@@ -34,37 +34,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
 
 struct Rgba {
-  VF r, g, b, a;  // [0, 1] (inside the sampler: [0, 255] until the end)
+  VF r, g, b, a;  // [0, 1] (inside the sampler: [0, texel_unit] until the end)
 };
 
 // Texels to [0, 255] floats; without kAlpha the alpha channel is left out (opaque).
 template <bool kAlpha = true>
 HWY_INLINE Rgba unpack255(VU t) {
   return {channel<0>(t), channel<1>(t), channel<2>(t), kAlpha ? channel<3>(t) : hn::Set(DF(), 255.0f)};
-}
-
-// sRGB-encoded values in [0, 255] to linear light * 255 (SamplerView::srgb). The
-// exact curve's linear segment up to 10/255, above it a degree-5 polynomial fitted
-// (weighted least squares) to ((x + 0.055) / 1.055)^2.4 over the 8-bit values: encoded
-// again, every value comes back within 0.035 of an 8-bit step. Arithmetic, not a table:
-// three gathers more per texel cost the textured PBR frame half its time.
-HWY_INLINE VF srgb_decode255(VF v) {
-  const DF d;
-  const VF x = hn::Mul(v, hn::Set(d, 1.0f / 255.0f));
-  VF p = hn::Set(d, 0.0777650703f);
-  p = hn::MulAdd(p, x, hn::Set(d, -0.283427932f));
-  p = hn::MulAdd(p, x, hn::Set(d, 0.64619061f));
-  p = hn::MulAdd(p, x, hn::Set(d, 0.526960984f));
-  p = hn::MulAdd(p, x, hn::Set(d, 0.0316946783f));
-  p = hn::MulAdd(p, x, hn::Set(d, 0.000958802952f));
-  return hn::IfThenElse(hn::Le(v, hn::Set(d, 10.5f)), hn::Mul(v, hn::Set(d, 1.0f / 12.92f)), hn::Mul(p, hn::Set(d, 255.0f)));
-}
-
-template <bool kAlpha = true>
-HWY_INLINE Rgba unpack255(VU t, bool srgb) {
-  Rgba c = unpack255<kAlpha>(t);
-  if (srgb) c.r = srgb_decode255(c.r), c.g = srgb_decode255(c.g), c.b = srgb_decode255(c.b);  // alpha is linear
-  return c;
 }
 
 HWY_INLINE Rgba scale(const Rgba& c, float k) {
@@ -122,18 +98,50 @@ HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
   }
 }
 
-// Texels outside the image read the border colour ([0, 1]; the sampler works in 0..255).
-HWY_INLINE Rgba with_border(const Rgba& c, MI outside, const float* border) {
+// The unit the sampler works in until its last step: 255 for RGBA8 texels, 65535 for
+// an sRGB view's linear RGBA16 ones.
+HWY_INLINE float texel_unit(const SamplerView& s) { return s.srgb ? 65535.0f : 255.0f; }
+
+// Texels outside the image read the border colour ([0, 1], in the sampler's unit).
+HWY_INLINE Rgba with_border(const Rgba& c, MI outside, const float* border, float unit) {
   const DF d;
   const MF m = hn::RebindMask(d, outside);
-  return {hn::IfThenElse(m, hn::Set(d, 255.0f * border[0]), c.r), hn::IfThenElse(m, hn::Set(d, 255.0f * border[1]), c.g),
-          hn::IfThenElse(m, hn::Set(d, 255.0f * border[2]), c.b), hn::IfThenElse(m, hn::Set(d, 255.0f * border[3]), c.a)};
+  return {hn::IfThenElse(m, hn::Set(d, unit * border[0]), c.r), hn::IfThenElse(m, hn::Set(d, unit * border[1]), c.g),
+          hn::IfThenElse(m, hn::Set(d, unit * border[2]), c.b), hn::IfThenElse(m, hn::Set(d, unit * border[3]), c.a)};
 }
 
-HWY_INLINE VU fetch(const SamplerLevel& l, VI x, VI y) {
+// RGBA16 texels (an sRGB view's linear ones, Texture::linear_levels) to [0, 65535]
+// floats: gathered 8 bytes a lane, half a vector at a time, then split into the
+// red-green and blue-alpha halves of every lane.
+template <bool kAlpha>
+HWY_INLINE Rgba unpack_linear(const uint64_t* texels, VI index) {
+  const DF d;
+  const DI di;
+  const DU du;
+#if HWY_TARGET == HWY_SCALAR
+  const uint64_t t = texels[hn::GetLane(index)];
+  const VU rg = hn::Set(du, uint32_t(t)), ba = hn::Set(du, uint32_t(t >> 32));
+#else
+  const hn::Half<DI> dh;
+  const hn::Repartition<uint64_t, DF> d64;
+  const hn::RebindToSigned<decltype(d64)> di64;
+  const VU lo = hn::BitCast(du, hn::GatherIndex(d64, texels, hn::PromoteTo(di64, hn::LowerHalf(dh, index))));
+  const VU hi = hn::BitCast(du, hn::GatherIndex(d64, texels, hn::PromoteTo(di64, hn::UpperHalf(dh, index))));
+  const VU rg = hn::ConcatEven(du, hi, lo), ba = hn::ConcatOdd(du, hi, lo);
+#endif
+  const VU low16 = hn::Set(du, 0xffffu);
+  auto to_float = [&](VU v) { return hn::ConvertTo(d, hn::BitCast(di, v)); };
+  return {to_float(hn::And(rg, low16)), to_float(hn::ShiftRight<16>(rg)), to_float(hn::And(ba, low16)),
+          kAlpha ? to_float(hn::ShiftRight<16>(ba)) : hn::Set(d, 65535.0f)};
+}
+
+// The texels at (x, y) in the sampler's unit (texel_unit).
+template <bool kAlpha>
+HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
   const DI di;
   const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.width)), x);
-  return hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index));
+  if (s.srgb) return unpack_linear<kAlpha>(l.linear, index);
+  return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index)));
 }
 
 template <bool kAlpha>
@@ -145,8 +153,8 @@ HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v)
   MI outside = hn::FirstN(di, 0);
   const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside);
   const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside);
-  Rgba c = unpack255<kAlpha>(fetch(l, ix, iy), s.srgb);
-  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border);
+  Rgba c = fetch<kAlpha>(s, l, ix, iy);
+  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
   return c;
 }
 
@@ -164,11 +172,12 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
   const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1);
   const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1);
-  Rgba t00 = unpack255<kAlpha>(fetch(l, x0, y0), s.srgb), t10 = unpack255<kAlpha>(fetch(l, x1, y0), s.srgb);
-  Rgba t01 = unpack255<kAlpha>(fetch(l, x0, y1), s.srgb), t11 = unpack255<kAlpha>(fetch(l, x1, y1), s.srgb);
+  Rgba t00 = fetch<kAlpha>(s, l, x0, y0), t10 = fetch<kAlpha>(s, l, x1, y0);
+  Rgba t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch<kAlpha>(s, l, x1, y1);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
-    t00 = with_border(t00, hn::Or(out0, outy0), s.border), t10 = with_border(t10, hn::Or(out1, outy0), s.border);
-    t01 = with_border(t01, hn::Or(out0, outy1), s.border), t11 = with_border(t11, hn::Or(out1, outy1), s.border);
+    const float k = texel_unit(s);
+    t00 = with_border(t00, hn::Or(out0, outy0), s.border, k), t10 = with_border(t10, hn::Or(out1, outy0), s.border, k);
+    t01 = with_border(t01, hn::Or(out0, outy1), s.border, k), t11 = with_border(t11, hn::Or(out1, outy1), s.border, k);
   }
   return lerp(lerp(t00, t10, a), lerp(t01, t11, a), b);
 }
@@ -206,7 +215,7 @@ template <bool kAlpha = true>
 HWY_INLINE Rgba sample(const SamplerView& s, const LevelChoice& c, VF u, VF v, VF frac) {
   Rgba a = texel_filter<kAlpha>(s, s.levels[c.level0], u, v, c.filter);
   if (c.level1 != c.level0) a = lerp(a, texel_filter<kAlpha>(s, s.levels[c.level1], u, v, c.filter), frac);
-  return scale(a, 1.0f / 255.0f);
+  return scale(a, 1.0f / texel_unit(s));
 }
 template <bool kAlpha = true>
 HWY_INLINE Rgba sample(const SamplerView& s, const LevelChoice& c, VF u, VF v) {

@@ -7,6 +7,7 @@ namespace velocity::raster {
 
 namespace {
 void set_levels(SamplerView& s, const Texture& t) {
+  s.texture = &t;
   const auto& levels = t.levels();
   s.level_count = int(std::min<size_t>(levels.size(), SamplerView::kMaxLevels));
   for (int i = 0; i < s.level_count; ++i) s.levels[i] = {levels[size_t(i)].texels.data(), levels[size_t(i)].width, levels[size_t(i)].height};
@@ -30,6 +31,13 @@ SamplerView::SamplerView(const Texture& t, const SamplerState& s) {
   wrap_s = s.wrap_s, wrap_t = s.wrap_t;
   mag = s.mag, min = s.min, mip = s.mip;
   border[0] = s.border_color.x, border[1] = s.border_color.y, border[2] = s.border_color.z, border[3] = s.border_color.w;
+}
+
+void SamplerView::read_as_srgb(bool on) {
+  srgb = on && texture;
+  if (!srgb) return;
+  const auto& linear = texture->linear_levels();
+  for (int i = 0; i < level_count; ++i) levels[i].linear = linear[size_t(i)].data();
 }
 
 }  // namespace velocity::raster

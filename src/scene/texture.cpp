@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
 
+#include "core/srgb.hpp"
 #include "velocity/error.hpp"
 #include "velocity/pcx.hpp"
 
@@ -16,7 +18,12 @@ std::optional<Filter> parse_filter(std::string_view name) {
   return std::nullopt;
 }
 
-Texture::Texture(const Image& image) {
+struct Texture::LinearCache {
+  std::once_flag once;
+  std::vector<std::vector<uint64_t>> levels;
+};
+
+Texture::Texture(const Image& image) : linear_(std::make_shared<LinearCache>()) {
   if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * image.height * 4)
     throw Error("texture: the image is empty or inconsistent");
   Level base{image.width, image.height, std::vector<uint32_t>(size_t(image.width) * image.height)};
@@ -46,7 +53,7 @@ Texture::Level next_mip_level(const Texture::Level& up) {
   return next;
 }
 
-Texture::Texture(std::vector<Level> levels) : levels_(std::move(levels)) {
+Texture::Texture(std::vector<Level> levels) : levels_(std::move(levels)), linear_(std::make_shared<LinearCache>()) {
   if (levels_.empty()) throw Error("texture: no levels");
   for (size_t i = 0; i < levels_.size(); ++i) {
     const Level& l = levels_[i];
@@ -56,6 +63,24 @@ Texture::Texture(std::vector<Level> levels) : levels_(std::move(levels)) {
     if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) || l.height != std::max(1, levels_[i - 1].height / 2)))
       throw Error("texture: level " + std::to_string(i) + " is not half the size of the level above");
   }
+}
+
+const std::vector<std::vector<uint64_t>>& Texture::linear_levels() const {
+  std::call_once(linear_->once, [this] {
+    // Each level decoded as it is (the chain was averaged in sRGB, as OpenGL's is).
+    uint64_t decode[256];
+    for (int i = 0; i < 256; ++i) decode[i] = uint64_t(std::lround(65535.0f * color::srgb_to_linear(float(i) / 255.0f)));
+    for (const Level& l : levels_) {
+      std::vector<uint64_t> out(l.texels.size());
+      for (size_t i = 0; i < out.size(); ++i) {
+        const uint32_t t = l.texels[i];
+        out[i] = decode[t & 0xff] | decode[(t >> 8) & 0xff] << 16 | decode[(t >> 16) & 0xff] << 32 |
+                 uint64_t(t >> 24) * 257 << 48;
+      }
+      linear_->levels.push_back(std::move(out));
+    }
+  });
+  return linear_->levels;
 }
 
 size_t Texture::memory_bytes() const {

@@ -250,6 +250,60 @@ TEST(Shadows, ShadowsAreTheSameForAnyThreadCount) {
     for (int i = 0; i < kSize; ++i) ASSERT_EQ(test::at(one.on, i, j), test::at(four.on, i, j)) << i << ", " << j;
 }
 
+// One renderer's maps are kept between frames while casters, lights and camera stay
+// (CpuBackend::ShadowKey); each kind of change below draws them again: every frame must
+// be what a new renderer draws of the same scene, and the changes must show.
+TEST(Shadows, KeptMapsFollowEveryChange) {
+  const Mesh plane = make_plane_grid(kView, 1);
+  Mesh box = make_cube(2.0f);
+  Material m;
+  m.color = {0.8f, 0.8f, 0.8f};
+  m.shading = Shading::Phong;
+  const Light ambient = Light::ambient({0.15f, 0.15f, 0.15f});
+  Light sun = Light::directional(normalize({1.0f, 0.9f, 0.45f}), {0.8f, 0.8f, 0.8f});
+  Mat4 box_at = translate({0, 1, 0});
+  auto frame = [&](Renderer& r) {
+    r.options.color = ColorPipeline::Display;
+    r.options.shadows = true;
+    r.options.shadow_map_size = 512;
+    r.begin_frame(above(), {ambient, sun}, {0, 0, 0});
+    r.draw(plane, Mat4::identity(), &m);
+    r.draw(box, box_at, &m);
+    r.end_frame();
+    return r.color_image();
+  };
+  auto fresh = [&] {
+    Renderer r(kSize, kSize);
+    return frame(r);
+  };
+  auto differing = [](const Image& a, const Image& b) {
+    int n = 0;
+    for (int j = 0; j < kSize; ++j)
+      for (int i = 0; i < kSize; ++i) n += test::at(a, i, j) != test::at(b, i, j);
+    return n;
+  };
+  Renderer kept(kSize, kSize);
+  const Image first = frame(kept);
+  EXPECT_EQ(differing(frame(kept), first), 0) << "the same scene again";
+  sun = Light::directional(normalize({-1.0f, 0.8f, 0.3f}), {0.8f, 0.8f, 0.8f});
+  Image now = frame(kept);
+  EXPECT_GT(differing(now, first), 500) << "the light moved";
+  EXPECT_EQ(differing(now, fresh()), 0) << "the light moved";
+  box_at = translate({2, 1, 1});
+  Image before = now;
+  now = frame(kept);
+  EXPECT_GT(differing(now, before), 500) << "the box moved";
+  EXPECT_EQ(differing(now, fresh()), 0) << "the box moved";
+  // The same mesh, its vertices moved in place (as an animation does) within the same
+  // bounds, so that the maps' views stay: its top narrowed to a third.
+  for (Vec3& p : box.positions)
+    if (p.y > 0) p.x *= 0.3f, p.z *= 0.3f;
+  before = now;
+  now = frame(kept);
+  EXPECT_GT(differing(now, before), 100) << "the box's vertices moved";
+  EXPECT_EQ(differing(now, fresh()), 0) << "the box's vertices moved";
+}
+
 // A light that does not cast, or a frame without shadows: the image is the one without.
 TEST(Shadows, OffOrNotCastingIsTheUnshadowedImage) {
   Light sun = Light::directional(normalize({1.0f, 0.9f, 0.45f}), {0.8f, 0.8f, 0.8f});

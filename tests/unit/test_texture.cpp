@@ -3,7 +3,10 @@
 
 #include <cmath>
 #include <cstring>
+#include <thread>
+#include <vector>
 
+#include "core/srgb.hpp"
 #include "raster/rasterize.hpp"
 #include "velocity/renderer.hpp"
 #include "velocity/texture.hpp"
@@ -231,4 +234,69 @@ TEST(Texture, PerFaceMaterialsCarryTheirOwnTexture) {
   EXPECT_EQ(img.pixel(20, 16)[1], 0);
   EXPECT_EQ(img.pixel(44, 16)[0], 0);
   EXPECT_EQ(img.pixel(44, 16)[1], 255);
+}
+
+// A linear frame's colour textures: every level decoded from sRGB once, to RGBA16, and
+// sampled from there (the sampler decodes nothing per texel).
+TEST(Texture, LinearLevelsDecodeEverySrgbValueOnce) {
+  Image img(256, 2);  // asymmetric: red rises, green falls, alpha rises in steps of 3
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 256; ++x) {
+      uint8_t* p = img.pixel(x, y);
+      p[0] = uint8_t(x), p[1] = uint8_t(255 - x), p[2] = uint8_t(y * 200), p[3] = uint8_t((x * 3) & 0xff);
+    }
+  const Texture t(img);
+  const auto& linear = t.linear_levels();
+  ASSERT_EQ(linear.size(), t.levels().size());
+  for (size_t l = 0; l < linear.size(); ++l) ASSERT_EQ(linear[l].size(), t.levels()[l].texels.size()) << "level " << l;
+  auto unorm16 = [](int v) { return uint64_t(std::lround(65535.0 * color::srgb_to_linear(float(v) / 255.0f))); };
+  for (size_t l = 0; l < linear.size(); ++l)
+    for (size_t i = 0; i < linear[l].size(); ++i) {
+      const uint32_t s = t.levels()[l].texels[i];
+      const uint64_t q = linear[l][i];
+      ASSERT_EQ(q & 0xffff, unorm16(int(s & 0xff))) << "level " << l << " texel " << i;
+      ASSERT_EQ((q >> 16) & 0xffff, unorm16(int((s >> 8) & 0xff)));
+      ASSERT_EQ((q >> 32) & 0xffff, unorm16(int((s >> 16) & 0xff)));
+      ASSERT_EQ(q >> 48, uint64_t(s >> 24) * 257);  // alpha is linear
+    }
+  EXPECT_EQ(t.linear_levels()[0].data(), linear[0].data());  // made once
+  const Texture copy = t;
+  EXPECT_EQ(copy.linear_levels()[0].data(), linear[0].data());  // and shared by copies
+
+  // Sampled through an sRGB view: texel centres give the decoded values, bilinear
+  // halfway between sRGB 0 and 255 gives linear 0.5 (not the decode of 128), and the
+  // border colour keeps its [0, 1] value.
+  SamplerState st;
+  st.mag = st.min = SamplerState::Texel::Linear, st.mip = SamplerState::Mip::None;
+  st.wrap_s = st.wrap_t = Wrap::ClampToBorder, st.border_color = {0.25f, 0.5f, 0.75f, 1.0f};
+  SamplerView v(t, st);
+  v.read_as_srgb(true);
+  ASSERT_TRUE(v.srgb);
+  float c[4];
+  for (int x : {0, 1, 10, 11, 128, 200, 255}) {
+    raster::sample_for_test(v, (float(x) + 0.5f) / 256, 0.25f, 0, c);
+    EXPECT_NEAR(c[0], color::srgb_to_linear(float(x) / 255), 1e-4f) << "x " << x;
+    EXPECT_NEAR(c[1], color::srgb_to_linear(float(255 - x) / 255), 1e-4f) << "x " << x;
+    EXPECT_NEAR(c[2], 0.0f, 1e-6f);
+    EXPECT_NEAR(c[3], float((x * 3) & 0xff) / 255, 1e-4f) << "x " << x;
+  }
+  raster::sample_for_test(v, 0.5f / 256, 0.5f, 0, c);  // halfway between rows 0 (blue 0) and 1 (blue 200)
+  EXPECT_NEAR(c[2], 0.5f * color::srgb_to_linear(200.0f / 255), 1e-4f);
+  raster::sample_for_test(v, -0.5f, 0.25f, 0, c);
+  EXPECT_NEAR(c[0], 0.25f, 1e-6f);
+  EXPECT_NEAR(c[1], 0.5f, 1e-6f);
+  EXPECT_NEAR(c[2], 0.75f, 1e-6f);
+  EXPECT_NEAR(c[3], 1.0f, 1e-6f);
+}
+
+// The first use decodes once however many threads ask at the same time (a frame's
+// draws are planned on one thread, but two renderers may share a texture).
+TEST(Texture, LinearLevelsAreMadeOnceAcrossThreads) {
+  const Texture t(make_image(64, 32, [](int x, int) { return x * 4; }, [](int, int y) { return y * 8; }));
+  const uint64_t* seen[4] = {};
+  std::vector<std::thread> threads;
+  for (int i = 0; i < 4; ++i) threads.emplace_back([&t, &seen, i] { seen[i] = t.linear_levels()[0].data(); });
+  for (auto& th : threads) th.join();
+  for (const uint64_t* p : seen) EXPECT_EQ(p, seen[0]);
+  EXPECT_EQ(t.linear_levels().size(), t.levels().size());
 }
