@@ -10,11 +10,20 @@
 # while idle. The load average is printed before and after: on a shared machine the
 # figures are only as good as the quiet they were taken in.
 #
-#   scripts/bench_realtime.sh [FRAMES]     default 600 (10 s of game time)
+#   scripts/bench_realtime.sh [--headless-only] [FRAMES]     default 600 (10 s of game time)
+#
+# --headless-only: no window runs even when Xvfb is installed (a machine without an X
+# server, e.g. pinned with `taskset -c 0,1 scripts/bench_realtime.sh --headless-only`).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 velocity="$root/build/velocity"
+headless_only=0
+if [[ "${1:-}" == --headless-only ]]; then
+  headless_only=1
+  shift
+fi
 frames="${1:-600}"
+[[ "$frames" =~ ^[1-9][0-9]*$ ]] || { echo "bench_realtime.sh: FRAMES must be a positive number, got '$frames'" >&2; exit 2; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"; [[ -n "${xvfb_pid:-}" ]] && kill "$xvfb_pid" 2>/dev/null || true' EXIT
 printf '0 down up\n3 down left\n3.6 up left\n6 down right\n6.4 up right\n' >"$work/drive.txt"
@@ -47,6 +56,7 @@ cpu_per_frame "drive 800x600 --hq cpu" "$((frames / 4))" "$velocity" drive --ski
 for mode in headless window; do
   extra=(--headless)
   if [[ $mode == window ]]; then
+    [[ $headless_only == 0 ]] || { echo "(--headless-only: window runs skipped)"; break; }
     command -v Xvfb >/dev/null || { echo "(no Xvfb: window runs skipped)"; break; }
     Xvfb :97 -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
     xvfb_pid=$!

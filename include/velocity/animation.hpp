@@ -106,6 +106,13 @@ void apply(const Animation& animation, float t, Scene& scene);
 // skin whose arrays do not match its base or whose ids are not in the scene is skipped.
 void skin(const std::vector<Skin>& skins, Scene& scene);
 
+// A still of an animated file: `scene` posed at `time` seconds of `animations[index]`
+// (after its end: its last pose), then its skins moved by the joints. Throws
+// velocity::Error saying how many animations there are when `index` is past them, and
+// when `time` is negative or not finite.
+void pose_at(const std::vector<Animation>& animations, size_t index, float time, const std::vector<Skin>& skins,
+             Scene& scene);
+
 // Puts every object `animation` moves back at its rest pose and rest weights (before another animation
 // plays: nodes only the first one moves would otherwise keep its last pose).
 void rest(const Animation& animation, Scene& scene);

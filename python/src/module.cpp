@@ -14,11 +14,13 @@
 #include <cstring>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "convert.hpp"
 #include "scene_graph.hpp"
+#include "velocity/animation.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
 #include "velocity/log.hpp"
@@ -249,7 +251,8 @@ std::string path_of(py::handle obj) {
   return std::string(encoded.cast<py::bytes>());
 }
 
-PyMesh mesh_from_file(py::object path_obj, bool swap_yz, double max_memory) {
+PyMesh mesh_from_file(py::object path_obj, bool swap_yz, double max_memory, std::optional<float> time,
+                      std::optional<size_t> animation) {
   const std::string path = path_of(path_obj);
   Model model;
   {
@@ -271,6 +274,23 @@ PyMesh mesh_from_file(py::object path_obj, bool swap_yz, double max_memory) {
     const ModelNode& n = model.nodes[i];
     world[i] = n.parent < 0 ? n.local : world[size_t(n.parent)] * n.local;
     if (n.mesh && !n.mesh->triangles.empty()) parts.push_back(n.mesh), poses.push_back(world[i]);
+  }
+  if (time || animation) {
+    // Posed as `velocity render --time` poses it: the nodes in a scene (node i is object
+    // i), their matrices and morphed or skinned meshes at that time.
+    Scene scene;
+    add_to_scene(scene, model);
+    try {
+      pose_at(model.animations, animation.value_or(0), time.value_or(0.0f), model.skins, scene);
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what());
+    }
+    world = scene.world_matrices();
+    parts.clear(), poses.clear();
+    for (size_t i = 0; i < scene.objects().size(); ++i) {
+      const std::shared_ptr<const Mesh>& mesh = scene.objects()[i].mesh;
+      if (mesh && !mesh->triangles.empty()) parts.push_back(mesh), poses.push_back(world[i]);
+    }
   }
   if (parts.empty()) throw Error(path + ": the file holds no triangles");
   // The name is the file's, as text (bytes that are not UTF-8 replaced).
@@ -746,11 +766,13 @@ PYBIND11_MODULE(_velocity, m) {
                   "with one memcpy each; other layouts and types are converted on the way. Without normals, "
                   "smooth ones are computed. Raises velocity.Error for a bad index or a non-finite value.")
       .def_static("from_file", &mesh_from_file, py::arg("path"), py::arg("swap_yz") = true,
-                  py::arg("max_memory") = 0.0,
+                  py::arg("max_memory") = 0.0, py::arg("time") = py::none(), py::arg("animation") = py::none(),
                   "A mesh from a model file: ASC, PLG/PLX, OBJ (+MTL), glTF/GLB, 3DS, PLY or STL, every node "
                   "a primitive placed by its node matrix, textures found next to the file. Releases the GIL while "
                   "loading. swap_yz: stand 3D Studio ASC files (Z up) upright; max_memory: bytes the loader may "
-                  "use (0: the engine's 2 GiB). Raises velocity.Error naming the file, line and what was expected.")
+                  "use (0: the engine's 2 GiB); time, animation: an animated glTF posed at `time` seconds of its "
+                  "animation number `animation` (default 0; past the end: the last key), else at rest. Raises "
+                  "velocity.Error naming the file, line and what was expected.")
       .def_static("sphere", [](int segments) { return mesh_generated(make_sphere(segments), "sphere"); },
                   py::arg("segments") = 64, "A UV sphere of radius 1: `segments` around, segments / 2 rings.")
       .def_static("cube", [](float size) { return mesh_generated(make_cube(size), "cube"); }, py::arg("size") = 1.0f,

@@ -1,5 +1,6 @@
 """The pyrender-style API: scenes, meshes from arrays and files, cameras, lights, flags."""
 import math
+import os
 
 import numpy as np
 import pytest
@@ -106,6 +107,28 @@ def test_from_file_plg():
 def test_from_file_assimp_formats(path):
     mesh = velocity.Mesh.from_file(path)
     assert mesh.triangle_count > 0 and len(mesh.primitives) >= 1
+
+
+SIMPLE_SKIN = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf"
+
+
+@pytest.mark.skipif(not os.path.exists(SIMPLE_SKIN), reason="assimp-testmodels is not installed")
+def test_from_file_posed_at_a_time():
+    # The glTF tutorial's SimpleSkin: vertex 9 (bind (1, 2, 0)) on the second joint alone,
+    # turned about (0.5, 1) by its angle after the skin's shift of -0.5 in x, plus (0, 1):
+    # 22.514 degrees at 0.25 s, a key of 90 degrees at 1.0 s (values worked out by hand).
+    def tip(**when):
+        prim = velocity.Mesh.from_file(SIMPLE_SKIN, **when).primitives[0]
+        return (np.asarray(prim.pose) @ np.append(np.asarray(prim.positions)[9], 1.0))[:2]
+
+    assert tip() == pytest.approx([1.0, 2.0])  # no time: the file's mesh as stored (bind pose)
+    assert tip(time=0.25) == pytest.approx([0.0789816, 2.1152407], abs=1e-4)
+    assert tip(time=1.0) == pytest.approx([-1.0, 1.5], abs=1e-4)
+    assert tip(animation=0) == pytest.approx([0.5, 2.0], abs=1e-5)  # time 0: the rest pose
+    with pytest.raises(velocity.Error, match=r"simple_skin.gltf: animation 2: the file has 1 animation \(0..0\)"):
+        velocity.Mesh.from_file(SIMPLE_SKIN, animation=2)
+    with pytest.raises(velocity.Error, match="animation time must be 0 or more seconds"):
+        velocity.Mesh.from_file(SIMPLE_SKIN, time=-0.5)
 
 
 def test_intrinsics_camera_principal_point_moves_image():

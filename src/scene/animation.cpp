@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "velocity/error.hpp"
 
 namespace velocity {
 
@@ -127,6 +130,18 @@ void apply(const Animation& animation, float t, Scene& scene) {
     if (m.node < scene.objects().size() && m.targets && m.targets->base)
       scene.object(ObjectId(m.node)).mesh =
           std::make_shared<const Mesh>(morph(*m.targets, sample(m.weights, t, m.targets->rest_weights)));
+}
+
+void pose_at(const std::vector<Animation>& animations, size_t index, float time, const std::vector<Skin>& skins,
+             Scene& scene) {
+  if (!(time >= 0 && std::isfinite(time)))
+    throw Error("animation time must be 0 or more seconds, got " + std::to_string(time));
+  if (index >= animations.size())
+    throw Error("animation " + std::to_string(index) + ": the file has " + std::to_string(animations.size()) +
+                " animation" + (animations.size() == 1 ? "" : "s") +
+                (animations.empty() ? "" : " (0.." + std::to_string(animations.size() - 1) + ")"));
+  apply(animations[index], time, scene);
+  skin(skins, scene);  // the joints moved
 }
 
 void rest(const Animation& animation, Scene& scene) {

@@ -14,6 +14,7 @@
 #include "velocity/animation.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
+#include "velocity/view_setup.hpp"
 
 namespace velocity {
 namespace {
@@ -205,6 +206,44 @@ TEST(SkinFile, SimpleSkinVerticesFollowTheirJointsByWeight) {
   EXPECT_NEAR(mesh->positions[2].y, 0.4616630f, 1e-4f);
   EXPECT_NEAR(mesh->positions[2].z, 0.0f, 1e-6f);
   for (const Vec3& n : mesh->normals) EXPECT_NEAR(length(n), 1.0f, 1e-4f);
+}
+
+// `velocity render --time`: the file opened as the viewer opens it (scene_from_model),
+// then posed at a time. Vertex 9 (bind (1, 2, 0)) follows the second joint alone:
+// rotate((1, 2) - (0.5, 1)) about Z by the joint's angle, plus (0, 1). At 0.25 s the
+// angle is 22.514 degrees (the values above); at 1.0 s a key of 90 degrees: (-1, 1.5);
+// past the end (5.5 s) the last key, 0 degrees: the rest pose (0.5, 2).
+TEST(SkinFile, SceneFromModelPosedAtATime) {
+  const std::string file = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf";
+  if (!fs::exists(file)) GTEST_SKIP() << "skipped: " << file << " is missing (Debian package assimp-testmodels)";
+  std::vector<Animation> animations;
+  std::vector<Skin> skins;
+  Scene scene = scene_from_model(file, LoadOptions{}, false, 4.0f / 3.0f, &animations, &skins);
+  ASSERT_EQ(animations.size(), 1u);
+  ASSERT_EQ(skins.size(), 1u);
+  const size_t node = skins[0].node;
+  pose_at(animations, 0, 0.25f, skins, scene);
+  EXPECT_NEAR(scene.objects()[node].mesh->positions[9].x, 0.0789816f, 1e-4f);
+  EXPECT_NEAR(scene.objects()[node].mesh->positions[9].y, 2.1152407f, 1e-4f);
+  pose_at(animations, 0, 1.0f, skins, scene);
+  EXPECT_NEAR(scene.objects()[node].mesh->positions[9].x, -1.0f, 1e-4f);
+  EXPECT_NEAR(scene.objects()[node].mesh->positions[9].y, 1.5f, 1e-4f);
+  pose_at(animations, 0, 99.0f, skins, scene);
+  EXPECT_NEAR(scene.objects()[node].mesh->positions[9].x, 0.5f, 1e-5f);
+  EXPECT_NEAR(scene.objects()[node].mesh->positions[9].y, 2.0f, 1e-5f);
+  // No such animation, a negative or NaN time: errors that say what there is.
+  auto message = [&](size_t index, float time) {
+    try {
+      pose_at(animations, index, time, skins, scene);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(posed)");
+  };
+  EXPECT_EQ(message(1, 0), "animation 1: the file has 1 animation (0..0)");
+  EXPECT_EQ(message(0, -1), "animation time must be 0 or more seconds, got -1.000000");
+  EXPECT_NE(message(0, std::nanf("")).find("animation time must be 0 or more seconds"), std::string::npos);
+  EXPECT_EQ(message(0, 0.5f), "(posed)");
 }
 
 // A joint that does not exist, and joints of a vertex past the skin's, are refused.
