@@ -23,7 +23,7 @@
 # One check is off, in one file: GCC's ASan use-after-scope in the PBR kernels
 # (src/raster/kernels_pbr.cpp, see src/CMakeLists.txt). Its marks keep every inlined
 # Highway vector addressable there, and that file alone took most of the stage to
-# compile (about 950 s in CI's ASan build, where each other kernel file took 60-120 s;
+# compile (about 950 s in a full ASan build, where each other kernel file took 60-120 s;
 # 108 s of CPU without the marks). The coverage, tile, sampler and output code it shares
 # with those files keeps the check there; its own (src/raster/shade_pbr-inl.h) has no
 # local arrays, and its lambdas are called only inside the blocks that declare them.
