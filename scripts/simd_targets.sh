@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# Runs every test (CTest) once on each SIMD target the build compiled and this
-# processor has, other than the best one (what ./test.sh already ran): the kernels are
-# written once against Highway and compiled for AVX-512 (AVX3), AVX2, SSE4 and plain
-# C++ (SCALAR, one lane), and Highway would otherwise only ever run the best. VELOCITY_SIMD_TARGET picks the target (src/simd/targets.hpp); each run first
-# checks that the engine reports that target. scripts/scalar.sh covers the plain C++
-# build (VELOCITY_SIMD=OFF). CI runs this after ./test.sh, on its build.
+# Runs the tests (CTest) whose result can change with the kernels once on each SIMD
+# target the build compiled and this processor has, other than the best one (what
+# ./test.sh already ran): the kernels are written once against Highway and compiled for
+# AVX-512 (AVX3), AVX2, SSE4 and plain C++ (SCALAR, one lane), and Highway would
+# otherwise only ever run the best. scripts/lib/kernel_tests.sh says which tests, and
+# which are left out (those that do not depend on the target: Python, the GPU backend,
+# the real-time programs' windows and input, packaging). VELOCITY_SIMD_TARGET picks the
+# target (src/simd/targets.hpp); each run first checks that the engine reports that
+# target. scripts/scalar.sh covers the plain C++ build (VELOCITY_SIMD=OFF). CI runs this
+# after ./test.sh, on its build.
 #
 #   scripts/simd_targets.sh [CTEST ARGS...]
 set -euo pipefail
@@ -20,9 +24,7 @@ reported() {
 }
 best=$(reported "")
 echo "simd_targets.sh: the processor's best target is $best (tested by ./test.sh)"
-# `pip install .` builds the engine again from the sources, whatever the target: once, in
-# ./test.sh, is enough.
-skip='^python_pip_install$'
+source "$root/scripts/lib/kernel_tests.sh"
 ran=() skipped=() failed=()
 for target in AVX3_DL AVX3 AVX2 SSE4 SSSE3 EMU128 SCALAR; do
   [[ "$target" == "$best" ]] && continue
@@ -35,9 +37,9 @@ for target in AVX3_DL AVX3 AVX2 SSE4 SSSE3 EMU128 SCALAR; do
     echo "simd_targets.sh: asked for $target, the engine ran $got" >&2
     exit 1
   fi
-  echo "=== simd_targets.sh: every test on $target"
+  echo "=== simd_targets.sh: the kernels' tests on $target"
   start=$SECONDS
-  if (cd "$build" && VELOCITY_SIMD_TARGET=$target ctest --output-on-failure -j"$(nproc)" -E "$skip" "$@"); then
+  if (cd "$build" && VELOCITY_SIMD_TARGET=$target ctest --output-on-failure -j"$(nproc)" "${kernel_tests[@]}" "$@"); then
     ran+=("$target: $((SECONDS - start)) s")
   else
     failed+=("$target")
