@@ -176,7 +176,8 @@ void check_gl(const char* what) {
 }  // namespace
 
 struct GpuBackend::MeshEntry {
-  uint64_t fingerprint = 0, last_frame = 0;
+  // What was uploaded: the mesh's revision (Mesh::revision), or 0 and its fingerprint.
+  uint64_t revision = 0, fingerprint = 0, last_frame = 0;
   size_t bytes = 0;
   // positions, normals, uvs, colours, indices, face colours, second uvs, tangents, alphas
   GLuint vao = 0, buffers[9] = {}, face_colors = 0;
@@ -418,8 +419,10 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   auto it = meshes_.find(&mesh);
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
   StageTimer timer(stats_.upload_ms);
-  const uint64_t key = fingerprint(mesh, pool());
-  if (it != meshes_.end() && it->second.fingerprint == key) {
+  // A marked mesh (Mesh::revision) is trusted; an unmarked one is hashed.
+  const uint64_t key = mesh.revision ? 0 : fingerprint(mesh, pool());
+  if (!mesh.revision) stats_.meshes_hashed++;
+  if (it != meshes_.end() && it->second.revision == mesh.revision && it->second.fingerprint == key) {
     reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
     return it->second;
@@ -439,7 +442,7 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   uploads_++;
 
   MeshEntry m;
-  m.fingerprint = key, m.last_frame = frame_;
+  m.revision = mesh.revision, m.fingerprint = key, m.last_frame = frame_;
   const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
   // Faces by material slot, in mesh order within a slot.
   const size_t slots = 1 + mesh.materials.size();
