@@ -414,6 +414,35 @@ TEST(GpuCache, LibraryMarksWhatItMakesAndChanges) {
   EXPECT_NE(bench::make_mesh("sphere:8").revision, bench::make_mesh("sphere:8").revision);  // never reused
 }
 
+// Every pass is timed by the GPU itself (GL_TIME_ELAPSED): shadow maps, opaque draws,
+// blended draws, and the read-back of the frame before.
+TEST(GpuTimers, EveryPassHasItsGpuTime) {
+  Renderer r(160, 120, BackendChoice::Gpu);
+  Scene scene;
+  Mesh sphere = make_sphere(64);
+  Material blend;
+  blend.shading = Shading::Pbr, blend.alpha = 0.5f, blend.alpha_mode = AlphaMode::Blend;
+  Mesh glass = make_cube(0.8f);
+  glass.materials = {blend};
+  scene.add_object("sphere", std::make_shared<const Mesh>(std::move(sphere)));
+  const ObjectId g = scene.add_object("glass", std::make_shared<const Mesh>(std::move(glass)));
+  scene.object(g).transform.translation = {0.5f, 0, 0.8f};
+  scene.camera.position = {0, 0, 4};
+  r.render(scene);
+  FrameStats st = r.stats();
+  EXPECT_GT(st.gpu_opaque_ms, 0.0);
+  EXPECT_GT(st.gpu_blend_ms, 0.0);
+  EXPECT_EQ(st.gpu_shadow_ms, 0.0);  // no shadows asked for
+  EXPECT_EQ(st.gpu_read_ms, 0.0);    // nothing read yet
+  (void)r.color_image();
+  r.options.shadows = true;
+  r.render(scene);
+  st = r.stats();
+  EXPECT_GT(st.gpu_shadow_ms, 0.0);
+  EXPECT_GT(st.gpu_opaque_ms, 0.0);
+  EXPECT_GT(st.gpu_read_ms, 0.0);  // the first frame's read
+}
+
 // RGBA rows are read straight from the GPU into the caller's rows, resolved on the GPU
 // with super-sampling; RGB rows go through the samples and the CPU. Either way they are
 // the CPU pipeline's read of the same frame (color_image), byte for byte, at a row pitch
