@@ -137,6 +137,28 @@ class StageTimer {
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
+// Adds the GPU's time for the GL calls from construction to destruction to `total`
+// (GL_TIME_ELAPSED; the calls are read-backs, which wait for the GPU anyway).
+class GpuTimer {
+ public:
+  GpuTimer(GLuint& query, double& total) : query_(query), total_(total) {
+    if (!query_) glGenQueries(1, &query_);
+    glBeginQuery(GL_TIME_ELAPSED, query_);
+  }
+  ~GpuTimer() {
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(query_, GL_QUERY_RESULT, &ns);
+    total_ += double(ns) * 1e-6;
+  }
+  GpuTimer(const GpuTimer&) = delete;
+  GpuTimer& operator=(const GpuTimer&) = delete;
+
+ private:
+  GLuint& query_;
+  double& total_;
+};
+
 void upload_matrix(GLint at, const Mat4& m) { glUniformMatrix4fv(at, 1, GL_TRUE, &m.m[0][0]); }
 
 // KHR_texture_transform as two rows of an affine map (geometry/draw_plan.cpp's uv_affine).
@@ -176,7 +198,8 @@ void check_gl(const char* what) {
 }  // namespace
 
 struct GpuBackend::MeshEntry {
-  uint64_t fingerprint = 0, last_frame = 0;
+  // What was uploaded: the mesh's revision (Mesh::revision), or 0 and its fingerprint.
+  uint64_t revision = 0, fingerprint = 0, last_frame = 0;
   size_t bytes = 0;
   // positions, normals, uvs, colours, indices, face colours, second uvs, tangents, alphas
   GLuint vao = 0, buffers[9] = {}, face_colors = 0;
@@ -275,6 +298,9 @@ GpuBackend::~GpuBackend() {
     for (GLuint p : batch_programs_)
       if (p) glDeleteProgram(p);
     if (batch_vao_) glDeleteVertexArrays(1, &batch_vao_), glDeleteBuffers(6, batch_buffers_);
+    for (const auto& [pass, q] : queries_) spare_queries_.push_back(q);
+    if (!spare_queries_.empty()) glDeleteQueries(GLsizei(spare_queries_.size()), spare_queries_.data());
+    if (read_query_) glDeleteQueries(1, &read_query_);
   } catch (const Error&) {
     // A context that cannot be made current any more: its objects go with it.
   }
@@ -418,8 +444,10 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   auto it = meshes_.find(&mesh);
   if (it != meshes_.end() && it->second.last_frame == frame_) return it->second;
   StageTimer timer(stats_.upload_ms);
-  const uint64_t key = fingerprint(mesh, pool());
-  if (it != meshes_.end() && it->second.fingerprint == key) {
+  // A marked mesh (Mesh::revision) is trusted; an unmarked one is hashed.
+  const uint64_t key = mesh.revision ? 0 : fingerprint(mesh, pool());
+  if (!mesh.revision) stats_.meshes_hashed++;
+  if (it != meshes_.end() && it->second.revision == mesh.revision && it->second.fingerprint == key) {
     reserve(it->second.bytes, "mesh '" + mesh.name + "'");
     it->second.last_frame = frame_;
     return it->second;
@@ -439,7 +467,7 @@ GpuBackend::MeshEntry& GpuBackend::mesh_entry(const Mesh& mesh) {
   uploads_++;
 
   MeshEntry m;
-  m.fingerprint = key, m.last_frame = frame_;
+  m.revision = mesh.revision, m.fingerprint = key, m.last_frame = frame_;
   const size_t nv = mesh.positions.size(), nt = mesh.triangles.size();
   // Faces by material slot, in mesh order within a slot.
   const size_t slots = 1 + mesh.materials.size();
@@ -752,7 +780,8 @@ void GpuBackend::draw(const Mesh& mesh, const Mat4& world, const Material* mater
 // (CpuBackend::order_blended_draws); in painter's mode, the batches and clears, then
 // every face of the frame sorted (draw_painter).
 void GpuBackend::replay() {
-  if (options_.shadows && !casters_.empty()) render_shadows();
+  if (options_.shadows && !casters_.empty()) time_pass(kShadowPass), render_shadows();
+  time_pass(kOpaquePass);
   bool pbr = false;
   for (const MeshDraw& d : mesh_draws_) {
     const size_t slots = d.material ? 1 : 1 + d.mesh->materials.size();
@@ -765,6 +794,8 @@ void GpuBackend::replay() {
   const bool painter = options_.depth_mode == DepthMode::Painter;
   std::vector<uint32_t> blended;
   auto flush_blended = [&] {
+    if (blended.empty()) return;
+    time_pass(kBlendPass);
     std::stable_sort(blended.begin(), blended.end(),
                      [&](uint32_t a, uint32_t b) { return mesh_draws_[a].depth < mesh_draws_[b].depth; });
     for (uint32_t i : blended) {
@@ -772,6 +803,7 @@ void GpuBackend::replay() {
       draw_mesh(*d.mesh, *d.entry, d.world, d.material, d.object_id, nullptr);
     }
     blended.clear();
+    time_pass(kOpaquePass);
   };
   for (const Command& c : commands_) {
     if (c.kind == Command::Batch) {
@@ -787,7 +819,35 @@ void GpuBackend::replay() {
     }
   }
   flush_blended();
-  if (painter && !mesh_draws_.empty()) draw_painter();
+  if (painter && !mesh_draws_.empty()) time_pass(kBlendPass), draw_painter();
+  time_pass(-1);
+}
+
+// Ends the query of the pass being timed and starts one for `pass` (-1: none).
+void GpuBackend::time_pass(int pass) {
+  if (pass == timing_) return;
+  if (timing_ >= 0) glEndQuery(GL_TIME_ELAPSED);
+  timing_ = pass;
+  if (pass < 0) return;
+  GLuint q = 0;
+  if (spare_queries_.empty()) glGenQueries(1, &q);
+  else q = spare_queries_.back(), spare_queries_.pop_back();
+  glBeginQuery(GL_TIME_ELAPSED, q);
+  queries_.push_back({pass, q});
+}
+
+// The frame's queries into stats_ when `read` (the frame finished), else dropped (it
+// failed); their objects kept for the next frame.
+void GpuBackend::end_timing(bool read) {
+  time_pass(-1);
+  double* totals[] = {&stats_.gpu_shadow_ms, &stats_.gpu_opaque_ms, &stats_.gpu_blend_ms};
+  for (const auto& [pass, q] : queries_) {
+    GLuint64 ns = 0;
+    if (read) glGetQueryObjectui64v(q, GL_QUERY_RESULT, &ns);
+    *totals[pass] += double(ns) * 1e-6;
+    spare_queries_.push_back(q);
+  }
+  queries_.clear();
 }
 
 // The output's uniforms (kColorGlsl's finish): 0 display, 1 Linear's whole transform,
@@ -1337,9 +1397,11 @@ const FrameStats& GpuBackend::end_frame() {
     const auto t_wait = std::chrono::steady_clock::now();
     glFinish();
     stats_.gpu_wait_ms = ms_since(t_wait);
+    end_timing(true);
     check_gl("the GPU frame");
     context_->check_lost("the GPU frame");
   } catch (...) {
+    end_timing(false);
     context_->release();
     throw;
   }
@@ -1351,6 +1413,7 @@ const FrameStats& GpuBackend::end_frame() {
     stencil_used_ = false;
     samples_.keep_ids(options_.object_ids);
     stats_.readback_ms = reads_ms_, reads_ms_ = 0;  // the last frame's reads (FrameStats)
+    stats_.gpu_read_ms = gpu_reads_ms_, gpu_reads_ms_ = 0;
   }
   std::fill(samples_.tile_clean.begin(), samples_.tile_clean.end(), 0);
   evict();
@@ -1368,6 +1431,7 @@ void GpuBackend::fetch(unsigned what) const {
   const auto t0 = std::chrono::steady_clock::now();
   const int w = width_ * ssaa_, h = height_ * ssaa_;
   Current current(*context_);
+  GpuTimer gpu_time(read_query_, gpu_reads_ms_);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glPixelStorei(GL_PACK_ROW_LENGTH, 0);
@@ -1471,6 +1535,7 @@ bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
   if (!(pending_ & kColor) || sw > max_texture_ || sh > max_texture_) return false;
   const auto t0 = std::chrono::steady_clock::now();
   Current current(*context_);
+  GpuTimer gpu_time(read_query_, gpu_reads_ms_);
   Resolve& r = resolve_;
   if (!r.program) {
     r.program = build_resolve_program();
@@ -1530,6 +1595,7 @@ bool GpuBackend::direct_read(uint8_t* rgba, size_t row_bytes) const {
   if (!(pending_ & kColor)) return false;
   const auto t0 = std::chrono::steady_clock::now();
   Current current(*context_);
+  GpuTimer gpu_time(read_query_, gpu_reads_ms_);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);

@@ -109,6 +109,8 @@ class GpuBackend final : public Backend {
   void draw_painter();
   void render_shadows();
   void upload_shadows(GLuint program);
+  void time_pass(int pass);
+  void end_timing(bool read);
   void free(MeshEntry& m);
   void evict();
   template <class T>
@@ -161,6 +163,12 @@ class GpuBackend final : public Backend {
   std::vector<ShadowLight> shadow_lights_;
   GLuint shadow_fbo_ = 0, shadow_maps_ = 0, depth_program_ = 0;
   int shadow_size_ = 0, shadow_layers_ = 0;
+  // The GPU's own time per pass (FrameStats::gpu_*_ms): GL_TIME_ELAPSED queries, one
+  // running at a time (GL's rule), a pass's several summed after the frame's glFinish.
+  enum Pass { kShadowPass, kOpaquePass, kBlendPass };
+  int timing_ = -1;  // the pass being timed, -1 none
+  std::vector<std::pair<int, GLuint>> queries_;  // this frame's, in order
+  std::vector<GLuint> spare_queries_;
   mutable std::unique_ptr<ThreadPool> pool_;
   FrameStats stats_;
   std::chrono::steady_clock::time_point t0_;
@@ -172,6 +180,8 @@ class GpuBackend final : public Backend {
   mutable std::mutex fetch_mutex_;
   mutable unsigned pending_ = 0;
   mutable double reads_ms_ = 0;  // the read-backs since the last end_frame
+  mutable double gpu_reads_ms_ = 0;  // their GPU time (read_query_)
+  mutable GLuint read_query_ = 0;
   // The super-sampling resolve on the GPU (resolve_on_gpu): a copy of the samples as a
   // texture, the w x h output, their framebuffers and the pass's program.
   struct Resolve {

@@ -52,6 +52,16 @@ struct Mesh {
 
   std::vector<Material> materials;
 
+  // The data's revision, for caches of the mesh (the GPU backend's, docs/gpu.md "What
+  // is uploaded when"): 0, unmarked, the cache hashes every array each frame to see a
+  // change; else a number no other data had, which touch() renews after each change, and
+  // the cache trusts it without hashing. Loaders, the Python module, pGL and animation
+  // mark what they make and touch what they change; so do the functions below that
+  // change a marked mesh. Code that edits a marked mesh's arrays itself calls touch()
+  // (or sets 0 to go back to hashing).
+  uint64_t revision = 0;
+  void touch();
+
   size_t vertex_count() const { return positions.size(); }
   size_t triangle_count() const { return triangles.size(); }
 

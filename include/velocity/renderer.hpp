@@ -129,6 +129,12 @@ struct FrameStats {
   // when the caller first reads each plane (color_image, read_color, the depths,
   // object_ids), after end_frame: readback_ms is the PREVIOUS frame's reads.
   double upload_ms = 0, submit_ms = 0, gpu_wait_ms = 0, readback_ms = 0;
+  // The GPU's own time per pass (GL_TIME_ELAPSED queries): the shadow maps; the opaque
+  // draws, batches and clears; the blended (and painter's) draws; the read-back copies
+  // and resolve, the PREVIOUS frame's as readback_ms.
+  double gpu_shadow_ms = 0, gpu_opaque_ms = 0, gpu_blend_ms = 0, gpu_read_ms = 0;
+  // GPU: meshes whose bytes were hashed this frame (unmarked, Mesh::revision 0).
+  size_t meshes_hashed = 0;
   // The backend that drew ("cpu" or "gpu") and why it was chosen, e.g. "asked for" or
   // "auto: only a software OpenGL driver (llvmpipe), the CPU pipeline is faster". Set
   // from construction on, before any frame; valid while the Renderer lives.

@@ -182,6 +182,7 @@ Mesh mesh_from_arrays(const MeshArrays& in, std::string name) {
     compute_normals(mesh);
   }
   mesh.validate();
+  mesh.touch();  // a copy Python cannot edit: caches trust its revision (Mesh::revision)
   return mesh;
 }
 

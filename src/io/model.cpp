@@ -92,6 +92,9 @@ void load_textures(Model& model, const LoadOptions& options) {
 Model load_model(const std::string& path, const LoadOptions& options) {
   Model model = read_model(path, options);
   if (options.load_textures) load_textures(model, options);
+  // Marked: caches trust the revision (Mesh::revision); whoever edits one touches it.
+  for (ModelNode& node : model.nodes)
+    if (node.mesh) node.mesh->touch();
   return model;
 }
 

@@ -82,6 +82,7 @@ Mesh morph(const MorphTargets& targets, const std::vector<float>& weights) {
   if (normals)
     for (Vec3& v : out.normals)
       if (const float len = length(v); len > 1e-12f && std::isfinite(len)) v = v * (1 / len);
+  out.touch();  // new data: the base's revision is not this mesh's (Mesh::revision)
   return out;
 }
 
@@ -114,6 +115,7 @@ void skin(const std::vector<Skin>& skins, Scene& scene) {
       out.positions[v] = p * (1 / total);
       if (const float len = length(nn); normals && len > 1e-12f && std::isfinite(len)) out.normals[v] = nn * (1 / len);
     }
+    out.touch();  // (as morph)
     scene.object(ObjectId(s.node)).mesh = std::make_shared<const Mesh>(std::move(out));
   }
 }

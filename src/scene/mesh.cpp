@@ -2,6 +2,7 @@
 #include "velocity/mesh.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <unordered_map>
 
@@ -44,6 +45,12 @@ Vec3 area_normal(const Mesh& m, const Triangle& t) {
 }
 
 }  // namespace
+
+// A process-wide count: a revision names one state of one mesh's data, never reused.
+void Mesh::touch() {
+  static std::atomic<uint64_t> next{1};
+  revision = next.fetch_add(1, std::memory_order_relaxed);
+}
 
 void Mesh::validate() const {
   size_t nv = positions.size(), nt = triangles.size();
@@ -157,12 +164,14 @@ void compute_normals(Mesh& mesh) {
     }
   }
   mesh.normals = std::move(normals);
+  if (mesh.revision) mesh.touch();
 }
 
 void normalize_to_unit_sphere(Mesh& mesh) {
   Sphere s = mesh.bounding_sphere();
   float k = s.radius > 0 ? 1.0f / s.radius : 1.0f;
   for (Vec3& p : mesh.positions) p = (p - s.center) * k;
+  if (mesh.revision) mesh.touch();
 }
 
 Mesh make_cube(float size) {

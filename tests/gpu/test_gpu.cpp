@@ -351,6 +351,98 @@ TEST(GpuCache, InPlaceEditsShowInTheNextFrame) {
   expect_edit_shows("texture", 5);
 }
 
+// A marked mesh (Mesh::revision) is trusted: not hashed, not uploaded again until its
+// revision changes; an edit without touch() is not seen (the contract, docs/gpu.md). An
+// unmarked one is hashed every frame.
+TEST(GpuCache, MarkedMeshesAreNotHashed) {
+  Mesh mesh = make_sphere(48);
+  Material m;
+  m.shading = Shading::Gouraud;
+  Camera camera;
+  RenderOptions o;
+  auto frame = [&](gpu::GpuBackend& b) {
+    b.begin_frame(camera, {}, FrameStart{}, o);
+    b.draw(mesh, rotate_y(0.4f), &m, 1);
+    b.end_frame();
+    return b.color_image().pixels;
+  };
+  gpu::GpuBackend cached(96, 80, false);
+  std::vector<uint8_t> last = frame(cached);
+  EXPECT_EQ(cached.stats().meshes_hashed, 1u);  // unmarked
+  mesh.touch();
+  ASSERT_NE(mesh.revision, 0u);
+  EXPECT_EQ(frame(cached), last);
+  EXPECT_EQ(cached.stats().meshes_hashed, 0u);
+  EXPECT_EQ(cached.uploads(), 2u);  // marked now: a new key, uploaded once
+  EXPECT_EQ(frame(cached), last);
+  EXPECT_EQ(cached.stats().meshes_hashed, 0u);
+  EXPECT_EQ(cached.uploads(), 2u);
+  // Pushed out in place without touch(): the cache keeps what it has.
+  for (Vec3& p : mesh.positions) p = p * 1.2f;
+  EXPECT_EQ(frame(cached), last);
+  EXPECT_EQ(cached.uploads(), 2u);
+  // touch(): uploaded again, and drawn as a fresh backend draws it.
+  mesh.touch();
+  const std::vector<uint8_t> now = frame(cached);
+  EXPECT_EQ(cached.uploads(), 3u);
+  EXPECT_EQ(cached.stats().meshes_hashed, 0u);
+  EXPECT_NE(now, last);
+  gpu::GpuBackend fresh(96, 80, false);
+  EXPECT_EQ(now, frame(fresh));
+  // Back to 0: hashed again, every frame.
+  mesh.revision = 0;
+  EXPECT_EQ(frame(cached), now);
+  EXPECT_EQ(cached.stats().meshes_hashed, 1u);
+}
+
+// Loaders, library edits and animation keep the mark honest: what load_model makes is
+// marked, normalize_to_unit_sphere gives a marked mesh a new revision, an unmarked one
+// stays unmarked, and bench meshes are marked.
+TEST(GpuCache, LibraryMarksWhatItMakesAndChanges) {
+  Mesh plain = make_sphere(8);
+  normalize_to_unit_sphere(plain);
+  EXPECT_EQ(plain.revision, 0u);
+  Mesh marked = make_sphere(8);
+  marked.touch();
+  const uint64_t before = marked.revision;
+  normalize_to_unit_sphere(marked);
+  EXPECT_NE(marked.revision, before);
+  EXPECT_NE(marked.revision, 0u);
+  compute_normals(marked);
+  EXPECT_GT(marked.revision, before);
+  EXPECT_NE(bench::make_mesh("sphere:8").revision, 0u);
+  EXPECT_NE(bench::make_mesh("sphere:8").revision, bench::make_mesh("sphere:8").revision);  // never reused
+}
+
+// Every pass is timed by the GPU itself (GL_TIME_ELAPSED): shadow maps, opaque draws,
+// blended draws, and the read-back of the frame before.
+TEST(GpuTimers, EveryPassHasItsGpuTime) {
+  Renderer r(160, 120, BackendChoice::Gpu);
+  Scene scene;
+  Mesh sphere = make_sphere(64);
+  Material blend;
+  blend.shading = Shading::Pbr, blend.alpha = 0.5f, blend.alpha_mode = AlphaMode::Blend;
+  Mesh glass = make_cube(0.8f);
+  glass.materials = {blend};
+  scene.add_object("sphere", std::make_shared<const Mesh>(std::move(sphere)));
+  const ObjectId g = scene.add_object("glass", std::make_shared<const Mesh>(std::move(glass)));
+  scene.object(g).transform.translation = {0.5f, 0, 0.8f};
+  scene.camera.position = {0, 0, 4};
+  r.render(scene);
+  FrameStats st = r.stats();
+  EXPECT_GT(st.gpu_opaque_ms, 0.0);
+  EXPECT_GT(st.gpu_blend_ms, 0.0);
+  EXPECT_EQ(st.gpu_shadow_ms, 0.0);  // no shadows asked for
+  EXPECT_EQ(st.gpu_read_ms, 0.0);    // nothing read yet
+  (void)r.color_image();
+  r.options.shadows = true;
+  r.render(scene);
+  st = r.stats();
+  EXPECT_GT(st.gpu_shadow_ms, 0.0);
+  EXPECT_GT(st.gpu_opaque_ms, 0.0);
+  EXPECT_GT(st.gpu_read_ms, 0.0);  // the first frame's read
+}
+
 // RGBA rows are read straight from the GPU into the caller's rows, resolved on the GPU
 // with super-sampling; RGB rows go through the samples and the CPU. Either way they are
 // the CPU pipeline's read of the same frame (color_image), byte for byte, at a row pitch
