@@ -10,14 +10,6 @@
 #define W 96
 #define H 64
 
-static void ortho(void) {
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 static void triangle(float dx) {
   glBegin(GL_TRIANGLES);
   glColor3f(1, 0.3f, 0.1f), glVertex2f(10 + dx, 8);
@@ -54,7 +46,7 @@ int main(int argc, char** argv) {
   int i;
   conf_accum_bits = 16;
   conf_init(argc, argv, W, H);
-  ortho();
+  conf_ortho();
 
   /* Motion blur: five positions, each a fifth. */
   glClearAccum(0, 0, 0, 0);

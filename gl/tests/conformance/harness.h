@@ -74,6 +74,17 @@ static void conf_value(const char* name, double value) {
   fclose(f);
 }
 
+/* Window coordinates as the projection: one unit a pixel of the conf_init size, origin at
+ * the bottom left, for programs that place primitives on exact pixels. */
+static void conf_ortho(void) __attribute__((unused));
+static void conf_ortho(void) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, conf_width, 0, conf_height, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+}
+
 static int conf_end(void) {
   OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
   OSMesaDestroyContext(conf_ctx);

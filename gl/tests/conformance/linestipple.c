@@ -13,20 +13,12 @@
 #define W 128
 #define H 96
 
-static void ortho(void) {
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 int main(int argc, char** argv) {
   static const GLushort patterns[6] = {0x0f0f, 0xaaaa, 0x3c81, 0x00ff, 0xf731, 0x8001};
   GLint iv[2];
   int i;
   conf_init(argc, argv, W, H);
-  ortho();
+  conf_ortho();
   glClearColor(0.1f, 0.1f, 0.1f, 1);
 
   /* Independent lines: each pattern and factor, x- and y-major. */
@@ -84,7 +76,7 @@ int main(int argc, char** argv) {
     glVertex3f(-1.8f + 0.9f * (float)i, -3, 0), glVertex3f(-1.8f + 0.9f * (float)i, 3, 0);
   }
   glEnd();
-  ortho();
+  conf_ortho();
   conf_frame("clipped_perspective");
 
   /* From a display list. */

@@ -25,14 +25,6 @@ static void stripes(void) {
   }
 }
 
-static void ortho(void) {
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 /* The 16 operations in a 4 x 4 grid of cells, each a rectangle of colour `c`. */
 static void grid(const GLubyte* c) {
   int k;
@@ -52,7 +44,7 @@ int main(int argc, char** argv) {
   GLint iv[1];
   int i;
   conf_init(argc, argv, W, H);
-  ortho();
+  conf_ortho();
   glShadeModel(GL_FLAT);
 
   stripes();

@@ -11,14 +11,6 @@
 
 static GLubyte pattern[32 * 4], wide[40 * 8];
 
-static void ortho(void) {
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, W, 0, H, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 static void shapes(void) {
   glBegin(GL_TRIANGLES);
   glColor3f(1, 0, 0), glVertex2f(4, 4);
@@ -40,7 +32,7 @@ int main(int argc, char** argv) {
   GLubyte back[32 * 4 + 8];
   int i, y;
   conf_init(argc, argv, W, H);
-  ortho();
+  conf_ortho();
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   for (i = 0; i < 32 * 4; ++i) pattern[i] = (GLubyte)((i * 37 + (i >> 2) * 11) ^ 0x5a);
   for (i = 0; i < 40 * 8; ++i) wide[i] = (GLubyte)(i * 29 + 7);
