@@ -7,6 +7,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <string_view>
 
 #include "io/read_file.hpp"
 #include "velocity/error.hpp"
@@ -49,6 +50,26 @@ void check_image(const std::string& path, const Image& image) {
 constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
 // Most bytes of one image file (or embedded image) read.
 constexpr size_t kMaxImageFileBytes = size_t(256) << 20;
+
+// stb_image reads a TGA (the one format it knows by no magic number) whose pixel data
+// ends early by padding it with zeros, after allocating the whole image: a 19-byte file
+// claiming 12800x4097 pixels cost 210 MB and 13 s under the fuzzer (found by
+// tests/fuzz/fuzz_embedded.cpp). The least a TGA of w x h pixels can hold is its header
+// and, uncompressed, every pixel's bytes; run-length coded, one packet (a byte and one
+// pixel) for each 128 pixels. Returns that least size, or 0 for a file that is not a TGA.
+int64_t tga_least_bytes(const uint8_t* d, size_t n, int w, int h) {
+  if (n < 18) return 0;
+  static constexpr std::string_view kOtherMagic[] = {
+      {"\xff\xd8", 2}, {"\x89PNG", 4}, {"GIF8", 4}, {"BM", 2}, {"8BPS", 4}, {"\x53\x80\xf6\x34", 4}, {"P5", 2},
+      {"P6", 2}, {"#?", 2}};
+  for (std::string_view magic : kOtherMagic)
+    if (std::memcmp(d, magic.data(), magic.size()) == 0) return 0;
+  const int type = d[2];
+  const bool rle = type == 9 || type == 10 || type == 11;
+  if (!rle && type != 1 && type != 2 && type != 3) return 0;
+  const int64_t pixels = int64_t(w) * h, pixel_bytes = std::max(1, (d[16] + 7) / 8);
+  return 18 + d[0] + (rle ? (pixels + 127) / 128 * (1 + pixel_bytes) : pixels * pixel_bytes);
+}
 
 // stb_image 2.27 (Debian 12's libstb) trusts the 16 code-length counts of a JPEG DHT
 // table: counts adding up to more than 256 make stbi__build_huffman write past its
@@ -159,6 +180,10 @@ Image decode_image(std::string_view bytes, const std::string& path) {
       (w > 65536 || h > 65536 || int64_t(w) * h > kMaxImagePixels))
     throw Error(path + ": image is " + std::to_string(w) + "x" + std::to_string(h) + ", more than the limit of " +
                 std::to_string(kMaxImagePixels >> 20) + " megapixels");
+  if (const int64_t least = tga_least_bytes(p, bytes.size(), w, h); int64_t(bytes.size()) < least)
+    throw Error(path + ": cannot read image (truncated TGA: " + std::to_string(w) + "x" + std::to_string(h) +
+                " pixels need at least " + std::to_string(least) + " bytes, the data has " +
+                std::to_string(bytes.size()) + ")");
   std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load_from_memory(p, int(bytes.size()), &w, &h, &n, 4),
                                                  &stbi_image_free);
   if (!data) throw Error(path + ": cannot read image (" + stbi_failure_reason() + ")");

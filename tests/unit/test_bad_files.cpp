@@ -186,6 +186,12 @@ TEST_F(BadFiles, CountsThatLieAllocateNothing) {
   // A GIF header claiming 65535x4576 in 14 bytes (stb would allocate 3.6 GB for it).
   EXPECT_ERROR(read_image(write("lie.gif", std::string("GIF89a\xff\xff\xe0\x11\x10\x13\x18\x2e", 14))),
                "lie.gif: image is 65535x4576, more than the limit");
+  // A TGA header claiming 12800x4097 16-bit pixels in 19 bytes (stb would allocate 210 MB
+  // and pad it with zeros; tests/fuzz/regressions/embedded has the fuzzer's input).
+  EXPECT_ERROR(read_image(write("lie.tga", std::string("\xff\x00\x02\xff\x00\x00\x00\x00\x00\x00\x00\x13\x00\x32"
+                                                       "\x01\x10\x10\x00\xff",
+                                                       19))),
+               "lie.tga: cannot read image (truncated TGA: 12800x4097 pixels need at least");
   // None of it took long or much memory (peak RSS is a process-wide high-water mark:
   // this only catches a large reservation made here).
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
