@@ -586,9 +586,11 @@ void glDrawArrays(GLenum mode, GLint first, GLsizei count) {
       // In a display list the arrays are read now.
       if (mode > GL_POLYGON) return c.error(GL_INVALID_ENUM);
       if (count < 0 || first < 0) return c.error(GL_INVALID_VALUE);
-      glBegin(mode);
-      for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) record_array_element(c, GLint(i));
-      glEnd());
+      c.record_draw([&] {
+        glBegin(mode);
+        for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) record_array_element(c, GLint(i));
+        glEnd();
+      }));
 }
 
 void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
@@ -599,16 +601,28 @@ void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indic
           return c.error(GL_INVALID_ENUM);
       if (count < 0) return c.error(GL_INVALID_VALUE);
       if (!indices) return;
-      glBegin(mode);
-      for (GLsizei k = 0; k < count; ++k) {
-        uint32_t i = 0;
-        const auto* p = static_cast<const uint8_t*>(indices);
-        if (type == GL_UNSIGNED_BYTE) i = p[k];
-        else if (type == GL_UNSIGNED_SHORT) { uint16_t s; std::memcpy(&s, p + 2 * size_t(k), 2); i = s; }
-        else std::memcpy(&i, p + 4 * size_t(k), 4);
-        if (i <= 0x7fffffffu) record_array_element(c, GLint(i));
-      }
-      glEnd());
+      c.record_draw([&] {
+        glBegin(mode);
+        for (GLsizei k = 0; k < count; ++k) {
+          uint32_t i = 0;
+          const auto* p = static_cast<const uint8_t*>(indices);
+          if (type == GL_UNSIGNED_BYTE) i = p[k];
+          else if (type == GL_UNSIGNED_SHORT) { uint16_t s; std::memcpy(&s, p + 2 * size_t(k), 2); i = s; }
+          else std::memcpy(&i, p + 4 * size_t(k), 4);
+          if (i <= 0x7fffffffu) record_array_element(c, GLint(i));
+        }
+        glEnd();
+      }));
+}
+
+// GL 1.2: glDrawElements with a promise that every index lies in [start, end]. The
+// promise only helps a driver that copies vertices ahead; pGL reads the arrays per
+// index either way, so an index outside the range is drawn as glDrawElements would.
+void glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid* indices) {
+  Context* c = current();
+  if (!c) return;
+  if (end < start) return c->error(GL_INVALID_VALUE);
+  glDrawElements(mode, count, type, indices);
 }
 
 // GL 1.4's multi-draws: one glDrawArrays / glDrawElements per entry (each recorded into

@@ -240,6 +240,10 @@ class Context {
   bool compiling() const { return lists_.compiling != 0; }
   bool compile_and_execute() const { return lists_.mode == GL_COMPILE_AND_EXECUTE; }
   void record(ListCommand cmd);
+  // Compiles a draw from the arrays (glDrawArrays, glDrawElements): what `body` records
+  // becomes one command, which between glBegin and glEnd draws nothing and raises
+  // GL_INVALID_OPERATION, as the call itself would have.
+  void record_draw(const std::function<void()>& body);
   GLuint list_base() const { return lists_.base; }
   void set_list_base(GLuint base) { lists_.base = base; }
 

@@ -49,6 +49,32 @@ void Context::record(ListCommand cmd) {
   lists_.recorded.push_back(std::move(cmd));
 }
 
+void Context::record_draw(const std::function<void()>& body) {
+  std::vector<ListCommand> outer = std::move(lists_.recorded);
+  lists_.recorded = {};
+  std::vector<ListCommand> draw;
+  try {
+    body();
+    draw = std::move(lists_.recorded);
+  } catch (...) {
+    lists_.recorded = std::move(outer);
+    throw;
+  }
+  lists_.recorded = std::move(outer);
+  if (lists_.overflow || lists_.recorded.size() + draw.size() >= kMaxListCommands) {
+    lists_.overflow = true;
+    return;
+  }
+  record([draw = std::move(draw)](Context& c) {
+    if (c.in_begin_error()) return;
+    for (const ListCommand& k : draw) {  // each counts against the outermost call's budget
+      if (c.lists_.budget == 0) break;
+      if (--c.lists_.budget == 0) c.error(GL_OUT_OF_MEMORY);
+      k(c);
+    }
+  });
+}
+
 void Context::call_list(GLuint list) {
   if (lists_.depth >= kMaxListNesting) return;  // GL: deeper calls are ignored
   auto it = lists_.stored.find(list);

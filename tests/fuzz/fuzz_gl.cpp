@@ -440,7 +440,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const void* p = t == 0 ? static_cast<const void*>(idx8.data()) : t == 1 ? static_cast<const void*>(idx16.data())
                                                                                  : static_cast<const void*>(idx32.data());
         const GLenum type = t == 0 ? GL_UNSIGNED_BYTE : t == 1 ? GL_UNSIGNED_SHORT : t == 2 ? GL_UNSIGNED_INT : e2;
-        glDrawElements(e1, n > 64 ? 64 : n, type, p);
+        if (in.u8() & 1)
+          glDrawElements(e1, n > 64 ? 64 : n, type, p);
+        else  // the range is advice: any, even a wrong or reversed one
+          glDrawRangeElements(e1, GLuint(in.below(70)), GLuint(in.below(70)), n > 64 ? 64 : n, type, p);
         break;
       }
       case 52: glArrayElement(in.below(56)); break;

@@ -128,6 +128,8 @@ typedef double GLclampd;
 #define GL_LIST_INDEX 0x0B33
 #define GL_LIST_MODE 0x0B30
 #define GL_MAX_LIST_NESTING 0x0B31
+#define GL_MAX_ELEMENTS_VERTICES 0x80E8
+#define GL_MAX_ELEMENTS_INDICES 0x80E9
 
 /* Depth buffer */
 #define GL_NEVER 0x0200
@@ -878,6 +880,8 @@ GLAPI void GLAPIENTRY glDisableClientState(GLenum cap);
 GLAPI void GLAPIENTRY glArrayElement(GLint i);
 GLAPI void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count);
 GLAPI void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);
+GLAPI void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                                          const GLvoid *indices);
 
 /* Display lists */
 GLAPI GLuint GLAPIENTRY glGenLists(GLsizei range);

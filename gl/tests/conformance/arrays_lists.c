@@ -145,7 +145,9 @@ int main(int argc, char** argv) {
   glTranslatef(0, 3.5f, 0);
   glDisableClientState(GL_COLOR_ARRAY);
   glColor3f(0.3f, 0.3f, 0.9f);
-  glDrawElements(GL_QUADS, 4, GL_UNSIGNED_SHORT, faces + 4);
+  glDrawRangeElements(GL_QUADS, 4, 7, 4, GL_UNSIGNED_SHORT, faces + 4); /* GL 1.2: indices 4-7 */
+  glDrawRangeElements(GL_QUADS, 7, 4, 4, GL_UNSIGNED_SHORT, faces + 4); /* end < start: nothing drawn */
+  conf_value("range_elements_reversed_error", glGetError());
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-1, -2);
   glColor3f(1, 0.6f, 0.1f);
@@ -158,6 +160,19 @@ int main(int argc, char** argv) {
   glDisable(GL_POLYGON_OFFSET_FILL);
   conf_frame("modes_offset");
 
+  /* A draw from the arrays compiled into a list runs whole or not at all: called
+   * between glBegin and glEnd it raises GL_INVALID_OPERATION. */
+  {
+    GLuint draw = glGenLists(1);
+    glNewList(draw, GL_COMPILE);
+    glDrawArrays(GL_QUADS, 0, 4);
+    glEndList();
+    glBegin(GL_QUADS);
+    glCallList(draw);
+    glEnd();
+    conf_value("list_draw_inside_begin_error", glGetError());
+    glDeleteLists(draw, 1);
+  }
   glDeleteLists(base, 5);
   conf_value("is_list_after_delete", glIsList(base));
   return conf_end();
