@@ -19,6 +19,7 @@
 // until end_frame() returns: the work is done there, on every core.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 
 #include "velocity/math.hpp"
@@ -164,6 +165,11 @@ struct PixelState {
   // filled polygons only.
   bool polygon_stipple = false;
   uint32_t stipple[32] = {};
+
+  // An occlusion query (OpenGL's GL_SAMPLES_PASSED): when set, the fragments that pass
+  // the stencil and depth tests (all that reach them, without the tests) are counted
+  // into it, as the draw's tiles finish. It must stay alive until end_frame() returns.
+  std::atomic<uint64_t>* samples_passed = nullptr;
 };
 
 enum class PrimitiveKind : uint8_t { Points, Lines, Triangles };

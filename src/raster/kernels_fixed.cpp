@@ -68,7 +68,8 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
                                p.stencil_pass != StencilOp::Keep);
   const uint32_t keep = ~(((p.color_mask & 1) ? 0xffu : 0) | ((p.color_mask & 2) ? 0xff00u : 0) |
                           ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
-  if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids) return;  // nothing would be written
+  if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids && !p.samples_passed) return;  // nothing would be written
+  uint64_t passed = 0;  // fragments past the depth and stencil tests, for an occlusion query
   for (int b = 0; b < n; ++b) {
     Block blk = blocks[b];
     if (p.polygon_stipple) {
@@ -104,6 +105,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
         if (p.depth_test) m = hn::And(m, compare(p.depth_func, z, zb));
         if (hn::AllFalse(d, m)) continue;
       }
+      if (p.samples_passed) passed += hn::CountTrue(d, m);
       if (writes_depth) hn::BlendedStore(z, m, d, zp);
       const VU dst = hn::Load(du, cp);
       if (p.blend && !p.logic_op) {
@@ -118,6 +120,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
     }
   }
+  if (passed) p.samples_passed->fetch_add(passed, std::memory_order_relaxed);
 }
 
 const KernelFn* fixed_kernels() {
