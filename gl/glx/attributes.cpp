@@ -178,8 +178,8 @@ ContextError check_context_attributes(const int* list, int limit) {
   const bool profiles = major > 3 || (major == 3 && minor >= 2);
   if (profiles && profile != GLX_CONTEXT_CORE_PROFILE_BIT_ARB && profile != GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB)
     return ContextError::WrongProfile;
-  // Only what pGL is: OpenGL 1.0 to 1.4 (a forward-compatible context needs 3.0).
-  if (major != 1 || minor < 0 || minor > 4 || (flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB))
+  // Only what pGL is: OpenGL 1.0 to 1.5 (a forward-compatible context needs 3.0).
+  if (major != 1 || minor < 0 || minor > 5 || (flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB))
     return ContextError::Unsupported;
   return ContextError::Ok;
 }

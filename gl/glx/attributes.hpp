@@ -48,7 +48,7 @@ const Config* choose_visual(const Wanted& w, int visuals);
 // One attribute of configuration c, shown in `visual` (0: none). False: unknown.
 bool config_attribute(const Config& c, unsigned long visual, int attribute, int* value);
 
-// glXCreateContextAttribsARB's list: what pGL can give (OpenGL 1.0 to 1.4), or why not.
+// glXCreateContextAttribsARB's list: what pGL can give (OpenGL 1.0 to 1.5), or why not.
 enum class ContextError { Ok, WrongValue, Unsupported, WrongProfile };  // X errors: BadValue, BadMatch, GLXBadProfileARB
 ContextError check_context_attributes(const int* list, int limit);
 

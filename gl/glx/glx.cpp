@@ -15,9 +15,6 @@
 #include <GL/osmesa.h>
 
 #include <cstddef>
-// GL 1.5's pointer-sized types, which glxext.h's prototypes name (pGL's gl.h is 1.4).
-typedef std::ptrdiff_t GLintptr;
-typedef std::ptrdiff_t GLsizeiptr;
 
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>

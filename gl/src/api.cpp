@@ -69,23 +69,23 @@ std::array<float, 4> param1(GLfloat v) { return {v, 0, 0, 0}; }
 
 // A vertex array element's values, fetched now for a display list.
 void record_array_element(Context& c, GLint i) {
-  if (c.arrays.color.enabled && c.arrays.color.pointer) {
+  if (c.arrays.color.enabled && c.arrays.color.usable()) {
     const Vec4 col = c.arrays.color.fetch_normalized(i, {0, 0, 0, 1}, c.arrays.color.size);
     compiled([=](Context& k) { k.set_color(col); });
   }
-  if (c.arrays.normal.enabled && c.arrays.normal.pointer) {
+  if (c.arrays.normal.enabled && c.arrays.normal.usable()) {
     const Vec3 n = c.arrays.normal.fetch_normalized(i, {}, 3).xyz();
     compiled([=](Context& k) { k.set_normal(n); });
   }
-  if (c.arrays.texcoord.enabled && c.arrays.texcoord.pointer) {
+  if (c.arrays.texcoord.enabled && c.arrays.texcoord.usable()) {
     const Vec4 t = c.arrays.texcoord.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.set_texcoord(t); });
   }
-  if (c.arrays.edge_enabled && c.arrays.edge_pointer) {
+  if (c.arrays.edge_enabled && c.arrays.edge_usable()) {
     const bool e = c.arrays.edge(i);
     compiled([=](Context& k) { k.set_edge_flag(e); });
   }
-  if (c.arrays.vertex.enabled && c.arrays.vertex.pointer) {
+  if (c.arrays.vertex.enabled && c.arrays.vertex.usable()) {
     const Vec4 v = c.arrays.vertex.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.vertex(v); });
   }
@@ -100,8 +100,10 @@ bool valid_array_type(GLenum t, bool bytes_ok, bool unsigned_ok) {
   }
 }
 
-void set_array(velocity::gl::ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* p) {
+// With a buffer bound to GL_ARRAY_BUFFER, `p` is an offset into it (GL 1.5).
+void set_array(Context& c, velocity::gl::ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* p) {
   a.size = size, a.type = type, a.stride = stride, a.pointer = p;
+  a.buffer = c.arrays.array_buffer;
 }
 
 }  // namespace
@@ -301,7 +303,8 @@ void glEdgeFlagv(const GLboolean* flag) {
 }
 void glEdgeFlagPointer(GLsizei stride, const GLvoid* pointer) {
   NOW(if (stride < 0) return c.error(GL_INVALID_VALUE);
-      c.arrays.edge_stride = stride, c.arrays.edge_pointer = static_cast<const GLboolean*>(pointer));
+      c.arrays.edge_stride = stride, c.arrays.edge_pointer = static_cast<const GLboolean*>(pointer);
+      c.arrays.edge_buffer = c.arrays.array_buffer);
 }
 GLint glRenderMode(GLenum mode) {  // never compiled
   GLint r = 0;
@@ -513,21 +516,21 @@ void glPixelStorei(GLenum pname, GLint v) { NOW(c.pixel_store(pname, v)); }
 void glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (size < 2 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, false, false)) return c.error(GL_INVALID_ENUM);
-      set_array(c.arrays.vertex, size, type, stride, p));
+      set_array(c, c.arrays.vertex, size, type, stride, p));
 }
 void glNormalPointer(GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (stride < 0) return c.error(GL_INVALID_VALUE); if (!valid_array_type(type, true, false)) return c.error(GL_INVALID_ENUM);
-      set_array(c.arrays.normal, 3, type, stride, p));
+      set_array(c, c.arrays.normal, 3, type, stride, p));
 }
 void glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (size < 3 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, true, true)) return c.error(GL_INVALID_ENUM);
-      set_array(c.arrays.color, size, type, stride, p));
+      set_array(c, c.arrays.color, size, type, stride, p));
 }
 void glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* p) {
   NOW(if (size < 1 || size > 4 || stride < 0) return c.error(GL_INVALID_VALUE);
       if (!valid_array_type(type, false, false)) return c.error(GL_INVALID_ENUM);
-      set_array(c.arrays.texcoord, size, type, stride, p));
+      set_array(c, c.arrays.texcoord, size, type, stride, p));
 }
 // GL 1.5 section 2.8, Table 2.5: each format's arrays, sizes and offsets in one record
 // (colours as 4 unsigned bytes take one float's room).
@@ -561,17 +564,21 @@ void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* pointer) {
       for (const Layout& k : layouts) if (k.format == format) l = &k;
       if (!l) return c.error(GL_INVALID_ENUM);
       const GLsizei s = stride ? stride : GLsizei(l->s * sizeof(GLfloat));
-      const auto* base = static_cast<const char*>(pointer);
-      auto at = [&](GLint floats) { return base ? base + size_t(floats) * sizeof(GLfloat) : nullptr; };
+      // (An offset into the bound GL_ARRAY_BUFFER, when there is one: 0 is one too.)
+      const bool offsets = c.arrays.array_buffer != nullptr;
+      auto at = [&](GLint floats) -> const void* {
+        if (!pointer && !offsets) return nullptr;
+        return reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(pointer) + size_t(floats) * sizeof(GLfloat));
+      };
       c.arrays.edge_enabled = false;
       c.arrays.texcoord.enabled = l->st != 0;
-      if (l->st) set_array(c.arrays.texcoord, l->st, F, s, base);
+      if (l->st) set_array(c, c.arrays.texcoord, l->st, F, s, at(0));
       c.arrays.color.enabled = l->sc != 0;
-      if (l->sc) set_array(c.arrays.color, l->sc, l->tc, s, at(l->pc));
+      if (l->sc) set_array(c, c.arrays.color, l->sc, l->tc, s, at(l->pc));
       c.arrays.normal.enabled = l->normal;
-      if (l->normal) set_array(c.arrays.normal, 3, F, s, at(l->pn));
+      if (l->normal) set_array(c, c.arrays.normal, 3, F, s, at(l->pn));
       c.arrays.vertex.enabled = true;
-      set_array(c.arrays.vertex, l->sv, F, s, at(l->pv)));
+      set_array(c, c.arrays.vertex, l->sv, F, s, at(l->pv)));
 }
 void glEnableClientState(GLenum cap) { NOW(c.client_state(cap, true)); }
 void glDisableClientState(GLenum cap) { NOW(c.client_state(cap, false)); }
@@ -600,12 +607,12 @@ void glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indic
       if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
           return c.error(GL_INVALID_ENUM);
       if (count < 0) return c.error(GL_INVALID_VALUE);
-      if (!indices) return;
+      const uint8_t* p = c.element_indices(count, type, indices);  // (buffer_objects.cpp)
+      if (!p) return;
       c.record_draw([&] {
         glBegin(mode);
         for (GLsizei k = 0; k < count; ++k) {
           uint32_t i = 0;
-          const auto* p = static_cast<const uint8_t*>(indices);
           if (type == GL_UNSIGNED_BYTE) i = p[k];
           else if (type == GL_UNSIGNED_SHORT) { uint16_t s; std::memcpy(&s, p + 2 * size_t(k), 2); i = s; }
           else std::memcpy(&i, p + 4 * size_t(k), 4);
@@ -738,15 +745,16 @@ const GLubyte* glGetString(GLenum name) {
   switch (name) {
     case GL_VENDOR: s = "Velocity"; break;
     case GL_RENDERER: s = "Velocity pGL (software, tile rasterizer)"; break;
-    case GL_VERSION: s = "1.4 Velocity pGL 0.1 (a subset: docs/gl.md)"; break;
-    // The extensions whose whole functionality pGL has (each only names tokens that
-    // gl.h defines and the library accepts; none adds a function): GL_ADD, NPOT
-    // sizes, BGR/BGRA pixels, GL_RESCALE_NORMAL, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT.
+    case GL_VERSION: s = "1.5 Velocity pGL 0.1 (a subset: docs/gl.md)"; break;
+    // The extensions whose whole functionality pGL has: token-only ones (GL_ADD, NPOT
+    // sizes, BGR/BGRA pixels, GL_RESCALE_NORMAL, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT,
+    // GL 1.4's blending and multi-draws) and GL 1.5's buffer objects and occlusion
+    // queries under their ARB names (api_buffers.cpp).
     case GL_EXTENSIONS:
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
           "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
-          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

@@ -19,9 +19,27 @@ size_t type_size(GLenum t) {
 }
 }  // namespace
 
+const unsigned char* ClientArray::element(GLint index, size_t bytes) const {
+  const size_t at = size_t(index) * (stride ? size_t(stride) : bytes);
+  if (!buffer) return static_cast<const unsigned char*>(pointer) + at;
+  // In a buffer object: the offset and the element inside its data (a buffer holds
+  // at most kMaxBufferBytes, so none of these sums overflows).
+  const size_t offset = reinterpret_cast<uintptr_t>(pointer), n = buffer->size;
+  if (offset > n || at > n - offset || bytes > n - offset - at) return nullptr;
+  return buffer->data.data() + offset + at;
+}
+
+bool ArrayState::edge(GLint i) const {
+  if (edge_buffer) {
+    const size_t at = reinterpret_cast<uintptr_t>(edge_pointer) + size_t(i) * size_t(edge_stride ? edge_stride : 1);
+    return at < edge_buffer->size ? edge_buffer->data[at] != 0 : true;
+  }
+  return edge_pointer[size_t(i) * size_t(edge_stride ? edge_stride : 1)] != 0;
+}
+
 Vec4 ClientArray::fetch(GLint index, Vec4 v) const {
-  const size_t step = stride ? size_t(stride) : size_t(size) * type_size(type);
-  const unsigned char* p = static_cast<const unsigned char*>(pointer) + size_t(index) * step;
+  const unsigned char* p = element(index, size_t(size) * type_size(type));
+  if (!p) return v;  // outside its buffer object: the current defaults
   float* out[4] = {&v.x, &v.y, &v.z, &v.w};
   for (int k = 0; k < size && k < 4; ++k) {
     float f;
@@ -70,22 +88,45 @@ void Context::client_state(GLenum cap, bool on) {
 
 void Context::array_element(GLint i) {
   if (i < 0) return error(GL_INVALID_VALUE);
-  if (arrays.color.enabled && arrays.color.pointer)
+  if (arrays.color.enabled && arrays.color.usable())
     set_color(arrays.color.fetch_normalized(i, {0, 0, 0, 1}, arrays.color.size));
-  if (arrays.normal.enabled && arrays.normal.pointer) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
-  if (arrays.texcoord.enabled && arrays.texcoord.pointer) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
-  if (arrays.edge_enabled && arrays.edge_pointer) edge_flag_ = arrays.edge(i);
-  if (arrays.vertex.enabled && arrays.vertex.pointer) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
+  if (arrays.normal.enabled && arrays.normal.usable()) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
+  if (arrays.texcoord.enabled && arrays.texcoord.usable()) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
+  if (arrays.edge_enabled && arrays.edge_usable()) edge_flag_ = arrays.edge(i);
+  if (arrays.vertex.enabled && arrays.vertex.usable()) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
+}
+
+// GL leaves the current colour, normal, texture coordinates and edge flag undefined
+// after glDrawArrays or glDrawElements with their arrays enabled; Mesa leaves them (and
+// the material GL_COLOR_MATERIAL makes follow the colour) as they were before the draw,
+// and programs count on it (piglit's draw-vertices draws white after coloured arrays).
+// glArrayElement does set them, as the immediate-mode calls it stands for.
+struct Context::KeptCurrent {
+  Vec4 color, texcoord;
+  Vec3 normal;
+  bool edge;
+  Material materials[2];
+};
+
+Context::KeptCurrent Context::keep_current() const {
+  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}};
+}
+
+void Context::restore_current(const KeptCurrent& k) {
+  color_ = k.color, texcoord_ = k.texcoord, normal_ = k.normal, edge_flag_ = k.edge;
+  lighting_.materials[0] = k.materials[0], lighting_.materials[1] = k.materials[1];
 }
 
 void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
   if (count < 0 || first < 0) return error(GL_INVALID_VALUE);
   if (in_begin_error()) return;
-  if (!arrays.vertex.enabled || !arrays.vertex.pointer) return;
+  if (!arrays.vertex.enabled || !arrays.vertex.usable()) return;
+  const KeptCurrent kept = keep_current();
   begin(mode);
   for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) array_element(GLint(i));
   end();
+  restore_current(kept);
 }
 
 void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
@@ -93,8 +134,8 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
   if (count < 0) return error(GL_INVALID_VALUE);
   if (in_begin_error()) return;
-  if (!arrays.vertex.enabled || !arrays.vertex.pointer || !indices) return;
-  const auto* bytes = static_cast<const uint8_t*>(indices);
+  const uint8_t* bytes = element_indices(count, type, indices);  // (buffer_objects.cpp)
+  if (!arrays.vertex.enabled || !arrays.vertex.usable() || !bytes) return;
   auto index_at = [&](GLsizei k) -> uint32_t {
     if (type == GL_UNSIGNED_BYTE) return bytes[k];
     if (type == GL_UNSIGNED_SHORT) {
@@ -113,6 +154,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   for (GLsizei k = 0; k < count; ++k) largest = std::max(largest, index_at(k));
   const size_t cache_size = std::min(size_t(largest) + 1, size_t(count) * 4 + 1024);
   element_cache_.assign(cache_size, 0);
+  const KeptCurrent kept = keep_current();
   begin(mode);
   caching_ = true;
   for (GLsizei k = 0; k < count; ++k) {
@@ -128,6 +170,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   }
   caching_ = false;
   end();
+  restore_current(kept);
 }
 
 }  // namespace velocity::gl

@@ -230,6 +230,33 @@ class Context {
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
 
+  // --- GL 1.5's buffer objects (buffer_objects.cpp)
+  void gen_buffers(GLsizei n, GLuint* out);
+  void delete_buffers(GLsizei n, const GLuint* ids);
+  void bind_buffer(GLenum target, GLuint id);
+  bool is_buffer(GLuint id) const { return buffers_.objects.count(id) != 0; }
+  void buffer_data(GLenum target, GLsizeiptr size, const void* data, GLenum usage);
+  void buffer_sub_data(GLenum target, GLintptr offset, GLsizeiptr size, const void* data);
+  void get_buffer_sub_data(GLenum target, GLintptr offset, GLsizeiptr size, void* data);
+  void* map_buffer(GLenum target, GLenum access);
+  GLboolean unmap_buffer(GLenum target);
+  void get_buffer_parameter(GLenum target, GLenum pname, GLint* out);
+  void get_buffer_pointer(GLenum target, GLenum pname, void** out);
+  bool get_buffer_binding(GLenum pname, std::vector<double>& out) const;  // glGet's *_BUFFER_BINDING
+  // glDrawElements' `count` indices of `type`: `indices` itself, or the bytes at that
+  // offset in the bound element buffer (null: they are not all inside it).
+  const uint8_t* element_indices(GLsizei count, GLenum type, const void* indices) const;
+
+  // --- GL 1.5's occlusion queries (occlusion.cpp)
+  void gen_queries(GLsizei n, GLuint* out);
+  void delete_queries(GLsizei n, const GLuint* ids);
+  bool is_query(GLuint id) const { return queries_.objects.count(id) != 0; }
+  void begin_query(GLenum target, GLuint id);
+  void end_query(GLenum target);
+  void get_query(GLenum target, GLenum pname, GLint* out);
+  // glGetQueryObject(u)iv: false with GL's error recorded, else the value in *out.
+  bool get_query_object(GLuint id, GLenum pname, uint64_t* out);
+
   // --- display lists (lists.cpp)
   GLuint gen_lists(GLsizei range);
   void new_list(GLuint list, GLenum mode);
@@ -446,6 +473,22 @@ class Context {
   std::vector<std::shared_ptr<const Texture>> frame_textures_;
   size_t frame_texture_bytes_ = 0;  // their texels' size
   size_t frame_vertices_ = 0;
+
+  // The current attributes glDrawArrays and glDrawElements leave as they found them
+  // (arrays.cpp).
+  struct KeptCurrent;
+  KeptCurrent keep_current() const;
+  void restore_current(const KeptCurrent& k);
+
+  // GL 1.5's buffer objects (buffer_objects.cpp).
+  BufferState buffers_;
+  std::shared_ptr<BufferObject>* buffer_binding(GLenum target);  // null: GL_INVALID_ENUM
+  BufferObject* bound_buffer(GLenum target);
+  BufferObject* buffer_range(GLenum target, GLintptr offset, GLsizeiptr size);
+
+  // GL 1.5's occlusion queries (occlusion.cpp).
+  QueryState queries_;
+  void settle_query(QueryObject& q);  // run the frame its draws are in, if it has not run
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

@@ -234,6 +234,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
   s.blend_color = raster_.blend_color;
   s.color_mask = raster_.color_mask_bits();
   stencil_pixel_state(s);
+  s.samples_passed = queries_.active_object ? &queries_.active_object->samples : nullptr;  // (occlusion.cpp)
   s.polygon_stipple = stippled && raster_.polygon_stipple;
   if (s.polygon_stipple) std::copy(raster_.stipple.begin(), raster_.stipple.end(), s.stipple);
   return s;

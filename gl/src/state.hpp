@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -195,6 +196,46 @@ struct TextureState {
   Vec4 env_color{0, 0, 0, 0};
 };
 
+// --- buffer objects (buffer_objects.cpp): GL 1.5's vertex and index data kept by ---
+// --- the library ------------------------------------------------------------------
+// A buffer of more than kMaxBufferBytes, or one that would take all buffers past
+// kMaxBufferTotalBytes, is GL_OUT_OF_MEMORY.
+constexpr size_t kMaxBufferBytes = size_t(256) << 20;
+constexpr size_t kMaxBufferTotalBytes = size_t(1) << 30;
+constexpr size_t kMaxBufferObjects = size_t(1) << 20;
+
+struct BufferObject {
+  GLuint name = 0;
+  std::vector<uint8_t> data;  // `size` bytes, and at least one (a map of 0 bytes is not null)
+  size_t size = 0;
+  GLenum usage = GL_STATIC_DRAW;
+  GLenum access = GL_READ_WRITE;  // glMapBuffer's, while mapped
+  bool mapped = false;
+};
+
+struct BufferState {
+  std::map<GLuint, std::shared_ptr<BufferObject>> objects;  // the names bound at least once
+  GLuint next_name = 1;
+  size_t total_bytes = 0;  // of the objects' data
+};
+
+// --- occlusion queries (occlusion.cpp): GL 1.5's GL_SAMPLES_PASSED ----------------
+struct QueryObject {
+  // The draws between glBeginQuery and glEndQuery count into it as their frame runs
+  // (PixelState::samples_passed).
+  std::atomic<uint64_t> samples{0};
+  bool pending = false;  // ended while its frame had not run
+};
+
+constexpr size_t kMaxQueryObjects = size_t(1) << 20;  // more is GL_OUT_OF_MEMORY
+
+struct QueryState {
+  std::map<GLuint, std::unique_ptr<QueryObject>> objects;  // the names begun at least once
+  GLuint next_name = 1;
+  GLuint active = 0;  // the query between glBeginQuery and glEndQuery, or 0
+  QueryObject* active_object = nullptr;
+};
+
 // --- vertex arrays (arrays.cpp) ---------------------------------------------------
 // One vertex array (glVertexPointer and the like).
 struct ClientArray {
@@ -203,6 +244,12 @@ struct ClientArray {
   GLenum type = GL_FLOAT;
   GLsizei stride = 0;
   const void* pointer = nullptr;
+  // The GL_ARRAY_BUFFER bound when the pointer was given: `pointer` is then an offset
+  // into it, and an element outside it reads as the defaults.
+  std::shared_ptr<BufferObject> buffer;
+  bool usable() const { return buffer || pointer; }
+  // Element `index`'s first `bytes` bytes, or null where they are outside the buffer.
+  const unsigned char* element(GLint index, size_t bytes) const;
   Vec4 fetch(GLint index, Vec4 defaults) const;
   // A colour's or a normal's first `components`: integer types map to [0, 1] (unsigned)
   // or [-1, 1] (signed).
@@ -215,9 +262,11 @@ struct ArrayState {
   bool edge_enabled = false;
   GLsizei edge_stride = 0;
   const GLboolean* edge_pointer = nullptr;
-  bool edge(GLint i) const {
-    return edge_pointer[size_t(i) * size_t(edge_stride ? edge_stride : 1)] != 0;
-  }
+  std::shared_ptr<BufferObject> edge_buffer;  // (as ClientArray::buffer)
+  bool edge_usable() const { return edge_buffer || edge_pointer; }
+  bool edge(GLint i) const;  // (arrays.cpp; outside its buffer: true)
+  // GL 1.5's GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER bindings (buffer_objects.cpp).
+  std::shared_ptr<BufferObject> array_buffer, element_buffer;
 };
 
 // --- display lists (lists.cpp) ----------------------------------------------------

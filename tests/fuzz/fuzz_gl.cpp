@@ -2,7 +2,8 @@
 // arguments (GLU's quadrics, the raster position and pixel rectangles, user clip planes
 // and, where libvelocity-glut is built, GLUT's shapes among them: they need no window).
 // The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
-// without depth and stencil), then up to 512 calls among ~150 GL, GLU and OSMesa entry points,
+// without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
+// points (GL 1.5's buffer objects and occlusion queries among them),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -237,6 +238,84 @@ void tex_gen_call(Bytes& in, float a, float b, float c, float d, GLenum e1) {
   }
 }
 
+// GL 1.5's buffer objects and occlusion queries: any target, name, size, offset,
+// usage and access; arrays and indices pointed into buffers at any offset (the
+// library bounds its reads by the buffer), drawn, mapped, written, read back.
+void buffer_call(Bytes& in, std::vector<float>& scratch, GLuint* names, GLenum e1, GLenum e2) {
+  static const GLenum targets[] = {GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER};
+  const GLenum target = in.u8() < 230 ? targets[in.below(2)] : e1;
+  const GLuint name = names[in.below(4)] + GLuint(in.below(3));
+  // Sizes and offsets within `scratch` (64 x 64 x 4 floats) or just past it.
+  const GLsizeiptr size = GLsizeiptr(in.below(4)) * GLsizeiptr(in.u16() % 4096) - 1;
+  const GLintptr offset = GLintptr(in.u16() % 600) - 8;
+  switch (in.below(12)) {
+    case 0: glGenBuffers(in.below(5) - 1, names); break;
+    case 1: glBindBuffer(target, name); break;
+    case 2: glDeleteBuffers(in.below(5) - 1, names); break;
+    case 3:
+      glBufferData(target, size, in.u8() & 1 ? scratch.data() : nullptr,
+                   in.u8() < 230 ? GL_STREAM_DRAW + GLenum(in.below(11)) : e2);
+      break;
+    case 4: glBufferSubData(target, offset, size, scratch.data()); break;
+    case 5: glGetBufferSubData(target, offset, size, scratch.data()); break;
+    case 6: {
+      void* p = glMapBuffer(target, in.u8() < 230 ? GL_READ_ONLY + GLenum(in.below(3)) : e2);
+      GLint bytes = 0;
+      glGetBufferParameteriv(target, GL_BUFFER_SIZE, &bytes);
+      if (p && bytes > 0) static_cast<uint8_t*>(p)[in.u16() % bytes] = in.u8();  // inside the mapping
+      if (in.u8() & 1) glUnmapBuffer(target);
+      break;
+    }
+    case 7: {
+      GLint v;
+      void* p;
+      glGetBufferParameteriv(target, e2, &v);
+      glGetBufferPointerv(target, in.u8() & 1 ? GL_BUFFER_MAP_POINTER : e2, &p);
+      glGetPointerv(e1, &p);
+      glIsBuffer(name);
+      break;
+    }
+    case 8:
+    case 9: {
+      // Every array at an offset in the buffer bound to GL_ARRAY_BUFFER (offsets are
+      // only given with one bound: without, they would be the caller's addresses); any
+      // elements drawn, any indices from the element buffer.
+      GLint array_buffer = 0, element_buffer = 0;
+      glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer);
+      glGetIntegerv(GL_ELEMENT_ARRAY_BUFFER_BINDING, &element_buffer);
+      if (array_buffer == 0) break;
+      const auto* at = reinterpret_cast<const void*>(uintptr_t(in.u16() % 2048));
+      const GLsizei stride = GLsizei(in.below(40));
+      glVertexPointer(2 + in.below(3), in.u8() & 1 ? GL_FLOAT : GL_SHORT, stride, at);
+      glColorPointer(3 + in.below(2), in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT, stride, at);
+      glNormalPointer(in.u8() & 1 ? GL_BYTE : GL_FLOAT, stride, at);
+      glTexCoordPointer(1 + in.below(4), GL_FLOAT, stride, at);
+      glEdgeFlagPointer(stride, at);
+      if (in.u8() & 1) glDrawArrays(e1, in.below(64), in.below(300));
+      if (element_buffer)
+        glDrawElements(e1, in.below(300), GL_UNSIGNED_BYTE + 2 * GLenum(in.below(3)),
+                       reinterpret_cast<const void*>(uintptr_t(in.u16() % 4096)));
+      break;
+    }
+    case 10: {
+      GLuint ids[2] = {names[0], names[1]};
+      if (in.u8() & 1) glGenQueries(in.below(3) - 1, ids);
+      if (in.u8() & 1) glBeginQuery(in.u8() < 230 ? GL_SAMPLES_PASSED : e1, ids[in.below(2)] + GLuint(in.below(2)));
+      glRectf(-0.5f, -0.5f, 0.5f, 0.5f);
+      if (in.u8() & 1) glEndQuery(in.u8() < 230 ? GL_SAMPLES_PASSED : e1);
+      GLuint r;
+      GLint iv;
+      glGetQueryObjectuiv(ids[in.below(2)], in.u8() & 1 ? GL_QUERY_RESULT : GL_QUERY_RESULT_AVAILABLE, &r);
+      glGetQueryObjectiv(ids[in.below(2)], e2, &iv);
+      glGetQueryiv(in.u8() & 1 ? GL_SAMPLES_PASSED : e1, in.u8() & 1 ? GL_CURRENT_QUERY : e2, &iv);
+      if (in.u8() & 1) glDeleteQueries(in.below(3) - 1, ids);
+      glIsQuery(ids[0]);
+      break;
+    }
+    default: glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT), glBindBuffer(target, name), glPopClientAttrib(); break;
+  }
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -286,6 +365,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % 97) / 96.0f;
   std::vector<float> out(96 * 96 * 4 + 16);
   GLuint names[4] = {0, 0, 0, 0};
+  GLuint buffer_names[4] = {0, 0, 0, 0};
   GLUquadric* quadric = gluNewQuadric();
 
   for (int call = 0; call < 512 && !in.empty(); ++call) {
@@ -440,6 +520,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const void* p = t == 0 ? static_cast<const void*>(idx8.data()) : t == 1 ? static_cast<const void*>(idx16.data())
                                                                                  : static_cast<const void*>(idx32.data());
         const GLenum type = t == 0 ? GL_UNSIGNED_BYTE : t == 1 ? GL_UNSIGNED_SHORT : t == 2 ? GL_UNSIGNED_INT : e2;
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);  // the indices are the client's, below 64
         if (in.u8() & 1)
           glDrawElements(e1, n > 64 ? 64 : n, type, p);
         else  // the range is advice: any, even a wrong or reversed one
@@ -498,6 +579,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         pixel_call(in, pixels, a, b, c, d, e1, e2);
         clip_call(in, a, b, c, d);
         tex_gen_call(in, a, b, c, d, e1);
+        buffer_call(in, pixels, buffer_names, e1, e2);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif

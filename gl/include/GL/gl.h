@@ -1,10 +1,12 @@
-/* Velocity's OpenGL 1.x header (pGL): the subset of OpenGL 1.0-1.4 that libvelocity-gl
+/* Velocity's OpenGL 1.x header (pGL): the subset of OpenGL 1.0-1.5 that libvelocity-gl
  * implements, with OpenGL's own names, types and enum values, so that programs written
  * for any OpenGL 1.x implementation compile unchanged. Everything declared here exists;
  * a GL function not declared here does not (docs/gl.md lists both). */
 #ifndef __gl_h_
 #define __gl_h_
 #define VELOCITY_GL 1
+
+#include <stddef.h> /* ptrdiff_t: GL 1.5's GLintptr, GLsizeiptr */
 
 #ifdef __cplusplus
 extern "C" {
@@ -904,6 +906,97 @@ GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei heig
                                    GLvoid *pixels);
 GLAPI void GLAPIENTRY glFinish(void);
 GLAPI void GLAPIENTRY glFlush(void);
+
+/* GL 1.1's glGetPointerv */
+#define GL_VERTEX_ARRAY_POINTER 0x808E
+#define GL_NORMAL_ARRAY_POINTER 0x808F
+#define GL_COLOR_ARRAY_POINTER 0x8090
+#define GL_TEXTURE_COORD_ARRAY_POINTER 0x8092
+#define GL_EDGE_FLAG_ARRAY_POINTER 0x8093
+GLAPI void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params);
+
+/* GL 1.5: buffer objects (ARB_vertex_buffer_object) and occlusion queries
+ * (ARB_occlusion_query), under their core and their ARB names */
+#define GL_VERSION_1_5 1
+#define GL_ARB_vertex_buffer_object 1
+#define GL_ARB_occlusion_query 1
+typedef ptrdiff_t GLintptr;
+typedef ptrdiff_t GLsizeiptr;
+typedef ptrdiff_t GLintptrARB;
+typedef ptrdiff_t GLsizeiptrARB;
+#define GL_BUFFER_SIZE 0x8764
+#define GL_BUFFER_USAGE 0x8765
+#define GL_ARRAY_BUFFER 0x8892
+#define GL_ELEMENT_ARRAY_BUFFER 0x8893
+#define GL_ARRAY_BUFFER_BINDING 0x8894
+#define GL_ELEMENT_ARRAY_BUFFER_BINDING 0x8895
+#define GL_VERTEX_ARRAY_BUFFER_BINDING 0x8896
+#define GL_NORMAL_ARRAY_BUFFER_BINDING 0x8897
+#define GL_COLOR_ARRAY_BUFFER_BINDING 0x8898
+#define GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING 0x889A
+#define GL_EDGE_FLAG_ARRAY_BUFFER_BINDING 0x889B
+#define GL_READ_ONLY 0x88B8
+#define GL_WRITE_ONLY 0x88B9
+#define GL_READ_WRITE 0x88BA
+#define GL_BUFFER_ACCESS 0x88BB
+#define GL_BUFFER_MAPPED 0x88BC
+#define GL_BUFFER_MAP_POINTER 0x88BD
+#define GL_STREAM_DRAW 0x88E0
+#define GL_STREAM_READ 0x88E1
+#define GL_STREAM_COPY 0x88E2
+#define GL_STATIC_DRAW 0x88E4
+#define GL_STATIC_READ 0x88E5
+#define GL_STATIC_COPY 0x88E6
+#define GL_DYNAMIC_DRAW 0x88E8
+#define GL_DYNAMIC_READ 0x88E9
+#define GL_DYNAMIC_COPY 0x88EA
+#define GL_ARRAY_BUFFER_ARB 0x8892
+#define GL_ELEMENT_ARRAY_BUFFER_ARB 0x8893
+#define GL_STATIC_DRAW_ARB 0x88E4
+#define GL_QUERY_COUNTER_BITS 0x8864
+#define GL_CURRENT_QUERY 0x8865
+#define GL_QUERY_RESULT 0x8866
+#define GL_QUERY_RESULT_AVAILABLE 0x8867
+#define GL_SAMPLES_PASSED 0x8914
+#define GL_SAMPLES_PASSED_ARB 0x8914
+GLAPI void GLAPIENTRY glGenBuffers(GLsizei n, GLuint *buffers);
+GLAPI void GLAPIENTRY glDeleteBuffers(GLsizei n, const GLuint *buffers);
+GLAPI void GLAPIENTRY glBindBuffer(GLenum target, GLuint buffer);
+GLAPI GLboolean GLAPIENTRY glIsBuffer(GLuint buffer);
+GLAPI void GLAPIENTRY glBufferData(GLenum target, GLsizeiptr size, const GLvoid *data, GLenum usage);
+GLAPI void GLAPIENTRY glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const GLvoid *data);
+GLAPI void GLAPIENTRY glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, GLvoid *data);
+GLAPI GLvoid *GLAPIENTRY glMapBuffer(GLenum target, GLenum access);
+GLAPI GLboolean GLAPIENTRY glUnmapBuffer(GLenum target);
+GLAPI void GLAPIENTRY glGetBufferParameteriv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetBufferPointerv(GLenum target, GLenum pname, GLvoid **params);
+GLAPI void GLAPIENTRY glGenBuffersARB(GLsizei n, GLuint *buffers);
+GLAPI void GLAPIENTRY glDeleteBuffersARB(GLsizei n, const GLuint *buffers);
+GLAPI void GLAPIENTRY glBindBufferARB(GLenum target, GLuint buffer);
+GLAPI GLboolean GLAPIENTRY glIsBufferARB(GLuint buffer);
+GLAPI void GLAPIENTRY glBufferDataARB(GLenum target, GLsizeiptrARB size, const GLvoid *data, GLenum usage);
+GLAPI void GLAPIENTRY glBufferSubDataARB(GLenum target, GLintptrARB offset, GLsizeiptrARB size, const GLvoid *data);
+GLAPI void GLAPIENTRY glGetBufferSubDataARB(GLenum target, GLintptrARB offset, GLsizeiptrARB size, GLvoid *data);
+GLAPI GLvoid *GLAPIENTRY glMapBufferARB(GLenum target, GLenum access);
+GLAPI GLboolean GLAPIENTRY glUnmapBufferARB(GLenum target);
+GLAPI void GLAPIENTRY glGetBufferParameterivARB(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetBufferPointervARB(GLenum target, GLenum pname, GLvoid **params);
+GLAPI void GLAPIENTRY glGenQueries(GLsizei n, GLuint *ids);
+GLAPI void GLAPIENTRY glDeleteQueries(GLsizei n, const GLuint *ids);
+GLAPI GLboolean GLAPIENTRY glIsQuery(GLuint id);
+GLAPI void GLAPIENTRY glBeginQuery(GLenum target, GLuint id);
+GLAPI void GLAPIENTRY glEndQuery(GLenum target);
+GLAPI void GLAPIENTRY glGetQueryiv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectiv(GLuint id, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectuiv(GLuint id, GLenum pname, GLuint *params);
+GLAPI void GLAPIENTRY glGenQueriesARB(GLsizei n, GLuint *ids);
+GLAPI void GLAPIENTRY glDeleteQueriesARB(GLsizei n, const GLuint *ids);
+GLAPI GLboolean GLAPIENTRY glIsQueryARB(GLuint id);
+GLAPI void GLAPIENTRY glBeginQueryARB(GLenum target, GLuint id);
+GLAPI void GLAPIENTRY glEndQueryARB(GLenum target);
+GLAPI void GLAPIENTRY glGetQueryivARB(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectivARB(GLuint id, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *params);
 
 #ifdef __cplusplus
 }
