@@ -41,6 +41,9 @@
 //   line_stipple.cpp  glLineStipple, GL_LINE_STIPPLE
 //   polygon_stipple.cpp  glPolygonStipple, glGetPolygonStipple, GL_POLYGON_STIPPLE
 //   accum.cpp         the accumulation buffer: glAccum, glClearAccum
+//   buffer_objects.cpp  GL 1.5's buffer objects (arrays and indices read from them)
+//   occlusion.cpp     GL 1.5's occlusion queries (GL_SAMPLES_PASSED)
+//   api_buffers.cpp   their C entry points, glGetPointerv, glDrawRangeElements
 #pragma once
 
 #include <GL/gl.h>
