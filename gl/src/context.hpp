@@ -44,6 +44,7 @@
 //   buffer_objects.cpp  GL 1.5's buffer objects (arrays and indices read from them)
 //   occlusion.cpp     GL 1.5's occlusion queries (GL_SAMPLES_PASSED)
 //   api_buffers.cpp   their C entry points, glGetPointerv, glDrawRangeElements
+//   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
 #pragma once
 
 #include <GL/gl.h>
@@ -217,6 +218,13 @@ class Context {
   // The internal format glTexImage2D's argument names, or 0 if none.
   static GLenum base_format(GLint internal);
   GLint unpack_alignment = 4, pack_alignment = 4;  // glPixelStorei
+
+  // --- 1-D textures (texture_1d.cpp)
+  // The object bound to `target` (GL_TEXTURE_1D or GL_TEXTURE_2D), or null with
+  // GL_INVALID_ENUM.
+  TextureObject* target_texture(GLenum target);
+  bool texturing() const { return texture_.enabled || texture_.enabled_1d; }
+  bool texturing_1d() const { return !texture_.enabled && texture_.enabled_1d; }  // 1-D is the one drawn
 
   // --- copies from the framebuffer, level queries (copy_texture.cpp)
   void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);

@@ -33,7 +33,9 @@ std::vector<uint32_t> Context::read_colour_rect(GLint x, GLint y, GLsizei w, GLs
 void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h,
                              GLint border) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (!target_texture(target)) return;
+  // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats.
+  if (internal >= 1 && internal <= 4) return error(GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
       h > (kMaxTextureSize >> level) || border != 0 || !base_format(GLint(internal)))
     return error(GL_INVALID_VALUE);
@@ -44,9 +46,10 @@ void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint 
 void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
                                  GLsizei h) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  const TextureObject* t = target_texture(target);
+  if (!t) return;
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  const Texture::Level& l = bound_texture()->levels[size_t(level)];
+  const Texture::Level& l = t->levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
   if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + w > l.width || int64_t(yoffset) + h > l.height)
     return error(GL_INVALID_VALUE);
@@ -55,9 +58,10 @@ void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLin
 
 bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out) {
   if (in_begin_error()) return false;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM), false;
+  const TextureObject* tp = target_texture(target);
+  if (!tp) return false;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE), false;
-  const TextureObject& t = *bound_texture();
+  const TextureObject& t = *tp;
   const Texture::Level& l = t.levels[size_t(level)];
   // Each channel the format has is kept in 8 bits (the texels are RGBA8).
   const GLenum base = l.width ? t.internal_format : GLenum(0);
@@ -80,7 +84,8 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
 
 void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  const TextureObject* tp = target_texture(target);
+  if (!tp) return;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE);
   int comps;
   switch (format) {
@@ -91,7 +96,7 @@ void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum ty
     default: return error(GL_INVALID_ENUM);
   }
   if (type != GL_UNSIGNED_BYTE && type != GL_FLOAT) return error(GL_INVALID_ENUM);
-  const TextureObject& t = *bound_texture();
+  const TextureObject& t = *tp;
   const Texture::Level& l = t.levels[size_t(level)];
   if (!pixels || l.width == 0) return;
   const size_t tsize = type == GL_FLOAT ? 4 : 1, align = size_t(std::max(pack_alignment, 1));

@@ -167,8 +167,8 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
     s.depth_test = s.depth_write = false;
     return s;
   }
-  if (texture_.enabled) {
-    TextureObject* t = bound_texture();
+  if (texturing()) {
+    TextureObject* t = target_texture(texturing_1d() ? GL_TEXTURE_1D : GL_TEXTURE_2D);  // (texture_1d.cpp)
     if (const Texture* tex = texture_for_draw(*t)) {
       TextureStage& st = s.texture;
       st.texture = tex;
@@ -200,6 +200,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
                                          : Wrap::Repeat;
       };
       sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
+      if (texturing_1d()) sm.wrap_t = Wrap::Repeat;  // a 1-D image is one row: t is not read
       sm.border_color = t->border;
     }
   }

@@ -180,6 +180,7 @@ struct TextureObject {
   Vec4 border{0, 0, 0, 0};
   bool generate_mipmap = false;
   int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
+  GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once first bound (texture_1d.cpp)
   // What the renderer samples, built when first drawn after a change (null: not yet,
   // or incomplete). Draws already recorded keep their own reference.
   std::shared_ptr<const Texture> built;
@@ -194,6 +195,10 @@ struct TextureState {
   GLuint next_name = 1;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color{0, 0, 0, 0};
+  // 1-D textures (texture_1d.cpp): height-1 images in the same objects and sampler.
+  bool enabled_1d = false;  // GL_TEXTURE_1D (GL_TEXTURE_2D takes precedence)
+  GLuint bound_1d = 0;
+  TextureObject default_1d;  // name 0 on GL_TEXTURE_1D
 };
 
 // --- buffer objects (buffer_objects.cpp): GL 1.5's vertex and index data kept by ---
@@ -315,6 +320,8 @@ struct AttribFrame {
   bool normalize = false, rescale_normal = false;
   bool texture_enabled = false;
   GLuint texture_bound = 0;
+  bool texture_enabled_1d = false;
+  GLuint texture_bound_1d = 0;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color;
   Vec4 color, texcoord;

@@ -46,19 +46,27 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
   for (GLsizei i = 0; i < n; ++i) {
     if (ids[i] == 0) continue;
     if (ids[i] == texture_.bound) texture_.bound = 0, changed();
+    if (ids[i] == texture_.bound_1d) texture_.bound_1d = 0, changed();
     texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }
 
 void Context::bind_texture(GLenum target, GLuint id) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D) return error(GL_INVALID_ENUM);
   if (id != 0 && !texture_.objects.count(id)) {
     if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
     texture_.objects[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
   }
-  if (id != texture_.bound) changed();
-  texture_.bound = id;
+  if (id != 0) {
+    // A texture is 1-D or 2-D from its first bind on (GL 1.5, 3.8.12).
+    TextureObject& t = *texture_.objects[id];
+    if (t.target && t.target != target) return error(GL_INVALID_OPERATION);
+    t.target = target;
+  }
+  GLuint& bound = target == GL_TEXTURE_2D ? texture_.bound : texture_.bound_1d;
+  if (id != bound) changed();
+  bound = id;
 }
 
 namespace {
@@ -83,13 +91,14 @@ uint32_t stored_texel(GLenum base, uint32_t p) {
 void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
                         const std::vector<uint32_t>* rgba) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  TextureObject* tp = target_texture(target);
+  if (!tp) return;
   const GLenum base = base_format(internal);
   if (!base) return error(GL_INVALID_VALUE);
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
       h > (kMaxTextureSize >> level) || border != 0)
     return error(GL_INVALID_VALUE);
-  TextureObject& t = *bound_texture();
+  TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
   l.width = w, l.height = h;
   l.texels.assign(size_t(w) * h, 0xff000000u);
@@ -112,9 +121,10 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
 void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
                             const std::vector<uint32_t>& rgba) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
+  TextureObject* tp = target_texture(target);
+  if (!tp) return;
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  TextureObject& t = *bound_texture();
+  TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
   if (x < 0 || y < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height) return error(GL_INVALID_VALUE);
@@ -130,8 +140,9 @@ void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsize
 
 void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM);
-  TextureObject& t = *bound_texture();
+  TextureObject* tp = target_texture(target);
+  if (!tp) return;
+  TextureObject& t = *tp;
   const GLenum e = to_enum(v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:

@@ -40,7 +40,7 @@ void Context::end() {
 void Context::prepare_lighting() {
   lights_used_ = 0;
   need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count ||
-              (texture_.enabled && tex_gen_needs_eye());
+              (texturing() && tex_gen_needs_eye());
   if (!lighting_.enabled) return;
   for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
@@ -96,10 +96,12 @@ void Context::vertex(Vec4 v) {
   }
   if (!lighting_.enabled) out.front = out.back = clamp_color(color_);
   // (Feedback reports the coordinates untransformed while texturing is off, as Mesa does.)
-  if (!texture_.enabled && feeding_back()) out.tex = texcoord_;
-  if (texture_.enabled) {
+  if (!texturing() && feeding_back()) out.tex = texcoord_;
+  if (texturing()) {
     const Vec4 t = tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_;  // (tex_gen.cpp)
     out.tex = transform_.texture_identity ? t : transform_.texture.back() * t;
+    // A 1-D texture reads s alone: t = 0 keeps the level of detail s's own.
+    if (texturing_1d() && !feeding_back()) out.tex.y = 0;
   }
   push_vertex(out);
 }

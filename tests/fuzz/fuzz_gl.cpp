@@ -3,7 +3,7 @@
 // and, where libvelocity-glut is built, GLUT's shapes among them: they need no window).
 // The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
 // without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
-// points (GL 1.5's buffer objects and occlusion queries among them),
+// points (GL 1.5's buffer objects and occlusion queries, 1-D textures among them),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -316,6 +316,41 @@ void buffer_call(Bytes& in, std::vector<float>& scratch, GLuint* names, GLenum e
   }
 }
 
+// 1-D textures: images of any width up to 64 (`pixels` holds 64 RGBA floats a row),
+// levels, offsets and targets; copies from the framebuffer; bound, enabled, drawn.
+void texture_1d_call(Bytes& in, const std::vector<float>& pixels, GLuint* names, float a, float b, GLenum e1) {
+  const GLenum target = in.u8() < 230 ? GL_TEXTURE_1D : e1;
+  const GLint level = in.below(9) - 1;
+  const GLsizei w = in.below(67) - 2;
+  switch (in.below(7)) {
+    case 0: glBindTexture(in.u8() & 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D, names[in.below(4)] + GLuint(in.below(2))); break;
+    case 1:
+      glTexImage1D(target, level, in.u8() & 1 ? GL_RGBA : GLint(in.enumerant()), w, in.below(3) - 1,
+                   in.u8() & 1 ? GL_RGBA : in.enumerant(), in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
+                   in.u8() & 1 ? pixels.data() : nullptr);
+      break;
+    case 2:
+      glTexSubImage1D(target, level, in.integer(), w, GL_RGBA, in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT, pixels.data());
+      break;
+    case 3: glCopyTexImage1D(target, level, GL_RGB, in.integer() % 128, in.integer() % 128, w, in.below(3) - 1); break;
+    case 4: glCopyTexSubImage1D(target, level, in.integer() % 70, in.integer() % 128, in.integer() % 128, w); break;
+    case 5: {
+      GLint v;
+      glGetTexLevelParameteriv(target, level, in.u8() & 1 ? GL_TEXTURE_WIDTH : e1, &v);
+      std::vector<float> back(64 * 4);
+      if (target == GL_TEXTURE_1D) glGetTexImage(target, level, GL_RGBA, GL_FLOAT, back.data());  // at most 64 texels
+      glTexParameterf(target, in.u8() & 1 ? GL_TEXTURE_MIN_FILTER : e1, float(in.u8() & 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST));
+      break;
+    }
+    default:
+      (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_1D);
+      glBegin(GL_TRIANGLES);
+      glTexCoord2f(a, b), glVertex2f(-1, -1), glTexCoord2f(b, a), glVertex2f(1, -0.5f), glVertex2f(a, b);
+      glEnd();
+      break;
+  }
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -580,6 +615,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         clip_call(in, a, b, c, d);
         tex_gen_call(in, a, b, c, d, e1);
         buffer_call(in, pixels, buffer_names, e1, e2);
+        texture_1d_call(in, pixels, names, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif

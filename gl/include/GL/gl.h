@@ -907,6 +907,17 @@ GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei heig
 GLAPI void GLAPIENTRY glFinish(void);
 GLAPI void GLAPIENTRY glFlush(void);
 
+/* 1-D textures */
+#define GL_TEXTURE_1D 0x0DE0
+#define GL_TEXTURE_BINDING_1D 0x8068
+GLAPI void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
+                                   GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
+                                      GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
+                                       GLsizei width, GLint border);
+GLAPI void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
+
 /* GL 1.1's glGetPointerv */
 #define GL_VERTEX_ARRAY_POINTER 0x808E
 #define GL_NORMAL_ARRAY_POINTER 0x808F
