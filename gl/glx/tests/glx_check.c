@@ -222,6 +222,19 @@ int main(void) {
   CHECK(c14, "a 1.4 context");
   XSync(dpy, False);
   x_errors = 0;
+  /* GL 1.5 (buffer objects, occlusion queries) is the newest pGL gives: a 1.5
+   * context is made, its GL_VERSION says so, and its functions are found. */
+  const int v15[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 5, None};
+  GLXContext c15 = create_attribs(dpy, config, NULL, True, v15);
+  CHECK(c15, "a 1.5 context");
+  CHECK(glXMakeCurrent(dpy, win, c15), "make the 1.5 context current");
+  CHECK(strncmp((const char*)glGetString(GL_VERSION), "1.5", 3) == 0, "GL_VERSION %s", (const char*)glGetString(GL_VERSION));
+  CHECK(glXGetProcAddress((const GLubyte*)"glGenBuffers") && glXGetProcAddress((const GLubyte*)"glBeginQueryARB") &&
+            glXGetProcAddress((const GLubyte*)"glTexImage1D"),
+        "GL 1.5's and 1-D textures' functions");
+  glXMakeCurrent(dpy, None, NULL);
+  glXDestroyContext(dpy, c15);
+  XSync(dpy, False);
   const int v32[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 2,
                      GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
   CHECK(!create_attribs(dpy, config, NULL, True, v32), "a 3.2 core context");
