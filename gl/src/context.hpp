@@ -45,6 +45,7 @@
 //   occlusion.cpp     GL 1.5's occlusion queries (GL_SAMPLES_PASSED)
 //   api_buffers.cpp   their C entry points, glGetPointerv, glDrawRangeElements
 //   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
+//   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
 #pragma once
 
 #include <GL/gl.h>
@@ -267,6 +268,18 @@ class Context {
   void get_query(GLenum target, GLenum pname, GLint* out);
   // glGetQueryObject(u)iv: false with GL's error recorded, else the value in *out.
   bool get_query_object(GLuint id, GLenum pname, uint64_t* out);
+
+  // --- one-dimensional evaluators (evaluators.cpp)
+  static int map1_components(GLenum target);  // 0: not a GL_MAP1_* target
+  void map1(GLenum target, float u1, float u2, GLint stride, GLint order, const std::vector<float>& points);
+  bool enable_map1(GLenum cap, bool on);  // false: not a GL_MAP1_* name
+  bool map1_enabled(GLenum cap, bool* known) const;
+  void eval_coord1(float u);
+  void map_grid1(GLint n, float u1, float u2);
+  float grid_u(GLint i) const;
+  void eval_mesh1(GLenum mode, GLint i1, GLint i2);
+  bool get_map1(GLenum target, GLenum query, std::vector<double>& out);  // glGetMap
+  bool get_eval(GLenum pname, std::vector<double>& out) const;          // glGet's
 
   // --- display lists (lists.cpp)
   GLuint gen_lists(GLsizei range);
@@ -496,6 +509,10 @@ class Context {
   std::shared_ptr<BufferObject>* buffer_binding(GLenum target);  // null: GL_INVALID_ENUM
   BufferObject* bound_buffer(GLenum target);
   BufferObject* buffer_range(GLenum target, GLintptr offset, GLsizeiptr size);
+
+  // Evaluators (evaluators.cpp).
+  EvalState eval_;
+  Vec4 evaluate1(const Map1& m, int k, float u, Vec4 defaults) const;
 
   // GL 1.5's occlusion queries (occlusion.cpp).
   QueryState queries_;

@@ -22,6 +22,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_blend(pname, out, kind)) return true;
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
   if (get_buffer_binding(pname, out)) return true;   // (buffer_objects.cpp)
+  if (get_eval(pname, out)) return true;             // (evaluators.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -124,7 +125,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     // pixel maps.
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
-    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: case GL_MAX_EVAL_ORDER:
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
     case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
@@ -153,6 +154,8 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
   if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
+  if (const bool on = map1_enabled(cap, known); *known) return on;  // (evaluators.cpp)
+  *known = true;
   switch (cap) {
     case GL_DEPTH_TEST: return raster_.depth_test;
     case GL_CULL_FACE: return raster_.cull;

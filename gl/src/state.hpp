@@ -241,6 +241,24 @@ struct QueryState {
   QueryObject* active_object = nullptr;
 };
 
+// --- one-dimensional evaluators (evaluators.cpp) ----------------------------------
+constexpr int kMap1Targets = 9;    // GL_MAP1_COLOR_4 .. GL_MAP1_VERTEX_4
+constexpr int kMaxEvalOrder = 30;  // GL_MAX_EVAL_ORDER (Mesa's)
+
+struct Map1 {
+  float u1 = 0, u2 = 1;
+  int order = 1;
+  std::vector<float> points;  // order control points of the target's components
+};
+
+struct EvalState {
+  Map1 maps[kMap1Targets];
+  bool enabled[kMap1Targets] = {};
+  GLint grid_n = 1;  // glMapGrid1
+  float grid_u1 = 0, grid_u2 = 1;
+  EvalState();
+};
+
 // --- vertex arrays (arrays.cpp) ---------------------------------------------------
 // One vertex array (glVertexPointer and the like).
 struct ClientArray {

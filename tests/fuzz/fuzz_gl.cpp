@@ -3,7 +3,8 @@
 // and, where libvelocity-glut is built, GLUT's shapes among them: they need no window).
 // The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
 // without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
-// points (GL 1.5's buffer objects and occlusion queries, 1-D textures among them),
+// points (GL 1.5's buffer objects and occlusion queries, 1-D textures and
+// evaluators among them),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -351,6 +352,32 @@ void texture_1d_call(Bytes& in, const std::vector<float>& pixels, GLuint* names,
   }
 }
 
+// One-dimensional evaluators: any target, domain (NaN too), stride and order (the
+// points read stay inside `attrib`: order * stride at most 30 * 8 of its 512 floats),
+// enabled, evaluated inside and outside glBegin/glEnd, on grids of any size below 300.
+void evaluator_call(Bytes& in, const std::vector<float>& attrib, float a, float b, GLenum e1) {
+  const GLenum target = in.u8() < 230 ? GL_MAP1_COLOR_4 + GLenum(in.below(9)) : e1;
+  switch (in.below(6)) {
+    case 0: glMap1f(target, a, b, in.below(10) - 1, in.below(33) - 1, attrib.data()); break;
+    case 1: (in.u8() & 1 ? glEnable : glDisable)(target); break;
+    case 2:
+      glBegin(in.u8() & 1 ? GL_LINE_STRIP : GL_POINTS);
+      for (int i = in.below(20); i >= 0; --i) glEvalCoord1f(a + float(i) * b);
+      glEnd();
+      break;
+    case 3: glMapGrid1f(in.below(300) - 1, a, b); break;
+    case 4:
+      glEvalMesh1(in.u8() < 230 ? GL_POINT + GLenum(in.below(3)) : e1, in.below(300) - 10, in.below(300) - 10);
+      glEvalPoint1(in.below(300) - 10);
+      break;
+    default: {
+      GLfloat v[32 * 4];
+      glGetMapfv(target, in.u8() < 230 ? GL_COEFF + GLenum(in.below(3)) : e1, v);
+      break;
+    }
+  }
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -616,6 +643,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         tex_gen_call(in, a, b, c, d, e1);
         buffer_call(in, pixels, buffer_names, e1, e2);
         texture_1d_call(in, pixels, names, a, b, e1);
+        evaluator_call(in, attrib, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif

@@ -918,6 +918,36 @@ GLAPI void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum intern
                                        GLsizei width, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
 
+/* One-dimensional evaluators (glMap1, glEvalCoord1, glMapGrid1, glEvalMesh1) */
+#define GL_MAP1_COLOR_4 0x0D90
+#define GL_MAP1_INDEX 0x0D91
+#define GL_MAP1_NORMAL 0x0D92
+#define GL_MAP1_TEXTURE_COORD_1 0x0D93
+#define GL_MAP1_TEXTURE_COORD_2 0x0D94
+#define GL_MAP1_TEXTURE_COORD_3 0x0D95
+#define GL_MAP1_TEXTURE_COORD_4 0x0D96
+#define GL_MAP1_VERTEX_3 0x0D97
+#define GL_MAP1_VERTEX_4 0x0D98
+#define GL_MAP1_GRID_DOMAIN 0x0DD0
+#define GL_MAP1_GRID_SEGMENTS 0x0DD1
+#define GL_COEFF 0x0A00
+#define GL_ORDER 0x0A01
+#define GL_DOMAIN 0x0A02
+GLAPI void GLAPIENTRY glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint stride, GLint order, const GLfloat *points);
+GLAPI void GLAPIENTRY glMap1d(GLenum target, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+                              const GLdouble *points);
+GLAPI void GLAPIENTRY glEvalCoord1f(GLfloat u);
+GLAPI void GLAPIENTRY glEvalCoord1d(GLdouble u);
+GLAPI void GLAPIENTRY glEvalCoord1fv(const GLfloat *u);
+GLAPI void GLAPIENTRY glEvalCoord1dv(const GLdouble *u);
+GLAPI void GLAPIENTRY glMapGrid1f(GLint un, GLfloat u1, GLfloat u2);
+GLAPI void GLAPIENTRY glMapGrid1d(GLint un, GLdouble u1, GLdouble u2);
+GLAPI void GLAPIENTRY glEvalMesh1(GLenum mode, GLint i1, GLint i2);
+GLAPI void GLAPIENTRY glEvalPoint1(GLint i);
+GLAPI void GLAPIENTRY glGetMapfv(GLenum target, GLenum query, GLfloat *v);
+GLAPI void GLAPIENTRY glGetMapdv(GLenum target, GLenum query, GLdouble *v);
+GLAPI void GLAPIENTRY glGetMapiv(GLenum target, GLenum query, GLint *v);
+
 /* GL 1.1's glGetPointerv */
 #define GL_VERTEX_ARRAY_POINTER 0x808E
 #define GL_NORMAL_ARRAY_POINTER 0x808F
