@@ -43,7 +43,7 @@
 //   accum.cpp         the accumulation buffer: glAccum, glClearAccum
 //   buffer_objects.cpp  GL 1.5's buffer objects (arrays and indices read from them)
 //   occlusion.cpp     GL 1.5's occlusion queries (GL_SAMPLES_PASSED)
-//   api_buffers.cpp   their C entry points, glGetPointerv, glDrawRangeElements
+//   api_buffers.cpp   their C entry points, glGetPointerv
 //   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
 //   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
 #pragma once
