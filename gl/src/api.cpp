@@ -294,6 +294,8 @@ void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
 void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
 void glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { LIST(c.clear_accum(r, g, b, a)); }
 void glAccum(GLenum op, GLfloat value) { LIST(c.accum(op, value)); }
+void glDrawBuffer(GLenum mode) { LIST(c.draw_buffer(mode)); }
+void glReadBuffer(GLenum mode) { LIST(c.read_buffer(mode)); }
 void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
 void glEdgeFlag(GLboolean flag) { LIST(c.set_edge_flag(flag != 0)); }  // (allowed between glBegin and glEnd)
 void glEdgeFlagv(const GLboolean* flag) {

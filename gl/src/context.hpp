@@ -82,9 +82,6 @@ class Context {
   int width() const { return width_; }
   int height() const { return height_; }
   bool y_up = true;
-  // A GLX context on a double-buffered drawable (gl/glx/): it draws into the back
-  // buffer, and glGet says so (GL_DOUBLEBUFFER, GL_DRAW_BUFFER GL_BACK).
-  bool double_buffered = false;
   int row_length = 0;
 
   // --- errors
@@ -270,6 +267,21 @@ class Context {
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
 
+  // --- front and back colour buffers (buffers.cpp)
+  // A GLX context on a double-buffered drawable (gl/glx/) has a back buffer: it draws
+  // there until glDrawBuffer says otherwise.
+  void set_double_buffered(bool on);
+  bool double_buffered() const { return double_buffered_; }
+  void draw_buffer(GLenum mode);
+  void read_buffer(GLenum mode);
+  void swap_buffers();  // glXSwapBuffers: the back buffer's colour copied to the front
+  // The front buffer's colour (RGBA, bottom row first) of a double-buffered context,
+  // after the frame ran; null otherwise.
+  const uint8_t* front_rows();
+  bool draws_front() const { return double_buffered_ && (drawn_ & 1); }
+  // GL_INVALID_OPERATION, and true, when glReadBuffer is GL_NONE.
+  bool no_read_buffer();
+
   // --- the accumulation buffer (accum.cpp)
   void accum(GLenum op, float value);
   void clear_accum(float r, float g, float b, float a);
@@ -389,7 +401,9 @@ class Context {
   uint8_t start_stencil_ = 0;
   std::vector<uint8_t> colour_;  // the last frame's colour, RGBA, bottom row first
   bool direct_ = false;          // ... or in the caller's buffer (RGBA, Y_UP, its own width)
-  const uint8_t* colour_rows() const { return direct_ ? static_cast<const uint8_t*>(buffer_) : colour_.data(); }
+  // The read buffer's colour (buffers.cpp), and the back buffer's (what a GLX drawable shows).
+  const uint8_t* colour_rows() const;
+  const uint8_t* back_rows() const;
   std::vector<uint32_t> depth_out_;  // OSMesaGetDepthBuffer's copy
   bool depth_requested_ = false;
 
@@ -412,6 +426,19 @@ class Context {
   void write_hit_record();
   TextureState texture_;
   ListState lists_;
+
+  // Front and back colour buffers (buffers.cpp): buffers as bits, 1 front, 2 back.
+  bool double_buffered_ = false;
+  GLenum draw_buffer_ = GL_FRONT, read_buffer_ = GL_FRONT;  // as glDrawBuffer / glReadBuffer named them
+  int drawn_ = 1, read_ = 1;  // the buffers drawn (0: GL_NONE) and the one read
+  int held_ = 1;              // the one the renderer's colour is
+  std::vector<uint8_t> parked_;      // the other one's colour, RGBA, bottom row first
+  std::unique_ptr<Renderer> mirror_;  // GL_FRONT_AND_BACK: the parked buffer, drawn into too
+  BackendChoice backend_ = BackendChoice::Cpu;  // the renderers'
+  void park_colour();  // parked_ at the framebuffer's size
+  void hold(int which);
+  void start_mirror();
+  bool get_buffers(GLenum pname, std::vector<double>& out) const;
 
   // glPushAttrib's and glPushClientAttrib's stacks (attrib.cpp).
   std::vector<AttribFrame> attrib_stack_;

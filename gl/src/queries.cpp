@@ -21,6 +21,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_stencil(pname, out)) return true;
   if (get_blend(pname, out, kind)) return true;
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
+  if (get_buffers(pname, out)) return true;          // (buffers.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -105,9 +106,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
     case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
-    case GL_DOUBLEBUFFER: out = {double_buffered ? 1.0 : 0.0}; return true;
     case GL_RGBA_MODE: out = {1}; return true;
-    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = {double(double_buffered ? GL_BACK : GL_FRONT)}; return true;
     // The rasterizer's: window coordinates snap to 24.8 fixed point; points and lines
     // are aliased, of a whole number of pixels (the size rounded), 1 to 64 (glPointSize,
     // glLineWidth clamp there). There is no antialiasing: the "smooth" ranges

@@ -276,6 +276,8 @@ struct AttribFrame {
   float zoom_x = 1, zoom_y = 1;  // GL_PIXEL_MODE_BIT
   UserClipState user_clip;  // GL_TRANSFORM_BIT (planes and enables), GL_ENABLE_BIT (enables)
   TexGenState tex_gen;      // GL_TEXTURE_BIT (all of it), GL_ENABLE_BIT (enables)
+  GLenum draw_buffer = GL_FRONT;  // GL_COLOR_BUFFER_BIT (buffers.cpp)
+  GLenum read_buffer = GL_FRONT;  // GL_PIXEL_MODE_BIT
 };
 
 struct ClientAttribFrame {

@@ -284,6 +284,18 @@ typedef double GLclampd;
 #define GL_DOUBLEBUFFER 0x0C32
 #define GL_DRAW_BUFFER 0x0C01
 #define GL_READ_BUFFER 0x0C02
+/* Colour buffers (glDrawBuffer, glReadBuffer) */
+#define GL_NONE 0
+#define GL_FRONT_LEFT 0x0400
+#define GL_FRONT_RIGHT 0x0401
+#define GL_BACK_LEFT 0x0402
+#define GL_BACK_RIGHT 0x0403
+#define GL_LEFT 0x0406
+#define GL_RIGHT 0x0407
+#define GL_AUX0 0x0409
+#define GL_AUX1 0x040A
+#define GL_AUX2 0x040B
+#define GL_AUX3 0x040C
 #define GL_SAMPLE_BUFFERS 0x80A8
 #define GL_SAMPLES 0x80A9
 #define GL_SUBPIXEL_BITS 0x0D50
@@ -618,6 +630,9 @@ GLAPI void GLAPIENTRY glClearStencil(GLint s);
 /* The accumulation buffer (an OSMesa context's accumBits) */
 GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
 GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+/* Front and back colour buffers (a double-buffered GLX drawable has both) */
+GLAPI void GLAPIENTRY glDrawBuffer(GLenum mode);
+GLAPI void GLAPIENTRY glReadBuffer(GLenum mode);
 GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
                                        GLsizei height, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
