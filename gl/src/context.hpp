@@ -263,6 +263,8 @@ class Context {
   // `image`: unpack_pixels' for `format`.
   void draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector<Vec4>& image);
   void copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type);
+  // `indices`: unpack_stencil's (glDrawPixels' GL_STENCIL_INDEX).
+  void draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
@@ -325,6 +327,9 @@ class Context {
     Vec4 color;
   };
   void draw_window_rects(const std::vector<WindowRect>& rects);
+  // Rectangles of stencil indices (colour.x the index), written as GL writes them.
+  void draw_stencil_rects(const std::vector<WindowRect>& rects);
+  int stencil_write_ = -1;  // the index such rectangles write now (pixel_state), or -1
   void zoomed_rects(GLsizei w, GLsizei h, const Vec4* image, bool depth, std::vector<WindowRect>& out);
   Vec4 lit_front(const Vec4& eye);  // (vertex.cpp) the current normal's lit front colour
 

@@ -168,6 +168,22 @@ void Context::finish() {
 
 PixelState Context::pixel_state(bool offset, bool stippled) {
   PixelState s;
+  if (stencil_write_ >= 0) {  // stencil indices (draw_pixels.cpp): the scissor test and the write mask only
+    s.scissor = raster_.scissor_test;
+    if (raster_.scissor_test) {
+      s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
+      s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
+    }
+    s.color_mask = 0;
+    s.depth_test = s.depth_write = false;
+    s.stencil_test = true;
+    s.stencil_func = CompareFunc::Always;
+    s.stencil_ref = uint8_t(stencil_write_);
+    s.stencil_value_mask = 0xff;
+    s.stencil_write_mask = uint8_t(stencil_.write_mask);
+    s.stencil_fail = s.stencil_depth_fail = s.stencil_pass = StencilOp::Replace;
+    return s;
+  }
   if (accum_returning_) {  // glAccum(GL_RETURN): the scissor test and the colour mask only
     s.scissor = raster_.scissor_test;
     if (raster_.scissor_test) {

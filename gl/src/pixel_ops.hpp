@@ -53,6 +53,13 @@ GLenum check_draw_format(GLenum format, GLenum type);
 std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
                                 const void* data);
 
+// glDrawPixels' stencil indices (GL_STENCIL_INDEX): GL_NO_ERROR for the integer types,
+// GL_FLOAT and GL_BITMAP, GL_INVALID_OPERATION for a packed type, else GL_INVALID_ENUM.
+GLenum check_stencil_type(GLenum type);
+// The width x height stencil indices at `data` as `store` lays them out, each masked to
+// the stencil buffer's 8 bits (a float's whole part; GL_BITMAP: 0 or 1). Rows bottom first.
+std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data);
+
 // glBitmap's width x height bits at `data` (GL_BITMAP with `store`'s row length, skips,
 // alignment and bit order): one byte per pixel, 1 where a fragment is drawn.
 std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data);

@@ -165,6 +165,42 @@ std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int heigh
   return out;
 }
 
+GLenum check_stencil_type(GLenum type) {
+  if (type == GL_BITMAP || type_bytes(type)) return GL_NO_ERROR;
+  return packed(type).bytes ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
+}
+
+std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data) {
+  if (type == GL_BITMAP) return unpack_bitmap(width, height, store, data);
+  std::vector<uint8_t> out(size_t(width) * size_t(height), 0);
+  if (!data) return out;
+  const uint8_t* src = static_cast<const uint8_t*>(data);
+  const size_t element = size_t(type_bytes(type));
+  const bool swap = store.swap_bytes && element > 1;
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = src + row_offset(store, width, y, element, element);
+    for (int x = 0; x < width; ++x) {
+      const uint32_t raw = load(row + size_t(x) * element, int(element), swap);
+      int64_t index = 0;
+      switch (type) {
+        case GL_BYTE: index = int8_t(raw); break;
+        case GL_SHORT: index = int16_t(raw); break;
+        case GL_INT: index = int32_t(raw); break;
+        case GL_FLOAT: {  // an index in a float: its whole part (NaN and the far range: 0)
+          float f;
+          std::memcpy(&f, &raw, 4);
+          index = f > -2147483648.0f && f < 2147483648.0f ? int64_t(f) : 0;
+          break;
+        }
+        default: index = raw; break;
+      }
+      // Indices are masked to the stencil buffer's 8 bits (GL 1.5 section 4.3.1).
+      out[size_t(y) * size_t(width) + size_t(x)] = uint8_t(index & 0xff);
+    }
+  }
+  return out;
+}
+
 std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data) {
   std::vector<uint8_t> out(size_t(width) * size_t(height), 0);
   if (!data) return out;
