@@ -228,6 +228,10 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
       };
       sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
       sm.border_color = t->border;
+      // GL 1.4: the object's and the unit's bias, their sum clamped to GL_MAX_TEXTURE_LOD_BIAS.
+      const float bias = t->lod_bias + texture_.lod_bias;
+      sm.lod_bias = bias > -kMaxLodBias ? (bias < kMaxLodBias ? bias : kMaxLodBias) : -kMaxLodBias;
+      sm.min_lod = t->min_lod, sm.max_lod = t->max_lod;
     }
   }
   s.fog = raster_.fog;

@@ -35,6 +35,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_TEXTURE_STACK_DEPTH: out = {double(kMaxTextureDepth)}; return true;
     case GL_MAX_LIGHTS: out = {double(kMaxLights)}; return true;
     case GL_MAX_TEXTURE_SIZE: out = {double(kMaxTextureSize)}; return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: out = {double(kMaxLodBias)}; return true;
     case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
     // glDrawRangeElements' advice: pGL has no preferred size, so a large one.
     case GL_MAX_ELEMENTS_VERTICES: case GL_MAX_ELEMENTS_INDICES: out = {double(1 << 20)}; return true;

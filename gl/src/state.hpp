@@ -46,6 +46,7 @@ constexpr int kMaxLights = 8;
 constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDepth = 10;
 constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
+constexpr float kMaxLodBias = 16;        // GL_MAX_TEXTURE_LOD_BIAS (llvmpipe's)
 constexpr int kMaxListNesting = 64;
 constexpr int kMaxAttribDepth = 16;
 constexpr int kMaxNameDepth = 64;  // the selection name stack  // glPushAttrib's and glPushClientAttrib's stacks
@@ -179,6 +180,7 @@ struct TextureObject {
   Vec4 border{0, 0, 0, 0};
   bool generate_mipmap = false;
   int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
+  float min_lod = -1000, max_lod = 1000, lod_bias = 0;  // GL_TEXTURE_MIN_LOD, _MAX_LOD, _LOD_BIAS
   // What the renderer samples, built when first drawn after a change (null: not yet,
   // or incomplete). Draws already recorded keep their own reference.
   std::shared_ptr<const Texture> built;
@@ -193,6 +195,7 @@ struct TextureState {
   GLuint next_name = 1;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color{0, 0, 0, 0};
+  float lod_bias = 0;  // GL 1.4's glTexEnv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS)
 };
 
 // --- vertex arrays (arrays.cpp) ---------------------------------------------------

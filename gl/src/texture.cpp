@@ -163,6 +163,9 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       (pname == GL_TEXTURE_BASE_LEVEL ? t.base_level : t.max_level) = v[0] < 1000 ? int(v[0]) : 1000;
       t.dirty = true;
       break;
+    case GL_TEXTURE_MIN_LOD: t.min_lod = v[0]; break;  // (GL 1.2; the sampler's, in pixel_state)
+    case GL_TEXTURE_MAX_LOD: t.max_lod = v[0]; break;
+    case GL_TEXTURE_LOD_BIAS: t.lod_bias = v[0]; break;  // (GL 1.4)
     default: return error(GL_INVALID_ENUM);
   }
   changed();
@@ -170,6 +173,11 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
 
 void Context::tex_env(GLenum target, GLenum pname, const float* v) {
   if (in_begin_error()) return;
+  if (target == GL_TEXTURE_FILTER_CONTROL) {  // GL 1.4: the texture unit's level-of-detail bias
+    if (pname != GL_TEXTURE_LOD_BIAS) return error(GL_INVALID_ENUM);
+    texture_.lod_bias = v[0];
+    return changed();
+  }
   if (target != GL_TEXTURE_ENV) return error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_MODE) {
     const GLenum m = to_enum(v[0]);
