@@ -440,10 +440,21 @@ GLboolean glIsTexture(GLuint texture) {
 void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border, GLenum format,
                   GLenum type, const GLvoid* pixels) {
   NOW(
-      if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
-          w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level) || border != 0 ||
+      // GL_PROXY_TEXTURE_2D asks whether such an image would fit: the size is checked,
+      // nothing is read or kept but the answer, and the call is never compiled.
+      const bool proxy = target == GL_PROXY_TEXTURE_2D;
+      if (target != GL_TEXTURE_2D && !proxy) return c.error(GL_INVALID_ENUM);
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || border != 0 ||
           !Context::base_format(internal))
+          return c.error(GL_INVALID_VALUE);
+      if (proxy) {
+        if (c.in_begin_error()) return;
+        // (A packed type of another number of components: GL_INVALID_OPERATION.)
+        if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
+        if (!velocity::gl::unpack_rgba(format, type, 0, 0, c.pixels.unpack, nullptr)) return c.error(GL_INVALID_ENUM);
+        return c.proxy_tex_image(level, internal, w, h);
+      }
+      if (w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level))
           return c.error(GL_INVALID_VALUE);
       auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);

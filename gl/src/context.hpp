@@ -216,6 +216,9 @@ class Context {
   void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);
   void copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
                           GLsizei h);
+  // glTexImage2D(GL_PROXY_TEXTURE_2D): the proxy's level says w x h if such an image
+  // fits, else 0 x 0 (texture.cpp). The arguments were checked.
+  void proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h);
   // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
   bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
   void get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels);

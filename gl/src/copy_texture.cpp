@@ -55,9 +55,9 @@ void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLin
 
 bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out) {
   if (in_begin_error()) return false;
-  if (target != GL_TEXTURE_2D) return error(GL_INVALID_ENUM), false;
+  if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) return error(GL_INVALID_ENUM), false;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE), false;
-  const TextureObject& t = *bound_texture();
+  const TextureObject& t = target == GL_PROXY_TEXTURE_2D ? texture_.proxy : *bound_texture();
   const Texture::Level& l = t.levels[size_t(level)];
   // Each channel the format has is kept in 8 bits (the texels are RGBA8).
   const GLenum base = l.width ? t.internal_format : GLenum(0);

@@ -196,6 +196,7 @@ struct TextureState {
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color{0, 0, 0, 0};
   float lod_bias = 0;  // GL 1.4's glTexEnv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS)
+  TextureObject proxy;  // GL_PROXY_TEXTURE_2D: levels' sizes only, never texels
 };
 
 // --- vertex arrays (arrays.cpp) ---------------------------------------------------

@@ -109,6 +109,14 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
   changed();
 }
 
+void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h) {
+  const bool fits = w <= (kMaxTextureSize >> level) && h <= (kMaxTextureSize >> level);
+  TextureObject& p = texture_.proxy;
+  Texture::Level& l = p.levels[size_t(level)];
+  l.width = fits ? w : 0, l.height = fits ? h : 0;
+  if (level == 0) p.internal_format = fits ? base_format(internal) : GLenum(0);
+}
+
 void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
                             const std::vector<uint32_t>& rgba) {
   if (in_begin_error()) return;

@@ -483,6 +483,8 @@ typedef double GLclampd;
 #define GL_TEXTURE_FILTER_CONTROL 0x8500
 #define GL_TEXTURE_LOD_BIAS 0x8501
 #define GL_MAX_TEXTURE_LOD_BIAS 0x84FD
+/* Proxy textures: glTexImage2D's size check without an image */
+#define GL_PROXY_TEXTURE_2D 0x8064
 #define GL_TEXTURE_WIDTH 0x1000
 #define GL_TEXTURE_HEIGHT 0x1001
 #define GL_TEXTURE_INTERNAL_FORMAT 0x1003
