@@ -269,6 +269,8 @@ class Context {
   // `indices`: unpack_stencil's (glDrawPixels' GL_STENCIL_INDEX).
   void draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
+  void pixel_transfer(GLenum pname, double value);  // (pixel_transfer.cpp)
+  bool get_pixel_transfer(GLenum pname, std::vector<double>& out) const;
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
 

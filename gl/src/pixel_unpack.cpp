@@ -116,7 +116,7 @@ GLenum check_draw_format(GLenum format, GLenum type) {
 }
 
 std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
-                                const void* data) {
+                                const void* data, const PixelTransfer& transfer) {
   std::vector<Vec4> out(size_t(width) * size_t(height), Vec4{0, 0, 0, 1});
   if (!data) return out;
   const uint8_t* src = static_cast<const uint8_t*>(data);
@@ -157,6 +157,13 @@ std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int heigh
         case GL_BLUE: rgba = {0, 0, c[0], 1}; break;
         default: rgba = {c[0], 0, 0, 1}; break;  // GL_DEPTH_COMPONENT
       }
+      if (format == GL_DEPTH_COMPONENT) {
+        rgba.x = transfer.depth(rgba.x);
+      } else if (!transfer.colour_identity()) {
+        float t[4] = {rgba.x, rgba.y, rgba.z, rgba.w};
+        transfer.colour(t);
+        rgba = {t[0], t[1], t[2], t[3]};
+      }
       // Colours and depth are clamped to [0, 1] after the transfer (NaN reads 0).
       auto clamp01 = [](float f) { return f > 0 ? (f < 1 ? f : 1.0f) : 0.0f; };
       out[size_t(y) * size_t(width) + size_t(x)] = {clamp01(rgba.x), clamp01(rgba.y), clamp01(rgba.z), clamp01(rgba.w)};
@@ -170,8 +177,13 @@ GLenum check_stencil_type(GLenum type) {
   return packed(type).bytes ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
 }
 
-std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data) {
-  if (type == GL_BITMAP) return unpack_bitmap(width, height, store, data);
+std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data,
+                                    const PixelTransfer& transfer) {
+  if (type == GL_BITMAP) {
+    std::vector<uint8_t> bits = unpack_bitmap(width, height, store, data);
+    for (uint8_t& b : bits) b = uint8_t(transfer.index(b) & 0xff);
+    return bits;
+  }
   std::vector<uint8_t> out(size_t(width) * size_t(height), 0);
   if (!data) return out;
   const uint8_t* src = static_cast<const uint8_t*>(data);
@@ -195,7 +207,7 @@ std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const Pi
         default: index = raw; break;
       }
       // Indices are masked to the stencil buffer's 8 bits (GL 1.5 section 4.3.1).
-      out[size_t(y) * size_t(width) + size_t(x)] = uint8_t(index & 0xff);
+      out[size_t(y) * size_t(width) + size_t(x)] = uint8_t(transfer.index(index) & 0xff);
     }
   }
   return out;

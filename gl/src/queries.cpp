@@ -22,6 +22,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_blend(pname, out, kind)) return true;
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
+  if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;

@@ -282,6 +282,7 @@ struct AttribFrame {
   TexGenState tex_gen;      // GL_TEXTURE_BIT (all of it), GL_ENABLE_BIT (enables)
   GLenum draw_buffer = GL_FRONT;  // GL_COLOR_BUFFER_BIT (buffers.cpp)
   GLenum read_buffer = GL_FRONT;  // GL_PIXEL_MODE_BIT
+  PixelTransfer transfer;         // GL_PIXEL_MODE_BIT (pixel_transfer.cpp)
 };
 
 struct ClientAttribFrame {

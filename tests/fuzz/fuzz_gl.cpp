@@ -256,7 +256,7 @@ void shape_call(Bytes& in, float a, float b) {
 }
 #endif
 
-// Colour buffers and the level-of-detail controls: glDrawBuffer / glReadBuffer with
+// Colour buffers, the level-of-detail controls and glPixelTransfer: glDrawBuffer / glReadBuffer with
 // every buffer name and any enum (OSMesa's single buffer: the back, right and
 // auxiliary ones are errors), GL_NONE before drawing and reading; GL_TEXTURE_MIN_LOD,
 // _MAX_LOD and both biases at any value (NaN, infinities), then a textured draw.
@@ -264,7 +264,20 @@ void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
   static const GLenum names[] = {GL_NONE, GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT, GL_FRONT,
                                  GL_BACK, GL_LEFT, GL_RIGHT, GL_FRONT_AND_BACK, GL_AUX0, GL_AUX3};
   const GLenum mode = in.u8() < 230 ? names[in.below(12)] : e1;
-  switch (in.below(5)) {
+  switch (in.below(6)) {
+    case 5: {
+      // glPixelTransfer: every name (and a bad one) at any value, then pixels drawn
+      // through it by the other calls.
+      static const GLenum transfer[] = {GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT, GL_INDEX_OFFSET, GL_RED_SCALE,
+                                        GL_RED_BIAS, GL_GREEN_SCALE, GL_GREEN_BIAS, GL_BLUE_SCALE, GL_BLUE_BIAS,
+                                        GL_ALPHA_SCALE, GL_ALPHA_BIAS, GL_DEPTH_SCALE, GL_DEPTH_BIAS};
+      const GLenum pname = in.u8() < 240 ? transfer[in.below(14)] : e1;
+      if (in.u8() & 1)
+        glPixelTransferf(pname, a);
+      else
+        glPixelTransferi(pname, GLint(in.integer()));
+      break;
+    }
     case 0: glDrawBuffer(mode); break;
     case 1: glReadBuffer(mode); break;
     case 2: {

@@ -284,6 +284,21 @@ typedef double GLclampd;
 #define GL_DOUBLEBUFFER 0x0C32
 #define GL_DRAW_BUFFER 0x0C01
 #define GL_READ_BUFFER 0x0C02
+/* Pixel transfer (glPixelTransfer) */
+#define GL_MAP_COLOR 0x0D10
+#define GL_MAP_STENCIL 0x0D11
+#define GL_INDEX_SHIFT 0x0D12
+#define GL_INDEX_OFFSET 0x0D13
+#define GL_RED_SCALE 0x0D14
+#define GL_RED_BIAS 0x0D15
+#define GL_GREEN_SCALE 0x0D18
+#define GL_GREEN_BIAS 0x0D19
+#define GL_BLUE_SCALE 0x0D1A
+#define GL_BLUE_BIAS 0x0D1B
+#define GL_ALPHA_SCALE 0x0D1C
+#define GL_ALPHA_BIAS 0x0D1D
+#define GL_DEPTH_SCALE 0x0D1E
+#define GL_DEPTH_BIAS 0x0D1F
 /* Colour buffers (glDrawBuffer, glReadBuffer) */
 #define GL_NONE 0
 #define GL_FRONT_LEFT 0x0400
@@ -641,6 +656,9 @@ GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLf
 /* Front and back colour buffers (a double-buffered GLX drawable has both) */
 GLAPI void GLAPIENTRY glDrawBuffer(GLenum mode);
 GLAPI void GLAPIENTRY glReadBuffer(GLenum mode);
+/* Pixel transfer: scale, bias, GL_MAP_COLOR / GL_MAP_STENCIL (through GL's default maps) */
+GLAPI void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPixelTransferi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
                                        GLsizei height, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
