@@ -1176,6 +1176,11 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
   if (state.logic_op) throw Error("the GPU backend does not apply glLogicOp yet");
   if (state.polygon_stipple) throw Error("the GPU backend does not apply glPolygonStipple yet");
   if (state.samples_passed) throw Error("the GPU backend does not count samples (occlusion queries) yet");
+  {
+    const SamplerState& ss = state.texture.sampler;
+    if (state.texture.texture && (ss.lod_bias != 0 || ss.min_lod > -1000 || ss.max_lod < 1000))
+      throw Error("the GPU backend does not apply the texture's level-of-detail bias or clamp yet");
+  }
   stats_.objects++;
   if (primitives == 0) return;
   commands_.push_back({Command::Batch, uint32_t(batch_draws_.size())});

@@ -220,6 +220,7 @@ struct Surface {
   Visual* visual = nullptr;  // null for a pbuffer
   int width = 0, height = 0;   // the drawable's; the buffer is at least 1×1
   Buffer buffer;
+  Buffer front;  // a double-buffered window's front buffer, when the program draws into it
   GC gc = nullptr;
   int interval = 0;  // swap interval: 0, as nothing here waits for a vertical retrace
   Clock::time_point last_swap{};
@@ -248,6 +249,7 @@ const __GLXapiExports* g_exports = nullptr;
 
 void destroy_surface(Surface* s) {
   release(s->dpy, s->buffer);
+  release(s->dpy, s->front);
   if (s->gc) XFreeGC(s->dpy, s->gc);
   g_surfaces.erase({s->dpy, s->id});
 }
@@ -328,17 +330,30 @@ bool follow_size(Surface* s) {
   return true;
 }
 
-void show(Surface* s) {
-  if (!s->buffer.image || s->doomed) return;
+void put(Surface* s, const Buffer& b) {
+  if (!b.image || s->doomed) return;
   ErrorTrap trap;  // the window may be gone: nothing to show it in
   if (!s->gc) s->gc = XCreateGC(s->dpy, s->id, 0, nullptr);
-  const unsigned w = unsigned(s->buffer.width), h = unsigned(s->buffer.height);
-  if (s->buffer.shared)
-    XShmPutImage(s->dpy, s->id, s->gc, s->buffer.image, 0, 0, 0, 0, w, h, False);
+  const unsigned w = unsigned(b.width), h = unsigned(b.height);
+  if (b.shared)
+    XShmPutImage(s->dpy, s->id, s->gc, b.image, 0, 0, 0, 0, w, h, False);
   else
-    XPutImage(s->dpy, s->id, s->gc, s->buffer.image, 0, 0, 0, 0, w, h);
+    XPutImage(s->dpy, s->id, s->gc, b.image, 0, 0, 0, 0, w, h);
   // The server has read the pixels before pGL writes the next frame into them.
   XSync(s->dpy, False);
+}
+void show(Surface* s) { put(s, s->buffer); }
+
+// A double-buffered window whose context draws into its front buffer (glDrawBuffer):
+// what was drawn there shows at each flush, as a single-buffered window's does.
+void show_front(Surface* s) {
+  if (s->kind != Surface::Window || s->doomed) return;
+  const int w = s->buffer.width, h = s->buffer.height;
+  if (s->front.width != w || s->front.height != h) {
+    release(s->dpy, s->front);
+    if (!allocate(s->dpy, s->visual, w, h, s->front)) return;
+  }
+  if (velocity_glx_front(s->front.pixels, w, h)) put(s, s->front);
 }
 
 // glFlush, glFinish, glXWaitGL: pGL's, then a single-buffered drawable is shown.
@@ -347,7 +362,10 @@ void flush_current() {
   Context* c = t_current;
   if (!c || !c->surface) return;
   std::lock_guard<std::mutex> lock(g_mutex);
-  if (c->surface->shown_on_flush()) show(c->surface);
+  if (c->surface->shown_on_flush())
+    show(c->surface);
+  else
+    show_front(c->surface);
 }
 void GLAPIENTRY gl_flush() { flush_current(); }
 void GLAPIENTRY gl_finish() { flush_current(); }
@@ -501,7 +519,8 @@ Bool impl_MakeCurrent(Display* dpy, GLXDrawable draw, GLXContext ctx) {
 
 void impl_SwapBuffers(Display* dpy, GLXDrawable draw) {
   Context* c = t_current;
-  if (c && c->surface && c->surface->dpy == dpy && c->surface->id == draw) glFinish();
+  const bool mine = c && c->surface && c->surface->dpy == dpy && c->surface->id == draw;
+  if (mine) glFinish();
   std::lock_guard<std::mutex> lock(g_mutex);
   Surface* s = find_surface(dpy, draw);
   if (!s) {
@@ -515,6 +534,7 @@ void impl_SwapBuffers(Display* dpy, GLXDrawable draw) {
     std::this_thread::sleep_until(next);
   }
   s->last_swap = Clock::now();
+  if (mine) velocity_glx_swap_buffers();  // the front is now what the back is
   show(s);
   follow_size(s);
 }

@@ -5,3 +5,9 @@
 void velocity_glx_set_double_buffered(bool double_buffered);
 // Records a GL error in the current context (none current: nothing).
 void velocity_glx_gl_error(unsigned error);
+// glXSwapBuffers: the back buffer's colour becomes the front's too.
+void velocity_glx_swap_buffers();
+// The front buffer of a double-buffered context that draws into it (glDrawBuffer
+// GL_FRONT or GL_FRONT_AND_BACK), as BGRA top row first, width x height; false (nothing
+// written) when it does not or the size differs.
+bool velocity_glx_front(unsigned char* bgra, int width, int height);

@@ -296,6 +296,8 @@ void glClearDepth(GLclampd d) { LIST(c.clear_depth(d)); }
 void glClearStencil(GLint s) { LIST(c.clear_stencil(s)); }
 void glClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { LIST(c.clear_accum(r, g, b, a)); }
 void glAccum(GLenum op, GLfloat value) { LIST(c.accum(op, value)); }
+void glDrawBuffer(GLenum mode) { LIST(c.draw_buffer(mode)); }
+void glReadBuffer(GLenum mode) { LIST(c.read_buffer(mode)); }
 void glPushAttrib(GLbitfield mask) { LIST(c.push_attrib(mask)); }
 void glEdgeFlag(GLboolean flag) { LIST(c.set_edge_flag(flag != 0)); }  // (allowed between glBegin and glEnd)
 void glEdgeFlagv(const GLboolean* flag) {
@@ -441,12 +443,23 @@ GLboolean glIsTexture(GLuint texture) {
 void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border, GLenum format,
                   GLenum type, const GLvoid* pixels) {
   NOW(
-      if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
-          w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level) || border != 0 ||
+      // GL_PROXY_TEXTURE_2D asks whether such an image would fit: the size is checked,
+      // nothing is read or kept but the answer, and the call is never compiled.
+      const bool proxy = target == GL_PROXY_TEXTURE_2D;
+      if (target != GL_TEXTURE_2D && !proxy) return c.error(GL_INVALID_ENUM);
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || border != 0 ||
           !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
-      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels);
+      if (proxy) {
+        if (c.in_begin_error()) return;
+        // (A packed type of another number of components: GL_INVALID_OPERATION.)
+        if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
+        if (!velocity::gl::unpack_rgba(format, type, 0, 0, c.pixels.unpack, nullptr)) return c.error(GL_INVALID_ENUM);
+        return c.proxy_tex_image(level, internal, w, h);
+      }
+      if (w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level))
+          return c.error(GL_INVALID_VALUE);
+      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
       const bool given = pixels != nullptr;
@@ -460,7 +473,7 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
           w > velocity::gl::kMaxTextureSize || h > velocity::gl::kMaxTextureSize)
           return c.error(GL_INVALID_VALUE);
-      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels);
+      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
       if (!pixels) return;
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));

@@ -96,18 +96,26 @@ void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove,
 void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
       if (w < 0 || h < 0) return compiled_error(GL_INVALID_VALUE);
-      // Stencil indices are not drawn yet, and colour index mode is not implemented (docs/gl.md).
-      if (format == GL_STENCIL_INDEX) return compiled_error(GL_INVALID_OPERATION);
-      if (const GLenum e = velocity::gl::check_draw_format(format, type)) return compiled_error(e);
+      // (Colour index mode is not implemented: docs/gl.md.)
+      const bool stencil = format == GL_STENCIL_INDEX;
+      if (const GLenum e = stencil ? velocity::gl::check_stencil_type(type) : velocity::gl::check_draw_format(format, type))
+        return compiled_error(e);
       if (int64_t(w) * h > kMaxPixelRectangle) return compiled_error(GL_OUT_OF_MEMORY);
       if (!pixels) return compiled([](Context& k) { k.in_begin_error(); });
+      if (stencil) {
+        auto indices = std::make_shared<const std::vector<uint8_t>>(
+            velocity::gl::unpack_stencil(type, w, h, c.pixels.unpack, pixels, c.pixels.transfer));
+        return compiled([=](Context& k) { k.draw_stencil_pixels(w, h, *indices); });
+      }
       auto image = std::make_shared<const std::vector<Vec4>>(
-          velocity::gl::unpack_pixels(format, type, w, h, c.pixels.unpack, pixels));
+          velocity::gl::unpack_pixels(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer));
       compiled([=](Context& k) { k.draw_pixels(w, h, format, *image); }));
 }
 
 void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { LIST(c.copy_pixels(x, y, w, h, type)); }
 void glPixelZoom(GLfloat x, GLfloat y) { LIST(c.pixel_zoom(x, y)); }
+void glPixelTransferf(GLenum pname, GLfloat v) { LIST(c.pixel_transfer(pname, double(v))); }
+void glPixelTransferi(GLenum pname, GLint v) { LIST(c.pixel_transfer(pname, double(v))); }
 void glPixelStoref(GLenum pname, GLfloat v) {
   // A float count is rounded to the nearest integer, halves away from zero as Mesa
   // does (-0.5 is -1: GL_INVALID_VALUE); a boolean is true when non-zero.

@@ -28,6 +28,8 @@ void Context::push_attrib(GLbitfield mask) {
   f.zoom_x = pixels.zoom_x, f.zoom_y = pixels.zoom_y;
   f.user_clip = user_clip;
   f.tex_gen = tex_gen_;
+  f.draw_buffer = draw_buffer_, f.read_buffer = read_buffer_;
+  f.transfer = pixels.transfer;
   attrib_stack_.push_back(std::move(f));
 }
 
@@ -43,7 +45,8 @@ void Context::pop_attrib() {
     color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
     pixels.raster = f.raster_pos;
   }
-  if (m & GL_PIXEL_MODE_BIT) pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y;
+  if (m & GL_PIXEL_MODE_BIT)
+    pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y, pixels.transfer = f.transfer, read_buffer(f.read_buffer);
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
   if (m & GL_LINE_BIT) {
     r.line_width = s.line_width;
@@ -96,6 +99,7 @@ void Context::pop_attrib() {
     r.logic_op = s.logic_op, r.logic_op_mode = s.logic_op_mode;
     for (int i = 0; i < 4; ++i) r.color_mask[i] = s.color_mask[i];
     r.clear_color = s.clear_color;
+    draw_buffer(f.draw_buffer);
   }
   if (m & GL_HINT_BIT)
     for (int i = 0; i < 5; ++i) r.hints[i] = s.hints[i];

@@ -46,7 +46,8 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
   const bool first = !renderer_;
   try {
     if (!renderer_) {
-      renderer_ = std::make_unique<Renderer>(width, height, backend_from_environment());
+      backend_ = backend_from_environment();
+      renderer_ = std::make_unique<Renderer>(width, height, backend_);
       renderer_->options.threads = threads_from_environment();
       renderer_->options.cull_back_faces = false;
     } else if (width != width_ || height != height_) {
@@ -62,6 +63,8 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
     width_ = width, height_ = height;
     colour_.assign(size_t(width) * height * 4, 0);
     accum_.clear();  // (undefined after a resize; allocated again when first used)
+    mirror_.reset();  // (so is the other colour buffer: buffers.cpp)
+    if (!parked_.empty()) park_colour();
   }
   if (first) {
     viewport(0, 0, width, height);

@@ -87,9 +87,6 @@ class Context {
   int width() const { return width_; }
   int height() const { return height_; }
   bool y_up = true;
-  // A GLX context on a double-buffered drawable (gl/glx/): it draws into the back
-  // buffer, and glGet says so (GL_DOUBLEBUFFER, GL_DRAW_BUFFER GL_BACK).
-  bool double_buffered = false;
   int row_length = 0;
 
   // --- errors
@@ -231,6 +228,9 @@ class Context {
   void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);
   void copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
                           GLsizei h);
+  // glTexImage2D(GL_PROXY_TEXTURE_2D): the proxy's level says w x h if such an image
+  // fits, else 0 x 0 (texture.cpp). The arguments were checked.
+  void proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h);
   // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
   bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
   void get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels);
@@ -317,9 +317,28 @@ class Context {
   // `image`: unpack_pixels' for `format`.
   void draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector<Vec4>& image);
   void copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type);
+  // `indices`: unpack_stencil's (glDrawPixels' GL_STENCIL_INDEX).
+  void draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
+  void pixel_transfer(GLenum pname, double value);  // (pixel_transfer.cpp)
+  bool get_pixel_transfer(GLenum pname, std::vector<double>& out) const;
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
+
+  // --- front and back colour buffers (buffers.cpp)
+  // A GLX context on a double-buffered drawable (gl/glx/) has a back buffer: it draws
+  // there until glDrawBuffer says otherwise.
+  void set_double_buffered(bool on);
+  bool double_buffered() const { return double_buffered_; }
+  void draw_buffer(GLenum mode);
+  void read_buffer(GLenum mode);
+  void swap_buffers();  // glXSwapBuffers: the back buffer's colour copied to the front
+  // The front buffer's colour (RGBA, bottom row first) of a double-buffered context,
+  // after the frame ran; null otherwise.
+  const uint8_t* front_rows();
+  bool draws_front() const { return double_buffered_ && (drawn_ & 1); }
+  // GL_INVALID_OPERATION, and true, when glReadBuffer is GL_NONE.
+  bool no_read_buffer();
 
   // --- the accumulation buffer (accum.cpp)
   void accum(GLenum op, float value);
@@ -364,6 +383,9 @@ class Context {
     Vec4 color;
   };
   void draw_window_rects(const std::vector<WindowRect>& rects);
+  // Rectangles of stencil indices (colour.x the index), written as GL writes them.
+  void draw_stencil_rects(const std::vector<WindowRect>& rects);
+  int stencil_write_ = -1;  // the index such rectangles write now (pixel_state), or -1
   void zoomed_rects(GLsizei w, GLsizei h, const Vec4* image, bool depth, std::vector<WindowRect>& out);
   Vec4 lit_front(const Vec4& eye);  // (vertex.cpp) the current normal's lit front colour
 
@@ -440,7 +462,9 @@ class Context {
   uint8_t start_stencil_ = 0;
   std::vector<uint8_t> colour_;  // the last frame's colour, RGBA, bottom row first
   bool direct_ = false;          // ... or in the caller's buffer (RGBA, Y_UP, its own width)
-  const uint8_t* colour_rows() const { return direct_ ? static_cast<const uint8_t*>(buffer_) : colour_.data(); }
+  // The read buffer's colour (buffers.cpp), and the back buffer's (what a GLX drawable shows).
+  const uint8_t* colour_rows() const;
+  const uint8_t* back_rows() const;
   std::vector<uint32_t> depth_out_;  // OSMesaGetDepthBuffer's copy
   bool depth_requested_ = false;
 
@@ -463,6 +487,19 @@ class Context {
   void write_hit_record();
   TextureState texture_;
   ListState lists_;
+
+  // Front and back colour buffers (buffers.cpp): buffers as bits, 1 front, 2 back.
+  bool double_buffered_ = false;
+  GLenum draw_buffer_ = GL_FRONT, read_buffer_ = GL_FRONT;  // as glDrawBuffer / glReadBuffer named them
+  int drawn_ = 1, read_ = 1;  // the buffers drawn (0: GL_NONE) and the one read
+  int held_ = 1;              // the one the renderer's colour is
+  std::vector<uint8_t> parked_;      // the other one's colour, RGBA, bottom row first
+  std::unique_ptr<Renderer> mirror_;  // GL_FRONT_AND_BACK: the parked buffer, drawn into too
+  BackendChoice backend_ = BackendChoice::Cpu;  // the renderers'
+  void park_colour();  // parked_ at the framebuffer's size
+  void hold(int which);
+  void start_mirror();
+  bool get_buffers(GLenum pname, std::vector<double>& out) const;
 
   // glPushAttrib's and glPushClientAttrib's stacks (attrib.cpp).
   std::vector<AttribFrame> attrib_stack_;

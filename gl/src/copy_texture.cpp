@@ -58,7 +58,7 @@ void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLin
 
 bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out) {
   if (in_begin_error()) return false;
-  const TextureObject* tp = target_texture(target);
+  const TextureObject* tp = target == GL_PROXY_TEXTURE_2D ? &texture_.proxy : target_texture(target);
   if (!tp) return false;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE), false;
   const TextureObject& t = *tp;

@@ -13,6 +13,9 @@
 namespace velocity::gl {
 
 namespace {
+// glCopyPixels' GL_DEPTH_STENCIL (GL_EXT_packed_depth_stencil's name; <GL/gl.h> is 1.4's).
+constexpr GLenum kDepthStencil = 0x84F9;
+
 bool same(const Vec4& a, const Vec4& b) { return a.x == b.x && a.y == b.y && a.z == b.z && a.w == b.w; }
 }  // namespace
 
@@ -127,12 +130,54 @@ void Context::draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector
   draw_window_rects(rects);
 }
 
+// Stencil indices (glDrawPixels' GL_STENCIL_INDEX, glCopyPixels' GL_STENCIL): GL 1.5
+// section 4.3.1 writes them through the pixel ownership and scissor tests and the
+// stencil write mask only (not the stencil or depth test, not into colour). A batch
+// for each index value: its rectangles replace the stencil under the mask (pixel_state
+// reads stencil_write_).
+void Context::draw_stencil_rects(const std::vector<WindowRect>& rects) {
+  std::vector<WindowRect> by_value[256];
+  for (const WindowRect& r : rects) by_value[uint8_t(r.color.x)].push_back(r);
+  for (int v = 0; v < 256; ++v) {
+    if (by_value[v].empty()) continue;
+    stencil_write_ = v;
+    changed();
+    draw_window_rects(by_value[v]);
+  }
+  stencil_write_ = -1;
+  changed();
+}
+
+void Context::draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices) {
+  if (in_begin_error()) return;
+  if (stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
+  if (pixels_not_rendered(GL_DRAW_PIXEL_TOKEN) || !pixels.raster.valid || !renderer_ || w <= 0 || h <= 0) return;
+  std::vector<Vec4> image(indices.size());
+  for (size_t i = 0; i < indices.size(); ++i) image[i] = {float(indices[i]), 0, 0, 1};
+  std::vector<WindowRect> rects;
+  zoomed_rects(w, h, image.data(), false, rects);
+  draw_stencil_rects(rects);
+}
+
 void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
   if (in_begin_error()) return;
+  if (type == kDepthStencil) {  // (packed depth-stencil's: the depth, then the stencil, no colour)
+    if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
+    if (depth_bits_ <= 0 || stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
+    const RasterState saved = raster_;
+    for (bool& m : raster_.color_mask) m = false;
+    changed();
+    copy_pixels(x, y, w, h, GL_DEPTH);
+    raster_ = saved;
+    changed();
+    return copy_pixels(x, y, w, h, GL_STENCIL);
+  }
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return error(GL_INVALID_ENUM);
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  // Stencil indices are not copied yet (docs/gl.md); no depth buffer without depth bits.
-  if (type == GL_STENCIL || (type == GL_DEPTH && depth_bits_ <= 0)) return error(GL_INVALID_OPERATION);
+  // No depth or stencil buffer without their bits.
+  if ((type == GL_STENCIL && stencil_bits_ <= 0) || (type == GL_DEPTH && depth_bits_ <= 0))
+    return error(GL_INVALID_OPERATION);
+  if (type == GL_COLOR && no_read_buffer()) return;  // glReadBuffer(GL_NONE)
   if (pixels_not_rendered(GL_COPY_PIXEL_TOKEN) || !pixels.raster.valid || !renderer_ || w == 0 || h == 0) return;
   // Only the part of the source inside the framebuffer is copied (its pixels outside
   // are undefined), to the same place relative to the raster position.
@@ -143,7 +188,12 @@ void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
   const GLsizei cw = GLsizei(x1 - x0), ch = GLsizei(y1 - y0);
   std::vector<Vec4> image(size_t(cw) * size_t(ch));
   std::vector<float> depth;
+  std::vector<uint8_t> stencil;
   if (type == GL_DEPTH) depth = renderer_->window_depth();
+  if (type == GL_STENCIL) {
+    stencil.resize(size_t(width_) * size_t(height_));
+    renderer_->read_stencil(stencil.data());
+  }
   const bool has_alpha = !(format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */);
   for (GLsizei j = 0; j < ch; ++j)
     for (GLsizei i = 0; i < cw; ++i) {
@@ -151,6 +201,8 @@ void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
       Vec4& v = image[size_t(j) * size_t(cw) + size_t(i)];
       if (type == GL_DEPTH) {
         v = {depth[at], 0, 0, 1};
+      } else if (type == GL_STENCIL) {
+        v = {float(stencil[at]), 0, 0, 1};
       } else {
         const uint8_t* p = colour_rows() + at * 4;
         v = {p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f, has_alpha ? p[3] / 255.0f : 1.0f};
@@ -163,6 +215,7 @@ void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
   std::vector<WindowRect> rects;
   zoomed_rects(cw, ch, image.data(), type == GL_DEPTH, rects);
   rp.window = saved;
+  if (type == GL_STENCIL) return draw_stencil_rects(rects);
   draw_window_rects(rects);
 }
 

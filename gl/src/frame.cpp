@@ -55,7 +55,10 @@ void Context::ensure_frame() {
     if (start_clear_stencil_) start.clear_stencil_buffer = true, start.stencil = start_stencil_;
     start_clear_ = start_clear_color_ = start_clear_depth_ = start_clear_stencil_ = false;
   }
+  // GL_FRONT_AND_BACK: the other colour buffer is drawn in the same frame (buffers.cpp).
+  if (double_buffered_ && drawn_ == 3 && !mirror_) start_mirror();
   renderer_->begin_frame(Camera{}, {}, start);
+  if (mirror_) mirror_->begin_frame(Camera{}, {}, start);
   first_frame_ = false;
   in_frame_ = true;
 }
@@ -87,6 +90,7 @@ void Context::submit_pending() {
   b.clip_distance = kept.clip_planes ? kept.clip_distance.data() : nullptr;
   if (kept.viewport.width == 0 || kept.viewport.height == 0) return;  // nothing is drawn in an empty viewport
   renderer_->draw(b, kept.state);
+  if (mirror_) mirror_->draw(b, kept.state);
   frame_vertices_ += kept.index.size();
   // Bounded memory in a frame never flushed: its vertices, and the textures it holds.
   if (frame_vertices_ > kMaxVerticesPerFrame || frame_texture_bytes_ > kMaxTextureBytesPerFrame) run_frame();
@@ -94,9 +98,14 @@ void Context::submit_pending() {
 
 void Context::run_frame() {
   submit_pending();
+  if (double_buffered_) park_colour();
   if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
   ensure_frame();
   renderer_->end_frame();
+  if (mirror_) {
+    mirror_->end_frame();
+    mirror_->read_color(parked_.data(), size_t(width_) * 4, 4);
+  }
   in_frame_ = false;
   for (size_t i = 0; i < submitted_used_; ++i) submitted_[i].clear();
   submitted_used_ = 0;
@@ -105,7 +114,7 @@ void Context::run_frame() {
   frame_vertices_ = 0;
   // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
   // buffer of the framebuffer's width takes the colour directly.
-  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_);
+  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
   if (direct_) {
     renderer_->read_color(static_cast<uint8_t*>(buffer_), size_t(width_) * 4, 4);
     if (depth_requested_) copy_depth();
@@ -115,8 +124,10 @@ void Context::run_frame() {
   const int stride_px = row_length > 0 ? row_length : width_;
   const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   uint8_t* out = static_cast<uint8_t*>(buffer_);
+  // The caller's buffer is the back buffer where there is one (buffers.cpp).
+  const uint8_t* shown = back_rows();
   for (int y = 0; y < height_; ++y) {
-    const uint8_t* src = colour_.data() + size_t(y) * width_ * 4;
+    const uint8_t* src = shown + size_t(y) * width_ * 4;
     uint8_t* dst = out + size_t(y_up ? y : height_ - 1 - y) * stride_px * bpp;
     switch (format_) {
       case GL_RGBA: std::memcpy(dst, src, size_t(width_) * 4); break;
@@ -157,13 +168,29 @@ void Context::finish() {
 
 PixelState Context::pixel_state(bool offset, bool stippled) {
   PixelState s;
+  if (stencil_write_ >= 0) {  // stencil indices (draw_pixels.cpp): the scissor test and the write mask only
+    s.scissor = raster_.scissor_test;
+    if (raster_.scissor_test) {
+      s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
+      s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
+    }
+    s.color_mask = 0;
+    s.depth_test = s.depth_write = false;
+    s.stencil_test = true;
+    s.stencil_func = CompareFunc::Always;
+    s.stencil_ref = uint8_t(stencil_write_);
+    s.stencil_value_mask = 0xff;
+    s.stencil_write_mask = uint8_t(stencil_.write_mask);
+    s.stencil_fail = s.stencil_depth_fail = s.stencil_pass = StencilOp::Replace;
+    return s;
+  }
   if (accum_returning_) {  // glAccum(GL_RETURN): the scissor test and the colour mask only
     s.scissor = raster_.scissor_test;
     if (raster_.scissor_test) {
       s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
       s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
     }
-    s.color_mask = raster_.color_mask_bits();
+    s.color_mask = drawn_ ? raster_.color_mask_bits() : 0;
     s.depth_test = s.depth_write = false;
     return s;
   }
@@ -202,6 +229,10 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
       sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
       if (texturing_1d()) sm.wrap_t = Wrap::Repeat;  // a 1-D image is one row: t is not read
       sm.border_color = t->border;
+      // GL 1.4: the object's and the unit's bias, their sum clamped to GL_MAX_TEXTURE_LOD_BIAS.
+      const float bias = t->lod_bias + texture_.lod_bias;
+      sm.lod_bias = bias > -kMaxLodBias ? (bias < kMaxLodBias ? bias : kMaxLodBias) : -kMaxLodBias;
+      sm.min_lod = t->min_lod, sm.max_lod = t->max_lod;
     }
   }
   s.fog = raster_.fog;
@@ -233,7 +264,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
                : raster_.blend_equation == GL_MAX                   ? BlendOp::Max
                                                                     : BlendOp::Add;
   s.blend_color = raster_.blend_color;
-  s.color_mask = raster_.color_mask_bits();
+  s.color_mask = drawn_ ? raster_.color_mask_bits() : 0;  // (glDrawBuffer(GL_NONE): no colour written)
   stencil_pixel_state(s);
   s.samples_passed = queries_.active_object ? &queries_.active_object->samples : nullptr;  // (occlusion.cpp)
   s.polygon_stipple = stippled && raster_.polygon_stipple;

@@ -5,6 +5,7 @@
 
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -33,9 +34,37 @@ struct PixelStore {
 // computed without overflow (GL_INVALID_VALUE for a negative one).
 constexpr GLint kMaxPixelStoreCount = GLint(1) << 24;
 
+// glPixelTransfer's state (GL 1.5 section 3.6.3). Colour maps, glPixelMap's tables, do
+// not exist: each is GL's default, one entry of 0, so GL_MAP_COLOR and GL_MAP_STENCIL
+// map every value to 0.
+struct PixelTransfer {
+  float scale[4] = {1, 1, 1, 1}, bias[4] = {0, 0, 0, 0};  // RGBA
+  float depth_scale = 1, depth_bias = 0;
+  bool map_color = false, map_stencil = false;
+  GLint index_shift = 0, index_offset = 0;
+  // Whether colour (or depth, or an index) comes through unchanged.
+  bool colour_identity() const {
+    return !map_color && scale[0] == 1 && scale[1] == 1 && scale[2] == 1 && scale[3] == 1 && bias[0] == 0 &&
+           bias[1] == 0 && bias[2] == 0 && bias[3] == 0;
+  }
+  // c's RGBA scaled, biased and mapped, before the clamp to [0, 1].
+  void colour(float* c) const {
+    for (int k = 0; k < 4; ++k) c[k] = map_color ? 0.0f : c[k] * scale[k] + bias[k];
+  }
+  float depth(float d) const { return d * depth_scale + depth_bias; }
+  // An index shifted and offset (in 64-bit modular arithmetic: only its low bits are kept).
+  int64_t index(int64_t i) const {
+    if (map_stencil) return 0;
+    const uint64_t shifted = index_shift >= 0 ? uint64_t(i) << std::min(index_shift, GLint(63))
+                                              : uint64_t(i >> std::min(-int64_t(index_shift), int64_t(63)));
+    return int64_t(shifted + uint64_t(int64_t(index_offset)));
+  }
+};
+
 struct PixelOpsState {
   RasterPosition raster;
   float zoom_x = 1, zoom_y = 1;
+  PixelTransfer transfer;  // glPixelTransfer (pixel_transfer.cpp)
   // Their alignments are Context::unpack_alignment's and pack_alignment's, kept in step.
   PixelStore unpack, pack;
 };
@@ -50,8 +79,17 @@ GLenum check_draw_format(GLenum format, GLenum type);
 // component 0, a missing alpha 1; luminance to red, green and blue); for
 // GL_DEPTH_COMPONENT the depth in x. Rows bottom first, as given. The format and type
 // are ones check_draw_format accepted; the caller bounds width and height.
+// `transfer`: glPixelTransfer's scale, bias and maps, applied before the clamp.
 std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
-                                const void* data);
+                                const void* data, const PixelTransfer& transfer = {});
+
+// glDrawPixels' stencil indices (GL_STENCIL_INDEX): GL_NO_ERROR for the integer types,
+// GL_FLOAT and GL_BITMAP, GL_INVALID_OPERATION for a packed type, else GL_INVALID_ENUM.
+GLenum check_stencil_type(GLenum type);
+// The width x height stencil indices at `data` as `store` lays them out, each masked to
+// the stencil buffer's 8 bits (a float's whole part; GL_BITMAP: 0 or 1). Rows bottom first.
+std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data,
+                                    const PixelTransfer& transfer = {});
 
 // glBitmap's width x height bits at `data` (GL_BITMAP with `store`'s row length, skips,
 // alignment and bit order): one byte per pixel, 1 where a fragment is drawn.

@@ -116,7 +116,7 @@ GLenum check_draw_format(GLenum format, GLenum type) {
 }
 
 std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
-                                const void* data) {
+                                const void* data, const PixelTransfer& transfer) {
   std::vector<Vec4> out(size_t(width) * size_t(height), Vec4{0, 0, 0, 1});
   if (!data) return out;
   const uint8_t* src = static_cast<const uint8_t*>(data);
@@ -157,9 +157,57 @@ std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int heigh
         case GL_BLUE: rgba = {0, 0, c[0], 1}; break;
         default: rgba = {c[0], 0, 0, 1}; break;  // GL_DEPTH_COMPONENT
       }
+      if (format == GL_DEPTH_COMPONENT) {
+        rgba.x = transfer.depth(rgba.x);
+      } else if (!transfer.colour_identity()) {
+        float t[4] = {rgba.x, rgba.y, rgba.z, rgba.w};
+        transfer.colour(t);
+        rgba = {t[0], t[1], t[2], t[3]};
+      }
       // Colours and depth are clamped to [0, 1] after the transfer (NaN reads 0).
       auto clamp01 = [](float f) { return f > 0 ? (f < 1 ? f : 1.0f) : 0.0f; };
       out[size_t(y) * size_t(width) + size_t(x)] = {clamp01(rgba.x), clamp01(rgba.y), clamp01(rgba.z), clamp01(rgba.w)};
+    }
+  }
+  return out;
+}
+
+GLenum check_stencil_type(GLenum type) {
+  if (type == GL_BITMAP || type_bytes(type)) return GL_NO_ERROR;
+  return packed(type).bytes ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
+}
+
+std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data,
+                                    const PixelTransfer& transfer) {
+  if (type == GL_BITMAP) {
+    std::vector<uint8_t> bits = unpack_bitmap(width, height, store, data);
+    for (uint8_t& b : bits) b = uint8_t(transfer.index(b) & 0xff);
+    return bits;
+  }
+  std::vector<uint8_t> out(size_t(width) * size_t(height), 0);
+  if (!data) return out;
+  const uint8_t* src = static_cast<const uint8_t*>(data);
+  const size_t element = size_t(type_bytes(type));
+  const bool swap = store.swap_bytes && element > 1;
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = src + row_offset(store, width, y, element, element);
+    for (int x = 0; x < width; ++x) {
+      const uint32_t raw = load(row + size_t(x) * element, int(element), swap);
+      int64_t index = 0;
+      switch (type) {
+        case GL_BYTE: index = int8_t(raw); break;
+        case GL_SHORT: index = int16_t(raw); break;
+        case GL_INT: index = int32_t(raw); break;
+        case GL_FLOAT: {  // an index in a float: its whole part (NaN and the far range: 0)
+          float f;
+          std::memcpy(&f, &raw, 4);
+          index = f > -2147483648.0f && f < 2147483648.0f ? int64_t(f) : 0;
+          break;
+        }
+        default: index = raw; break;
+      }
+      // Indices are masked to the stencil buffer's 8 bits (GL 1.5 section 4.3.1).
+      out[size_t(y) * size_t(width) + size_t(x)] = uint8_t(transfer.index(index) & 0xff);
     }
   }
   return out;

@@ -16,8 +16,56 @@ int format_components(GLenum format) {
   }
 }
 
+namespace {
+// unpack_rgba with glPixelTransfer's scale, bias and maps: each component as a float
+// (a missing colour component 0, alpha 1; luminance to red, green and blue), then the
+// transfer, then the clamp and the 8 bits a texel keeps.
+std::vector<uint32_t> transferred(GLenum format, GLenum type, int width, int height, const uint8_t* src,
+                                  size_t row_bytes, bool swap, const PixelTransfer& transfer) {
+  const int comps = format_components(format);
+  const size_t tsize = type == GL_FLOAT ? 4 : 1;
+  std::vector<uint32_t> out(size_t(width) * size_t(height));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const uint8_t* p = src + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
+      float c[4] = {0, 0, 0, 1};
+      for (int k = 0; k < comps && k < 4; ++k) {
+        if (tsize == 1) {
+          c[k] = p[k] / 255.0f;
+        } else {
+          uint8_t bytes[4];
+          for (int i = 0; i < 4; ++i) bytes[i] = p[4 * k + (swap ? 3 - i : i)];
+          float f;
+          std::memcpy(&f, bytes, 4);
+          c[k] = f;
+        }
+      }
+      float v[4] = {0, 0, 0, 1};
+      switch (format) {
+        case GL_RGBA: v[0] = c[0], v[1] = c[1], v[2] = c[2], v[3] = c[3]; break;
+        case GL_BGRA: v[2] = c[0], v[1] = c[1], v[0] = c[2], v[3] = c[3]; break;
+        case GL_RGB: v[0] = c[0], v[1] = c[1], v[2] = c[2]; break;
+        case GL_BGR: v[2] = c[0], v[1] = c[1], v[0] = c[2]; break;
+        case GL_LUMINANCE_ALPHA: v[0] = v[1] = v[2] = c[0], v[3] = c[1]; break;
+        case GL_LUMINANCE: v[0] = v[1] = v[2] = c[0]; break;
+        case GL_ALPHA: v[3] = c[0]; break;
+        default: v[0] = c[0]; break;  // GL_RED
+      }
+      transfer.colour(v);
+      uint32_t texel = 0;
+      for (int k = 0; k < 4; ++k) {
+        const float f = v[k] > 0 ? (v[k] < 1 ? v[k] : 1.0f) : 0.0f;  // (NaN reads 0)
+        texel |= uint32_t(std::lround(f * 255.0f)) << (8 * k);
+      }
+      out[size_t(y) * size_t(width) + size_t(x)] = texel;
+    }
+  return out;
+}
+}  // namespace
+
 std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height,
-                                                 const PixelStore& store, const void* data) {
+                                                 const PixelStore& store, const void* data,
+                                                 const PixelTransfer& transfer) {
   const int comps = format_components(format);
   if (!comps) return std::nullopt;
   size_t tsize;
@@ -37,6 +85,8 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
   const uint8_t* src = static_cast<const uint8_t*>(data) + size_t(store.skip_rows) * row_bytes +
                        size_t(store.skip_pixels) * comps * tsize;
   const bool swap = store.swap_bytes && tsize > 1;
+  const bool identity = transfer.colour_identity();
+  if (!identity) return transferred(format, type, width, height, src, row_bytes, swap, transfer);
   if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) {
     // The common upload is already the texels' layout (byte 0 red): rows copied whole.
     for (int y = 0; y < height; ++y)

@@ -18,7 +18,9 @@ int format_components(GLenum format);
 // `store` says (row length, skipped rows and pixels, alignment, byte swapping).
 // nullopt: a format or type that is not supported (GL_INVALID_ENUM). The caller has
 // bounded width and height.
+// `transfer`: glPixelTransfer's scale, bias and maps, applied before the clamp.
 std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int width, int height,
-                                                 const PixelStore& store, const void* data);
+                                                 const PixelStore& store, const void* data,
+                                                 const PixelTransfer& transfer = {});
 
 }  // namespace velocity::gl

@@ -23,6 +23,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
   if (get_buffer_binding(pname, out)) return true;   // (buffer_objects.cpp)
   if (get_eval(pname, out)) return true;             // (evaluators.cpp)
+  if (get_buffers(pname, out)) return true;          // (buffers.cpp)
+  if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -36,6 +38,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_TEXTURE_STACK_DEPTH: out = {double(kMaxTextureDepth)}; return true;
     case GL_MAX_LIGHTS: out = {double(kMaxLights)}; return true;
     case GL_MAX_TEXTURE_SIZE: out = {double(kMaxTextureSize)}; return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: out = {double(kMaxLodBias)}; return true;
     case GL_MAX_LIST_NESTING: out = {double(kMaxListNesting)}; return true;
     // glDrawRangeElements' advice: pGL has no preferred size, so a large one.
     case GL_MAX_ELEMENTS_VERTICES: case GL_MAX_ELEMENTS_INDICES: out = {double(1 << 20)}; return true;
@@ -108,9 +111,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
     case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
-    case GL_DOUBLEBUFFER: out = {double_buffered ? 1.0 : 0.0}; return true;
     case GL_RGBA_MODE: out = {1}; return true;
-    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = {double(double_buffered ? GL_BACK : GL_FRONT)}; return true;
     // The rasterizer's: window coordinates snap to 24.8 fixed point; points and lines
     // are aliased, of a whole number of pixels (the size rounded), 1 to 64 (glPointSize,
     // glLineWidth clamp there). There is no antialiasing: the "smooth" ranges

@@ -82,7 +82,7 @@ void Context::clear(GLbitfield mask) {
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer();  // (the context's own: accum.cpp)
   submit_pending();
   const RasterState& r = raster_;
-  const bool color = mask & GL_COLOR_BUFFER_BIT, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;
+  const bool color = (mask & GL_COLOR_BUFFER_BIT) && drawn_ != 0, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;
   const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && stencil_bits_ > 0;
   const bool all_channels = r.color_mask_bits() == 0xf;
   const bool all_stencil = (stencil_.write_mask & 0xff) == 0xff;
@@ -99,7 +99,7 @@ void Context::clear(GLbitfield mask) {
   }
   ensure_frame();
   ClearRequest q;
-  q.color = mask & GL_COLOR_BUFFER_BIT;
+  q.color = color;
   q.depth = depth;
   q.color_value = {unit(r.clear_color.x), unit(r.clear_color.y), unit(r.clear_color.z), unit(r.clear_color.w)};
   q.depth_value = r.clear_depth;
@@ -112,6 +112,7 @@ void Context::clear(GLbitfield mask) {
   if (r.scissor_test)
     q.x0 = r.scissor.x, q.x1 = r.scissor.x + r.scissor.width, q.y0 = r.scissor.y, q.y1 = r.scissor.y + r.scissor.height;
   if (q.color || q.depth || q.stencil) renderer_->clear(q);
+  if (mirror_ && (q.color || q.depth || q.stencil)) mirror_->clear(q);  // GL_FRONT_AND_BACK (buffers.cpp)
 }
 
 void Context::clear_depth(double d) {

@@ -57,6 +57,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
   if (depth && depth_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (stencil && stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
+  if (!depth && !stencil && no_read_buffer()) return;  // glReadBuffer(GL_NONE)
   std::vector<float> zbuf;
   if (depth) zbuf = renderer_->window_depth();
   std::vector<uint8_t> sbuf;

@@ -47,6 +47,7 @@ constexpr int kMaxLights = 8;
 constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDepth = 10;
 constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
+constexpr float kMaxLodBias = 16;        // GL_MAX_TEXTURE_LOD_BIAS (llvmpipe's)
 constexpr int kMaxListNesting = 64;
 constexpr int kMaxAttribDepth = 16;
 constexpr int kMaxNameDepth = 64;  // the selection name stack  // glPushAttrib's and glPushClientAttrib's stacks
@@ -181,6 +182,7 @@ struct TextureObject {
   bool generate_mipmap = false;
   int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
   GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once first bound (texture_1d.cpp)
+  float min_lod = -1000, max_lod = 1000, lod_bias = 0;  // GL_TEXTURE_MIN_LOD, _MAX_LOD, _LOD_BIAS
   // What the renderer samples, built when first drawn after a change (null: not yet,
   // or incomplete). Draws already recorded keep their own reference.
   std::shared_ptr<const Texture> built;
@@ -199,6 +201,8 @@ struct TextureState {
   bool enabled_1d = false;  // GL_TEXTURE_1D (GL_TEXTURE_2D takes precedence)
   GLuint bound_1d = 0;
   TextureObject default_1d;  // name 0 on GL_TEXTURE_1D
+  float lod_bias = 0;  // GL 1.4's glTexEnv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS)
+  TextureObject proxy;  // GL_PROXY_TEXTURE_2D: levels' sizes only, never texels
 };
 
 // --- buffer objects (buffer_objects.cpp): GL 1.5's vertex and index data kept by ---
@@ -350,6 +354,9 @@ struct AttribFrame {
   float zoom_x = 1, zoom_y = 1;  // GL_PIXEL_MODE_BIT
   UserClipState user_clip;  // GL_TRANSFORM_BIT (planes and enables), GL_ENABLE_BIT (enables)
   TexGenState tex_gen;      // GL_TEXTURE_BIT (all of it), GL_ENABLE_BIT (enables)
+  GLenum draw_buffer = GL_FRONT;  // GL_COLOR_BUFFER_BIT (buffers.cpp)
+  GLenum read_buffer = GL_FRONT;  // GL_PIXEL_MODE_BIT
+  PixelTransfer transfer;         // GL_PIXEL_MODE_BIT (pixel_transfer.cpp)
 };
 
 struct ClientAttribFrame {

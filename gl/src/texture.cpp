@@ -118,6 +118,14 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
   changed();
 }
 
+void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h) {
+  const bool fits = w <= (kMaxTextureSize >> level) && h <= (kMaxTextureSize >> level);
+  TextureObject& p = texture_.proxy;
+  Texture::Level& l = p.levels[size_t(level)];
+  l.width = fits ? w : 0, l.height = fits ? h : 0;
+  if (level == 0) p.internal_format = fits ? base_format(internal) : GLenum(0);
+}
+
 void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
                             const std::vector<uint32_t>& rgba) {
   if (in_begin_error()) return;
@@ -174,6 +182,9 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       (pname == GL_TEXTURE_BASE_LEVEL ? t.base_level : t.max_level) = v[0] < 1000 ? int(v[0]) : 1000;
       t.dirty = true;
       break;
+    case GL_TEXTURE_MIN_LOD: t.min_lod = v[0]; break;  // (GL 1.2; the sampler's, in pixel_state)
+    case GL_TEXTURE_MAX_LOD: t.max_lod = v[0]; break;
+    case GL_TEXTURE_LOD_BIAS: t.lod_bias = v[0]; break;  // (GL 1.4)
     default: return error(GL_INVALID_ENUM);
   }
   changed();
@@ -181,6 +192,11 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
 
 void Context::tex_env(GLenum target, GLenum pname, const float* v) {
   if (in_begin_error()) return;
+  if (target == GL_TEXTURE_FILTER_CONTROL) {  // GL 1.4: the texture unit's level-of-detail bias
+    if (pname != GL_TEXTURE_LOD_BIAS) return error(GL_INVALID_ENUM);
+    texture_.lod_bias = v[0];
+    return changed();
+  }
   if (target != GL_TEXTURE_ENV) return error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_MODE) {
     const GLenum m = to_enum(v[0]);

@@ -98,6 +98,10 @@ struct SamplerState {
   Mip mip = Mip::Linear;
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
   Vec4 border_color{0, 0, 0, 0};  // read outside the texture with Wrap::ClampToBorder
+  // OpenGL's level-of-detail controls: the level of detail chosen is the texture's
+  // plus lod_bias, then clamped to [min_lod, max_lod] (GL_TEXTURE_LOD_BIAS,
+  // GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD); it picks magnification or minification too.
+  float lod_bias = 0, min_lod = -1000, max_lod = 1000;
 };
 
 struct TextureStage {

@@ -243,6 +243,7 @@ struct SamplerView {
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
   SamplerState::Texel mag = SamplerState::Texel::Linear, min = SamplerState::Texel::Linear;
   SamplerState::Mip mip = SamplerState::Mip::Linear;
+  float lod_bias = 0, min_lod = -1000, max_lod = 1000;  // (SamplerState's)
   float border[4] = {0, 0, 0, 0};
   // sRGB-encoded texels, decoded to linear light before filtering as a GPU's sRGB
   // texture is: the sampler reads the levels' `linear` texels, decoded once per

@@ -195,6 +195,8 @@ struct LevelChoice {
 };
 
 HWY_INLINE LevelChoice choose_levels(const SamplerView& s, float lod) {
+  // The bias, then the clamp (as GL orders them; a NaN bound leaves it unbounded).
+  lod = std::min(std::max(lod + s.lod_bias, s.min_lod), s.max_lod);
   const int last = s.level_count - 1;
   if (!(lod > 0) || s.mip == SamplerState::Mip::None || last == 0)
     return {!(lod > 0) ? s.mag : s.min, 0, 0, 0};

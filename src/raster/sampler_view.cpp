@@ -30,6 +30,7 @@ SamplerView::SamplerView(const Texture& t, const SamplerState& s) {
   set_levels(*this, t);
   wrap_s = s.wrap_s, wrap_t = s.wrap_t;
   mag = s.mag, min = s.min, mip = s.mip;
+  lod_bias = s.lod_bias, min_lod = s.min_lod, max_lod = s.max_lod;
   border[0] = s.border_color.x, border[1] = s.border_color.y, border[2] = s.border_color.z, border[3] = s.border_color.w;
 }
 

@@ -397,6 +397,64 @@ void shape_call(Bytes& in, float a, float b) {
 }
 #endif
 
+// Colour buffers, the level-of-detail controls and glPixelTransfer: glDrawBuffer / glReadBuffer with
+// every buffer name and any enum (OSMesa's single buffer: the back, right and
+// auxiliary ones are errors), GL_NONE before drawing and reading; GL_TEXTURE_MIN_LOD,
+// _MAX_LOD and both biases at any value (NaN, infinities), then a textured draw.
+void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
+  static const GLenum names[] = {GL_NONE, GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT, GL_FRONT,
+                                 GL_BACK, GL_LEFT, GL_RIGHT, GL_FRONT_AND_BACK, GL_AUX0, GL_AUX3};
+  const GLenum mode = in.u8() < 230 ? names[in.below(12)] : e1;
+  switch (in.below(6)) {
+    case 5: {
+      // glPixelTransfer: every name (and a bad one) at any value, then pixels drawn
+      // through it by the other calls.
+      static const GLenum transfer[] = {GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT, GL_INDEX_OFFSET, GL_RED_SCALE,
+                                        GL_RED_BIAS, GL_GREEN_SCALE, GL_GREEN_BIAS, GL_BLUE_SCALE, GL_BLUE_BIAS,
+                                        GL_ALPHA_SCALE, GL_ALPHA_BIAS, GL_DEPTH_SCALE, GL_DEPTH_BIAS};
+      const GLenum pname = in.u8() < 240 ? transfer[in.below(14)] : e1;
+      if (in.u8() & 1)
+        glPixelTransferf(pname, a);
+      else
+        glPixelTransferi(pname, GLint(in.integer()));
+      break;
+    }
+    case 0: glDrawBuffer(mode); break;
+    case 1: glReadBuffer(mode); break;
+    case 2: {
+      static const GLenum lod[] = {GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_LOD_BIAS};
+      glTexParameterf(GL_TEXTURE_2D, lod[in.below(3)], a);
+      glTexEnvf(in.u8() & 1 ? GL_TEXTURE_FILTER_CONTROL : e1, in.u8() & 1 ? GL_TEXTURE_LOD_BIAS : e1, b);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST + GLint(in.below(4)));
+      break;
+    }
+    case 3: {
+      const GLubyte texels[4 * 4 * 4] = {255, 0, 0, 255, 0, 255, 0, 255};
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      glEnable(GL_TEXTURE_2D);
+      glBegin(GL_TRIANGLES);
+      glTexCoord2f(0, 0), glVertex2f(-1, -1);
+      glTexCoord2f(a, 0), glVertex2f(1, -1);
+      glTexCoord2f(0, b), glVertex2f(0, 1);
+      glEnd();
+      glDisable(GL_TEXTURE_2D);
+      break;
+    }
+    default: {
+      // Reading and copying whatever buffer is selected, GL_NONE included.
+      uint8_t px[4 * 4 * 4];
+      glReadPixels(0, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, px);
+      glRasterPos2f(a, b);
+      static const GLenum copies[] = {GL_COLOR, GL_DEPTH, GL_STENCIL};
+      glCopyPixels(0, 0, 4, 4, copies[in.below(3)]);
+      glAccum(GL_LOAD, 1);
+      break;
+    }
+  }
+}
+
 bool valid_error(GLenum e) {
   return e == GL_NO_ERROR || (e >= GL_INVALID_ENUM && e <= GL_OUT_OF_MEMORY);
 }
@@ -644,6 +702,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         buffer_call(in, pixels, buffer_names, e1, e2);
         texture_1d_call(in, pixels, names, a, b, e1);
         evaluator_call(in, attrib, a, b, e1);
+        buffer_lod_call(in, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif

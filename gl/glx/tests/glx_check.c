@@ -2,8 +2,8 @@
  * is built against the system's <GL/glx.h> and libglvnd's libGL, never against pGL):
  * run with __GLX_VENDOR_LIBRARY_NAME=velocity under an X server (glx_test.py).
  * Visuals and FBConfigs say what exists (depth, stencil, alpha, accumulation); a double-buffered
- * window shows at glXSwapBuffers exactly what GL drew, a single-buffered one at
- * glFlush; contexts are created, made current, destroyed and created again;
+ * window shows at glXSwapBuffers exactly what GL drew, its front buffer drawn into at
+ * glFlush, a single-buffered one at glFlush; contexts are created, made current, destroyed and created again;
  * GLX_ARB_create_context gives what pGL is and refuses the rest with X errors;
  * glXGetProcAddress and swap control work; pbuffers hold pixels; misuse gives GLX's
  * errors. Prints "ok ..." per check, exits 1 at the first failure. */
@@ -186,6 +186,45 @@ int main(void) {
             window_pixel(win, w - 5, 5) == 0x0000ff,
         "quarters");
   printf("ok double-buffered window: shown at glXSwapBuffers, exactly the frame\n");
+
+  /* --- front and back buffers: drawing into the front shows at glFlush and leaves the
+   * back alone; the swap copies the back to the front; each reads back */
+  unsigned char fb[4] = {0, 0, 0, 0};
+  glDrawBuffer(GL_FRONT);
+  glClearColor(1, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFlush();
+  CHECK(window_pixel(win, 5, 5) == 0xff00ff, "the front drawn, shown at glFlush: %06lx", window_pixel(win, 5, 5));
+  glReadBuffer(GL_BACK);
+  glReadPixels(5, h - 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, fb);
+  CHECK(fb[0] == 255 && fb[1] == 0 && fb[2] == 0, "the back kept its frame: %d %d %d", fb[0], fb[1], fb[2]);
+  glReadBuffer(GL_FRONT);
+  glReadPixels(5, h - 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, fb);
+  CHECK(fb[0] == 255 && fb[1] == 0 && fb[2] == 255, "the front reads back: %d %d %d", fb[0], fb[1], fb[2]);
+  glDrawBuffer(GL_BACK);
+  glClearColor(0, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFlush();
+  CHECK(window_pixel(win, 5, 5) == 0xff00ff, "the back showed before the swap: %06lx", window_pixel(win, 5, 5));
+  glXSwapBuffers(dpy, win);
+  CHECK(window_pixel(win, 5, 5) == 0x00ffff, "the swap shows the back: %06lx", window_pixel(win, 5, 5));
+  glReadPixels(5, 5, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, fb);
+  CHECK(fb[0] == 0 && fb[1] == 255 && fb[2] == 255, "the front is the back after the swap: %d %d %d", fb[0], fb[1], fb[2]);
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glClearColor(1, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(0, 0, 1);
+  glRecti(0, 0, 10, 10);
+  glFlush();
+  CHECK(window_pixel(win, 20, 20) == 0xffff00 && window_pixel(win, 5, h - 5) == 0x0000ff, "both drawn, the front shown");
+  glReadBuffer(GL_BACK);
+  glReadPixels(20, 20, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, fb);
+  CHECK(fb[0] == 255 && fb[1] == 255 && fb[2] == 0, "both drawn, the back: %d %d %d", fb[0], fb[1], fb[2]);
+  glGetIntegerv(GL_DRAW_BUFFER, iv);
+  CHECK(iv[0] == GL_FRONT_AND_BACK, "GL_DRAW_BUFFER 0x%x", iv[0]);
+  glDrawBuffer(GL_BACK);
+  CHECK(glGetError() == GL_NO_ERROR, "errors");
+  printf("ok front and back buffers: the front shown at glFlush, the swap a copy\n");
 
   /* --- destroyed and created again, from an FBConfig this time */
   CHECK(glXMakeCurrent(dpy, None, NULL), "release");

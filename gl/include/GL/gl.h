@@ -286,6 +286,33 @@ typedef double GLclampd;
 #define GL_DOUBLEBUFFER 0x0C32
 #define GL_DRAW_BUFFER 0x0C01
 #define GL_READ_BUFFER 0x0C02
+/* Pixel transfer (glPixelTransfer) */
+#define GL_MAP_COLOR 0x0D10
+#define GL_MAP_STENCIL 0x0D11
+#define GL_INDEX_SHIFT 0x0D12
+#define GL_INDEX_OFFSET 0x0D13
+#define GL_RED_SCALE 0x0D14
+#define GL_RED_BIAS 0x0D15
+#define GL_GREEN_SCALE 0x0D18
+#define GL_GREEN_BIAS 0x0D19
+#define GL_BLUE_SCALE 0x0D1A
+#define GL_BLUE_BIAS 0x0D1B
+#define GL_ALPHA_SCALE 0x0D1C
+#define GL_ALPHA_BIAS 0x0D1D
+#define GL_DEPTH_SCALE 0x0D1E
+#define GL_DEPTH_BIAS 0x0D1F
+/* Colour buffers (glDrawBuffer, glReadBuffer) */
+#define GL_NONE 0
+#define GL_FRONT_LEFT 0x0400
+#define GL_FRONT_RIGHT 0x0401
+#define GL_BACK_LEFT 0x0402
+#define GL_BACK_RIGHT 0x0403
+#define GL_LEFT 0x0406
+#define GL_RIGHT 0x0407
+#define GL_AUX0 0x0409
+#define GL_AUX1 0x040A
+#define GL_AUX2 0x040B
+#define GL_AUX3 0x040C
 #define GL_SAMPLE_BUFFERS 0x80A8
 #define GL_SAMPLES 0x80A9
 #define GL_SUBPIXEL_BITS 0x0D50
@@ -467,6 +494,14 @@ typedef double GLclampd;
 #define GL_GENERATE_MIPMAP 0x8191
 #define GL_TEXTURE_BASE_LEVEL 0x813C
 #define GL_TEXTURE_MAX_LEVEL 0x813D
+/* Level-of-detail clamp (GL 1.2) and bias (GL 1.4) */
+#define GL_TEXTURE_MIN_LOD 0x813A
+#define GL_TEXTURE_MAX_LOD 0x813B
+#define GL_TEXTURE_FILTER_CONTROL 0x8500
+#define GL_TEXTURE_LOD_BIAS 0x8501
+#define GL_MAX_TEXTURE_LOD_BIAS 0x84FD
+/* Proxy textures: glTexImage2D's size check without an image */
+#define GL_PROXY_TEXTURE_2D 0x8064
 #define GL_TEXTURE_WIDTH 0x1000
 #define GL_TEXTURE_HEIGHT 0x1001
 #define GL_TEXTURE_INTERNAL_FORMAT 0x1003
@@ -620,6 +655,12 @@ GLAPI void GLAPIENTRY glClearStencil(GLint s);
 /* The accumulation buffer (an OSMesa context's accumBits) */
 GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
 GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+/* Front and back colour buffers (a double-buffered GLX drawable has both) */
+GLAPI void GLAPIENTRY glDrawBuffer(GLenum mode);
+GLAPI void GLAPIENTRY glReadBuffer(GLenum mode);
+/* Pixel transfer: scale, bias, GL_MAP_COLOR / GL_MAP_STENCIL (through GL's default maps) */
+GLAPI void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPixelTransferi(GLenum pname, GLint param);
 GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
                                        GLsizei height, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
