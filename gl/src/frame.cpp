@@ -96,22 +96,21 @@ void Context::run_frame() {
   submit_pending();
   if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
   ensure_frame();
-  renderer_->end_frame();
+  // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
+  // buffer of the framebuffer's width takes the colour directly. Either way each tile
+  // is copied out by the thread that drew it, as soon as it is drawn.
+  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_);
   in_frame_ = false;
+  renderer_->end_frame_into(direct_ ? static_cast<uint8_t*>(buffer_) : colour_.data(), size_t(width_) * 4, 4);
   for (size_t i = 0; i < submitted_used_; ++i) submitted_[i].clear();
   submitted_used_ = 0;
   frame_textures_.clear();
   frame_texture_bytes_ = 0;
   frame_vertices_ = 0;
-  // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
-  // buffer of the framebuffer's width takes the colour directly.
-  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_);
   if (direct_) {
-    renderer_->read_color(static_cast<uint8_t*>(buffer_), size_t(width_) * 4, 4);
     if (depth_requested_) copy_depth();
     return;
   }
-  renderer_->read_color(colour_.data(), size_t(width_) * 4, 4);
   const int stride_px = row_length > 0 ? row_length : width_;
   const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   uint8_t* out = static_cast<uint8_t*>(buffer_);
