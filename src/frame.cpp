@@ -62,6 +62,7 @@ class CpuBackend final : public Backend {
   void draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) override;
   void clear(const ClearRequest& request) override;
   const FrameStats& end_frame() override;
+  const FrameStats& end_frame_into(uint8_t* rgba, size_t row_bytes, int channels) override;
   const FrameStats& stats() const override { return stats_; }
 
   Image color_image() const override { return resolve_color(framebuffer, ssaa); }
@@ -184,7 +185,13 @@ class CpuBackend final : public Backend {
 
   void begin(const Mat4& view, const Mat4& projection, bool orthographic, const std::vector<Light>& lights,
              const FrameStart& start, const RenderOptions& options);
-  const FrameStats& run_frame(bool painter);
+  // Where end_frame_into wants the colour: each tile copied there once drawn.
+  struct ColorOut {
+    uint8_t* rgba;
+    size_t row_bytes;
+    int channels;
+  };
+  const FrameStats& run_frame(bool painter, const ColorOut* out = nullptr);
   void order_blended_draws();
   void render_shadows();
 };
@@ -400,7 +407,22 @@ const FrameStats& CpuBackend::end_frame() {
   }
 }
 
-const FrameStats& CpuBackend::run_frame(bool painter) {
+const FrameStats& CpuBackend::end_frame_into(uint8_t* rgba, size_t row_bytes, int channels) {
+  // Tiles hold output pixels only without super-sampling (else read_color resolves them).
+  if (ssaa != 1) {
+    end_frame();
+    read_color(rgba, row_bytes, channels);
+    return stats_;
+  }
+  const ColorOut out{rgba, row_bytes, channels};
+  try {
+    return run_frame(plan.options.depth_mode == DepthMode::Painter, &out);
+  } catch (const std::bad_alloc&) {
+    throw Error("Renderer::end_frame: out of memory");
+  }
+}
+
+const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   CpuBackend& r = *this;
   ThreadPool& pool = r.pool_for(r.plan.options.threads);
 
@@ -433,7 +455,10 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
   tiles.clear_stencil_buffer = r.start.clear_stencil_buffer, tiles.stencil = r.start.stencil;
   r.framebuffer.expect_clear(tiles.color, tiles.depth, tiles.clear_stencil_buffer ? tiles.stencil : r.framebuffer.clean_stencil);
-  pool.run(r.bins.tile_count(), [&](int tile) { raster::rasterize_tile(tiles, tile, r.framebuffer); });
+  pool.run(r.bins.tile_count(), [&](int tile) {
+    raster::rasterize_tile(tiles, tile, r.framebuffer);
+    if (out) r.framebuffer.read_color_tile(tile, out->rgba, out->row_bytes, out->channels);
+  });
   const Clock::time_point t3 = Clock::now();
   r.stats_.vertex_ms = ms(t0, t1), r.stats_.triangle_ms = ms(t1, t2), r.stats_.tile_ms = ms(t2, t3);
   r.stats_.shadow_ms = ms(ts, t0);

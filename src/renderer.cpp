@@ -114,6 +114,22 @@ const FrameStats& Renderer::end_frame() {
   return stats_;
 }
 
+const FrameStats& Renderer::end_frame_into(uint8_t* rgba, size_t row_bytes, int channels) {
+  if (!in_frame_) throw Error("Renderer::end_frame_into called without begin_frame");
+  if (channels != 3 && channels != 4)
+    throw Error("Renderer::end_frame_into: channels must be 3 or 4, not " + std::to_string(channels));
+  // The normals overlay draws after the frame: read back after it.
+  if (options.normals) {
+    end_frame();
+    read_color(rgba, row_bytes, channels);
+    return stats_;
+  }
+  in_frame_ = false;
+  stats_ = backend_->end_frame_into(rgba, row_bytes, channels);
+  stats_.backend = to_string(drawn_by_), stats_.backend_reason = reason_->c_str();
+  return stats_;
+}
+
 const FrameStats& Renderer::render(const Scene& scene) {
   begin_frame(scene.camera, scene.lights, scene.background);
   scene.world_matrices(world_);

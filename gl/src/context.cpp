@@ -9,8 +9,9 @@
 
 namespace velocity::gl {
 
+constinit thread_local Context* detail::current_context = nullptr;
+
 namespace {
-thread_local Context* g_current = nullptr;
 
 int threads_from_environment() {
   const char* s = std::getenv("VELOCITY_THREADS");
@@ -28,9 +29,6 @@ BackendChoice backend_from_environment() {
   throw Error(std::string("VELOCITY_BACKEND: expected cpu, gpu or auto, got '") + s + "'");
 }
 }  // namespace
-
-Context* current() { return g_current; }
-void set_current(Context* c) { g_current = c; }
 
 Context::Context(GLenum format, int depth_bits, int stencil_bits, int accum_bits)
     : format_(format), depth_bits_(depth_bits), stencil_bits_(stencil_bits > 0 ? 8 : 0), accum_bits_(accum_bits > 0 ? 16 : 0) {}

@@ -562,8 +562,14 @@ class Context {
 inline float unit(double v) { return v > 0 ? (v < 1 ? float(v) : 1.0f) : 0.0f; }
 inline GLenum to_enum(float v) { return v >= 0 && v < 4294967296.0f ? GLenum(v) : GLenum(0xffffffffu); }
 
-// The calling thread's current context (OSMesaMakeCurrent), or null.
-Context* current();
-void set_current(Context* c);
+// The calling thread's current context (OSMesaMakeCurrent), or null. Read by every GL
+// call, twice a vertex in immediate mode: inline. (Not initial-exec TLS: the GLX vendor
+// is dlopen'ed, and a library with any initial-exec TLS needs all of its thread-locals,
+// the engine's included, in glibc's small static TLS surplus: dlopen then fails.)
+namespace detail {
+extern constinit thread_local Context* current_context;
+}
+inline Context* current() { return detail::current_context; }
+inline void set_current(Context* c) { detail::current_context = c; }
 
 }  // namespace velocity::gl

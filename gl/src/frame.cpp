@@ -101,7 +101,12 @@ void Context::run_frame() {
   if (double_buffered_) park_colour();
   if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
   ensure_frame();
-  renderer_->end_frame();
+  // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
+  // buffer of the framebuffer's width takes the colour directly, unless there is a back
+  // buffer (buffers.cpp). Either way each tile is copied out by the thread that drew it,
+  // as soon as it is drawn.
+  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
+  renderer_->end_frame_into(direct_ ? static_cast<uint8_t*>(buffer_) : colour_.data(), size_t(width_) * 4, 4);
   if (mirror_) {
     mirror_->end_frame();
     mirror_->read_color(parked_.data(), size_t(width_) * 4, 4);
@@ -112,15 +117,10 @@ void Context::run_frame() {
   frame_textures_.clear();
   frame_texture_bytes_ = 0;
   frame_vertices_ = 0;
-  // The framebuffer's rows are GL's, bottom first, as OSMesa's buffer (Y_UP): an RGBA
-  // buffer of the framebuffer's width takes the colour directly.
-  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
   if (direct_) {
-    renderer_->read_color(static_cast<uint8_t*>(buffer_), size_t(width_) * 4, 4);
     if (depth_requested_) copy_depth();
     return;
   }
-  renderer_->read_color(colour_.data(), size_t(width_) * 4, 4);
   const int stride_px = row_length > 0 ? row_length : width_;
   const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   uint8_t* out = static_cast<uint8_t*>(buffer_);

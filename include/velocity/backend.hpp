@@ -45,6 +45,13 @@ class Backend {
   virtual void draw(const PrimitiveBatch& batch, const PixelState& state, uint32_t primitives) = 0;
   virtual void clear(const ClearRequest& request) = 0;
   virtual const FrameStats& end_frame() = 0;
+  // end_frame and read_color in one (Renderer::end_frame_into); this default does one
+  // after the other.
+  virtual const FrameStats& end_frame_into(uint8_t* rgba, size_t row_bytes, int channels) {
+    const FrameStats& s = end_frame();
+    read_color(rgba, row_bytes, channels);
+    return s;
+  }
   virtual const FrameStats& stats() const = 0;
 
   // The last frame, read back as Renderer's functions of the same names describe.
@@ -74,7 +81,7 @@ std::unique_ptr<Backend> make_backend(BackendChoice choice, int width, int heigh
 // software driver. `abi` must be kGpuBackendAbi: the library and the core library it is
 // loaded into were built from the same headers.
 inline constexpr unsigned long kGpuBackendAbi =
-    20261126ul * 7 + sizeof(RenderOptions) * 131 + sizeof(PixelState) * 17 + sizeof(FrameStats) + sizeof(Material) * 3;
+    20261127ul * 7 + sizeof(RenderOptions) * 131 + sizeof(PixelState) * 17 + sizeof(FrameStats) + sizeof(Material) * 3;
 using GpuBackendEntry = Backend* (*)(unsigned long abi, int width, int height, int hardware_only, char* message,
                                      size_t message_size);
 inline constexpr const char* kGpuBackendEntry = "velocity_gpu_make_backend";

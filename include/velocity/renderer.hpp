@@ -184,6 +184,11 @@ class Renderer {
   // Clears the framebuffer, or the request's rectangle of it, in draw order.
   void clear(const ClearRequest& request);
   const FrameStats& end_frame();
+  // end_frame, then read_color(rgba, row_bytes, channels) of the frame, in one pass on
+  // the CPU: each tile is copied out as soon as it is drawn, while it is in the core's
+  // cache, rather than read again afterwards (pGL's glFinish into the OSMesa buffer).
+  // The same bytes as end_frame followed by read_color.
+  const FrameStats& end_frame_into(uint8_t* rgba, size_t row_bytes, int channels = 4);
 
   const FrameStats& stats() const;
   // The output image: with super-sampling, each pixel is the mean of its samples.

@@ -95,6 +95,10 @@ struct Framebuffer {
 
   // Row y of the image, width pixels, into `out` (linear order). Used by every reader.
   void read_color_row(int y, uint32_t* out) const;
+  // Tile t's pixels (those inside width x height) into an image of width x height,
+  // RGBA8 (channels 4) or RGB8 (3), rows `row_bytes` apart: what the rows of read_color_row
+  // hold there.
+  void read_color_tile(int t, uint8_t* out, size_t row_bytes, int channels) const;
   void read_depth_row(int y, float* out) const;
   void read_id_row(int y, uint32_t* out) const;
   void read_stencil_row(int y, uint8_t* out) const;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/resolve.hpp"
@@ -282,6 +283,43 @@ TEST(Render, ReadColorMatchesTheImage) {
     std::vector<uint8_t> any(101 * 67 * 4);
     EXPECT_THROW(r.read_color(any.data(), 101 * 2, 2), Error);
   }
+}
+
+// end_frame_into (each tile copied out as it is drawn) writes the bytes end_frame and
+// read_color write, for RGBA and RGB rows with a padded pitch, sizes with partial tiles
+// and blocks, with and without super-sampling, on one thread and two; the pitch's
+// padding is left alone; other channel counts and a call outside a frame are errors.
+TEST(Render, EndFrameIntoMatchesEndFrameThenReadColor) {
+  Scene scene = make_demo_scene(1.5f);
+  for (auto [w, h] : {std::pair{101, 67}, std::pair{203, 130}})
+    for (int ssaa : {1, 2})
+      for (int threads : {1, 2})
+        for (int channels : {4, 3}) {
+          // RGBA rows 16-byte aligned (whole tile rows go by non-temporal stores), RGB
+          // rows at an odd pitch.
+          const size_t pitch = channels == 4 ? (size_t(w) * 4 + 31) & ~size_t(15) : size_t(w) * 3 + 5;
+          std::vector<uint8_t> want(pitch * h, 0xab), got(pitch * h, 0xab);
+          Renderer a(w, h), b(w, h);
+          for (Renderer* r : {&a, &b}) r->options.ssaa = ssaa, r->options.threads = threads;
+          a.render(scene);
+          a.read_color(want.data(), pitch, channels);
+          b.begin_frame(scene.camera, scene.lights, scene.background);
+          std::vector<Mat4> world;
+          scene.world_matrices(world);
+          for (size_t i = 0; i < scene.objects().size(); ++i) {
+            const Object& o = scene.objects()[i];
+            if (o.visible && o.mesh) b.draw(*o.mesh, world[i], o.material ? &*o.material : nullptr, uint32_t(i + 1));
+          }
+          b.end_frame_into(got.data(), pitch, channels);
+          ASSERT_EQ(got, want) << w << "x" << h << ", ssaa " << ssaa << ", " << threads << " threads, " << channels
+                               << " channels";
+          for (int y = 0; y < h; ++y) EXPECT_EQ(got[size_t(y) * pitch + pitch - 1], 0xab);
+        }
+  Renderer r(64, 64);
+  std::vector<uint8_t> any(64 * 64 * 4);
+  EXPECT_THROW(r.end_frame_into(any.data(), 64 * 4, 4), Error);  // no frame begun
+  r.begin_frame(Camera{}, {}, {0, 0, 0});
+  EXPECT_THROW(r.end_frame_into(any.data(), 64 * 2, 2), Error);
 }
 
 namespace velocity {
