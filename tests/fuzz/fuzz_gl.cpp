@@ -720,6 +720,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   glFinish();
   glGetError();
   glViewport(0, 0, w, h);
+  // The sequence may have left colour reads and writes on no buffer (GL_NONE).
+  glDrawBuffer(GL_FRONT);
+  glReadBuffer(GL_FRONT);
   glClearColor(0, 0, 1, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   uint8_t px[4] = {0, 0, 0, 0};
