@@ -90,7 +90,15 @@ struct UvTexture {
   const SamplerView& tex;
   int iu;
   LevelChoice level{};
+  // One level and one filter whatever the footprint (no mip-maps, the same filter for
+  // magnifying and minifying: choose_levels' answer for any lod): no derivatives, no
+  // log2 per block.
+  bool one_level = (tex.mip == SamplerState::Mip::None || tex.level_count <= 1) && tex.min == tex.mag;
   void begin(const Perspective<N>& in) {
+    if (one_level) {
+      level = {tex.mag, 0, 0, 0};
+      return;
+    }
     float u, dudx, dudy, v, dvdx, dvdy;
     in.derivatives(iu, u, dudx, dudy);
     in.derivatives(iu + 1, v, dvdx, dvdy);
