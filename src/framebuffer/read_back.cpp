@@ -1,8 +1,10 @@
 #include "framebuffer/read_back.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
+#include "framebuffer/pack_rgb.hpp"
 #include "framebuffer/resolve.hpp"
 
 namespace velocity {
@@ -27,6 +29,17 @@ void for_row_bands(ThreadPool* pool, int height, Rows&& rows) {
 void read_color(const Framebuffer& samples, int k, ThreadPool* pool, uint8_t* rgba, size_t row_bytes, int channels) {
   for_row_bands(pool, samples.height / k,
                 [&](int y0, int y1) { resolve_color_rows(samples, k, rgba, row_bytes, channels, y0, y1); });
+}
+
+void read_color(const uint32_t* pixels, int w, int h, size_t stride, ThreadPool* pool, uint8_t* rgba, size_t row_bytes,
+                int channels) {
+  for_row_bands(pool, h, [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      const uint32_t* row = pixels + size_t(y) * stride;
+      if (channels == 4) std::memcpy(rgba + size_t(y) * row_bytes, row, size_t(w) * 4);
+      else pack_rgb(reinterpret_cast<const uint8_t*>(row), rgba + size_t(y) * row_bytes, size_t(w));
+    }
+  });
 }
 
 void read_window_depth(const Framebuffer& samples, int k, ThreadPool* pool, float* out) {

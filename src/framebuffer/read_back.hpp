@@ -16,6 +16,9 @@ namespace velocity {
 // The output image (the samples resolved k x k) as RGBA8 (channels 4) or RGB8 (3) rows,
 // `row_bytes` apart. `pool` may be null (the calling thread does it all).
 void read_color(const Framebuffer& samples, int k, ThreadPool* pool, uint8_t* rgba, size_t row_bytes, int channels);
+// The same from an image already resolved (w x h packed RGBA8 pixels, `stride` a row).
+void read_color(const uint32_t* pixels, int w, int h, size_t stride, ThreadPool* pool, uint8_t* rgba,
+                size_t row_bytes, int channels);
 // Per output pixel, the window depth of its nearest sample (1 where nothing was drawn).
 void read_window_depth(const Framebuffer& samples, int k, ThreadPool* pool, float* out);
 // Per output pixel, the stencil value of its first sample.

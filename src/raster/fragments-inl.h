@@ -134,6 +134,7 @@ class Fragments {
   // The level of detail of a small triangle: its uv derivatives at its first pixel.
   static LevelChoice record_level(const RecordHeader& r, const DrawState& st, KernelId family) {
     const SamplerView& tex = st.texture ? st.texture : st.env_map;
+    if (single_level(tex)) return {tex.mag, 0, 0, 0};
     const int iu = family == KernelId::FlatTex ? varying::kFlatUv : varying::kSmoothUv;
     const Plane* var = varyings(r);
     const Plane& q = r.inv_w;

@@ -57,7 +57,7 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
   return fixed[id - uint8_t(KernelId::Fixed)];
 }
 
-void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
+bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
@@ -71,7 +71,7 @@ void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const bool full_clear = (frame.clear_color_buffer || frame.depth_only) && frame.clear_depth_buffer;
   const bool nothing = bins.empty(tile);
   uint8_t& clean = fb.tile_clean[size_t(tile)];
-  if (full_clear && nothing && clean) return;
+  if (full_clear && nothing && clean) return false;
   clean = full_clear && nothing && (frame.clear_stencil_buffer || clean);
   if (frame.clear_color_buffer && !frame.depth_only) {
     std::fill_n(target.color, kPixels, frame.color);
@@ -98,6 +98,7 @@ void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (n) kernel(r.kernel)(r, blocks, n, target);
   });
   flush();
+  return true;
 }
 
 void CoverageForTest(const RecordHeader& r, int tx, int ty, int tw, int th,
@@ -144,7 +145,7 @@ float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, 
   return HWY_DYNAMIC_DISPATCH(LevelOfDetailForTest)(view, dudx, dvdx, dudy, dvdy);
 }
 
-void rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb) { HWY_DYNAMIC_DISPATCH(RasterizeTile)(in, tile, fb); }
+bool rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb) { return HWY_DYNAMIC_DISPATCH(RasterizeTile)(in, tile, fb); }
 
 void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int tile_w, int tile_h,
                        void (*callback)(void*, int, int, uint32_t), void* user) {

@@ -21,8 +21,9 @@ struct Framebuffer;
 namespace velocity::raster {
 
 // Rasterizes tile `tile` into `fb`. Reads only shared, immutable frame data and writes
-// only the tile's own pixels: tiles may run concurrently.
-void rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb);
+// only the tile's own pixels: tiles may run concurrently. False when the tile was left
+// as it was (clean from the last frame, and nothing to draw there now).
+bool rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb);
 
 // Coverage of one record in one tile, for tests: calls back with every 4x4 block
 // (its top-left pixel) and the 16-bit mask of covered pixels (bit y * 4 + x).

@@ -194,6 +194,13 @@ struct LevelChoice {
   float frac;          // weight of level1
 };
 
+// Whether choose_levels gives one answer whatever the lod: one level (no mip-maps, or
+// only one), and the same filter magnifying and minifying. Then the kernels take
+// {s.mag, 0, 0, 0} once, not a level of detail per block or small triangle.
+HWY_INLINE bool single_level(const SamplerView& s) {
+  return (s.mip == SamplerState::Mip::None || s.level_count <= 1) && s.min == s.mag;
+}
+
 HWY_INLINE LevelChoice choose_levels(const SamplerView& s, float lod) {
   // The bias, then the clamp (as GL orders them; a NaN bound leaves it unbounded).
   lod = std::min(std::max(lod + s.lod_bias, s.min_lod), s.max_lod);

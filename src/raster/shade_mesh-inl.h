@@ -90,7 +90,12 @@ struct UvTexture {
   const SamplerView& tex;
   int iu;
   LevelChoice level{};
+  bool one_level = single_level(tex);  // then no derivatives, no log2 per block
   void begin(const Perspective<N>& in) {
+    if (one_level) {
+      level = {tex.mag, 0, 0, 0};
+      return;
+    }
     float u, dudx, dudy, v, dvdx, dvdy;
     in.derivatives(iu, u, dudx, dudy);
     in.derivatives(iu + 1, v, dvdx, dvdy);
@@ -172,6 +177,10 @@ struct PhongShader {
     in.begin(fx, fy);
     if constexpr (kTex) tex.begin(in);
     if constexpr (kEnv) {
+      if (single_level(draw.env_map)) {
+        env_level = {draw.env_map.mag, 0, 0, 0};
+        return;
+      }
       // Finite differences across the block's centre, as a GPU's pixel quad would.
       float u, v, ux, vx, uy, vy;
       env_uv(1.5f, 1.5f, u, v), env_uv(2.5f, 1.5f, ux, vx), env_uv(1.5f, 2.5f, uy, vy);

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/resolve.hpp"
@@ -322,6 +324,50 @@ TEST(Render, EndFrameIntoMatchesEndFrameThenReadColor) {
   EXPECT_THROW(r.end_frame_into(any.data(), 64 * 2, 2), Error);
 }
 
+// With super-sampling the tile workers resolve each tile as they finish it, and the
+// pixels that straddle two tiles after (k = 3: 64 samples are not a whole number of
+// pixels): the image is the box filter, by hand, of the same scene drawn without
+// super-sampling at k times the size, frame after frame (tiles left clean by the last
+// frame keep their pixels; a change of factor or size resolves every tile again).
+TEST(Ssaa, TileResolveIsTheBoxFilterOfTheSamples) {
+  auto box = [](const Image& big, int k) {
+    Image out(big.width / k, big.height / k);
+    for (int y = 0; y < out.height; ++y)
+      for (int x = 0; x < out.width; ++x)
+        for (int c = 0; c < 4; ++c) {
+          int sum = 0;
+          for (int sy = 0; sy < k; ++sy)
+            for (int sx = 0; sx < k; ++sx) sum += big.pixel(x * k + sx, y * k + sy)[c];
+          out.pixel(x, y)[c] = uint8_t((sum + k * k / 2) / (k * k));
+        }
+    return out;
+  };
+  Renderer r(101, 67);  // 303 x 201 samples at k = 3: seams in both directions
+  r.options.threads = 3;
+  int frame = 0;
+  for (auto [k, w, h, t] : {std::tuple{3, 101, 67, 1.5f}, std::tuple{3, 101, 67, 2.5f}, std::tuple{3, 101, 67, 2.5f},
+                            std::tuple{2, 101, 67, 2.5f}, std::tuple{3, 101, 67, 2.5f}, std::tuple{3, 150, 90, 4.0f},
+                            std::tuple{4, 40, 31, 4.0f}}) {
+    const Scene scene = make_demo_scene(t);
+    r.resize(w, h);
+    r.options.ssaa = k;
+    r.render(scene);
+    Renderer big(w * k, h * k);
+    big.render(scene);
+    const Image want = box(big.color_image(), k), got = r.color_image();
+    ASSERT_EQ(got.width, w);
+    ASSERT_GT(count_not(want, at(want, 0, 0)), size_t(w * h / 10)) << "frame " << frame;  // the scene is in view
+    std::vector<uint8_t> rgb(size_t(w) * h * 3);
+    r.read_color(rgb.data(), size_t(w) * 3, 3);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        ASSERT_EQ(at(got, x, y), at(want, x, y)) << "frame " << frame << " k=" << k << " at " << x << "," << y;
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(rgb[(size_t(y) * w + x) * 3 + c], want.pixel(x, y)[c]);
+      }
+    ++frame;
+  }
+}
+
 namespace velocity {
 // The super-sampling resolve adds two channels at a time (16-bit lanes): every pixel is
 // still the rounded mean of its k x k samples, channel by channel, for samples of every
@@ -347,6 +393,54 @@ TEST(Resolve, BoxFilterIsTheRoundedMeanOfEachChannel) {
           const uint32_t want = (sum + uint32_t(k * k / 2)) / uint32_t(k * k);
           ASSERT_EQ(out.pixels[(size_t(y) * w + x) * 4 + size_t(c)], want) << "k=" << k << " x=" << x << " c=" << c;
         }
+  }
+}
+
+// The frame's resolve, a tile at a time and then the seams, writes every output pixel
+// once, each the rounded mean of its samples per channel (k = 3 leaves pixels astride
+// tile edges: 64 is not a multiple of 3; 2 and 4 leave none).
+TEST(Resolve, TilesThenSeamsCoverEveryPixelOnce) {
+  for (auto [k, w, h] : {std::tuple{3, 101, 67}, std::tuple{3, 250, 150}, std::tuple{2, 77, 40}, std::tuple{4, 33, 17},
+                         std::tuple{3, 1, 1}}) {
+    Framebuffer fb;
+    fb.resize(w * k, h * k);
+    uint32_t state = 777u + uint32_t(k * w);
+    for (int y = 0; y < h * k; ++y)
+      for (int x = 0; x < w * k; ++x) {
+        state = state * 1664525u + 1013904223u;
+        fb.color[fb.index(x, y)] = state;
+      }
+    std::vector<uint32_t> out(size_t(w) * h, 0), writes(size_t(w) * h, 0);
+    // Pixels written twice would show up as changed sentinels: each pass writes into a
+    // fresh buffer and the counts add up.
+    auto pass = [&](auto&& resolve) {
+      std::vector<uint32_t> once(size_t(w) * h, 0x5a5a5a5au);
+      resolve(once.data());
+      std::vector<uint32_t> probe(size_t(w) * h, 0xa5a5a5a5u);
+      resolve(probe.data());
+      for (size_t i = 0; i < once.size(); ++i)
+        if (once[i] != 0x5a5a5a5au || probe[i] != 0xa5a5a5a5u) ++writes[i], out[i] = once[i];
+    };
+    for (int tile = 0; tile < fb.tiles_x * fb.tiles_y; ++tile)
+      pass([&](uint32_t* o) { resolve_tile_color(fb, k, tile, o, size_t(w)); });
+    const int seams = resolve_seam_count(fb, k);
+    if (k != 3) {
+      EXPECT_EQ(seams, 0);
+    } else if (w == 250) {
+      EXPECT_EQ(seams, 5 + 8);  // edges at 64 m, m not a multiple of 3
+    }
+    for (int line = 0; line < seams; ++line) pass([&](uint32_t* o) { resolve_seam(fb, k, line, o, size_t(w)); });
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        ASSERT_EQ(writes[size_t(y) * w + x], 1u) << "k=" << k << " " << w << "x" << h << " at " << x << "," << y;
+        for (int c = 0; c < 4; ++c) {
+          uint32_t sum = 0;
+          for (int sy = 0; sy < k; ++sy)
+            for (int sx = 0; sx < k; ++sx) sum += (fb.color[fb.index(x * k + sx, y * k + sy)] >> (8 * c)) & 0xff;
+          ASSERT_EQ((out[size_t(y) * w + x] >> (8 * c)) & 0xff, (sum + uint32_t(k * k / 2)) / uint32_t(k * k))
+              << "k=" << k << " at " << x << "," << y << " channel " << c;
+        }
+      }
   }
 }
 }  // namespace velocity
