@@ -1645,8 +1645,17 @@ void GpuBackend::present_window(int window_width, int window_height, const uint8
   glDisable(GL_CULL_FACE), glDisable(GL_FRAMEBUFFER_SRGB);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glViewport(0, 0, window_width, window_height);
+  // Black bars where the frame does not reach (a full-window clear costs as much as the
+  // blit on a software driver).
   glClearColor(0, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  const int bars[4][4] = {{0, 0, vx, window_height},
+                          {vx + vw, 0, window_width - vx - vw, window_height},
+                          {vx, 0, vw, gl_y},
+                          {vx, gl_y + vh, vw, window_height - gl_y - vh}};
+  for (const auto& b : bars)
+    if (b[2] > 0 && b[3] > 0) glScissor(b[0], b[1], b[2], b[3]), glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
   // The framebuffer object holds the image top row first (drawn upside down for
   // glReadPixels): the blit turns it over. (A sample buffer larger than a texture is
   // scaled down linearly instead of resolved.)
@@ -1654,7 +1663,21 @@ void GpuBackend::present_window(int window_width, int window_height, const uint8
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBlitFramebuffer(0, 0, source_w, source_h, vx, gl_y + vh, vx + vw, gl_y, GL_COLOR_BUFFER_BIT,
                     source == fbo_ && ssaa_ > 1 ? GL_LINEAR : GL_NEAREST);
+  // The 2D layer is mostly transparent (a status bar, a line of text): only the box
+  // of its visible texels is uploaded and blended.
+  int x0 = width_, y0 = height_, x1 = 0, y1 = 0;
   if (overlay) {
+    for (int y = 0; y < height_; ++y) {
+      const uint8_t* row = overlay + size_t(y) * size_t(width_) * 4;
+      int first = 0;
+      while (first < width_ && row[first * 4 + 3] == 0) ++first;
+      if (first == width_) continue;
+      int last = width_ - 1;
+      while (row[last * 4 + 3] == 0) --last;
+      x0 = std::min(x0, first), x1 = std::max(x1, last + 1), y0 = std::min(y0, y), y1 = y + 1;
+    }
+  }
+  if (x0 < x1) {
     Overlay& o = overlay_;
     if (!o.program) {
       o.program = build_overlay_program();
@@ -1663,26 +1686,34 @@ void GpuBackend::present_window(int window_width, int window_height, const uint8
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, o.texture);
     glBindSampler(0, 0);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     if (o.width != width_ || o.height != height_) {
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, overlay);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
       o.width = width_, o.height = height_;
-    } else {
-      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, overlay);
     }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, width_);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x1 - x0, y1 - y0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    overlay + (size_t(y0) * size_t(width_) + size_t(x0)) * 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     // Premultiplied "over": the layer's colour plus what is under it times 1 - its alpha.
+    // The scissor box covers the window pixels of the texel box (and a pixel more: the
+    // shader drops texels outside it, which hold older frames' layers).
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glViewport(vx, gl_y, vw, vh);
+    const int sx0 = vx + int(int64_t(x0) * vw / width_), sx1 = vx + int((int64_t(x1) * vw + width_ - 1) / width_);
+    const int sy0 = gl_y + vh - int((int64_t(y1) * vh + height_ - 1) / height_), sy1 = gl_y + vh - int(int64_t(y0) * vh / height_);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(sx0 - 1, sy0 - 1, sx1 - sx0 + 2, sy1 - sy0 + 2);
     glUseProgram(o.program);
     glUniform1i(glGetUniformLocation(o.program, "u_layer"), 0);
     glUniform4f(glGetUniformLocation(o.program, "u_viewport"), float(vx), float(gl_y), float(vw), float(vh));
+    glUniform4i(glGetUniformLocation(o.program, "u_box"), x0, y0, x1, y1);
     glBindVertexArray(o.vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
-    glDisable(GL_BLEND);
+    glDisable(GL_BLEND), glDisable(GL_SCISSOR_TEST);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);  // (begin_frame sets the rest of the draws' state)
   check_gl("presenting the frame in the window");
