@@ -34,7 +34,9 @@ class Screen:
 
     def __init__(self, work, name, size="1024x768", extra=()):
         self.fbdir = f"{work}/{name}"
-        self.server, display = start_xvfb(shutil.which("Xvfb"), self.fbdir, size, extra)
+        # -noreset: the server would otherwise reset when a program's last connection
+        # closes, and the next program's could come while it does ("x11 not available").
+        self.server, display = start_xvfb(shutil.which("Xvfb"), self.fbdir, size, ["-noreset", *extra])
         self.env = dict(os.environ, DISPLAY=":" + display, SDL_VIDEODRIVER="x11", SDL_AUDIODRIVER="dummy")
 
     def shot(self, w, h):
