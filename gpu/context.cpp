@@ -127,23 +127,41 @@ Context::Context(bool hardware_only) {
     throw Error(where + ": no OpenGL 3.3 core context (" + e + "; the driver's version may be too old)");
   }
   make_current();
-  GLint major = 0, minor = 0;
+  try {
+    describe(where, hardware_only);
+  } catch (...) {
+    release();
+    eglDestroyContext(display_, context_);
+    throw;
+  }
+  release();
+}
+
+Context::Context(GlContextProvider& window, bool hardware_only) : window_(&window) {
+  make_current();
+  describe(window.name(), hardware_only);
+}
+
+void Context::describe(const std::string& where, bool hardware_only) {
+  GLint major = 0, minor = 0, profile = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major), glGetIntegerv(GL_MINOR_VERSION, &minor);
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string r = renderer ? renderer : "?";
   software_ = is_software_renderer(r);
   description_ = std::string("OpenGL ") + (version ? version : "?") + " on " + r + ", " + where;
-  release();
-  if (major * 10 + minor < 33 || (hardware_only && software_)) {
-    eglDestroyContext(display_, context_);
+  if (major * 10 + minor < 33 || (hardware_only && software_))
     throw Error(software_ && hardware_only ? "only a software OpenGL driver (" + r + "): the CPU pipeline is faster"
                                            : "OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
                                                  " is too old (3.3 core needed): " + description_);
-  }
+  // A compatibility context would draw too, but the shaders are written for core.
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  if (window_ && !(profile & GL_CONTEXT_CORE_PROFILE_BIT))
+    throw Error("the window's OpenGL context is not a core profile (3.3 core needed): " + description_);
 }
 
 Context::~Context() {
+  if (window_) return;  // the window's owner destroys it
   eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display_, context_);
   // (The display is never terminated: EGL has one per device for the whole process,
@@ -151,13 +169,22 @@ Context::~Context() {
 }
 
 void Context::make_current() const {
+  if (window_) {
+    std::string error;
+    if (!window_->is_current() && !window_->make_current(error))
+      throw Error("the window's OpenGL context could not be made current (" + error + ")");
+    return;
+  }
   if (eglGetCurrentContext() == context_) return;
   if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
     throw Error("the GPU backend's OpenGL context could not be made current (" + egl_error() +
                 "; is the renderer used from two threads at once?)");
 }
 
-void Context::release() const { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
+void Context::release() const {
+  if (window_) return;
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
 
 void Context::check_lost(const char* where) const {
   if (!robust_ || !epoxy_has_gl_extension("GL_ARB_robustness")) return;

@@ -7,14 +7,15 @@
 #include "velocity/error.hpp"
 
 extern "C" __attribute__((visibility("default"))) velocity::Backend* velocity_gpu_make_backend(
-    unsigned long abi, int width, int height, int hardware_only, char* message, size_t message_size) {
+    unsigned long abi, int width, int height, int hardware_only, char* message, size_t message_size,
+    velocity::GlContextProvider* window) {
   auto say = [&](const std::string& s) { std::snprintf(message, message_size, "%s", s.c_str()); };
   if (abi != velocity::kGpuBackendAbi) {
     say("libvelocity-gpu was built from other headers than this program (a mismatched install)");
     return nullptr;
   }
   try {
-    auto* b = new velocity::gpu::GpuBackend(width, height, hardware_only != 0);
+    auto* b = new velocity::gpu::GpuBackend(width, height, hardware_only != 0, window);
     say(b->description());
     return b;
   } catch (const std::exception& e) {

@@ -217,7 +217,8 @@ struct GpuBackend::TextureEntry {
   GLuint texture = 0;
 };
 
-GpuBackend::GpuBackend(int width, int height, bool hardware_only) : context_(std::make_unique<Context>(hardware_only)) {
+GpuBackend::GpuBackend(int width, int height, bool hardware_only, GlContextProvider* window)
+    : context_(window ? std::make_unique<Context>(*window, hardware_only) : std::make_unique<Context>(hardware_only)) {
   Current current(*context_);
   glGenFramebuffers(1, &fbo_);
   glGenRenderbuffers(3, renderbuffers_);
@@ -293,6 +294,8 @@ GpuBackend::~GpuBackend() {
       glDeleteProgram(resolve_.program), glDeleteVertexArrays(1, &resolve_.vao), glDeleteTextures(1, &resolve_.samples);
       glDeleteRenderbuffers(1, &resolve_.output), glDeleteFramebuffers(2, resolve_.framebuffers);
     }
+    if (overlay_.program)
+      glDeleteProgram(overlay_.program), glDeleteVertexArrays(1, &overlay_.vao), glDeleteTextures(1, &overlay_.texture);
     glDeleteBuffers(1, &order_buffer_), glDeleteTextures(1, &order_texture_), glDeleteBuffers(1, &painter_indices_);
     for (auto& [key, s] : batch_samplers_) glDeleteSamplers(1, &s);
     for (GLuint p : batch_programs_)
@@ -1531,17 +1534,11 @@ void GpuBackend::read_window_depth(float* out) const {
   velocity::read_window_depth(samples_, ssaa_, &pool(), out);
 }
 
-// With super-sampling, RGBA rows are resolved on the GPU (build_resolve_program: the
-// CPU's integer box filter) and only the w x h output crosses the bus, not k x k times
-// as many samples. False when the colour was already fetched, as direct_read.
-bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
-  std::lock_guard<std::mutex> lock(fetch_mutex_);
+// The super-sampling resolve (build_resolve_program: the CPU's integer box filter) into
+// resolve_'s w x h output; returns that output's framebuffer. The context is current
+// and the sample buffer fits a texture.
+GLuint GpuBackend::resolve_pass() const {
   const int sw = width_ * ssaa_, sh = height_ * ssaa_;
-  // (A sample buffer larger than a texture may be: the samples are read, as fetch does.)
-  if (!(pending_ & kColor) || sw > max_texture_ || sh > max_texture_) return false;
-  const auto t0 = std::chrono::steady_clock::now();
-  Current current(*context_);
-  GpuTimer gpu_time(read_query_, gpu_reads_ms_);
   Resolve& r = resolve_;
   if (!r.program) {
     r.program = build_resolve_program();
@@ -1582,6 +1579,21 @@ bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
   glBindVertexArray(r.vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+  return r.framebuffers[1];
+}
+
+// With super-sampling, RGBA rows are resolved on the GPU (build_resolve_program: the
+// CPU's integer box filter) and only the w x h output crosses the bus, not k x k times
+// as many samples. False when the colour was already fetched, as direct_read.
+bool GpuBackend::resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const {
+  std::lock_guard<std::mutex> lock(fetch_mutex_);
+  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
+  // (A sample buffer larger than a texture may be: the samples are read, as fetch does.)
+  if (!(pending_ & kColor) || sw > max_texture_ || sh > max_texture_) return false;
+  const auto t0 = std::chrono::steady_clock::now();
+  Current current(*context_);
+  GpuTimer gpu_time(read_query_, gpu_reads_ms_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_pass());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glPixelStorei(GL_PACK_ROW_LENGTH, GLint(row_bytes / 4));
@@ -1611,6 +1623,107 @@ bool GpuBackend::direct_read(uint8_t* rgba, size_t row_bytes) const {
   check_gl("reading the GPU frame back");
   reads_ms_ += ms_since(t0);
   return true;
+}
+
+// The windowed path (docs/gpu.md, "In a window"): the frame's colour goes from the
+// framebuffer object to the window's back buffer on the GPU (a blit, resolved first
+// with super-sampling), never through the CPU; the 2D layer is one texture upload.
+void GpuBackend::present_window(int window_width, int window_height, const uint8_t* overlay) {
+  if (!context_->windowed()) Backend::present_window(window_width, window_height, overlay);
+  Current current(*context_);
+  // Where the frame goes: scaled to fit, aspect kept, centred (SDL_RenderSetLogicalSize's rule).
+  int vx = 0, vy = 0, vw = window_width, vh = window_height;
+  if (int64_t(width_) * window_height > int64_t(height_) * window_width) {  // wider than the window: bars above and below
+    vh = std::max(1, int(int64_t(height_) * window_width / width_));
+    vy = (window_height - vh) / 2;
+  } else {
+    vw = std::max(1, int(int64_t(width_) * window_height / height_));
+    vx = (window_width - vw) / 2;
+  }
+  const int gl_y = window_height - vy - vh;  // GL counts rows from the bottom
+  const int sw = width_ * ssaa_, sh = height_ * ssaa_;
+  GLuint source = fbo_;
+  int source_w = sw, source_h = sh;
+  if (ssaa_ > 1 && sw <= max_texture_ && sh <= max_texture_) source = resolve_pass(), source_w = width_, source_h = height_;
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glDrawBuffer(GL_BACK);
+  glDisable(GL_SCISSOR_TEST), glDisable(GL_DEPTH_TEST), glDisable(GL_STENCIL_TEST), glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE), glDisable(GL_FRAMEBUFFER_SRGB);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glViewport(0, 0, window_width, window_height);
+  // Black bars where the frame does not reach (a full-window clear costs as much as the
+  // blit on a software driver).
+  glClearColor(0, 0, 0, 1);
+  glEnable(GL_SCISSOR_TEST);
+  const int bars[4][4] = {{0, 0, vx, window_height},
+                          {vx + vw, 0, window_width - vx - vw, window_height},
+                          {vx, 0, vw, gl_y},
+                          {vx, gl_y + vh, vw, window_height - gl_y - vh}};
+  for (const auto& b : bars)
+    if (b[2] > 0 && b[3] > 0) glScissor(b[0], b[1], b[2], b[3]), glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  // The framebuffer object holds the image top row first (drawn upside down for
+  // glReadPixels): the blit turns it over. (A sample buffer larger than a texture is
+  // scaled down linearly instead of resolved.)
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBlitFramebuffer(0, 0, source_w, source_h, vx, gl_y + vh, vx + vw, gl_y, GL_COLOR_BUFFER_BIT,
+                    source == fbo_ && ssaa_ > 1 ? GL_LINEAR : GL_NEAREST);
+  // The 2D layer is mostly transparent (a status bar, a line of text): only the box
+  // of its visible texels is uploaded and blended.
+  int x0 = width_, y0 = height_, x1 = 0, y1 = 0;
+  if (overlay) {
+    for (int y = 0; y < height_; ++y) {
+      const uint8_t* row = overlay + size_t(y) * size_t(width_) * 4;
+      int first = 0;
+      while (first < width_ && row[first * 4 + 3] == 0) ++first;
+      if (first == width_) continue;
+      int last = width_ - 1;
+      while (row[last * 4 + 3] == 0) --last;
+      x0 = std::min(x0, first), x1 = std::max(x1, last + 1), y0 = std::min(y0, y), y1 = y + 1;
+    }
+  }
+  if (x0 < x1) {
+    Overlay& o = overlay_;
+    if (!o.program) {
+      o.program = build_overlay_program();
+      glGenVertexArrays(1, &o.vao), glGenTextures(1, &o.texture);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, o.texture);
+    glBindSampler(0, 0);
+    if (o.width != width_ || o.height != height_) {
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+      o.width = width_, o.height = height_;
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, width_);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x1 - x0, y1 - y0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    overlay + (size_t(y0) * size_t(width_) + size_t(x0)) * 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    // Premultiplied "over": the layer's colour plus what is under it times 1 - its alpha.
+    // The scissor box covers the window pixels of the texel box (and a pixel more: the
+    // shader drops texels outside it, which hold older frames' layers).
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glViewport(vx, gl_y, vw, vh);
+    const int sx0 = vx + int(int64_t(x0) * vw / width_), sx1 = vx + int((int64_t(x1) * vw + width_ - 1) / width_);
+    const int sy0 = gl_y + vh - int((int64_t(y1) * vh + height_ - 1) / height_), sy1 = gl_y + vh - int(int64_t(y0) * vh / height_);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(sx0 - 1, sy0 - 1, sx1 - sx0 + 2, sy1 - sy0 + 2);
+    glUseProgram(o.program);
+    glUniform1i(glGetUniformLocation(o.program, "u_layer"), 0);
+    glUniform4f(glGetUniformLocation(o.program, "u_viewport"), float(vx), float(gl_y), float(vw), float(vh));
+    glUniform4i(glGetUniformLocation(o.program, "u_box"), x0, y0, x1, y1);
+    glBindVertexArray(o.vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_BLEND), glDisable(GL_SCISSOR_TEST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);  // (begin_frame sets the rest of the draws' state)
+  check_gl("presenting the frame in the window");
+  context_->check_lost("presenting the frame in the window");
 }
 
 void GpuBackend::read_stencil(uint8_t* out) const {

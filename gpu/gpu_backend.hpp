@@ -1,4 +1,5 @@
-// The GPU backend: velocity::Backend on OpenGL 3.3 core through EGL (gpu_backend.cpp).
+// The GPU backend: velocity::Backend on OpenGL 3.3 core through EGL, or in a window's
+// context (GlContextProvider), presenting there (gpu_backend.cpp).
 #pragma once
 
 #include <epoxy/gl.h>
@@ -28,8 +29,9 @@ class Context;
 
 class GpuBackend final : public Backend {
  public:
-  // Throws velocity::Error (Context's) when no OpenGL 3.3 context can be made.
-  GpuBackend(int width, int height, bool hardware_only);
+  // Throws velocity::Error (Context's) when no OpenGL 3.3 context can be made. With
+  // `window`, draws with that context instead of an EGL one of its own.
+  GpuBackend(int width, int height, bool hardware_only, GlContextProvider* window = nullptr);
   ~GpuBackend() override;
 
   // What drew: the GL version and renderer, and the EGL device or platform.
@@ -54,6 +56,7 @@ class GpuBackend final : public Backend {
   void read_stencil(uint8_t* out) const override;
   std::vector<uint32_t> object_ids() const override;
   size_t framebuffer_bytes() const override;
+  void present_window(int window_width, int window_height, const uint8_t* overlay) override;
 
   // Uploads so far (meshes and textures): a cached one is not uploaded again.
   size_t uploads() const { return uploads_; }
@@ -103,6 +106,7 @@ class GpuBackend final : public Backend {
   void fetch(unsigned what) const;
   bool direct_read(uint8_t* rgba, size_t row_bytes) const;
   bool resolve_on_gpu(uint8_t* rgba, size_t row_bytes) const;
+  GLuint resolve_pass() const;
   void upload_lights(GLuint program);
   void draw_mesh(const Mesh& mesh, MeshEntry& m, const Mat4& world, const Material* override, uint32_t object_id,
                  const std::vector<std::pair<uint32_t, uint32_t>>* runs);
@@ -189,6 +193,12 @@ class GpuBackend final : public Backend {
     int width = 0, height = 0, ssaa = 0;
   };
   mutable Resolve resolve_;
+  // present_window: the 2D layer's texture and the program that blends it on.
+  struct Overlay {
+    GLuint program = 0, vao = 0, texture = 0;
+    int width = 0, height = 0;
+  };
+  Overlay overlay_;
   mutable Framebuffer samples_;
   mutable std::vector<uint32_t> rows_;
   mutable std::vector<float> depth_rows_;

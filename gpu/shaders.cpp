@@ -998,6 +998,29 @@ void main() {
   return build_program(std::string(kVersion) + vs, "", std::string(kVersion) + fs);
 }
 
+GLuint build_overlay_program() {
+  const char* vs = R"(
+void main() {
+  vec2 p = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+  const char* fs = R"(
+uniform sampler2D u_layer;
+uniform vec4 u_viewport;
+uniform ivec4 u_box;  // this frame's texels: [x0, x1) x [y0, y1), top row 0
+layout(location = 0) out vec4 o_color;
+void main() {
+  ivec2 size = textureSize(u_layer, 0);
+  vec2 f = (gl_FragCoord.xy - u_viewport.xy) / u_viewport.zw;  // 0..1 from the bottom left
+  ivec2 at = clamp(ivec2(floor(vec2(f.x, 1.0 - f.y) * vec2(size))), ivec2(0), size - 1);
+  if (any(lessThan(at, u_box.xy)) || any(greaterThanEqual(at, u_box.zw))) discard;
+  o_color = texelFetch(u_layer, at, 0);
+}
+)";
+  return build_program(std::string(kVersion) + vs, "", std::string(kVersion) + fs);
+}
+
 GLuint build_lighting_test_program() {
   const std::string vs = std::string(kVersion) + kLightingGlsl + R"(
 layout(location = 0) in vec3 a_position;

@@ -54,6 +54,11 @@ GLuint build_batch_program(bool lines);
 // The super-sampling resolve pass: u_samples (the k x k sample image), u_k.
 GLuint build_resolve_program();
 
+// The windowed path's 2D layer: u_layer (premultiplied RGBA, top row first) over the
+// viewport u_viewport (x, y, width, height in window pixels), nearest texel per pixel;
+// only the texels in u_box (x0, y0, x1, y1: this frame's upload).
+GLuint build_overlay_program();
+
 // For the test: a vertex shader that lights `a_normal` at `a_position` with kLightingGlsl
 // into transform-feedback outputs `o_diffuse` and `o_specular`.
 GLuint build_lighting_test_program();

@@ -95,7 +95,7 @@ std::unique_ptr<Backend> make_backend(BackendChoice choice, int width, int heigh
   std::string error;
   if (GpuBackendEntry entry = load_entry(error)) {
     char message[512] = {};
-    Backend* gpu = entry(kGpuBackendAbi, width, height, automatic ? 1 : 0, message, sizeof message);
+    Backend* gpu = entry(kGpuBackendAbi, width, height, automatic ? 1 : 0, message, sizeof message, nullptr);
     if (gpu) {
       drawn_by = BackendChoice::Gpu;
       reason = std::string(automatic ? "auto: " : "asked for: ") + message;
@@ -107,6 +107,22 @@ std::unique_ptr<Backend> make_backend(BackendChoice choice, int width, int heigh
   drawn_by = BackendChoice::Cpu;
   reason = "auto: " + error;
   return make_cpu_backend(width, height);
+}
+
+std::unique_ptr<Backend> make_backend_on(GlContextProvider& window, int width, int height, bool hardware_only,
+                                         std::string& reason) {
+  std::string error;
+  GpuBackendEntry entry = load_entry(error);
+  if (!entry) throw Error("the GPU backend is not available: " + error);
+  char message[512] = {};
+  Backend* gpu = entry(kGpuBackendAbi, width, height, hardware_only ? 1 : 0, message, sizeof message, &window);
+  if (!gpu) throw Error("the GPU backend cannot draw in the window: " + std::string(message));
+  reason = std::string(hardware_only ? "auto: " : "asked for: ") + message;
+  return std::unique_ptr<Backend>(gpu);
+}
+
+void Backend::present_window(int, int, const uint8_t*) {
+  throw Error("present_window: this renderer was not made on a window's OpenGL context");
 }
 
 }  // namespace velocity

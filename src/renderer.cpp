@@ -55,6 +55,12 @@ Renderer::Renderer(int width, int height, BackendChoice backend) : reason_(std::
   backend_ = make_backend(backend, width, height, drawn_by_, *reason_);
   stats_.backend = to_string(drawn_by_), stats_.backend_reason = reason_->c_str();
 }
+Renderer::Renderer(int width, int height, GlContextProvider& window, bool hardware_only)
+    : reason_(std::make_unique<std::string>()) {
+  backend_ = make_backend_on(window, width, height, hardware_only, *reason_);
+  drawn_by_ = BackendChoice::Gpu;
+  stats_.backend = to_string(drawn_by_), stats_.backend_reason = reason_->c_str();
+}
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
@@ -140,6 +146,12 @@ const FrameStats& Renderer::render(const Scene& scene) {
     draw(*o.mesh, world_[i], o.material ? &*o.material : nullptr, uint32_t(i + 1));
   }
   return end_frame();
+}
+
+void Renderer::present_window(int window_width, int window_height, const uint8_t* overlay) {
+  if (in_frame_) throw Error("Renderer::present_window called inside a frame");
+  if (window_width < 1 || window_height < 1) return;  // a minimised window: nothing to show
+  backend_->present_window(window_width, window_height, overlay);
 }
 
 Image Renderer::color_image() const { return backend_->color_image(); }

@@ -25,6 +25,23 @@
 
 namespace velocity {
 
+// An OpenGL context that someone else made and owns: a window's (the real-time
+// presenter's SDL GL context, present/sdl/presenter.cpp). A GPU backend made on one
+// (make_backend_on) draws with it instead of an EGL context of its own, and shows its
+// frames in the context's default framebuffer (Backend::present_window). GL entry
+// points still come from libepoxy, which resolves them through whichever context is
+// current (GLX or EGL): the provider only binds the context. It is used from the
+// thread that made it, and outlives the backend.
+class GlContextProvider {
+ public:
+  virtual ~GlContextProvider() = default;
+  // Binds the context to the calling thread; false with why in `error` when it cannot.
+  virtual bool make_current(std::string& error) = 0;
+  virtual bool is_current() const = 0;
+  // What it is, for FrameStats::backend_reason, e.g. "SDL GL context (x11)".
+  virtual std::string name() const = 0;
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -63,6 +80,13 @@ class Backend {
   virtual void read_stencil(uint8_t* out) const = 0;
   virtual std::vector<uint32_t> object_ids() const = 0;
   virtual size_t framebuffer_bytes() const = 0;
+
+  // A backend made on a window's GL context (make_backend_on): draws the last frame
+  // into the context's default framebuffer (window_width x window_height pixels), scaled
+  // to fit with its aspect ratio kept (nearest pixels, black bars), and over it
+  // `overlay` when not null: premultiplied RGBA8 at the frame's size, top row first
+  // (the 2D layer). The caller swaps buffers. Others throw velocity::Error.
+  virtual void present_window(int window_width, int window_height, const uint8_t* overlay);
 };
 
 // The CPU pipeline (src/frame.cpp) at width x height; throws as Renderer's constructor.
@@ -76,14 +100,22 @@ std::unique_ptr<Backend> make_cpu_backend(int width, int height);
 std::unique_ptr<Backend> make_backend(BackendChoice choice, int width, int height, BackendChoice& drawn_by,
                                       std::string& reason);
 
+// The GPU backend on a window's OpenGL 3.3 core context (`window`; see GlContextProvider),
+// for Renderer's windowed constructor. `reason` says what drew. Throws velocity::Error
+// naming what was missing (the library, OpenGL 3.3 core in that context), or, with
+// `hardware_only`, when the context is a software driver's.
+std::unique_ptr<Backend> make_backend_on(GlContextProvider& window, int width, int height, bool hardware_only,
+                                         std::string& reason);
+
 // The entry point libvelocity-gpu exports (extern "C", looked up by name): a new GPU
 // backend, or null with a one-line reason in `message`. `hardware_only` (Auto) refuses a
-// software driver. `abi` must be kGpuBackendAbi: the library and the core library it is
+// software driver. `window`, when not null, is the context to draw with instead of an EGL
+// one of its own (make_backend_on). `abi` must be kGpuBackendAbi: the library and the core library it is
 // loaded into were built from the same headers.
 inline constexpr unsigned long kGpuBackendAbi =
     20261127ul * 7 + sizeof(RenderOptions) * 131 + sizeof(PixelState) * 17 + sizeof(FrameStats) + sizeof(Material) * 3;
 using GpuBackendEntry = Backend* (*)(unsigned long abi, int width, int height, int hardware_only, char* message,
-                                     size_t message_size);
+                                     size_t message_size, GlContextProvider* window);
 inline constexpr const char* kGpuBackendEntry = "velocity_gpu_make_backend";
 
 }  // namespace velocity

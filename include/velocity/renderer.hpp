@@ -30,6 +30,7 @@
 namespace velocity {
 
 class Backend;
+class GlContextProvider;
 
 // What draws a Renderer's frames (docs/gpu.md).
 enum class BackendChoice {
@@ -152,6 +153,11 @@ class Renderer {
   // Throws velocity::Error unless 1 <= width, height <= 16384, or when `backend` is Gpu
   // and no OpenGL 3.3 context can be made (the message names what was missing).
   Renderer(int width, int height, BackendChoice backend = BackendChoice::Cpu);
+  // The GPU backend drawing with a window's OpenGL 3.3 core context (velocity/backend.hpp's
+  // GlContextProvider, e.g. the real-time presenter's SDL one) instead of an EGL context
+  // of its own; present_window() shows its frames there. `hardware_only` refuses a
+  // software driver (as Auto does). Throws velocity::Error naming what was missing.
+  Renderer(int width, int height, GlContextProvider& window, bool hardware_only = false);
   ~Renderer();
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
@@ -229,6 +235,12 @@ class Renderer {
   void read_normals(float* out) const;
   // Bytes held by the sample buffers (colour and depth) at the current size and ssaa.
   size_t framebuffer_bytes() const;
+  // A renderer made on a window's context: draws the last frame into the window's
+  // default framebuffer (window_width x window_height), scaled to fit keeping its aspect
+  // ratio, with `overlay` (premultiplied RGBA8 at the frame's size, top row first; may
+  // be null) blended over it; nothing is read back. The caller swaps buffers. Throws
+  // velocity::Error on any other renderer.
+  void present_window(int window_width, int window_height, const uint8_t* overlay = nullptr);
 
  private:
   // What draws (velocity/backend.hpp): the CPU pipeline or the GPU's.

@@ -18,7 +18,7 @@ void fill_rect(Canvas& c, int x, int y, int w, int h, Rgba color) {
       p[0] = uint8_t((color.r * a + p[0] * ia + 127) / 255);
       p[1] = uint8_t((color.g * a + p[1] * ia + 127) / 255);
       p[2] = uint8_t((color.b * a + p[2] * ia + 127) / 255);
-      p[3] = 255;
+      p[3] = c.layer ? uint8_t((255 * a + p[3] * ia + 127) / 255) : 255;
     }
   }
 }
@@ -33,6 +33,8 @@ void fade(Canvas& c, float amount) {
       p[i] = uint8_t((p[i] * keep) >> 8);
       p[i + 1] = uint8_t((p[i + 1] * keep) >> 8);
       p[i + 2] = uint8_t((p[i + 2] * keep) >> 8);
+      // A layer: black at 1 - keep over what it holds, so the frame under it darkens too.
+      if (c.layer) p[i + 3] = uint8_t(255 - (((255 - p[i + 3]) * keep) >> 8));
     }
   }
 }

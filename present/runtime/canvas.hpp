@@ -21,6 +21,11 @@ struct Canvas {
   uint8_t* pixels = nullptr;
   int width = 0, height = 0;
   size_t stride = 0;
+  // A layer to be blended over a frame later (the GPU's windowed path): starts
+  // transparent (all zero), holds premultiplied colour, and its alpha records how much
+  // of what lies under it shows through (255 - alpha of 255), so that composing it with
+  // "one, one minus source alpha" gives what drawing on the frame itself gives.
+  bool layer = false;
 };
 
 // Blends `color` (its alpha) over the rectangle [x, x + w) x [y, y + h), clipped.

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <future>
+#include <optional>
 #include <thread>
 
 #include "runtime/synth.hpp"
@@ -51,15 +52,31 @@ struct Rendered {
   Image clean;  // the screenshot without the 2D layer, when it asks for that
 };
 
+// The 2D layer: the program's overlay, then the frame-rate line.
+void draw_2d(Canvas& canvas, const DrawList& overlay, const std::string& stats_text) {
+  overlay.draw(canvas);
+  if (!stats_text.empty()) {
+    int scale = std::max(1, canvas.height / 300);
+    int w = text_width(stats_text, scale) + 6 * scale, h = stats_band_height(canvas.height);
+    fill_rect(canvas, 0, 0, w, h, {0, 0, 0, 150});
+    draw_text(canvas, 3 * scale, 3 * scale + scale, stats_text, {255, 255, 120, 255}, scale);
+  }
+}
+
+// Takes the frame's size and options (the thread count stays the renderer's own).
+void prepare(Renderer& renderer, const RenderJob& job) {
+  if (renderer.width() != job.width || renderer.height() != job.height) renderer.resize(job.width, job.height);
+  int threads = renderer.options.threads;
+  renderer.options = job.frame.options;
+  renderer.options.threads = threads;
+}
+
 Rendered render_job(Renderer& renderer, RenderJob job) {
   auto start = Clock::now();
   Rendered out;
   out.image = Image(job.width, job.height, 0xff000000u);
   FrameDescription& f = job.frame;
-  if (renderer.width() != job.width || renderer.height() != job.height) renderer.resize(job.width, job.height);
-  int threads = renderer.options.threads;
-  renderer.options = f.options;
-  renderer.options.threads = threads;
+  prepare(renderer, job);
   if (f.draw_scene) {
     renderer.render(f.scene);
     renderer.read_color(out.image.pixels.data(), size_t(job.width) * 4, 4);
@@ -70,12 +87,40 @@ Rendered render_job(Renderer& renderer, RenderJob job) {
   }
   if (!f.screenshot.empty() && !f.screenshot_overlay) out.clean = out.image;
   Canvas canvas{out.image.pixels.data(), job.width, job.height, size_t(job.width) * 4};
-  f.overlay.draw(canvas);
-  if (!job.stats_text.empty()) {
-    int scale = std::max(1, job.height / 300);
-    int w = text_width(job.stats_text, scale) + 6 * scale, h = stats_band_height(job.height);
-    fill_rect(canvas, 0, 0, w, h, {0, 0, 0, 150});
-    draw_text(canvas, 3 * scale, 3 * scale + scale, job.stats_text, {255, 255, 120, 255}, scale);
+  draw_2d(canvas, f.overlay, job.stats_text);
+  out.screenshot = std::move(f.screenshot);
+  out.ms = ms_since(start);
+  return out;
+}
+
+// The windowed GPU path: the frame stays on the GPU and the 2D layer is drawn apart,
+// into `layer` (premultiplied: Canvas::layer), for Renderer::present_window to blend
+// over it. Colour is read back only for a recording or a screenshot (`read_back`).
+// `layer_used` says whether the layer has anything in it.
+Rendered render_windowed(Renderer& renderer, RenderJob job, bool read_back, Image& layer, bool& layer_used) {
+  auto start = Clock::now();
+  Rendered out;
+  FrameDescription& f = job.frame;
+  prepare(renderer, job);
+  if (f.draw_scene) {
+    renderer.render(f.scene);
+  } else {  // the background alone: a frame with nothing drawn
+    renderer.begin_frame(f.scene.camera, {}, f.scene.background);
+    renderer.end_frame();
+  }
+  if (read_back) {
+    out.image = Image(job.width, job.height, 0xff000000u);
+    renderer.read_color(out.image.pixels.data(), size_t(job.width) * 4, 4);
+    if (!f.screenshot.empty() && !f.screenshot_overlay) out.clean = out.image;
+    Canvas canvas{out.image.pixels.data(), job.width, job.height, size_t(job.width) * 4};
+    draw_2d(canvas, f.overlay, job.stats_text);
+  }
+  layer_used = !f.overlay.ops().empty() || !job.stats_text.empty();
+  if (layer_used) {
+    if (layer.width != job.width || layer.height != job.height) layer = Image(job.width, job.height, 0);
+    else std::fill(layer.pixels.begin(), layer.pixels.end(), uint8_t(0));
+    Canvas canvas{layer.pixels.data(), job.width, job.height, size_t(job.width) * 4, true};
+    draw_2d(canvas, f.overlay, job.stats_text);
   }
   out.screenshot = std::move(f.screenshot);
   out.ms = ms_since(start);
@@ -132,15 +177,44 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   int mode = -1;  // index into kScreenModes once F2 is pressed; 4 = the window's size
   int asked_mode = -1;  // the last mode the program asked for
 
-  Renderer renderer(std::max(width, 1), std::max(height, 1), o.backend);
+  // The renderer, in the window's GL context when the presenter has one and the GPU
+  // draws (docs/gpu.md, "In a window"); otherwise offscreen, its frames read back.
+  LoopResult result;
+  GlContextProvider* gl = presenter && o.backend != BackendChoice::Cpu ? presenter->gl_context() : nullptr;
+  std::optional<Renderer> made;
+  if (gl) {
+    try {
+      made.emplace(std::max(width, 1), std::max(height, 1), *gl, o.backend == BackendChoice::Auto);
+    } catch (const Error& e) {
+      presenter->drop_gl_context(e.what());
+      gl = nullptr;
+    }
+  }
+  if (presenter && !gl && presenter->gl_context()) presenter->drop_gl_context("the CPU backend draws");
+  // Offscreen, the renderer is made (and later destroyed) on a thread of its own, as
+  // its frames are drawn on the render thread: an EGL context cannot be bound on a
+  // thread where SDL's renderer holds a GLX context (libglvnd: EGL_BAD_ACCESS).
+  if (!made) made.emplace(std::async(std::launch::async, [&] {
+                      return Renderer(std::max(width, 1), std::max(height, 1), o.backend);
+                    }).get());
+  Renderer& renderer = *made;
+  const bool windowed = gl != nullptr;
+  if (windowed) {
+    result.present_path = "gpu, windowed (SDL GL context)";
+  } else if (std::string(renderer.stats().backend) == "gpu") {
+    const std::string why = !presenter ? "no window" : presenter->gl_missing();
+    result.present_path = "gpu, offscreen EGL + read-back" + (why.empty() ? std::string() : " (" + why + ")");
+  } else {
+    result.present_path = "cpu";
+  }
   renderer.options.threads = o.threads;
   if (o.backend != BackendChoice::Cpu && !o.quiet) {
-    std::printf("backend=%s (%s)\n", renderer.stats().backend, renderer.stats().backend_reason);
+    std::printf("backend=%s (%s)\npresent=%s\n", renderer.stats().backend, renderer.stats().backend_reason,
+                result.present_path.c_str());
     std::fflush(stdout);
   }
   InputState input;
   std::vector<InputEvent> events;
-  LoopResult result;
   std::future<Rendered> pending;
   long recorded = 0;
   double sim_time = 0;
@@ -148,11 +222,22 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   auto last = start;
   std::string title;
   Image last_image;  // what the window shows, for lingering
+  Image layer;       // windowed: the last frame's 2D layer
+  bool layer_used = false;
 
-  // Shows (and records) a finished frame.
+  // Windowed: the last frame (still in the GPU's framebuffer) and its 2D layer into the
+  // window's back buffer, then shown.
+  auto present_windowed = [&] {
+    auto [ww, wh] = presenter->window_size();
+    renderer.present_window(ww, wh, layer_used ? layer.pixels.data() : nullptr);
+    presenter->take_exposed();
+    presenter->swap();
+  };
+
+  // Shows (and records) a finished frame; a windowed one is already in the window.
   auto show = [&](Rendered r) {
     result.render_ms.push_back(r.ms);
-    if (presenter) presenter->present(r.image.pixels.data(), r.image.width, r.image.height);
+    if (presenter && !windowed) presenter->present(r.image.pixels.data(), r.image.width, r.image.height);
     if (!o.record_dir.empty()) {
       char name[64];
       std::snprintf(name, sizeof name, "/frame_%05ld.png", recorded);
@@ -225,6 +310,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     if (presenter && program.title() != title) presenter->set_title(title = program.title());
     if (may_idle && n > 0 && events.empty() && !program.changed()) {
       if (pending.valid()) show(pending.get());  // the last frame drawn goes up first
+      if (windowed && presenter->take_exposed()) present_windowed();
       drew_last = false;
       std::this_thread::sleep_for(std::chrono::milliseconds(8));
       continue;
@@ -242,6 +328,24 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
       std::snprintf(buf, sizeof buf, "%.0f FPS  %.1f MS  RENDER %.1f MS  %dX%d", med > 0 ? 1000.0 / med : 0.0, med,
                     result.render_ms.empty() ? 0.0 : result.render_ms.back(), width, height);
       job.stats_text = buf;
+    }
+
+    if (windowed) {
+      // The window's GL context is this thread's (SDL made it here): the frame is drawn
+      // and presented here, one after the other. The GPU works on its own meanwhile.
+      const bool read_back = !o.record_dir.empty() || !job.frame.screenshot.empty();
+      auto t = Clock::now();
+      Rendered r = render_windowed(renderer, std::move(job), read_back, layer, layer_used);
+      present_windowed();
+      r.ms = ms_since(t);
+      show(std::move(r));
+      ++result.frames;
+      if (o.end_with_script && script && script->finished()) quit = true;
+      if (fixed && o.pace_to_clock) {
+        auto due = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(sim_time));
+        std::this_thread::sleep_until(due);
+      }
+      continue;
     }
 
     // Render frame n on the render thread while frame n - 1 is presented here.
@@ -272,7 +376,9 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
             return e.kind == InputEvent::Quit || (e.kind == InputEvent::KeyDown && e.key == KeyEscape);
           }))
         break;
-      if (last_image.width > 0) presenter->present(last_image.pixels.data(), last_image.width, last_image.height);
+      if (windowed && presenter->take_exposed()) present_windowed();
+      if (!windowed && last_image.width > 0)
+        presenter->present(last_image.pixels.data(), last_image.width, last_image.height);
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }
@@ -280,6 +386,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
     std::printf("%s\n", summarize(result).c_str());
     std::fflush(stdout);
   }
+  if (!windowed) std::async(std::launch::async, [&] { made.reset(); }).get();  // (where it was made)
   return result;
 }
 

@@ -13,8 +13,9 @@
 #include <vector>
 
 #include "runtime/program.hpp"
-#include "velocity/renderer.hpp"
 #include "runtime/script.hpp"
+#include "velocity/backend.hpp"
+#include "velocity/renderer.hpp"
 
 namespace velocity::realtime {
 
@@ -32,6 +33,21 @@ class Presenter {
   virtual std::pair<int, int> window_size() const = 0;
   // The first game controller's sticks and triggers (none: connected = false).
   virtual GamepadState gamepad() const { return {}; }
+
+  // The windowed GPU path (docs/gpu.md, "In a window"). The window's OpenGL context,
+  // when it was made with one, for the GPU backend to draw in; null otherwise. While it
+  // is in use, frames are drawn into its back buffer and shown by swap(), not present().
+  virtual GlContextProvider* gl_context() { return nullptr; }
+  // Why the window has no GL context although one was asked for ("" otherwise).
+  virtual std::string gl_missing() const { return ""; }
+  // Gives the GL context up (the GPU backend cannot draw in it: `why`); frames come
+  // through present() from then on.
+  virtual void drop_gl_context(const std::string& why) { (void)why; }
+  // Shows the GL context's back buffer (waits for vertical sync when asked for).
+  virtual void swap() {}
+  // Whether the window was uncovered since the last call: the GL path shows its last
+  // frame again (present() does that by itself).
+  virtual bool take_exposed() { return false; }
 };
 
 // The seed's screen modes (F2 cycles them, then "the window's own size").
@@ -52,7 +68,9 @@ struct LoopOptions {
   bool overlay = true;         // frame rate and frame time in the corner (F3 toggles)
   double linger = 0;           // after the last frame keep the window up this long (s)
   int threads = 0;             // rasterizer threads (0: every core)
-  // What draws (docs/gpu.md): the GPU backend renders offscreen and the frame is read
+  // What draws (docs/gpu.md): with gpu (or auto choosing it) and a presenter that has a
+  // GL context, the GPU backend draws in the window's context and the frame is never
+  // read back for display; otherwise it renders offscreen (EGL) and the frame is read
   // back and presented as the CPU's is.
   BackendChoice backend = BackendChoice::Cpu;
   Synth* synth = nullptr;      // where the program's sound goes, if anywhere
@@ -64,6 +82,9 @@ struct LoopResult {
   std::vector<double> frame_ms;   // wall time from one frame's start to the next
   std::vector<double> render_ms;  // the render thread's time per frame (3D + 2D + read-back)
   int width = 0, height = 0;
+  // Which path presented: "cpu", "gpu, windowed (SDL GL context)" or "gpu, offscreen
+  // EGL + read-back (why not windowed)".
+  std::string present_path;
 };
 
 inline constexpr double kFixedStep = 1.0 / 60.0;

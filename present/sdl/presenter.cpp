@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 #include "velocity/error.hpp"
 
@@ -46,9 +47,29 @@ bool is_invisible_driver(const char* name) {
 
 }  // namespace
 
+// The window's OpenGL context as the GPU backend binds it (velocity/backend.hpp).
+struct SdlGlContext final : GlContextProvider {
+  SDL_Window* window = nullptr;
+  SDL_GLContext context = nullptr;
+  bool make_current(std::string& error) override {
+    if (SDL_GL_MakeCurrent(window, context) == 0) return true;
+    error = SDL_GetError();
+    return false;
+  }
+  bool is_current() const override { return SDL_GL_GetCurrentContext() == context; }
+  std::string name() const override {
+    const char* driver = SDL_GetCurrentVideoDriver();
+    return std::string("SDL GL context (") + (driver ? driver : "?") + ")";
+  }
+};
+
 struct SdlPresenter::Impl {
   SDL_Window* window = nullptr;
   SDL_Renderer* renderer = nullptr;
+  SdlGlContext gl;          // gl.context is null unless the window draws through OpenGL
+  std::string gl_missing;   // why it does not, when it was asked to
+  bool exposed = false;     // uncovered since take_exposed()
+  bool vsync = true;
   SDL_Texture* texture = nullptr;
   int tex_w = 0, tex_h = 0;
   bool fullscreen = false;
@@ -104,25 +125,86 @@ SdlPresenter::SdlPresenter(const WindowOptions& o) : impl_(std::make_unique<Impl
   int pos = o.at_origin ? 0 : SDL_WINDOWPOS_CENTERED;
   Uint32 flags = SDL_WINDOW_RESIZABLE | (o.fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
   impl_->fullscreen = o.fullscreen;
-  impl_->window = SDL_CreateWindow(o.title.c_str(), pos, pos, o.width, o.height, flags);
+  impl_->vsync = o.vsync;
+  if (o.opengl) open_gl_window(o, pos, flags);
+  if (!impl_->window) impl_->window = SDL_CreateWindow(o.title.c_str(), pos, pos, o.width, o.height, flags);
   if (!impl_->window) {
     std::string why = SDL_GetError();
     SDL_QuitSubSystem(SDL_INIT_VIDEO);
     throw Error("cannot open a window: " + why);
   }
-  Uint32 rflags = o.vsync ? SDL_RENDERER_PRESENTVSYNC : 0;
-  impl_->renderer = SDL_CreateRenderer(impl_->window, -1, SDL_RENDERER_ACCELERATED | rflags);
-  if (!impl_->renderer) impl_->renderer = SDL_CreateRenderer(impl_->window, -1, SDL_RENDERER_SOFTWARE);
-  if (!impl_->renderer) {
-    std::string why = SDL_GetError();
-    SDL_DestroyWindow(impl_->window);
-    SDL_QuitSubSystem(SDL_INIT_VIDEO);
-    throw Error("cannot draw to the window: " + why);
+  if (!impl_->gl.context) {
+    try {
+      open_renderer();
+    } catch (const Error&) {
+      SDL_DestroyWindow(impl_->window);
+      SDL_QuitSubSystem(SDL_INIT_VIDEO);
+      throw;
+    }
   }
   SDL_EventState(SDL_DROPFILE, SDL_ENABLE);
   // Game controllers are optional: without the subsystem there is just no gamepad.
   impl_->pads = SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) == 0;
 }
+
+// An OpenGL window with a 3.3 core context (no depth buffer: the backend draws into its
+// own framebuffer object and only blits here). On failure, no window and why in
+// gl_missing: the caller opens the streaming-texture one.
+void SdlPresenter::open_gl_window(const WindowOptions& o, int pos, uint32_t flags) {
+  Impl& m = *impl_;
+  SDL_GL_ResetAttributes();
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+  SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+  SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+  SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);
+  SDL_Window* window = SDL_CreateWindow(o.title.c_str(), pos, pos, o.width, o.height, flags | SDL_WINDOW_OPENGL);
+  if (!window) {
+    m.gl_missing = std::string("no OpenGL window: ") + SDL_GetError();
+    SDL_GL_ResetAttributes();
+    return;
+  }
+  SDL_GLContext context = SDL_GL_CreateContext(window);
+  if (!context) {
+    m.gl_missing = std::string("no OpenGL 3.3 core context for the window: ") + SDL_GetError();
+    SDL_DestroyWindow(window);
+    SDL_GL_ResetAttributes();
+    return;
+  }
+  SDL_GL_SetSwapInterval(o.vsync ? 1 : 0);  // (a driver without the control keeps its own)
+  m.window = window;
+  m.gl.window = window, m.gl.context = context;
+}
+
+// The streaming-texture path: an SDL_Renderer on the window, accelerated when SDL has one.
+void SdlPresenter::open_renderer() {
+  Impl& m = *impl_;
+  Uint32 rflags = m.vsync ? SDL_RENDERER_PRESENTVSYNC : 0;
+  m.renderer = SDL_CreateRenderer(m.window, -1, SDL_RENDERER_ACCELERATED | rflags);
+  if (!m.renderer) m.renderer = SDL_CreateRenderer(m.window, -1, SDL_RENDERER_SOFTWARE);
+  if (!m.renderer) throw Error(std::string("cannot draw to the window: ") + SDL_GetError());
+}
+
+GlContextProvider* SdlPresenter::gl_context() { return impl_->gl.context ? &impl_->gl : nullptr; }
+
+std::string SdlPresenter::gl_missing() const { return impl_->gl_missing; }
+
+void SdlPresenter::drop_gl_context(const std::string& why) {
+  Impl& m = *impl_;
+  if (!m.gl.context) return;
+  SDL_GL_MakeCurrent(m.window, nullptr);
+  SDL_GL_DeleteContext(m.gl.context);
+  m.gl.context = nullptr;
+  m.gl_missing = why;
+  SDL_GL_ResetAttributes();  // SDL's own renderer asks for the context it needs
+  open_renderer();
+}
+
+void SdlPresenter::swap() {
+  if (impl_->gl.context) SDL_GL_SwapWindow(impl_->window);
+}
+
+bool SdlPresenter::take_exposed() { return std::exchange(impl_->exposed, false); }
 
 realtime::GamepadState SdlPresenter::gamepad() const {
   realtime::GamepadState g;
@@ -143,7 +225,11 @@ SdlPresenter::~SdlPresenter() {
   if (impl_->pad) SDL_GameControllerClose(impl_->pad);
   if (impl_->pads) SDL_QuitSubSystem(SDL_INIT_GAMECONTROLLER);
   if (impl_->texture) SDL_DestroyTexture(impl_->texture);
-  SDL_DestroyRenderer(impl_->renderer);
+  if (impl_->renderer) SDL_DestroyRenderer(impl_->renderer);
+  if (impl_->gl.context) {
+    SDL_GL_MakeCurrent(impl_->window, nullptr);
+    SDL_GL_DeleteContext(impl_->gl.context);
+  }
   SDL_DestroyWindow(impl_->window);
   SDL_QuitSubSystem(SDL_INIT_VIDEO);
 }
@@ -204,7 +290,8 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
         break;
       case SDL_WINDOWEVENT:
         // Uncovered: show the last frame again (an idle program draws no new one).
-        if (ev.window.event == SDL_WINDOWEVENT_EXPOSED && impl_->texture) {
+        if (ev.window.event == SDL_WINDOWEVENT_EXPOSED && impl_->gl.context) impl_->exposed = true;
+        if (ev.window.event == SDL_WINDOWEVENT_EXPOSED && impl_->texture && impl_->renderer) {
           SDL_RenderClear(impl_->renderer);
           SDL_RenderCopy(impl_->renderer, impl_->texture, nullptr, nullptr);
           SDL_RenderPresent(impl_->renderer);
@@ -221,6 +308,7 @@ void SdlPresenter::poll(std::vector<InputEvent>& out) {
 
 void SdlPresenter::present(const uint8_t* rgba, int width, int height) {
   Impl& m = *impl_;
+  if (!m.renderer) throw Error("present: this window draws through its OpenGL context (swap)");
   if (!m.texture || m.tex_w != width || m.tex_h != height) {
     if (m.texture) SDL_DestroyTexture(m.texture);
     // RGBA bytes in memory are SDL's ABGR8888 on a little-endian machine (RGBA32 names
@@ -253,11 +341,14 @@ void SdlPresenter::toggle_fullscreen() {
 
 std::pair<int, int> SdlPresenter::window_size() const {
   int w = 0, h = 0;
-  SDL_GetRendererOutputSize(impl_->renderer, &w, &h);
+  if (impl_->gl.context) SDL_GL_GetDrawableSize(impl_->window, &w, &h);
+  else SDL_GetRendererOutputSize(impl_->renderer, &w, &h);
   return {std::max(w, 1), std::max(h, 1)};
 }
 
 std::string SdlPresenter::driver() const {
+  if (impl_->gl.context)
+    return std::string(SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "?") + "/opengl-context";
   SDL_RendererInfo info{};
   SDL_GetRendererInfo(impl_->renderer, &info);
   return std::string(SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "?") + "/" +

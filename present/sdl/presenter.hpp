@@ -1,7 +1,8 @@
 // The SDL2 window: frames go to a streaming texture, scaled to the window with nearest
 // filtering and letterboxed to keep their aspect ratio, presented with vertical sync
-// (no tearing). Translates SDL's events to realtime::InputEvent, with mouse positions in
-// frame pixels.
+// (no tearing). Or, for the GPU backend (WindowOptions::opengl), the window has an
+// OpenGL 3.3 core context that the backend draws in, shown by swap(). Translates SDL's
+// events to realtime::InputEvent, with mouse positions in frame pixels.
 #pragma once
 
 #include <memory>
@@ -18,6 +19,9 @@ struct WindowOptions {
   bool fullscreen = false;
   bool vsync = true;
   bool at_origin = false;  // place the window at (0, 0) (tests read the screen there)
+  // Make the window with SDL_WINDOW_OPENGL and an OpenGL 3.3 core context for the GPU
+  // backend; when SDL cannot, the streaming-texture window, with why in gl_missing().
+  bool opengl = false;
 };
 
 class SdlPresenter : public realtime::Presenter {
@@ -39,6 +43,11 @@ class SdlPresenter : public realtime::Presenter {
   // The first game controller SDL knows (GameController API); its buttons come through
   // poll() as keys (see runtime/input.hpp).
   realtime::GamepadState gamepad() const override;
+  GlContextProvider* gl_context() override;
+  std::string gl_missing() const override;
+  void drop_gl_context(const std::string& why) override;
+  void swap() override;
+  bool take_exposed() override;
   // The video driver in use ("x11", "wayland", "dummy", ...) and the renderer's name.
   std::string driver() const;
   // Whether the window shows nowhere (SDL's dummy or offscreen driver, chosen with
@@ -48,6 +57,8 @@ class SdlPresenter : public realtime::Presenter {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  void open_gl_window(const WindowOptions& o, int pos, uint32_t flags);
+  void open_renderer();
 };
 
 // Plays a Synth through the default audio device. Opening fails silently (no device,

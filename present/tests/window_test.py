@@ -78,13 +78,13 @@ def read_xwd(path):
     return np.dstack([channel(rmask), channel(gmask), channel(bmask)])
 
 
-def start_xvfb(xvfb, fbdir):
-    """A private X server (640x480x24) whose screen is the file FBDIR/Xvfb_screen0.
+def start_xvfb(xvfb, fbdir, size="640x480", extra=()):
+    """A private X server (SIZE x 24 bits) whose screen is the file FBDIR/Xvfb_screen0.
     Returns the server's process and its display number."""
     os.makedirs(fbdir)
     r, w = os.pipe()
-    server = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "640x480x24", "-fbdir", fbdir,
-                               "-nolisten", "tcp"], pass_fds=[w])
+    server = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", size + "x24", "-fbdir", fbdir,
+                               "-nolisten", "tcp", *extra], pass_fds=[w])
     os.close(w)
     display = b""
     while not display.endswith(b"\n"):

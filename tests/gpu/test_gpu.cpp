@@ -19,6 +19,7 @@
 #include "shaders.hpp"
 #include "shading/ggx_albedo.hpp"
 #include "shading/lighting.hpp"
+#include "velocity/backend.hpp"
 #include "velocity/bench_scene.hpp"
 #include "velocity/error.hpp"
 #include "velocity/load.hpp"
@@ -1043,6 +1044,36 @@ TEST(BackendChoice, AutoRefusesSoftwareGl) {
   }
   r.render(Scene{});
   EXPECT_EQ(std::string(r.stats().backend_reason), reason);  // kept across frames
+}
+
+// The windowed path's API (docs/gpu.md, "In a window"): only a renderer made on a
+// window's context presents; a context that cannot be bound is an error naming why.
+TEST(BackendChoice, WindowContextErrors) {
+  Renderer cpu(16, 16);
+  EXPECT_THROW(cpu.present_window(64, 64), Error);
+  Renderer gpu(16, 16, BackendChoice::Gpu);
+  gpu.render(Scene{});
+  try {
+    gpu.present_window(64, 64);
+    ADD_FAILURE() << "an offscreen GPU renderer presented";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not made on a window's OpenGL context"), std::string::npos) << e.what();
+  }
+  struct Unbindable final : GlContextProvider {
+    bool make_current(std::string& error) override {
+      error = "test: no such window";
+      return false;
+    }
+    bool is_current() const override { return false; }
+    std::string name() const override { return "test context"; }
+  } unbindable;
+  try {
+    Renderer windowed(16, 16, unbindable);
+    ADD_FAILURE() << "a renderer was made on a context that cannot be bound";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("could not be made current (test: no such window)"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(BackendChoice, NamesAndStats) {

@@ -35,9 +35,12 @@ void add_realtime_options(CLI::App* cmd, RealtimeArgs& a) {
   cmd->add_option("--linger", a.linger, "After the last frame, keep the window open this many seconds");
   cmd->add_option("--threads", a.threads, "Threads rasterizing tiles (0: every core)");
   cmd->add_option("--backend", a.backend,
-                  "What draws: cpu, gpu (OpenGL 3.3 through EGL, the frame read back and shown) or auto (a hardware "
-                  "GPU, else cpu)")
+                  "What draws: cpu, gpu (OpenGL 3.3: in the window's own GL context, or through EGL with the frame "
+                  "read back when there is no window or it has no GL context) or auto (a hardware GPU, else cpu)")
       ->capture_default_str();
+  cmd->add_flag("--no-gl-window", a.no_gl_window,
+                "With --backend gpu: draw offscreen through EGL and show the frame read back, not in the window's "
+                "OpenGL context");
 }
 
 void keep_settings(realtime::Shell& shell, const RealtimeArgs& a, bool replaying) {
@@ -84,6 +87,9 @@ int run_realtime(realtime::Program& program, const RealtimeArgs& a, const std::s
     w.fullscreen = a.fullscreen;
     w.vsync = !a.no_vsync;
     w.at_origin = a.at_origin;
+    // The GPU draws in the window's own OpenGL context (the loop falls back to reading
+    // its frames back when that context cannot be made or used).
+    w.opengl = lo.backend != BackendChoice::Cpu && !a.no_gl_window;
     try {
       window = std::make_unique<present::SdlPresenter>(w);
     } catch (const Error& e) {

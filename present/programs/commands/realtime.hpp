@@ -27,6 +27,7 @@ struct RealtimeArgs {
   double linger = 0;
   int threads = 0;
   std::string backend = "cpu";  // --backend: cpu, gpu or auto (docs/gpu.md)
+  bool no_gl_window = false;    // --no-gl-window: the GPU's frames read back, not drawn in the window
   bool ends_itself = false;  // the program ends on its own (a replay): a run nobody sees may take it
 };
 
