@@ -35,11 +35,17 @@ HWY_INLINE VF map_visibility(const ShadowMap& m, const V3& p, const V3& n, const
   const V3 q{hn::MulAdd(n.x, kn, hn::MulAdd(to_light.x, kl, p.x)), hn::MulAdd(n.y, kn, hn::MulAdd(to_light.y, kl, p.y)),
              hn::MulAdd(n.z, kn, hn::MulAdd(to_light.z, kl, p.z))};
   const VF one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), s = hn::Set(d, float(m.size));
-  const VF w = m.perspective ? row(3, q) : one;
-  const VF iw = hn::Div(one, w);
-  const VF x = hn::Mul(hn::MulAdd(hn::Mul(row(0, q), iw), half, half), s);
-  const VF y = hn::Mul(hn::NegMulAdd(hn::Mul(row(1, q), iw), half, half), s);
-  const VF z = hn::MulAdd(hn::Mul(row(2, q), iw), half, half);
+  // Clip to normalised device coordinates: a directional light's map (orthographic, w = 1)
+  // needs no divide.
+  VF w = one, cx = row(0, q), cy = row(1, q), cz = row(2, q);
+  if (m.perspective) {
+    w = row(3, q);
+    const VF iw = hn::Div(one, w);
+    cx = hn::Mul(cx, iw), cy = hn::Mul(cy, iw), cz = hn::Mul(cz, iw);
+  }
+  const VF x = hn::Mul(hn::MulAdd(cx, half, half), s);
+  const VF y = hn::Mul(hn::NegMulAdd(cy, half, half), s);
+  const VF z = hn::MulAdd(cz, half, half);
   // Comparisons with a NaN are false: such a lane is outside, and lit.
   const MF inside = hn::And(live, hn::And(hn::And(hn::And(hn::Gt(w, hn::Zero(d)), hn::Le(z, one)),
                                                 hn::And(hn::Ge(x, hn::Zero(d)), hn::Lt(x, s))),
