@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "framebuffer/framebuffer.hpp"
+#include "shading/shadow.hpp"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/rasterize.cpp"
@@ -57,13 +58,34 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
   return fixed[id - uint8_t(KernelId::Fixed)];
 }
 
+// A shadow map's tile: window depths to the map's 16-bit codes (shading/shadow.hpp),
+// rounded up. Perspective: the clip w of depth z, w = n f / (f - z (f - n)) (glFrustum's
+// depth), as a fraction of (n, f): kShadowFar n z / (f - z (f - n)).
+void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* codes) {
+  const DF d;
+  const DI di;
+  const hn::Rebind<uint16_t, DI> d16;
+  const VF far = hn::Set(d, shading::kShadowFar);
+  const VF scale = hn::Set(d, frame.shadow_perspective ? shading::kShadowFar * frame.shadow_near : shading::kShadowFar);
+  const VF f = hn::Set(d, frame.shadow_far), f_minus_n = hn::Set(d, frame.shadow_far - frame.shadow_near);
+  for (int i = 0; i < Framebuffer::kTilePixels; i += int(kLanes)) {
+    const VF z = hn::Load(d, depth + i);
+    VF code = hn::Mul(scale, z);
+    if (frame.shadow_perspective) code = hn::Div(code, hn::NegMulAdd(z, f_minus_n, f));
+    code = hn::Min(hn::Max(hn::Ceil(code), hn::Zero(d)), far);  // (a NaN's Max gives 0)
+    hn::Store(hn::DemoteTo(d16, hn::ConvertTo(di, code)), d16, codes + i);
+  }
+}
+
 void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
   alignas(64) static thread_local uint32_t scratch[Framebuffer::kTilePixels];  // depth only: colour lands here
-  TileTarget target{frame, frame.depth_only ? scratch : fb.color.data() + base, fb.depth.data() + base, fb.stencil.data() + base,
-                    fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
+  alignas(64) static thread_local float scratch_depth[Framebuffer::kTilePixels];  // a shadow map's depth
+  const bool codes = frame.shadow_codes != nullptr;
+  TileTarget target{frame, frame.depth_only ? scratch : fb.color.data() + base, codes ? scratch_depth : fb.depth.data() + base,
+                    fb.stencil.data() + base, fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
   constexpr int kPixels = Framebuffer::kTilePixels;
   // A tile with nothing to draw that already holds exactly the clear values (it was
   // cleared and left empty last frame too: the background of most frames) is done. A
@@ -98,6 +120,7 @@ void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (n) kernel(r.kernel)(r, blocks, n, target);
   });
   flush();
+  if (codes) store_shadow_codes(frame, target.depth, frame.shadow_codes + base);
 }
 
 void CoverageForTest(const RecordHeader& r, int tx, int ty, int tw, int th,

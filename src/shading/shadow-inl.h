@@ -36,18 +36,20 @@ HWY_INLINE VF map_visibility(const ShadowMap& m, const V3& p, const V3& n, const
              hn::MulAdd(n.z, kn, hn::MulAdd(to_light.z, kl, p.z))};
   const VF one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), s = hn::Set(d, float(m.size));
   // Clip to normalised device coordinates: a directional light's map (orthographic, w = 1)
-  // needs no divide.
-  VF w = one, cx = row(0, q), cy = row(1, q), cz = row(2, q);
+  // needs no divide. The point's code (shadow.hpp) is linear in z (orthographic) or w.
+  VF w = one, cx = row(0, q), cy = row(1, q), z;
   if (m.perspective) {
     w = row(3, q);
     const VF iw = hn::Div(one, w);
-    cx = hn::Mul(cx, iw), cy = hn::Mul(cy, iw), cz = hn::Mul(cz, iw);
+    cx = hn::Mul(cx, iw), cy = hn::Mul(cy, iw);
+    z = hn::MulAdd(w, hn::Set(d, m.code_scale), hn::Set(d, m.code_offset));
+  } else {
+    z = hn::MulAdd(row(2, q), hn::Set(d, m.code_scale), hn::Set(d, m.code_offset));
   }
   const VF x = hn::Mul(hn::MulAdd(cx, half, half), s);
   const VF y = hn::Mul(hn::NegMulAdd(cy, half, half), s);
-  const VF z = hn::MulAdd(cz, half, half);
   // Comparisons with a NaN are false: such a lane is outside, and lit.
-  const MF inside = hn::And(live, hn::And(hn::And(hn::And(hn::Gt(w, hn::Zero(d)), hn::Le(z, one)),
+  const MF inside = hn::And(live, hn::And(hn::And(hn::And(hn::Gt(w, hn::Zero(d)), hn::Le(z, hn::Set(d, kShadowFar))),
                                                 hn::And(hn::Ge(x, hn::Zero(d)), hn::Lt(x, s))),
                                         hn::And(hn::Ge(y, hn::Zero(d)), hn::Lt(y, s))));
   if (hn::AllFalse(d, inside)) return one;
@@ -75,17 +77,17 @@ HWY_INLINE VF map_visibility(const ShadowMap& m, const V3& p, const V3& n, const
   // that the caller needs: a triangle's edge blocks are partly covered, and the pixels
   // facing away from the light need no lookup.
   alignas(64) int32_t index[4][kLanes];
-  alignas(64) float stored[4][kLanes];
+  alignas(64) int32_t stored[4][kLanes];
   hn::Store(hn::Add(r0, c0), di, index[0]);
   hn::Store(hn::Add(r0, c1), di, index[1]);
   hn::Store(hn::Add(r1, c0), di, index[2]);
   hn::Store(hn::Add(r1, c1), di, index[3]);
-  for (int t = 0; t < 4; ++t) hn::Store(hn::Zero(d), d, stored[t]);
+  for (int t = 0; t < 4; ++t) hn::Store(hn::Zero(di), di, stored[t]);
   for (uint32_t bits = lane_bits(d, inside); bits; bits &= bits - 1) {
     const size_t k = hwy::Num0BitsBelowLS1Bit_Nonzero32(bits);
     for (int t = 0; t < 4; ++t) stored[t][k] = m.depth[index[t][k]];
   }
-  auto lit = [&](int t) { return hn::IfThenElseZero(hn::Le(z, hn::Load(d, stored[t])), one); };
+  auto lit = [&](int t) { return hn::IfThenElseZero(hn::Le(z, hn::ConvertTo(d, hn::Load(di, stored[t]))), one); };
   const VF l00 = lit(0), l10 = lit(1), l01 = lit(2), l11 = lit(3);
   const VF top = hn::MulAdd(hn::Sub(l10, l00), fx, l00), bottom = hn::MulAdd(hn::Sub(l11, l01), fx, l01);
   return hn::IfThenElse(inside, hn::MulAdd(hn::Sub(bottom, top), fy, top), one);
