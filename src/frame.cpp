@@ -140,7 +140,7 @@ class CpuBackend final : public Backend {
   CpuBackend* owner_ = nullptr;  // a depth pass: its owner's frame and threads
   // A depth pass: the map it draws (16-bit codes, shading/shadow.hpp; its framebuffer
   // keeps no colour or depth) and the map's projection.
-  BlockVector<uint16_t> shadow_codes_;
+  BlockVector<uint16_t> shadow_codes_, shadow_nearest_;
   const shading::ShadowMap* shadow_map_ = nullptr;
   Material depth_material_, depth_two_sided_;
 
@@ -433,7 +433,7 @@ const FrameStats& CpuBackend::run_frame(bool painter) {
   tiles.depth_test = !painter;
   tiles.depth_only = r.owner_ != nullptr;
   if (r.owner_) {
-    tiles.shadow_codes = r.shadow_codes_.data();
+    tiles.shadow_codes = r.shadow_codes_.data(), tiles.shadow_nearest = r.shadow_nearest_.data();
     tiles.shadow_perspective = r.shadow_map_->perspective;
     tiles.shadow_near = r.shadow_map_->near, tiles.shadow_far = r.shadow_map_->far;
   }
@@ -491,7 +491,7 @@ void CpuBackend::render_shadows() {
       if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
       CpuBackend& b = *r.shadow_passes_[pass];
       if (keep) {
-        s.shadow.face[f].depth = b.shadow_codes_.data();
+        s.shadow.face[f].depth = b.shadow_codes_.data(), s.shadow.face[f].nearest = b.shadow_nearest_.data();
         continue;
       }
       b.resize(size, size, 1);
@@ -501,6 +501,7 @@ void CpuBackend::render_shadows() {
       const size_t texels = size_t(b.framebuffer.tiles_x) * size_t(b.framebuffer.tiles_y) * Framebuffer::kTilePixels;
       if (b.shadow_codes_.size() != texels) {
         b.shadow_codes_.assign(texels, uint16_t(shading::kShadowFar));
+        b.shadow_nearest_.assign(texels, 0);
         std::fill(b.framebuffer.tile_clean.begin(), b.framebuffer.tile_clean.end(), 0);
       }
       b.shadow_map_ = &s.shadow.face[f];
@@ -508,7 +509,7 @@ void CpuBackend::render_shadows() {
       for (const Caster& c : r.casters_)
         b.draw(*c.mesh, c.world, c.cut_out ? c.material : c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
       b.run_frame(false);
-      s.shadow.face[f].depth = b.shadow_codes_.data();
+      s.shadow.face[f].depth = b.shadow_codes_.data(), s.shadow.face[f].nearest = b.shadow_nearest_.data();
     }
   std::swap(r.shadow_key_, key);
   r.plan.lights.shadows = !r.shadow_lights_.empty();

@@ -325,6 +325,7 @@ struct TileInputs {
   // here (same tiled layout) as 16-bit codes, shading/shadow.hpp's, for a map whose
   // projection is perspective or not, between planes near and far (clip w).
   uint16_t* shadow_codes = nullptr;
+  uint16_t* shadow_nearest = nullptr;  // and each texel's nearest of four (ShadowMap::nearest)
   bool shadow_perspective = false;
   float shadow_near = 0, shadow_far = 1;
   uint32_t color = 0;           // the clear values

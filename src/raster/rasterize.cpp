@@ -61,7 +61,7 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
 // A shadow map's tile: window depths to the map's 16-bit codes (shading/shadow.hpp),
 // rounded up. Perspective: the clip w of depth z, w = n f / (f - z (f - n)) (glFrustum's
 // depth), as a fraction of (n, f): kShadowFar n z / (f - z (f - n)).
-void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* codes) {
+void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* codes, uint16_t* nearest) {
   const DF d;
   const DI di;
   const hn::Rebind<uint16_t, DI> d16;
@@ -75,6 +75,28 @@ void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* c
     code = hn::Min(hn::Max(hn::Ceil(code), hn::Zero(d)), far);  // (a NaN's Max gives 0)
     hn::Store(hn::DemoteTo(d16, hn::ConvertTo(di, code)), d16, codes + i);
   }
+  // Each texel's nearest of four (ShadowMap::nearest), worked out row by row: the codes
+  // copied into rows (a block's row of four is 8 bytes), with a column and a row of 0s
+  // past the tile's edge, where the neighbours lie in other tiles.
+  constexpr int kRow = kTileSize + 8, kBlocks = kBlocksPerTileSide * kBlocksPerTileSide;
+  alignas(64) uint16_t rows[(kTileSize + 1) * kRow];
+  alignas(64) uint16_t out[kTileSize * kTileSize];
+  auto row_of = [](int block, int r) { return ((block >> 4) * 4 + r) * kRow + (block & 15) * 4; };
+  for (int b = 0; b < kBlocks; ++b)
+    for (int r = 0; r < 4; ++r) std::memcpy(rows + row_of(b, r), codes + b * 16 + r * 4, 8);
+  for (int y = 0; y < kTileSize; ++y) std::fill_n(rows + y * kRow + kTileSize, kRow - kTileSize, uint16_t(0));
+  std::fill_n(rows + kTileSize * kRow, kRow, uint16_t(0));
+  const hn::ScalableTag<uint16_t> du;
+  for (int y = 0; y < kTileSize; ++y)
+    for (int x = 0; x < kTileSize; x += int(hn::Lanes(du))) {
+      const uint16_t* p = rows + y * kRow + x;
+      const auto top = hn::Min(hn::LoadU(du, p), hn::LoadU(du, p + 1));
+      const auto bottom = hn::Min(hn::LoadU(du, p + kRow), hn::LoadU(du, p + kRow + 1));
+      hn::StoreU(hn::Min(top, bottom), du, out + y * kTileSize + x);
+    }
+  for (int b = 0; b < kBlocks; ++b)
+    for (int r = 0; r < 4; ++r)
+      std::memcpy(nearest + b * 16 + r * 4, out + ((b >> 4) * 4 + r) * kTileSize + (b & 15) * 4, 8);
 }
 
 void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
@@ -120,7 +142,7 @@ void RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (n) kernel(r.kernel)(r, blocks, n, target);
   });
   flush();
-  if (codes) store_shadow_codes(frame, target.depth, frame.shadow_codes + base);
+  if (codes) store_shadow_codes(frame, target.depth, frame.shadow_codes + base, frame.shadow_nearest + base);
 }
 
 void CoverageForTest(const RecordHeader& r, int tx, int ty, int tw, int th,

@@ -39,12 +39,16 @@ inline constexpr int kShadowLights = 4;       // lights with a shadow map, at mo
 // the rasterizer wrote (LESS) times kShadowFar; perspective, it is linear in the distance
 // along the light's axis (clip w) from near to far, since a perspective window depth
 // crowds the far half of the range into a few codes. Each code is rounded up (the
-// caster a fraction of a code farther): one code is 1/65535 of the depth range, far
-// under the bias's texel or two.
+// caster a fraction of a code farther): one code is 1/65535 of the depth range, a small
+// fraction of a texel but very near a spot or point light (docs/appearance.md, "Limits").
 inline constexpr float kShadowFar = 65535.0f;
 
 struct ShadowMap {
   const uint16_t* depth = nullptr;
+  // Per texel, the nearest of the four codes the filter reads from it (the texel and its
+  // right, lower and lower-right neighbours; 0 where one of them lies in the next 64x64
+  // tile), same layout: a point nearer than it is lit with one load (shadow-inl.h).
+  const uint16_t* nearest = nullptr;
   int size = 0;     // texels a side
   int tiles_x = 0;  // 64x64 tiles a row
   Mat4 eye_to_clip; // the camera's eye space to the light's clip space
