@@ -151,6 +151,10 @@ class CpuBackend final : public Backend {
   };
   ShadowKey shadow_key_, next_shadow_key_;
   CpuBackend* owner_ = nullptr;  // a depth pass: its owner's frame and threads
+  // A depth pass: the map it draws (16-bit codes, shading/shadow.hpp; its framebuffer
+  // keeps no colour or depth) and the map's projection.
+  BlockVector<uint16_t> shadow_codes_, shadow_nearest_;
+  const shading::ShadowMap* shadow_map_ = nullptr;
   Material depth_material_, depth_two_sided_;
 
   ThreadPool& pool_for(int threads) {
@@ -463,6 +467,11 @@ const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   }
   tiles.depth_test = !painter;
   tiles.depth_only = r.owner_ != nullptr;
+  if (r.owner_) {
+    tiles.shadow_codes = r.shadow_codes_.data(), tiles.shadow_nearest = r.shadow_nearest_.data();
+    tiles.shadow_perspective = r.shadow_map_->perspective;
+    tiles.shadow_near = r.shadow_map_->near, tiles.shadow_far = r.shadow_map_->far;
+  }
   tiles.clear_color_buffer = r.start.clear_color_buffer, tiles.clear_depth_buffer = r.start.clear_depth_buffer;
   tiles.color = raster::pack_rgba(r.start.color.x, r.start.color.y, r.start.color.z, r.start.color.w);
   tiles.depth = std::clamp(r.start.depth, 0.0f, 1.0f);
@@ -536,16 +545,25 @@ void CpuBackend::render_shadows() {
       if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
       CpuBackend& b = *r.shadow_passes_[pass];
       if (keep) {
-        s.shadow.face[f].depth = b.framebuffer.depth.data();
+        s.shadow.face[f].depth = b.shadow_codes_.data(), s.shadow.face[f].nearest = b.shadow_nearest_.data();
         continue;
       }
       b.resize(size, size, 1);
-      BlockVector<uint32_t>().swap(b.framebuffer.color);  // never touched: depth only
+      // Never touched: the tiles draw depth in a scratch tile and store it as codes.
+      BlockVector<uint32_t>().swap(b.framebuffer.color);
+      BlockVector<float>().swap(b.framebuffer.depth);
+      const size_t texels = size_t(b.framebuffer.tiles_x) * size_t(b.framebuffer.tiles_y) * Framebuffer::kTilePixels;
+      if (b.shadow_codes_.size() != texels) {
+        b.shadow_codes_.assign(texels, uint16_t(shading::kShadowFar));
+        b.shadow_nearest_.assign(texels, 0);
+        std::fill(b.framebuffer.tile_clean.begin(), b.framebuffer.tile_clean.end(), 0);
+      }
+      b.shadow_map_ = &s.shadow.face[f];
       b.begin(s.views[f].view, s.views[f].projection, s.views[f].orthographic, kNoLights, start, o);
       for (const Caster& c : r.casters_)
         b.draw(*c.mesh, c.world, c.cut_out ? c.material : c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
       b.run_frame(false);
-      s.shadow.face[f].depth = b.framebuffer.depth.data();
+      s.shadow.face[f].depth = b.shadow_codes_.data(), s.shadow.face[f].nearest = b.shadow_nearest_.data();
     }
   std::swap(r.shadow_key_, key);
   r.plan.lights.shadows = !r.shadow_lights_.empty();

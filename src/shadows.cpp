@@ -25,6 +25,8 @@ void perspective_view(Vec3 at, Vec3 forward, float fov, Sphere bounds, const Mat
   v.orthographic = false;
   m.eye_to_clip = v.projection * light;
   m.perspective = true;
+  m.near = near, m.far = far;
+  m.code_scale = shading::kShadowFar / (far - near), m.code_offset = -near * m.code_scale;
   m.texel = 2.0f * std::tan(fov * 0.5f) / float(size);
 }
 

@@ -134,7 +134,7 @@ void TransformMeshVertices(const MeshVertexJob& job) {
     if (job.out.normal) store3(n, job.out.normal + i, count);
     if (job.out.eye) store3(e, job.out.eye + i, count);
     if (job.lights) {
-      const lit::LightTermsN t = lit::light(*job.lights, n, e, job.specular);
+      const lit::LightTermsN t = lit::light(*job.lights, n, e, job.specular, hn::FirstN(d, kLanes));
       if (job.base_color) {
         const Vec3 b = *job.base_color;
         const V3 c = lit::apply(t, {hn::Set(d, b.x), hn::Set(d, b.y), hn::Set(d, b.z)});

@@ -100,6 +100,29 @@ inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, c
         if (lo < 0) q[partial] = int32_t(Q), edge[partial++] = k;
       }
       if (outside) continue;
+      // Its sixteen 4x4 blocks against each partial edge, exactly, before any pixel
+      // test, a lane per block (bit v * 4 + u for block column u, row v): wholly outside
+      // one edge rejects a block; wholly inside all needs no pixel test.
+      uint32_t out_blocks = 0, in_blocks = 0;
+      if (partial)
+        for (int v = 0; v < kVectorsPerBlock; ++v) {
+          const VI u4 = hn::ShiftLeft<2>(hn::Load(di, kBlockXi + v * kLanes));
+          const VI v4 = hn::ShiftLeft<2>(hn::Load(di, kBlockYi + v * kLanes));
+          // The block's largest and smallest value of edge p (floor(E / 256)).
+          auto extreme = [&](int p, bool largest) {
+            const int32_t a = e.a[edge[p]], b = e.b[edge[p]];
+            const VI qb = hn::Add(hn::Set(di, q[p]), hn::Add(hn::Mul(hn::Set(di, a), u4), hn::Mul(hn::Set(di, b), v4)));
+            return hn::Add(qb, hn::Set(di, largest ? std::max(0, 3 * a) + std::max(0, 3 * b)
+                                                   : std::min(0, 3 * a) + std::min(0, 3 * b)));
+          };
+          MI out_any = hn::Lt(extreme(0, true), hn::Zero(di)), in_all = hn::Gt(extreme(0, false), minus1);
+          for (int p = 1; p < partial; ++p) {
+            out_any = hn::Or(out_any, hn::Lt(extreme(p, true), hn::Zero(di)));
+            in_all = hn::And(in_all, hn::Gt(extreme(p, false), minus1));
+          }
+          out_blocks |= mask_bits(hn::RebindMask(DF(), out_any), v);
+          in_blocks |= mask_bits(hn::RebindMask(DF(), in_all), v);
+        }
       const int bx0 = std::max(box.x0, mx * 16) & ~3, bx1 = std::min(box.x1, mx * 16 + 15);
       const int by0 = std::max(box.y0, my * 16) & ~3, by1 = std::min(box.y1, my * 16 + 15);
       for (int by = by0; by <= by1; by += 4)
@@ -107,20 +130,11 @@ inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, c
           uint32_t mask = box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
           if (partial && mask) {
             const int i = bx - mx * 16, j = by - my * 16;  // this 4x4 block in the 16x16 one
-            // The block against each partial edge, exactly, before any pixel test:
-            // wholly outside one rejects it; wholly inside all needs no pixel test.
-            int32_t qb[3];
-            bool out_block = false, all_in = true;
-            for (int p = 0; p < partial; ++p) {
-              const int32_t a = e.a[edge[p]], b = e.b[edge[p]];
-              qb[p] = q[p] + a * i + b * j;
-              const int32_t hi = qb[p] + std::max(0, 3 * a) + std::max(0, 3 * b);
-              const int32_t lo = qb[p] + std::min(0, 3 * a) + std::min(0, 3 * b);
-              out_block |= hi < 0;
-              all_in &= lo >= 0;
-            }
-            if (out_block) continue;
-            if (!all_in) {
+            const int k = (j >> 2) * 4 + (i >> 2);
+            if (out_blocks >> k & 1) continue;
+            if (!(in_blocks >> k & 1)) {
+              int32_t qb[3];
+              for (int p = 0; p < partial; ++p) qb[p] = q[p] + e.a[edge[p]] * i + e.b[edge[p]] * j;
               uint32_t inside = 0;
               for (int v = 0; v < kVectorsPerBlock; ++v) {
                 MI m = hn::Gt(hn::Add(hn::Set(di, qb[0]), step[edge[0]][v]), minus1);

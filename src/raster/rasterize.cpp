@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "framebuffer/framebuffer.hpp"
+#include "shading/shadow.hpp"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/rasterize.cpp"
@@ -57,13 +58,56 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
   return fixed[id - uint8_t(KernelId::Fixed)];
 }
 
+// A shadow map's tile: window depths to the map's 16-bit codes (shading/shadow.hpp),
+// rounded up. Perspective: the clip w of depth z, w = n f / (f - z (f - n)) (glFrustum's
+// depth), as a fraction of (n, f): kShadowFar n z / (f - z (f - n)).
+void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* codes, uint16_t* nearest) {
+  const DF d;
+  const DI di;
+  const hn::Rebind<uint16_t, DI> d16;
+  const VF far = hn::Set(d, shading::kShadowFar);
+  const VF scale = hn::Set(d, frame.shadow_perspective ? shading::kShadowFar * frame.shadow_near : shading::kShadowFar);
+  const VF f = hn::Set(d, frame.shadow_far), f_minus_n = hn::Set(d, frame.shadow_far - frame.shadow_near);
+  for (int i = 0; i < Framebuffer::kTilePixels; i += int(kLanes)) {
+    const VF z = hn::Load(d, depth + i);
+    VF code = hn::Mul(scale, z);
+    if (frame.shadow_perspective) code = hn::Div(code, hn::NegMulAdd(z, f_minus_n, f));
+    code = hn::Min(hn::Max(hn::Ceil(code), hn::Zero(d)), far);  // (a NaN's Max gives 0)
+    hn::Store(hn::DemoteTo(d16, hn::ConvertTo(di, code)), d16, codes + i);
+  }
+  // Each texel's nearest of four (ShadowMap::nearest), worked out row by row: the codes
+  // copied into rows (a block's row of four is 8 bytes), with a column and a row of 0s
+  // past the tile's edge, where the neighbours lie in other tiles.
+  constexpr int kRow = kTileSize + 8, kBlocks = kBlocksPerTileSide * kBlocksPerTileSide;
+  alignas(64) uint16_t rows[(kTileSize + 1) * kRow];
+  alignas(64) uint16_t out[kTileSize * kTileSize];
+  auto row_of = [](int block, int r) { return ((block >> 4) * 4 + r) * kRow + (block & 15) * 4; };
+  for (int b = 0; b < kBlocks; ++b)
+    for (int r = 0; r < 4; ++r) std::memcpy(rows + row_of(b, r), codes + b * 16 + r * 4, 8);
+  for (int y = 0; y < kTileSize; ++y) std::fill_n(rows + y * kRow + kTileSize, kRow - kTileSize, uint16_t(0));
+  std::fill_n(rows + kTileSize * kRow, kRow, uint16_t(0));
+  const hn::ScalableTag<uint16_t> du;
+  for (int y = 0; y < kTileSize; ++y)
+    for (int x = 0; x < kTileSize; x += int(hn::Lanes(du))) {
+      const uint16_t* p = rows + y * kRow + x;
+      const auto top = hn::Min(hn::LoadU(du, p), hn::LoadU(du, p + 1));
+      const auto bottom = hn::Min(hn::LoadU(du, p + kRow), hn::LoadU(du, p + kRow + 1));
+      hn::StoreU(hn::Min(top, bottom), du, out + y * kTileSize + x);
+    }
+  for (int b = 0; b < kBlocks; ++b)
+    for (int r = 0; r < 4; ++r)
+      std::memcpy(nearest + b * 16 + r * 4, out + ((b >> 4) * 4 + r) * kTileSize + (b & 15) * 4, 8);
+}
+
 bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   const Bins& bins = *frame.bins;
   const int tx = (tile % bins.tiles_x()) * kTileSize, ty = (tile / bins.tiles_x()) * kTileSize;
   const size_t base = fb.tile_offset(tile);
   alignas(64) static thread_local uint32_t scratch[Framebuffer::kTilePixels];  // depth only: colour lands here
-  TileTarget target{frame, frame.depth_only ? scratch : fb.color.data() + base, fb.depth.data() + base, fb.stencil.data() + base,
-                    fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
+  alignas(64) static thread_local float scratch_depth[Framebuffer::kTilePixels];  // a shadow map's depth
+  const bool codes = frame.shadow_codes != nullptr;
+  TileTarget target{frame, frame.depth_only ? scratch : fb.color.data() + base, codes ? scratch_depth : fb.depth.data() + base,
+                    fb.stencil.data() + base, fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
   constexpr int kPixels = Framebuffer::kTilePixels;
   // A tile with nothing to draw that already holds exactly the clear values (it was
   // cleared and left empty last frame too: the background of most frames) is done. A
@@ -98,6 +142,7 @@ bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (n) kernel(r.kernel)(r, blocks, n, target);
   });
   flush();
+  if (codes) store_shadow_codes(frame, target.depth, frame.shadow_codes + base, frame.shadow_nearest + base);
   return true;
 }
 

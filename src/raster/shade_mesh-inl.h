@@ -188,7 +188,8 @@ struct PhongShader {
     }
   }
 
-  HWY_INLINE VU shade(int v) {
+  // `live`: the lanes the kernel writes (the others skip their shadow lookups).
+  HWY_INLINE VU shade(int v, MF live) {
     const DF d;
     in.at_vector(v);
     VF br = in(varying::kColor, v), bg = in(varying::kColor + 1, v), bb = in(varying::kColor + 2, v);
@@ -212,7 +213,7 @@ struct PhongShader {
     // The eye-space position: only the highlight, point lights and shadows read it.
     V3 p{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
     if (s.ks > 0 || !lights.point.empty() || lights.shadows) p = {in(varying::kEye, v), in(varying::kEye + 1, v), in(varying::kEye + 2, v)};
-    const V3 c = lit::apply(lit::light(lights, {nx, ny, nz}, p, s), {br, bg, bb});
+    const V3 c = lit::apply(lit::light(lights, {nx, ny, nz}, p, s, live), {br, bg, bb});
     return finish(out, c.x, c.y, c.z);
   }
 };

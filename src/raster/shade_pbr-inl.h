@@ -186,7 +186,8 @@ struct PbrShader {
     return {hn::Mul(a.x, il), hn::Mul(a.y, il), hn::Mul(a.z, il)};
   }
 
-  HWY_INLINE PbrOut shade(int v) {
+  // `live`: the lanes the kernel may write (the others skip their shadow lookups).
+  HWY_INLINE PbrOut shade(int v, MF live) {
     const DF d;
     in.at_vector(v);
     const VF one = hn::Set(d, 1.0f);
@@ -289,14 +290,14 @@ struct PbrShader {
     };
     for (const auto& l : lights.directional) {
       const V3 dir{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)};
-      const VF vis = lit::visibility(l.shadow, p, n, dir);  // shading/shadow.hpp
+      const VF vis = lit::visibility(l.shadow, p, n, dir, live);  // shading/shadow.hpp
       add_light(dir, hn::Mul(hn::Set(d, l.color.x), vis), hn::Mul(hn::Set(d, l.color.y), vis),
                 hn::Mul(hn::Set(d, l.color.z), vis));
     }
     for (const auto& l : lights.point) {
       V3 dir;
       VF att = lit::punctual(l, p, n, dir);
-      if (l.shadow) att = hn::Mul(att, lit::visibility(l.shadow, p, n, dir));
+      if (l.shadow) att = hn::Mul(att, lit::visibility(l.shadow, p, n, dir, live));
       add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
                 hn::Mul(hn::Set(d, l.color.z), att));
     }
@@ -342,7 +343,7 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
         m = hn::And(m, hn::Lt(z, hn::Load(d, zp)));
         if (hn::AllFalse(d, m)) continue;
       }
-      const PbrOut c = shader.shade(v);
+      const PbrOut c = shader.shade(v, m);
       if (mode == AlphaMode::Mask) {
         m = hn::And(m, hn::Ge(c.a, cutoff));
         if (hn::AllFalse(d, m)) continue;

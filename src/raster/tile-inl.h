@@ -72,7 +72,11 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
         hn::BlendedStore(z, m, d, zp);
       }
       const auto mu = hn::RebindMask(du, m);
-      hn::BlendedStore(shader.shade(v), mu, du, t.color + at + v * kLanes);
+      // A shader that can skip work for the lanes not written (shadow lookups) is told them.
+      if constexpr (requires { shader.shade(v, m); })
+        hn::BlendedStore(shader.shade(v, m), mu, du, t.color + at + v * kLanes);
+      else
+        hn::BlendedStore(shader.shade(v), mu, du, t.color + at + v * kLanes);
       if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
     }
   }

@@ -60,7 +60,8 @@ HWY_INLINE VF punctual(const EyeLights::Point& l, const V3& p, const V3& n, V3& 
 
 // `n` unit normals and `p` positions, eye space. `p` is read only for the specular term
 // (s.ks > 0), point lights and shadows (lights.shadows); otherwise it may be left zero.
-HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular& s) {
+// `live`: the lanes whose result is used (the others may skip their shadow lookups).
+HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular& s, MF live) {
   const DF d;
   LightTermsN t{{hn::Set(d, lights.ambient.x), hn::Set(d, lights.ambient.y), hn::Set(d, lights.ambient.z)},
                 {hn::Zero(d), hn::Zero(d), hn::Zero(d)}};
@@ -89,14 +90,14 @@ HWY_INLINE LightTermsN light(const EyeLights& lights, V3 n, V3 p, const Specular
   };
   for (const auto& l : lights.directional) {
     const V3 dir{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y), hn::Set(d, l.to_light.z)};
-    const VF vis = visibility(l.shadow, p, n, dir);
+    const VF vis = visibility(l.shadow, p, n, dir, live);
     add_light(dir, hn::Mul(hn::Set(d, l.color.x), vis), hn::Mul(hn::Set(d, l.color.y), vis),
               hn::Mul(hn::Set(d, l.color.z), vis));
   }
   for (const auto& l : lights.point) {
     V3 dir;
     VF att = punctual(l, p, n, dir);
-    if (l.shadow) att = hn::Mul(att, visibility(l.shadow, p, n, dir));
+    if (l.shadow) att = hn::Mul(att, visibility(l.shadow, p, n, dir, live));
     add_light(dir, hn::Mul(hn::Set(d, l.color.x), att), hn::Mul(hn::Set(d, l.color.y), att),
               hn::Mul(hn::Set(d, l.color.z), att));
   }

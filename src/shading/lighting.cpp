@@ -33,7 +33,7 @@ void LightForTest(const EyeLights& lights, const Vec3* n, const Vec3* p, size_t 
       in[3][j] = p[i + j].x, in[4][j] = p[i + j].y, in[5][j] = p[i + j].z;
     }
     const LightTermsN t = light(lights, {hn::Load(d, in[0]), hn::Load(d, in[1]), hn::Load(d, in[2])},
-                                {hn::Load(d, in[3]), hn::Load(d, in[4]), hn::Load(d, in[5])}, s);
+                                {hn::Load(d, in[3]), hn::Load(d, in[4]), hn::Load(d, in[5])}, s, hn::FirstN(d, k));
     alignas(64) float o[6][N];
     hn::Store(t.diffuse.x, d, o[0]), hn::Store(t.diffuse.y, d, o[1]), hn::Store(t.diffuse.z, d, o[2]);
     hn::Store(t.specular.x, d, o[3]), hn::Store(t.specular.y, d, o[4]), hn::Store(t.specular.z, d, o[5]);

@@ -1,6 +1,6 @@
 // Shadow maps as the lighting model reads them: a light's depth images (rendered by the
 // frame's own pipeline, src/shadows.cpp) and the visibility of a surface point, the
-// fraction of a 3x3 percentage-closer filter (PCF) that sees the light. This is the
+// fraction of a bilinear percentage-closer filter (PCF) that sees the light. This is the
 // scalar form; shadow-inl.h is the same function N points at a time. The lighting
 // model (lighting.hpp, lighting-inl.h) multiplies each light's contribution by it; a
 // point facing away from the light (N.L <= 0) is in its own shadow.
@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "velocity/math.hpp"
 
@@ -32,10 +33,22 @@ inline constexpr float kNormalOffset = 2.0f;  // texels, along the surface norma
 inline constexpr float kLightOffset = 1.0f;   // texels, towards the light
 inline constexpr int kShadowLights = 4;       // lights with a shadow map, at most (the first that cast)
 
-// One depth image seen from a light: window depth in [0, 1] as the rasterizer wrote it
-// (LESS), stored tile by tile as framebuffer.hpp lays a framebuffer out.
+// One depth image seen from a light, stored tile by tile as framebuffer.hpp lays a
+// framebuffer out, as 16-bit codes (half the bytes a lookup waits on): 0 the near plane,
+// kShadowFar the far one (and nothing drawn). Orthographic, the code is the window depth
+// the rasterizer wrote (LESS) times kShadowFar; perspective, it is linear in the distance
+// along the light's axis (clip w) from near to far, since a perspective window depth
+// crowds the far half of the range into a few codes. Each code is rounded up (the
+// caster a fraction of a code farther): one code is 1/65535 of the depth range, a small
+// fraction of a texel but very near a spot or point light (docs/appearance.md, "Limits").
+inline constexpr float kShadowFar = 65535.0f;
+
 struct ShadowMap {
-  const float* depth = nullptr;
+  const uint16_t* depth = nullptr;
+  // Per texel, the nearest of the four codes the filter reads from it (the texel and its
+  // right, lower and lower-right neighbours; 0 where one of them lies in the next 64x64
+  // tile), same layout: a point nearer than it is lit with one load (shadow-inl.h).
+  const uint16_t* nearest = nullptr;
   int size = 0;     // texels a side
   int tiles_x = 0;  // 64x64 tiles a row
   Mat4 eye_to_clip; // the camera's eye space to the light's clip space
@@ -43,6 +56,10 @@ struct ShadowMap {
   // The world size of one texel: orthographic, the texel itself; perspective, per unit
   // of distance along the light's axis (clip w).
   float texel = 0;
+  float near = 0, far = 1;  // perspective: the light's near and far planes (clip w)
+  // A point's code from its clip coordinates: code_scale * (orthographic: z, perspective:
+  // w) + code_offset.
+  float code_scale = 0.5f * kShadowFar, code_offset = 0.5f * kShadowFar;
 };
 
 // A light's shadow: one map (directional: orthographic; spot: perspective), or six for
@@ -78,14 +95,15 @@ inline float map_visibility(const ShadowMap& m, Vec3 p, Vec3 n, Vec3 to_light) {
   const Vec4 c = M * Vec4{q.x, q.y, q.z, 1.0f};
   if (!(c.w > 0)) return 1;
   const float s = float(m.size);
-  const float x = (c.x / c.w * 0.5f + 0.5f) * s, y = (0.5f - 0.5f * c.y / c.w) * s, z = c.z / c.w * 0.5f + 0.5f;
-  if (!(x >= 0 && x < s && y >= 0 && y < s && z <= 1)) return 1;
+  const float x = (c.x / c.w * 0.5f + 0.5f) * s, y = (0.5f - 0.5f * c.y / c.w) * s;
+  const float z = (m.perspective ? c.w : c.z) * m.code_scale + m.code_offset;  // its code
+  if (!(x >= 0 && x < s && y >= 0 && y < s && z <= kShadowFar)) return 1;
   // The four texel centres around (x, y) and the weights of the bilinear filter.
   const float gx = x - 0.5f, gy = y - 0.5f, fx0 = std::floor(gx), fy0 = std::floor(gy);
   const float fx = gx - fx0, fy = gy - fy0;
   const int x0 = std::max(int(fx0), 0), y0 = std::max(int(fy0), 0);
   const int x1 = std::min(int(fx0) + 1, m.size - 1), y1 = std::min(int(fy0) + 1, m.size - 1);
-  auto lit = [&](int tx, int ty) { return z <= m.depth[shadow_texel(m, tx, ty)] ? 1.0f : 0.0f; };
+  auto lit = [&](int tx, int ty) { return z <= float(m.depth[shadow_texel(m, tx, ty)]) ? 1.0f : 0.0f; };
   const float top = lit(x0, y0) + (lit(x1, y0) - lit(x0, y0)) * fx;
   const float bottom = lit(x0, y1) + (lit(x1, y1) - lit(x0, y1)) * fx;
   return top + (bottom - top) * fy;
