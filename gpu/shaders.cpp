@@ -972,16 +972,19 @@ GLuint build_batch_program(bool lines) {
                        head + kLineRuleGlsl + kBatchFragment);
 }
 
-// The k x k box resolve (framebuffer/resolve.cpp's resolve_color_rows) as a pass over
-// the sample texture: one triangle covering the w x h output, each pixel the rounded
-// mean of its k x k samples' 8-bit values, in integers as the CPU computes it.
-GLuint build_resolve_program() {
-  const char* vs = R"(
+// One triangle covering the viewport (vertices 0-2, no buffers): the passes below shade
+// every pixel of their target once.
+const char* const kFullScreenVertex = R"(
 void main() {
   vec2 p = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;
   gl_Position = vec4(p, 0.0, 1.0);
 }
 )";
+
+// The k x k box resolve (framebuffer/resolve.cpp's resolve_color_rows) as a pass over
+// the sample texture: one triangle covering the w x h output, each pixel the rounded
+// mean of its k x k samples' 8-bit values, in integers as the CPU computes it.
+GLuint build_resolve_program() {
   const char* fs = R"(
 uniform sampler2D u_samples;
 uniform int u_k;
@@ -995,16 +998,10 @@ void main() {
   o_color = vec4((sum + uvec4(n / 2u)) / uvec4(n)) / 255.0;
 }
 )";
-  return build_program(std::string(kVersion) + vs, "", std::string(kVersion) + fs);
+  return build_program(std::string(kVersion) + kFullScreenVertex, "", std::string(kVersion) + fs);
 }
 
 GLuint build_overlay_program() {
-  const char* vs = R"(
-void main() {
-  vec2 p = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;
-  gl_Position = vec4(p, 0.0, 1.0);
-}
-)";
   const char* fs = R"(
 uniform sampler2D u_layer;
 uniform vec4 u_viewport;
@@ -1018,7 +1015,7 @@ void main() {
   o_color = texelFetch(u_layer, at, 0);
 }
 )";
-  return build_program(std::string(kVersion) + vs, "", std::string(kVersion) + fs);
+  return build_program(std::string(kVersion) + kFullScreenVertex, "", std::string(kVersion) + fs);
 }
 
 GLuint build_lighting_test_program() {

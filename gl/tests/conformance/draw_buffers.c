@@ -14,15 +14,6 @@ static void get(const char* name, GLenum pname) {
   conf_value(name, v);
 }
 
-static void rect(float x0, float y0, float x1, float y1, float z) {
-  glBegin(GL_QUADS);
-  glVertex3f(x0, y0, z);
-  glVertex3f(x1, y0, z);
-  glVertex3f(x1, y1, z);
-  glVertex3f(x0, y1, z);
-  glEnd();
-}
-
 int main(int argc, char** argv) {
   /* (GL_BACK and GL_BACK_LEFT are not compared: Mesa 22's OSMesa takes them on its single
    * buffer, where GL and pGL raise GL_INVALID_OPERATION.) */
@@ -81,12 +72,12 @@ int main(int argc, char** argv) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glDrawBuffer(GL_NONE);
   glColor3f(1, 0, 0);
-  rect(8, 8, 40, 30, 0.5f);
+  conf_quad(8, 8, 40, 30, 0.5f);
   glClearColor(1, 1, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glDrawBuffer(GL_FRONT_AND_BACK);
   glColor3f(0, 1, 0);
-  rect(20, 16, 56, 40, 0.2f); /* behind the first where they overlap: depth test */
+  conf_quad(20, 16, 56, 40, 0.2f); /* behind the first where they overlap: depth test */
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_DEPTH_TEST);
   conf_frame("none_then_both");
@@ -139,10 +130,10 @@ int main(int argc, char** argv) {
   get("list_called_draw", GL_DRAW_BUFFER);
   get("list_called_read", GL_READ_BUFFER);
   glColor3f(0, 0, 1);
-  rect(0, 0, 64, 48, 0);
+  conf_quad(0, 0, 64, 48, 0);
   glDrawBuffer(GL_FRONT);
   glColor3f(1, 0, 1);
-  rect(40, 2, 60, 12, 0);
+  conf_quad(40, 2, 60, 12, 0);
   conf_frame("list");
   error("final_error");
   return conf_end();

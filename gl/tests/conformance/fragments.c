@@ -3,15 +3,6 @@
 #define GL_GLEXT_PROTOTYPES /* Mesa's <GL/gl.h>: GL 1.4's functions (glext.h) */
 #include "harness.h"
 
-static void quad(float x0, float y0, float x1, float y1, float z) {
-  glBegin(GL_QUADS);
-  glVertex3f(x0, y0, z);
-  glVertex3f(x1, y0, z);
-  glVertex3f(x1, y1, z);
-  glVertex3f(x0, y1, z);
-  glEnd();
-}
-
 int main(int argc, char** argv) {
   static const GLenum src[6] = {GL_SRC_ALPHA, GL_ONE, GL_DST_COLOR, GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE, GL_ZERO};
   static const GLenum dst[6] = {GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_COLOR};
@@ -41,7 +32,7 @@ int main(int argc, char** argv) {
   for (i = 0; i < 6; ++i) {
     glBlendFunc(src[i], dst[i]);
     glColor4f(0.9f, 0.6f, 0.1f + 0.15f * i, 0.25f + 0.12f * i);
-    quad(8.0f + 30 * i, 20, 30.0f + 30 * i, 108, 0);
+    conf_quad(8.0f + 30 * i, 20, 30.0f + 30 * i, 108, 0);
   }
   glDisable(GL_BLEND);
   conf_frame("blend");
@@ -56,7 +47,7 @@ int main(int argc, char** argv) {
     glAlphaFunc(funcs[i], i == 2 ? 0.0f : 0.6f);
     for (k = 0; k < 5; ++k) {
       glColor4f(0.2f + 0.2f * k, 0.8f, 1.0f - 0.15f * k, 0.25f * k);
-      quad(10.0f + 34 * k, 4.0f + 15 * i, 40.0f + 34 * k, 16.0f + 15 * i, 0);
+      conf_quad(10.0f + 34 * k, 4.0f + 15 * i, 40.0f + 34 * k, 16.0f + 15 * i, 0);
     }
   }
   glDisable(GL_ALPHA_TEST);
@@ -85,7 +76,7 @@ int main(int argc, char** argv) {
       glColor3f(k % 2 ? 1.0f : 0.1f, 0.3f + 0.08f * k, i == 2 ? 1.0f : 0.2f);
       glLoadIdentity();
       glTranslatef((-3.0f + 3.0f * i) * (1 + 0.4f * k), -2.5f + 0.9f * k, -5.0f - 3.0f * k);
-      quad(-0.8f, 0, 0.8f, 1.2f, 0);
+      conf_quad(-0.8f, 0, 0.8f, 1.2f, 0);
     }
   }
   glDisable(GL_FOG);
@@ -106,11 +97,11 @@ int main(int argc, char** argv) {
   glClear(GL_COLOR_BUFFER_BIT);
   glScissor(50, 30, 100, 80);
   glColor3f(0.2f, 0.9f, 0.3f);
-  quad(0, 0, 192, 128, 0);
+  conf_quad(0, 0, 192, 128, 0);
   glDisable(GL_SCISSOR_TEST);
   glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
   glColor3f(0.9f, 0.9f, 0.9f);
-  quad(120, 5, 180, 60, 0);
+  conf_quad(120, 5, 180, 60, 0);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   conf_frame("scissor_mask");
 
@@ -136,7 +127,7 @@ int main(int argc, char** argv) {
         glBlendEquation(eq[i]);
         glBlendFuncSeparate(f[j], f[3 - j], GL_SRC_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
         glColor4f(0.9f, 0.5f, 0.2f, 0.7f);
-        quad(i * 38.0f, j * 24.0f, i * 38.0f + 36, j * 24.0f + 22, 0);
+        conf_quad(i * 38.0f, j * 24.0f, i * 38.0f + 36, j * 24.0f + 22, 0);
       }
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ZERO);

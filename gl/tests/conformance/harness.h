@@ -85,6 +85,17 @@ static void conf_ortho(void) {
   glLoadIdentity();
 }
 
+/* An axis-aligned quad at depth z, counter-clockwise from (x0, y0). */
+static void conf_quad(float x0, float y0, float x1, float y1, float z) __attribute__((unused));
+static void conf_quad(float x0, float y0, float x1, float y1, float z) {
+  glBegin(GL_QUADS);
+  glVertex3f(x0, y0, z);
+  glVertex3f(x1, y0, z);
+  glVertex3f(x1, y1, z);
+  glVertex3f(x0, y1, z);
+  glEnd();
+}
+
 static int conf_end(void) {
   OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
   OSMesaDestroyContext(conf_ctx);

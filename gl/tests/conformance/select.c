@@ -30,15 +30,6 @@ static void records(const char* name, GLint hits) {
   }
 }
 
-static void quad(float x0, float y0, float x1, float y1, float z) {
-  glBegin(GL_QUADS);
-  glVertex3f(x0, y0, z);
-  glVertex3f(x1, y0, z);
-  glVertex3f(x1, y1, z);
-  glVertex3f(x0, y1, z);
-  glEnd();
-}
-
 int main(int argc, char** argv) {
   GLint v;
   conf_init(argc, argv, 64, 64);
@@ -60,9 +51,9 @@ int main(int argc, char** argv) {
   conf_value("enter", glRenderMode(GL_SELECT));
   glInitNames();
   glPushName(10);
-  quad(-0.5f, -0.5f, 0.5f, 0.5f, 0.2f);
+  conf_quad(-0.5f, -0.5f, 0.5f, 0.5f, 0.2f);
   glPushName(20);
-  quad(2, 2, 3, 3, 0); /* outside: no hit */
+  conf_quad(2, 2, 3, 3, 0); /* outside: no hit */
   glLoadName(21);
   glBegin(GL_TRIANGLES);
   glVertex3f(0.5f, 0, -0.4f);
@@ -110,7 +101,7 @@ int main(int argc, char** argv) {
   glRenderMode(GL_SELECT);
   glInitNames();
   glPushName(7);
-  quad(-1, -1, 1, 1, -5);
+  conf_quad(-1, -1, 1, 1, -5);
   glLoadName(8);
   glBegin(GL_QUADS);
   glVertex3f(-1, -1, 0);
@@ -129,7 +120,7 @@ int main(int argc, char** argv) {
   glPushName(1);
   glPushName(2);
   glPushName(3);
-  quad(-1, -1, 1, 1, -5);
+  conf_quad(-1, -1, 1, 1, -5);
   conf_value("overflow", glRenderMode(GL_RENDER));
   glRenderMode(GL_FEEDBACK + 100);
   error("bad_mode");
@@ -141,7 +132,7 @@ int main(int argc, char** argv) {
   glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glColor3f(1, 0.5f, 0);
-  quad(-1, -1, 1, 1, -5);
+  conf_quad(-1, -1, 1, 1, -5);
   conf_frame("after");
   return conf_end();
 }

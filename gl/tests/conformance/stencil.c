@@ -6,15 +6,6 @@
  * (read back), as well as the frames. */
 #include "harness.h"
 
-static void quad(float x0, float y0, float x1, float y1, float z) {
-  glBegin(GL_QUADS);
-  glVertex3f(x0, y0, z);
-  glVertex3f(x1, y0, z);
-  glVertex3f(x1, y1, z);
-  glVertex3f(x0, y1, z);
-  glEnd();
-}
-
 /* The stencil values of an 8 x 8 grid over the window, as NAME_i values, and a
  * checksum of every pixel's. */
 static void stencil_values(const char* name) {
@@ -113,10 +104,10 @@ int main(int argc, char** argv) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilFunc(GL_EQUAL, 1, 0xff);
   glColor3f(1, 0, 0);
-  quad(0, 0, 96, 64, 0);
+  conf_quad(0, 0, 96, 64, 0);
   glStencilFunc(GL_NOTEQUAL, 1, 0xff);
   glColor3f(0, 0, 1);
-  quad(0, 0, 96, 64, 0);
+  conf_quad(0, 0, 96, 64, 0);
   conf_frame("mask");
   stencil_values("mask");
 
@@ -127,13 +118,13 @@ int main(int argc, char** argv) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   for (i = 0; i < 8; ++i) {
     glStencilFunc(GL_ALWAYS, i, 0xff);
-    quad(i * 12.0f, 0, i * 12.0f + 12, 64, 0);
+    conf_quad(i * 12.0f, 0, i * 12.0f + 12, 64, 0);
   }
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   for (i = 0; i < 8; ++i) {
     glStencilFunc(funcs[i], 3, 0xff);
     glColor3f((i & 1) ? 1.0f : 0.3f, (i & 2) ? 1.0f : 0.3f, (i & 4) ? 1.0f : 0.3f);
-    quad(0, i * 8.0f, 96, i * 8.0f + 8, 0);
+    conf_quad(0, i * 8.0f, 96, i * 8.0f + 8, 0);
   }
   conf_frame("funcs");
   stencil_values("funcs_columns");
@@ -146,24 +137,24 @@ int main(int argc, char** argv) {
   for (i = 0; i < 8; ++i) {
     glStencilFunc(GL_ALWAYS, 0xfe, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, ops[i]);
-    quad(i * 12.0f, 0, i * 12.0f + 12, 40, 0);
-    quad(i * 12.0f, 20, i * 12.0f + 12, 50, 0);
-    quad(i * 12.0f, 30, i * 12.0f + 12, 64, 0);
+    conf_quad(i * 12.0f, 0, i * 12.0f + 12, 40, 0);
+    conf_quad(i * 12.0f, 20, i * 12.0f + 12, 50, 0);
+    conf_quad(i * 12.0f, 30, i * 12.0f + 12, 64, 0);
   }
   stencil_values("ops_pass");
   glClearStencil(0);
   glClear(GL_STENCIL_BUFFER_BIT);
   for (i = 0; i < 8; ++i) {
     glStencilOp(GL_KEEP, GL_KEEP, ops[i]);
-    quad(i * 12.0f, 0, i * 12.0f + 12, 32, 0);
-    quad(i * 12.0f, 16, i * 12.0f + 12, 64, 0);
+    conf_quad(i * 12.0f, 0, i * 12.0f + 12, 32, 0);
+    conf_quad(i * 12.0f, 16, i * 12.0f + 12, 64, 0);
   }
   stencil_values("ops_from_zero");
   glClearStencil(255);
   glClear(GL_STENCIL_BUFFER_BIT);
   for (i = 0; i < 8; ++i) {
     glStencilOp(GL_KEEP, GL_KEEP, ops[i]);
-    quad(i * 12.0f, 0, i * 12.0f + 12, 32, 0);
+    conf_quad(i * 12.0f, 0, i * 12.0f + 12, 32, 0);
   }
   stencil_values("ops_from_255");
 
@@ -174,7 +165,7 @@ int main(int argc, char** argv) {
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glColor3f(0, 1, 0);
-  quad(20, 10, 60, 50, 0.5f); /* window depth 0.25 */
+  conf_quad(20, 10, 60, 50, 0.5f); /* window depth 0.25 */
   glStencilFunc(GL_LESS, 2, 0xff); /* passes where 2 < stencil */
   glStencilOp(GL_ZERO, GL_INCR, GL_DECR);
   glClearStencil(1);
@@ -183,7 +174,7 @@ int main(int argc, char** argv) {
   glClear(GL_STENCIL_BUFFER_BIT); /* the left 30 columns fail the stencil test */
   glDisable(GL_SCISSOR_TEST);
   glColor3f(1, 0, 1);
-  quad(10, 20, 80, 40, -0.5f); /* window depth 0.75: behind the green one */
+  conf_quad(10, 20, 80, 40, -0.5f); /* window depth 0.75: behind the green one */
   conf_frame("zfail");
   stencil_values("zfail");
   glDisable(GL_DEPTH_TEST);
@@ -195,7 +186,7 @@ int main(int argc, char** argv) {
   glStencilMask(0x0f);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
-  quad(0, 0, 48, 64, 0);
+  conf_quad(0, 0, 48, 64, 0);
   glStencilMask(0xf0);
   glClearStencil(0x3c);
   glEnable(GL_SCISSOR_TEST);
@@ -207,10 +198,10 @@ int main(int argc, char** argv) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glStencilFunc(GL_EQUAL, 0x0a, 0x0f); /* low nibble 0xa: where the invert flipped 5 */
   glColor3f(1, 1, 0);
-  quad(0, 0, 96, 32, 0);
+  conf_quad(0, 0, 96, 32, 0);
   glStencilFunc(GL_EQUAL, 0x30, 0xf0); /* high nibble 3: the masked clear */
   glColor3f(0, 1, 1);
-  quad(0, 32, 96, 64, 0);
+  conf_quad(0, 32, 96, 64, 0);
   conf_frame("masks");
 
   /* The alpha test comes first: fragments it discards leave the stencil alone. */
@@ -236,7 +227,7 @@ int main(int argc, char** argv) {
   /* Without the test enabled, the stencil is not touched. */
   glDisable(GL_STENCIL_TEST);
   glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
-  quad(0, 0, 96, 64, 0);
+  conf_quad(0, 0, 96, 64, 0);
   stencil_values("disabled");
 
   /* glReadPixels in other types: indices, not scaled. */
