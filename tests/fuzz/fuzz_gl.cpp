@@ -429,10 +429,16 @@ void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
       break;
     }
     case 3: {
+      // 64 bytes of texels: read with the default unpack state (the random one, with its
+      // row lengths and skips, may reach past them; pixel_call gives it a larger image).
       const GLubyte texels[4 * 4 * 4] = {255, 0, 0, 255, 0, 255, 0, 255};
+      glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+      glPixelStorei(GL_UNPACK_ROW_LENGTH, 0), glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+      glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0), glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
       glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
       glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+      glPopClientAttrib();
       glEnable(GL_TEXTURE_2D);
       glBegin(GL_TRIANGLES);
       glTexCoord2f(0, 0), glVertex2f(-1, -1);
@@ -445,7 +451,11 @@ void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
     default: {
       // Reading and copying whatever buffer is selected, GL_NONE included.
       uint8_t px[4 * 4 * 4];
+      glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);  // 4 x 4 RGBA rows, nothing skipped
+      glPixelStorei(GL_PACK_ROW_LENGTH, 0), glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+      glPixelStorei(GL_PACK_SKIP_PIXELS, 0), glPixelStorei(GL_PACK_ALIGNMENT, 4);
       glReadPixels(0, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, px);
+      glPopClientAttrib();
       glRasterPos2f(a, b);
       static const GLenum copies[] = {GL_COLOR, GL_DEPTH, GL_STENCIL};
       glCopyPixels(0, 0, 4, 4, copies[in.below(3)]);
