@@ -82,6 +82,9 @@ void Framebuffer::read_color_tile(int t, uint8_t* out, size_t row_bytes, int cha
   const int n = std::min(x0 + kTileSize, width) - x0, y1 = std::min(y0 + kTileSize, height);
   uint32_t row[kTileSize];
   bool streamed = false;
+  // A clean tile holds the clear colour alone: written from a register, the tile's
+  // 16 KiB not read (most of a frame's tiles when little is drawn: gears).
+  const bool clean = tile_clean[size_t(t)] != 0;
   for (int y = y0; y < y1; ++y) {
     const uint32_t* blocks = color.data() + index(x0, y);  // the row's 4 pixels in the tile's first block
     uint8_t* to = out + size_t(y) * row_bytes + size_t(x0) * size_t(channels);
@@ -90,8 +93,13 @@ void Framebuffer::read_color_tile(int t, uint8_t* out, size_t row_bytes, int cha
     // spare reading the destination's cache lines first (the caller's buffer is cold;
     // gears at 1080p spent half its frame in this copy).
     if (channels == 4 && n == kTileSize && (reinterpret_cast<uintptr_t>(to) & 15) == 0) {
-      for (int x = 0; x < n; x += 4)
+      if (clean) {
+        const __m128i c = _mm_set1_epi32(int(clean_color));
+        for (int x = 0; x < n; x += 4) _mm_stream_si128(reinterpret_cast<__m128i*>(to + 4 * x), c);
+      } else {
+        for (int x = 0; x < n; x += 4)
         _mm_stream_si128(reinterpret_cast<__m128i*>(to + 4 * x), _mm_load_si128(reinterpret_cast<const __m128i*>(blocks + 4 * x)));
+      }
       streamed = true;
       continue;
     }
