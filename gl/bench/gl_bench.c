@@ -2,11 +2,12 @@
  * against Mesa's OSMesa (gl_bench_mesa), timing whole frames — clear, draw, glFinish —
  * of the same GL calls. scripts/bench_gl.sh runs both and prints the ratios.
  *
- *   gl_bench SCENE WIDTHxHEIGHT FRAMES
+ *   gl_bench SCENE WIDTHxHEIGHT FRAMES [OUT.ppm]
  *   SCENE: gears            three lit gears from display lists (quad strips)
  *          mesh-immediate   a lit 100,352-triangle sphere, glBegin/glNormal/glVertex
  *          mesh-arrays      the same mesh through glDrawElements (vertex arrays)
- * Prints: "scene=... size=... frames=... median_ms=..." */
+ * Prints: "scene=... size=... frames=... median_ms=..."; with OUT.ppm, the last frame's
+ * colour goes there too (to compare two builds' images byte for byte). */
 #include <GL/gl.h>
 #include <GL/glu.h>
 #include <GL/osmesa.h>
@@ -194,6 +195,15 @@ int main(int argc, char** argv) {
     }
     glFinish();
     times[f] = now_ms() - t0;
+  }
+  if (argc > 4) {
+    FILE* out = fopen(argv[4], "wb");
+    int y;
+    if (!out) return 1;
+    fprintf(out, "P6\n%d %d\n255\n", w, h);
+    for (y = h - 1; y >= 0; --y) /* the buffer's rows are bottom first */
+      for (f = 0; f < w; ++f) fwrite(buffer + 4 * ((size_t)y * w + f), 1, 3, out);
+    if (fclose(out)) return 1;
   }
   qsort(times, frames, sizeof(double), compare);
   printf("scene=%s size=%dx%d frames=%d median_ms=%.2f\n", argv[1], w, h, frames, times[frames / 2]);
