@@ -422,15 +422,27 @@ class Context {
 
   // --- the vertex stage (vertex.cpp)
   void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
+  Vertex* new_vertex();  // push_vertex in two: a new vertex's place (null: GL_OUT_OF_MEMORY),
+  void vertex_added();   // then, once it is filled in, the assembly check
   void assemble(bool final);
   void polygon(const uint32_t* idx, int n, int provoking);
   void line_segment(uint32_t a, uint32_t b, uint32_t provoking);
   void point_vertex(uint32_t a);
   Vec4 lit(const Vec4& eye, Vec3 normal, bool back) const;
+  Vec4 lit_unclamped(const Vec4& eye, Vec3 normal, bool back) const;
   void prepare_lighting();
   shading::GlLight light_use_[kMaxLights];  // the enabled lights, for this glBegin
   int lights_used_ = 0;
   bool need_eye_ = false;
+  // Under the usual lighting (directional lights, no spots, local viewer, two sides,
+  // colour material, texturing or feedback) glVertex keeps the position and normal,
+  // and a run of them is transformed and lit at once, in SIMD (shading/gl_vertices.hpp),
+  // before anything reads them: before assembly and before glMaterial changes the
+  // material. The vertices' prim_ entries wait, with their edge flags only, till then.
+  bool run_vertices_ = false;
+  std::vector<Vec4> run_position_, run_clip_, run_color_;
+  std::vector<Vec3> run_normal_;
+  void flush_vertices();
 
   void update_derived();  // transform.cpp
   std::vector<Mat4>& stack();  // the one glMatrixMode selects

@@ -74,7 +74,9 @@ void Context::material(GLenum face, GLenum pname, const float* v) {
 }
 
 void Context::store_material(GLenum face, GLenum pname, const float* v) {
-  // glMaterial is allowed between glBegin and glEnd.
+  // glMaterial is allowed between glBegin and glEnd: the vertices before it are lit
+  // with the material they were given with.
+  flush_vertices();
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return error(GL_INVALID_ENUM);
   const Vec4 c{v[0], v[1], v[2], v[3]};
   for (int side = 0; side < 2; ++side) {

@@ -6,11 +6,30 @@
 #include <cstring>
 
 #include "context.hpp"
+#include "shading/gl_vertices.hpp"
+
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 namespace velocity::gl {
 
 namespace {
 [[gnu::always_inline]] inline Vec4 clamp_color(Vec4 c) { return {unit(c.x), unit(c.y), unit(c.z), unit(c.w)}; }
+
+// A lit colour clamped as clamp_color does, into two places. In one register and
+// stored whole where there is SSE: four scalar stores read back whole (the back colour
+// copied from the front) stall store forwarding once a vertex, a quarter of its cost.
+[[gnu::always_inline]] inline void store_clamped(Vec4 c, Vec4& a, Vec4& b) {
+#if defined(__SSE2__)
+  // max(c, 0) is 0 for NaN (the second operand wins), min(., 1): unit() lane by lane.
+  const __m128 v = _mm_min_ps(_mm_max_ps(_mm_setr_ps(c.x, c.y, c.z, c.w), _mm_setzero_ps()), _mm_set1_ps(1.0f));
+  _mm_storeu_ps(&a.x, v);
+  _mm_storeu_ps(&b.x, v);
+#else
+  a = b = clamp_color(c);
+#endif
+}
 // Vertices kept before independent primitives are assembled (a multiple of 3 and 4).
 constexpr size_t kAssembleEvery = 3072;
 }  // namespace
@@ -21,6 +40,7 @@ void Context::begin(GLenum mode) {
   in_begin_ = true;
   mode_ = mode;
   prim_.clear(), order_.clear(), emitted_.clear();
+  run_position_.clear(), run_normal_.clear();
   stipple_counter_ = 0;
   ++pending_gen_;  // prim_ indices start again
   if (pending_gen_ == 0) pending_gen_ = 1;
@@ -30,6 +50,7 @@ void Context::begin(GLenum mode) {
 
 void Context::end() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
+  flush_vertices();
   assemble(true);
   in_begin_ = false;
   prim_.clear(), order_.clear(), emitted_.clear();
@@ -41,6 +62,7 @@ void Context::prepare_lighting() {
   lights_used_ = 0;
   need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count ||
               (texturing() && tex_gen_needs_eye());
+  run_vertices_ = false;
   if (!lighting_.enabled) return;
   for (const Light& l : lighting_.lights) {
     if (!l.enabled) continue;
@@ -57,14 +79,38 @@ void Context::prepare_lighting() {
     u.constant = l.constant, u.linear = l.linear, u.quadratic = l.quadratic;
     if (u.positional) need_eye_ = true;
   }
+  run_vertices_ = !need_eye_ && !lighting_.two_side && !lighting_.color_material && !texturing() && !feeding_back() &&
+                  std::none_of(light_use_, light_use_ + lights_used_, [](const shading::GlLight& u) { return u.spot; });
+}
+
+void Context::flush_vertices() {
+  const size_t n = run_position_.size();
+  if (n == 0) return;
+  run_clip_.resize(n), run_color_.resize(n);
+  shading::GlVertexRun r;
+  r.position = run_position_.data(), r.normal = run_normal_.data(), r.count = n;
+  r.mvp = transform_.mvp, r.normal_matrix = transform_.normal_matrix;
+  r.normalize = transform_.normalize || transform_.rescale_normal;
+  r.lights = light_use_, r.light_count = lights_used_;
+  r.model_ambient = lighting_.model_ambient.xyz();
+  r.material = lighting_.materials[0];
+  r.clip = run_clip_.data(), r.color = run_color_.data();
+  shading::gl_vertices(r);
+  Vertex* out = prim_.data() + (prim_.size() - n);  // the last n vertices are the run's
+  for (size_t i = 0; i < n; ++i) out[i].clip = run_clip_[i], out[i].front = out[i].back = run_color_[i];
+  run_position_.clear(), run_normal_.clear();
 }
 
 // OpenGL's lighting equation (shading::light_gl) for one vertex and one side.
-[[gnu::always_inline]] inline Vec4 Context::lit(const Vec4& eye4, Vec3 n, bool back) const {
+[[gnu::always_inline]] inline Vec4 Context::lit_unclamped(const Vec4& eye4, Vec3 n, bool back) const {
   Vec3 eye{};
   if (need_eye_) eye = eye4.w != 0 && eye4.w != 1 ? eye4.xyz() / eye4.w : eye4.xyz();
-  return clamp_color(shading::light_gl(light_use_, lights_used_, lighting_.model_ambient.xyz(), lighting_.local_viewer,
-                                       lighting_.materials[back ? 1 : 0], back ? -n : n, eye));
+  return shading::light_gl(light_use_, lights_used_, lighting_.model_ambient.xyz(), lighting_.local_viewer,
+                           lighting_.materials[back ? 1 : 0], back ? -n : n, eye);
+}
+
+[[gnu::always_inline]] inline Vec4 Context::lit(const Vec4& eye4, Vec3 n, bool back) const {
+  return clamp_color(lit_unclamped(eye4, n, back));
 }
 
 Vec4 Context::lit_front(const Vec4& eye) {
@@ -76,6 +122,17 @@ Vec4 Context::lit_front(const Vec4& eye) {
 
 void Context::vertex(Vec4 v) {
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
+  if (run_vertices_) {  // transformed and lit with its run (flush_vertices)
+    Vertex* out = new_vertex();
+    if (!out) return;
+    out->edge = edge_flag_;
+    // (Component by component: v came in registers; stored whole from the stack it
+    // would be read back whole from two halves, a store-forwarding stall.)
+    Vec4& p = run_position_.emplace_back();
+    p.x = v.x, p.y = v.y, p.z = v.z, p.w = v.w;
+    run_normal_.push_back(normal_);
+    return vertex_added();
+  }
   Vertex out;
   out.clip = transform_.mvp * v;
   out.edge = edge_flag_;
@@ -89,8 +146,8 @@ void Context::vertex(Vec4 v) {
     if (lighting_.enabled) {
       Vec3 n = transform_.normal_matrix.transform_vector(normal_);
       if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
-      out.front = lit(eye, n, false);
-      out.back = lighting_.two_side ? lit(eye, n, true) : out.front;
+      if (lighting_.two_side) out.front = lit(eye, n, false), out.back = lit(eye, n, true);
+      else store_clamped(lit_unclamped(eye, n, false), out.front, out.back);
     }
     out.fog = std::fabs(eye.z);
   }
@@ -107,15 +164,29 @@ void Context::vertex(Vec4 v) {
 }
 
 void Context::push_vertex(const Vertex& v) {
+  if (Vertex* out = new_vertex()) {
+    *out = v;
+    vertex_added();
+  }
+}
+
+Vertex* Context::new_vertex() {
   if (order_.size() >= kMaxPrimitiveVertices) {
     error(GL_OUT_OF_MEMORY);  // (only the first error is kept until glGetError)
-    return;
+    return nullptr;
   }
   order_.push_back(uint32_t(prim_.size()));
-  prim_.push_back(v);
   emitted_.emplace_back();
+  // Copied from a constant (a few vector moves), not value-initialised (a rep stos,
+  // slow to start, once a vertex).
+  static constexpr Vertex kFresh{};
+  return &prim_.emplace_back(kFresh);
+}
+
+void Context::vertex_added() {
   if (!caching_ && order_.size() >= kAssembleEvery &&
       (mode_ == GL_POINTS || mode_ == GL_LINES || mode_ == GL_TRIANGLES || mode_ == GL_QUADS)) {
+    flush_vertices();
     assemble(false);
     prim_.clear(), order_.clear(), emitted_.clear();
     if (++pending_gen_ == 0) pending_gen_ = 1;

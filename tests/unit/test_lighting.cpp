@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
+#include "shading/gl_vertices.hpp"
 #include "shading/lighting.hpp"
 
 using namespace velocity;
@@ -59,6 +62,61 @@ TEST(Lighting, SimdFormIsTheScalarForm) {
       EXPECT_NEAR(got.specular.z, want.specular.z, tol) << i << " ks " << s.ks;
     }
   }
+}
+
+// pGL's vertex runs (gl_vertices): bit for bit the scalar path's clip position (Mat4 *
+// Vec4) and clamped colour (light_gl of the transformed, optionally renormalised normal),
+// for every run length up to a few vectors (the partial last vector), three coloured
+// directional lights, an emissive material with and without a highlight, colours past
+// 1 and below 0 (clamped), zero and NaN normals.
+TEST(Lighting, GlVertexRunIsTheScalarVertexPath) {
+  std::mt19937 rng(20);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), pos(0.1f, 1.0f);
+  GlLight lights[3];
+  for (GlLight& l : lights) {
+    l.colors = {{pos(rng) * 0.2f, 0, pos(rng) * 0.1f}, {pos(rng), pos(rng) * 1.5f, pos(rng)}, {pos(rng), pos(rng), -0.2f}};
+    l.direction = normalize(Vec3{u(rng), u(rng), 1.0f});
+    l.half = normalize(l.direction + Vec3{0, 0, 1});
+  }
+  Mat4 mvp, normal_matrix;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) mvp.m[r][c] = u(rng) * 2, normal_matrix.m[r][c] = u(rng);
+  const size_t most = 53;
+  std::vector<Vec4> position(most);
+  std::vector<Vec3> normal(most);
+  for (size_t i = 0; i < most; ++i) position[i] = {u(rng) * 3, u(rng) * 3, u(rng) * 3, 1 + u(rng) * 0.5f};
+  for (size_t i = 0; i < most; ++i) normal[i] = {u(rng) * 2, u(rng) * 2, u(rng) * 2};
+  normal[5] = {0, 0, 0};
+  normal[11] = {std::numeric_limits<float>::quiet_NaN(), 0, 1};
+  for (float shininess : {0.0f, 23.5f})
+    for (bool renormalize : {false, true}) {
+      GlMaterial m;
+      m.ambient = {0.3f, 0.1f, 0.2f, 1}, m.diffuse = {0.9f, 0.6f, 0.3f, 0.7f}, m.specular = {0.8f, 0.8f, 1.2f, 1};
+      m.emission = {0.05f, 0.3f, 0, 1}, m.shininess = shininess;
+      const Vec3 model_ambient{0.2f, 0.25f, 0.1f};
+      for (size_t count = 1; count <= most; ++count) {
+        std::vector<Vec4> clip(count), color(count);
+        GlVertexRun run;
+        run.position = position.data(), run.normal = normal.data(), run.count = count;
+        run.mvp = mvp, run.normal_matrix = normal_matrix, run.normalize = renormalize;
+        run.lights = lights, run.light_count = 3, run.model_ambient = model_ambient, run.material = m;
+        run.clip = clip.data(), run.color = color.data();
+        gl_vertices(run);
+        for (size_t i = 0; i < count; ++i) {
+          const Vec4 want_clip = mvp * position[i];
+          Vec3 n = normal_matrix.transform_vector(normal[i]);
+          if (renormalize) n = normalize(n);
+          const Vec4 c = light_gl(lights, 3, model_ambient, false, m, n, {});
+          auto unit = [](float v) { return v > 0 ? (v < 1 ? v : 1.0f) : 0.0f; };
+          const Vec4 want_color{unit(c.x), unit(c.y), unit(c.z), unit(c.w)};
+          EXPECT_EQ(std::memcmp(&clip[i], &want_clip, sizeof(Vec4)), 0) << i << " of " << count;
+          EXPECT_EQ(std::memcmp(&color[i], &want_color, sizeof(Vec4)), 0)
+              << i << " of " << count << ", shininess " << shininess << ", normalize " << renormalize << ": "
+              << color[i].x << " " << color[i].y << " " << color[i].z << " " << color[i].w << " want " << want_color.x
+              << " " << want_color.y << " " << want_color.z << " " << want_color.w;
+        }
+      }
+    }
 }
 
 // KHR_lights_punctual's spot cone and range window, from the extension's formulas
