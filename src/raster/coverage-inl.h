@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 #include "raster/contract.hpp"
 #include "simd/simd-inl.h"
@@ -66,6 +67,45 @@ HWY_INLINE int rect_blocks(const TileBox& b, Block* out) {
   return n;
 }
 
+// A triangle less than 16 pixels wide and tall: every |a| and |b| below 16 pixels (in
+// 24.8). Anywhere within a few blocks of its box |E| < 2^26, so floor(E / 256) and the
+// steps a * i + b * j across the box fit int32 with room to spare.
+HWY_INLINE bool tiny_triangle(const TriangleEdges& e) {
+  bool tiny = true;
+  for (int k = 0; k < 3; ++k) tiny = tiny && std::abs(e.a[k]) < 16 * kSubpixelOne && std::abs(e.b[k]) < 16 * kSubpixelOne;
+  return tiny;
+}
+
+// Its 4x4 blocks test their pixels directly, row by row of the box: the 16x16 and 4x4
+// classification below pays off on larger triangles, not on the dozen pixels of a
+// dense mesh's (where it was most of the coverage's time). The same test, the same
+// pixels; `step` is triangle_blocks' per-edge a * i + b * j of a block's pixels.
+HWY_INLINE int tiny_triangle_blocks(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
+                                    const TileBox& box, Block* out) {
+  const DI di;
+  const VI minus1 = hn::Set(di, -1);
+  const int bx0 = box.x0 & ~3, by0 = box.y0 & ~3;
+  const int64_t px = int64_t(tx + bx0) * kSubpixelOne + kSubpixelHalf;
+  const int64_t py = int64_t(ty + by0) * kSubpixelOne + kSubpixelHalf;
+  int32_t q0[3];  // floor(E / 256) at the first block's first pixel centre
+  for (int k = 0; k < 3; ++k) q0[k] = int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits);
+  int n = 0;
+  for (int by = by0; by <= box.y1; by += 4)
+    for (int bx = bx0; bx <= box.x1; bx += 4) {
+      VI q[3];
+      for (int k = 0; k < 3; ++k) q[k] = hn::Set(di, q0[k] + e.a[k] * (bx - bx0) + e.b[k] * (by - by0));
+      uint32_t inside = 0;
+      for (int v = 0; v < kVectorsPerBlock; ++v) {
+        const MI m = hn::And(hn::And(hn::Gt(hn::Add(q[0], step[0][v]), minus1), hn::Gt(hn::Add(q[1], step[1][v]), minus1)),
+                             hn::Gt(hn::Add(q[2], step[2][v]), minus1));
+        inside |= mask_bits(hn::RebindMask(DF(), m), v);
+      }
+      const uint32_t mask = inside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
+      if (mask) out[n++] = {uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), uint16_t(mask)};
+    }
+  return n;
+}
+
 // A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels.
 inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
   const TriangleEdges& e = shape<TriangleEdges>(r);
@@ -78,6 +118,7 @@ inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, c
     for (int v = 0; v < kVectorsPerBlock; ++v)
       step[k][v] = hn::Add(hn::Mul(hn::Set(di, e.a[k]), hn::Load(di, kBlockXi + v * kLanes)),
                            hn::Mul(hn::Set(di, e.b[k]), hn::Load(di, kBlockYi + v * kLanes)));
+  if (tiny_triangle(e)) return tiny_triangle_blocks(e, step, tx, ty, box, out);
 
   for (int my = box.y0 >> 4; my <= box.y1 >> 4; ++my)
     for (int mx = box.x0 >> 4; mx <= box.x1 >> 4; ++mx) {
