@@ -327,30 +327,32 @@ TEST(Render, EndFrameIntoMatchesEndFrameThenReadColor) {
 // Tiles left clean (the clear colour alone, nothing drawn) are written out from the
 // clear colour without reading them: the bytes are still the framebuffer's, frame after
 // frame (clean from the last frame, cleaned in this one, a new clear colour that makes
-// every tile dirty again), with an asymmetric colour so a swapped channel shows.
+// every tile dirty again), with an asymmetric colour so a swapped channel shows; for an
+// image written with ordinary stores and one past 16 MiB, streamed.
 TEST(Render, EndFrameIntoWritesCleanTilesAsTheFramebufferHoldsThem) {
-  Scene scene = make_demo_scene(1.5f);
-  scene.camera.position = scene.camera.position * 4.0f;  // the scene small in the middle: most tiles empty
-  const int w = 320, h = 200;
-  const size_t pitch = size_t(w) * 4;
-  Renderer r(w, h);
-  r.options.threads = 2;
-  std::vector<Mat4> world;
-  scene.world_matrices(world);
-  for (Vec4 clear : {Vec4{0.2f, 0.4f, 0.6f, 0.8f}, Vec4{0.2f, 0.4f, 0.6f, 0.8f}, Vec4{0.9f, 0.1f, 0.3f, 1.0f}}) {
-    FrameStart start;
-    start.color = clear;
-    r.begin_frame(scene.camera, scene.lights, start);
-    for (size_t i = 0; i < scene.objects().size(); ++i) {
-      const Object& o = scene.objects()[i];
-      if (o.visible && o.mesh) r.draw(*o.mesh, world[i], o.material ? &*o.material : nullptr, uint32_t(i + 1));
+  for (auto [w, h] : {std::pair{320, 200}, std::pair{2112, 2048}}) {
+    Scene scene = make_demo_scene(float(w) / float(h));
+    scene.camera.position = scene.camera.position * 4.0f;  // the scene small in the middle: most tiles empty
+    const size_t pitch = size_t(w) * 4;
+    Renderer r(w, h);
+    r.options.threads = 2;
+    std::vector<Mat4> world;
+    scene.world_matrices(world);
+    for (Vec4 clear : {Vec4{0.2f, 0.4f, 0.6f, 0.8f}, Vec4{0.2f, 0.4f, 0.6f, 0.8f}, Vec4{0.9f, 0.1f, 0.3f, 1.0f}}) {
+      FrameStart start;
+      start.color = clear;
+      r.begin_frame(scene.camera, scene.lights, start);
+      for (size_t i = 0; i < scene.objects().size(); ++i) {
+        const Object& o = scene.objects()[i];
+        if (o.visible && o.mesh) r.draw(*o.mesh, world[i], o.material ? &*o.material : nullptr, uint32_t(i + 1));
+      }
+      std::vector<uint8_t> got(pitch * h, 0xab), want(pitch * h, 0xcd);
+      r.end_frame_into(got.data(), pitch, 4);
+      r.read_color(want.data(), pitch, 4);
+      ASSERT_EQ(got, want) << w << "x" << h << ", clear " << clear.x << "," << clear.y << "," << clear.z;
+      EXPECT_EQ(got[0], uint8_t(std::lround(clear.x * 255)));  // a corner: the background
+      EXPECT_EQ(got[3], uint8_t(std::lround(clear.w * 255)));
     }
-    std::vector<uint8_t> got(pitch * h, 0xab), want(pitch * h, 0xcd);
-    r.end_frame_into(got.data(), pitch, 4);
-    r.read_color(want.data(), pitch, 4);
-    ASSERT_EQ(got, want) << "clear " << clear.x << "," << clear.y << "," << clear.z;
-    EXPECT_EQ(got[0], uint8_t(std::lround(clear.x * 255)));  // a corner: the background
-    EXPECT_EQ(got[3], uint8_t(std::lround(clear.w * 255)));
   }
 }
 
