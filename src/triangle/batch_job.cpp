@@ -63,7 +63,8 @@ class BatchPrimitives {
     return c;
   }
 
-  // Varyings of vertex v: RGBA, then s, t, q, then the fog coordinate.
+  // Varyings of vertex v: RGBA, then s, t, q per texture unit, then the secondary
+  // colour's RGB, then the fog coordinate.
   void varyings(uint32_t v, float* out) const {
     const Vec4 c = b_.color ? b_.color[v] : Vec4{1, 1, 1, 1};
     using namespace raster::varying;
@@ -72,6 +73,14 @@ class BatchPrimitives {
     if (d_.textured) {
       const Vec4 t = b_.texcoord ? b_.texcoord[v] : Vec4{0, 0, 0, 1};
       out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
+    }
+    if (d_.units > 1) {
+      const Vec4 t = b_.texcoord1 ? b_.texcoord1[v] : Vec4{0, 0, 0, 1};
+      out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
+    }
+    if (d_.color_sum) {
+      const Vec4 s = b_.secondary ? b_.secondary[v] : Vec4{0, 0, 0, 0};
+      out[at++] = s.x, out[at++] = s.y, out[at++] = s.z;
     }
     if (d_.fog) out[at] = b_.fog ? b_.fog[v] : 0.0f;
   }
