@@ -85,6 +85,14 @@ void record_array_element(Context& c, GLint i) {
     const bool e = c.arrays.edge(i);
     compiled([=](Context& k) { k.set_edge_flag(e); });
   }
+  if (c.arrays.secondary_color.enabled && c.arrays.secondary_color.usable()) {
+    const Vec4 s = c.arrays.secondary_color.fetch_normalized(i, {0, 0, 0, 1}, 3);
+    compiled([=](Context& k) { k.set_secondary_color(s); });
+  }
+  if (c.arrays.fog_coord.enabled && c.arrays.fog_coord.usable()) {
+    const float f = c.arrays.fog_coord.fetch(i, {}).x;
+    compiled([=](Context& k) { k.set_fog_coord(f); });
+  }
   if (c.arrays.vertex.enabled && c.arrays.vertex.usable()) {
     const Vec4 v = c.arrays.vertex.fetch(i, {0, 0, 0, 1});
     compiled([=](Context& k) { k.vertex(v); });

@@ -82,7 +82,9 @@ void Context::client_state(GLenum cap, bool on) {
     case GL_COLOR_ARRAY: arrays.color.enabled = on; break;
     case GL_TEXTURE_COORD_ARRAY: arrays.texcoord.enabled = on; break;
     case GL_EDGE_FLAG_ARRAY: arrays.edge_enabled = on; break;
-    default: error(GL_INVALID_ENUM);
+    default:
+      if (color_sum_client_state(cap, on)) break;  // (color_sum.cpp)
+      error(GL_INVALID_ENUM);
   }
 }
 
@@ -93,6 +95,9 @@ void Context::array_element(GLint i) {
   if (arrays.normal.enabled && arrays.normal.usable()) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
   if (arrays.texcoord.enabled && arrays.texcoord.usable()) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
   if (arrays.edge_enabled && arrays.edge_usable()) edge_flag_ = arrays.edge(i);
+  if (arrays.secondary_color.enabled && arrays.secondary_color.usable())
+    secondary_ = arrays.secondary_color.fetch_normalized(i, {0, 0, 0, 1}, 3);
+  if (arrays.fog_coord.enabled && arrays.fog_coord.usable()) fog_coord_ = arrays.fog_coord.fetch(i, {}).x;
   if (arrays.vertex.enabled && arrays.vertex.usable()) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
 }
 
@@ -106,15 +111,18 @@ struct Context::KeptCurrent {
   Vec3 normal;
   bool edge;
   Material materials[2];
+  Vec4 secondary;
+  float fog_coord;
 };
 
 Context::KeptCurrent Context::keep_current() const {
-  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}};
+  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}, secondary_, fog_coord_};
 }
 
 void Context::restore_current(const KeptCurrent& k) {
   color_ = k.color, texcoord_ = k.texcoord, normal_ = k.normal, edge_flag_ = k.edge;
   lighting_.materials[0] = k.materials[0], lighting_.materials[1] = k.materials[1];
+  secondary_ = k.secondary, fog_coord_ = k.fog_coord;
 }
 
 void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {

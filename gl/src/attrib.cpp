@@ -30,6 +30,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.tex_gen = tex_gen_;
   f.draw_buffer = draw_buffer_, f.read_buffer = read_buffer_;
   f.transfer = pixels.transfer;
+  save_color_sum(f);  // (color_sum.cpp)
   attrib_stack_.push_back(std::move(f));
 }
 
@@ -114,6 +115,7 @@ void Context::pop_attrib() {
     tex_gen_ = f.tex_gen;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;
+  restore_color_sum(f);  // (color_sum.cpp)
   update_clip_planes();
   transform_.derived_dirty = true;
   if (lighting_.color_material) apply_color_material();

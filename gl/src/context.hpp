@@ -46,6 +46,8 @@
 //   api_buffers.cpp   their C entry points, glGetPointerv
 //   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
 //   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
+//   color_sum.cpp     GL 1.4's secondary colour and fog coordinates, GL 1.2's separate
+//                     specular colour; api_color_sum.cpp their C calls
 #pragma once
 
 #include <GL/gl.h>
@@ -364,6 +366,22 @@ class Context {
   void polygon_stipple(const std::array<uint32_t, 32>& rows);
   void get_polygon_stipple(GLubyte* out) const;  // packed with the pixel store's pack state
 
+  // --- GL 1.4's secondary colour and fog coordinates, GL 1.2's separate specular
+  // --- colour (color_sum.cpp)
+  void set_secondary_color(Vec4 c) { secondary_ = c; }
+  void set_fog_coord(float f) { fog_coord_ = f; }
+  bool enable_color_sum(GLenum cap, bool on);                // false: not GL_COLOR_SUM
+  bool light_model_color_control(GLenum pname, float v);    // false: not its parameter
+  bool fog_coord_source(GLenum pname, float v);             // false: not GL_FOG_COORD_SRC
+  bool color_sum_client_state(GLenum cap, bool on);         // false: not one of its arrays
+  bool get_color_sum(GLenum pname, std::vector<double>& out, int& kind) const;
+  bool color_sum_enabled(GLenum cap, bool* known) const;    // glIsEnabled's
+  // Does the colour sum apply to what is drawn now (GL_COLOR_SUM, or lighting with
+  // GL_SEPARATE_SPECULAR_COLOR)?
+  bool color_sum_applies() const { return color_sum_.enabled || (lighting_.enabled && color_sum_.separate_specular); }
+  void save_color_sum(AttribFrame& f) const;
+  void restore_color_sum(const AttribFrame& f);
+
  private:
   void update_clip_planes();
   // The "on" pieces of the line from prim_[a] (colour color_a) to prim_[b], as lines;
@@ -403,7 +421,11 @@ class Context {
     std::vector<Vec4> position, color, texcoord;
     std::vector<float> fog, clip_distance;
     std::vector<uint32_t> index;
-    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear(); }
+    std::vector<Vec4> secondary;  // with state.color_sum (color_sum.cpp)
+    void clear() {
+      position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear();
+      secondary.clear();
+    }
   };
   void ensure_frame();
   void submit_pending();
@@ -415,18 +437,23 @@ class Context {
   uint8_t stencil_clear_value() const;
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
-  void emit_vertex(uint32_t i, const Vec4& color, bool shared);
+  // `secondary`: its secondary colour where the batch has a colour sum (null: black).
+  void emit_vertex(uint32_t i, const Vec4& color, bool shared, const Vec4* secondary = nullptr);
   // `stippled`: the draws of filled polygons, which the polygon stipple applies to.
   Pending& target(PrimitiveKind kind, bool offset, bool stippled = false);
   void changed() { pixel_dirty_ = true; }
 
   // --- the vertex stage (vertex.cpp)
   void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
+  void finish_vertex(Vertex& out, const Vec4& eye, const Vec4& object);  // texture coordinates, secondary colour
+  // A lit vertex with GL_SEPARATE_SPECULAR_COLOR: the specular part kept apart (color_sum.cpp).
+  void vertex_separate_specular(Vertex& out, const Vec4& eye, Vec3 n, const Vec4& object);
   void assemble(bool final);
   void polygon(const uint32_t* idx, int n, int provoking);
   void line_segment(uint32_t a, uint32_t b, uint32_t provoking);
   void point_vertex(uint32_t a);
-  Vec4 lit(const Vec4& eye, Vec3 normal, bool back) const;
+  // `specular`: null, or where the specular part goes (it is then not in the result).
+  Vec4 lit(const Vec4& eye, Vec3 normal, bool back, Vec3* specular = nullptr) const;
   void prepare_lighting();
   shading::GlLight light_use_[kMaxLights];  // the enabled lights, for this glBegin
   int lights_used_ = 0;
@@ -554,6 +581,22 @@ class Context {
   // GL 1.5's occlusion queries (occlusion.cpp).
   QueryState queries_;
   void settle_query(QueryObject& q);  // run the frame its draws are in, if it has not run
+
+  // The colour sum and fog coordinates (color_sum.cpp): the state, the current
+  // secondary colour and fog coordinate, and per prim_ vertex its secondary colours
+  // (kept only while the colour sum applies: color_sum_on_, set by glBegin).
+  ColorSumState color_sum_;
+  Vec4 secondary_{0, 0, 0, 1};
+  float fog_coord_ = 0;
+  struct Secondary {
+    Vec4 front, back;
+  };
+  std::vector<Secondary> prim_secondary_;
+  bool color_sum_on_ = false, separate_on_ = false;
+  // The secondary colour of prim_ vertex i as drawn (flat: `provoking`'s), or null.
+  const Vec4* secondary_of(uint32_t i, bool back) const {
+    return color_sum_on_ ? (back ? &prim_secondary_[i].back : &prim_secondary_[i].front) : nullptr;
+  }
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

@@ -78,6 +78,10 @@ void Context::submit_pending() {
   b.color = kept.color.data();
   b.texcoord = kept.texcoord.empty() ? nullptr : kept.texcoord.data();
   b.fog = kept.fog.empty() ? nullptr : kept.fog.data();
+  if (kept.state.color_sum) {  // (color_sum.cpp; a vertex given none has black)
+    kept.secondary.resize(kept.position.size());
+    b.secondary = kept.secondary.data();
+  }
   b.vertex_count = uint32_t(kept.position.size());
   b.indices = kept.index.data();
   b.index_count = uint32_t(kept.index.size());
@@ -236,6 +240,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
     }
   }
   s.fog = raster_.fog;
+  s.color_sum = color_sum_applies();  // (color_sum.cpp)
   s.fog_mode = raster_.fog_mode == GL_LINEAR ? FogMode::Linear : raster_.fog_mode == GL_EXP2 ? FogMode::Exp2 : FogMode::Exp;
   s.fog_start = raster_.fog_start, s.fog_end = raster_.fog_end, s.fog_density = raster_.fog_density;
   s.fog_color = raster_.fog_color;
@@ -298,7 +303,7 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled
   return pending_;
 }
 
-void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
+void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared, const Vec4* secondary) {
   Pending& p = pending_;
   if (shared) {
     const Emitted e = emitted_[i];
@@ -311,6 +316,7 @@ void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
   p.color.push_back(color);
   if (p.state.texture.texture) p.texcoord.push_back(v.tex);
   if (p.state.fog) p.fog.push_back(v.fog);
+  if (p.state.color_sum) p.secondary.push_back(secondary ? *secondary : Vec4{0, 0, 0, 0});
   for (uint32_t k = 0; k < p.clip_planes; ++k) p.clip_distance.push_back(v.clip_distance[k]);
 }
 

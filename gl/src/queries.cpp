@@ -25,6 +25,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_eval(pname, out)) return true;             // (evaluators.cpp)
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
   if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
+  if (get_color_sum(pname, out, kind)) return true;  // (color_sum.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -156,6 +157,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
   if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
   if (const bool on = map1_enabled(cap, known); *known) return on;  // (evaluators.cpp)
+  if (const bool on = color_sum_enabled(cap, known); *known) return on;  // (color_sum.cpp)
   *known = true;
   switch (cap) {
     case GL_DEPTH_TEST: return raster_.depth_test;

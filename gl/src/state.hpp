@@ -294,6 +294,18 @@ struct ArrayState {
   bool edge(GLint i) const;  // (arrays.cpp; outside its buffer: true)
   // GL 1.5's GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER bindings (buffer_objects.cpp).
   std::shared_ptr<BufferObject> array_buffer, element_buffer;
+  // GL 1.4's secondary colour and fog coordinate arrays; the colour index array's state
+  // (never drawn: no colour index mode) (color_sum.cpp).
+  ClientArray secondary_color, fog_coord, index;
+  ArrayState() { secondary_color.size = 3, fog_coord.size = 1, index.size = 1; }
+};
+
+// --- GL 1.2's separate specular colour, GL 1.4's colour sum and fog coordinate ----
+// --- source (color_sum.cpp) -------------------------------------------------------
+struct ColorSumState {
+  bool enabled = false;            // GL_COLOR_SUM (GL_FOG_BIT and GL_ENABLE_BIT)
+  bool separate_specular = false;  // GL_LIGHT_MODEL_COLOR_CONTROL (GL_LIGHTING_BIT)
+  GLenum fog_coord_src = 0x8452;   // GL_FOG_COORD_SRC: GL_FRAGMENT_DEPTH (GL_FOG_BIT)
 };
 
 // --- display lists (lists.cpp) ----------------------------------------------------
@@ -357,6 +369,9 @@ struct AttribFrame {
   GLenum draw_buffer = GL_FRONT;  // GL_COLOR_BUFFER_BIT (buffers.cpp)
   GLenum read_buffer = GL_FRONT;  // GL_PIXEL_MODE_BIT
   PixelTransfer transfer;         // GL_PIXEL_MODE_BIT (pixel_transfer.cpp)
+  ColorSumState color_sum;        // (color_sum.cpp: by bit)
+  Vec4 secondary{0, 0, 0, 1};     // GL_CURRENT_BIT
+  float fog_coord = 0;            // GL_CURRENT_BIT
 };
 
 struct ClientAttribFrame {
