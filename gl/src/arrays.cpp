@@ -93,7 +93,9 @@ void Context::array_element(GLint i) {
   if (arrays.color.enabled && arrays.color.usable())
     set_color(arrays.color.fetch_normalized(i, {0, 0, 0, 1}, arrays.color.size));
   if (arrays.normal.enabled && arrays.normal.usable()) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
-  if (arrays.texcoord.enabled && arrays.texcoord.usable()) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
+  // Each unit's coordinates from its own array (multitexture.cpp).
+  if (const ClientArray& t = texcoord_array(0); t.enabled && t.usable()) texcoord_ = t.fetch(i, {0, 0, 0, 1});
+  if (const ClientArray& t = texcoord_array(1); t.enabled && t.usable()) texcoord1_ = t.fetch(i, {0, 0, 0, 1});
   if (arrays.edge_enabled && arrays.edge_usable()) edge_flag_ = arrays.edge(i);
   if (arrays.secondary_color.enabled && arrays.secondary_color.usable())
     secondary_ = arrays.secondary_color.fetch_normalized(i, {0, 0, 0, 1}, 3);
@@ -113,16 +115,17 @@ struct Context::KeptCurrent {
   Material materials[2];
   Vec4 secondary;
   float fog_coord;
+  Vec4 texcoord1;
 };
 
 Context::KeptCurrent Context::keep_current() const {
-  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}, secondary_, fog_coord_};
+  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}, secondary_, fog_coord_, texcoord1_};
 }
 
 void Context::restore_current(const KeptCurrent& k) {
   color_ = k.color, texcoord_ = k.texcoord, normal_ = k.normal, edge_flag_ = k.edge;
   lighting_.materials[0] = k.materials[0], lighting_.materials[1] = k.materials[1];
-  secondary_ = k.secondary, fog_coord_ = k.fog_coord;
+  secondary_ = k.secondary, fog_coord_ = k.fog_coord, texcoord1_ = k.texcoord1;
 }
 
 void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {

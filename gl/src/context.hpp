@@ -48,6 +48,7 @@
 //   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
 //   color_sum.cpp     GL 1.4's secondary colour and fog coordinates, GL 1.2's separate
 //                     specular colour; api_color_sum.cpp their C calls
+//   multitexture.cpp  GL 1.3's texture units; api_multitexture.cpp their C calls
 #pragma once
 
 #include <GL/gl.h>
@@ -382,6 +383,23 @@ class Context {
   void save_color_sum(AttribFrame& f) const;
   void restore_color_sum(const AttribFrame& f);
 
+  // --- GL 1.3's texture units (multitexture.cpp)
+  void active_texture(GLenum unit);
+  void client_active_texture(GLenum unit);
+  void multi_tex_coord(GLenum unit, Vec4 t);
+  bool get_multitexture(GLenum pname, std::vector<double>& out) const;
+  // Unit u's coordinate array (whichever glClientActiveTexture selects is `arrays.texcoord`).
+  const ClientArray& texcoord_array(int u) const { return u == live_client_unit_ ? arrays.texcoord : parked_texcoord_; }
+  void unbind_deleted_unit_texture(GLuint id);  // glDeleteTextures: unit bindings not live
+  // The live fields hold unit u's state (and, for the client state, unit u's array).
+  void make_live(int u);
+  void make_client_live(int u);
+  int active_unit() const { return active_unit_; }
+  void save_units(AttribFrame& f);  // (unit 0 live after it)
+  void restore_units(const AttribFrame& f);
+  void save_client_units(ClientAttribFrame& f);
+  void restore_client_units(const ClientAttribFrame& f);
+
  private:
   void update_clip_planes();
   // The "on" pieces of the line from prim_[a] (colour color_a) to prim_[b], as lines;
@@ -392,7 +410,9 @@ class Context {
   bool tex_gen_needs_eye() const;
   // The current texture coordinates with the enabled ones generated, for a vertex at
   // `object` (object space) and `eye` (eye space; needed by all but object linear).
-  Vec4 generate_texcoord(const Vec4& object, const Vec4& eye) const;
+  Vec4 generate_texcoord(const Vec4& object, const Vec4& eye) const { return generate_texcoord(tex_gen_, texcoord_, object, eye); }
+  Vec4 generate_texcoord(const TexGenState& g, const Vec4& current, const Vec4& object, const Vec4& eye) const;
+  static bool tex_gen_needs_eye(const TexGenState& g);
 
   // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
   // triangles: the fragments whose centres it covers, with its colour and depth.
@@ -422,9 +442,11 @@ class Context {
     std::vector<float> fog, clip_distance;
     std::vector<uint32_t> index;
     std::vector<Vec4> secondary;  // with state.color_sum (color_sum.cpp)
+    std::vector<Vec4> texcoord1;  // with state.texture1 (multitexture.cpp)
+    bool stage0_unit1 = false;    // texcoord holds unit 1's (unit 0 is off)
     void clear() {
       position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear();
-      secondary.clear();
+      secondary.clear(), texcoord1.clear();
     }
   };
   void ensure_frame();
@@ -593,6 +615,27 @@ class Context {
   };
   std::vector<Secondary> prim_secondary_;
   bool color_sum_on_ = false, separate_on_ = false;
+
+  // Texture units (multitexture.cpp). The live fields (texture_'s enables, bindings and
+  // environment, transform_.texture, tex_gen_) hold unit live_unit_'s state, the
+  // active unit's except between glBegin and glEnd (unit 0's there); parked_unit_ the
+  // other's. Unit 1's coordinates per prim_ vertex while it is on (unit1_on_).
+  int active_unit_ = 0, live_unit_ = 0, client_unit_ = 0, live_client_unit_ = 0;
+  TextureUnitState parked_unit_;
+  ClientArray parked_texcoord_;
+  Vec4 texcoord1_{0, 0, 0, 1}, raster_texcoord1_{0, 0, 0, 1};
+  std::vector<Vec4> prim_tex1_;
+  bool unit1_on_ = false;
+  bool stage0_unit1_ = false;  // what the last texture_stages said
+  void swap_units();
+  // Unit 1's state during glBegin/glEnd (parked there) and its coordinates for a vertex.
+  bool unit1_texturing() const { return parked_unit_.enabled || parked_unit_.enabled_1d; }
+  Vec4 unit1_texcoord(const Vec4& object, const Vec4& eye) const;
+  // The texture stages of a draw from the units (unit 0 live): the enabled units in
+  // order, first in PixelState::texture; true when that first one is unit 1.
+  bool texture_stages(PixelState& s);
+  bool unit_stage(TextureStage& st, bool enabled, bool enabled_1d, GLuint bound, GLuint bound_1d, GLenum env_mode,
+                  const Vec4& env_color, float lod_bias);
   // The secondary colour of prim_ vertex i as drawn (flat: `provoking`'s), or null.
   const Vec4* secondary_of(uint32_t i, bool back) const {
     return color_sum_on_ ? (back ? &prim_secondary_[i].back : &prim_secondary_[i].front) : nullptr;

@@ -18,6 +18,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   bool known = false;
   const bool enabled = is_enabled(pname, &known);
   if (known) return out = {enabled ? 1.0 : 0.0}, true;
+  if (get_multitexture(pname, out)) return true;  // (multitexture.cpp: before the units' own)
   if (get_stencil(pname, out)) return true;
   if (get_blend(pname, out, kind)) return true;
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
@@ -122,10 +123,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ALIASED_LINE_WIDTH_RANGE:
       out = {1, double(kMaxPointLineSize)}; return true;
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
-    // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
-    // so a program that asks learns that they are missing (docs/gl.md): evaluators,
-    // pixel maps.
-    case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
+    // No compressed formats. The features pGL lacks have a limit of 0, so a program
+    // that asks learns that they are missing (docs/gl.md): pixel maps.
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
     case GL_MAX_PIXEL_MAP_TABLE:

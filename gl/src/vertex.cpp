@@ -20,19 +20,26 @@ void Context::begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = true;
   mode_ = mode;
-  prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear();
+  make_live(0);  // unit 0's state in the live fields until glEnd (multitexture.cpp)
+  unit1_on_ = unit1_texturing();
+  prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
   stipple_counter_ = 0;
   ++pending_gen_;  // prim_ indices start again
   if (pending_gen_ == 0) pending_gen_ = 1;
   update_derived();
   prepare_lighting();
+  if (unit1_on_) {  // (multitexture.cpp)
+    parked_unit_.matrix_identity = parked_unit_.matrix.back() == Mat4{};
+    if (tex_gen_needs_eye(parked_unit_.tex_gen)) need_eye_ = true;
+  }
 }
 
 void Context::end() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   assemble(true);
   in_begin_ = false;
-  prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear();
+  prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
+  make_live(active_unit_);
 }
 
 // What lighting needs per light that stays the same through a glBegin/glEnd (lights
@@ -93,6 +100,7 @@ Vec4 Context::lit_front(const Vec4& eye) {
     const Vec4 c = lighting_.enabled ? Vec4{0, 0, 0, 0} : clamp_color(secondary_);
     prim_secondary_.push_back({c, c});
   }
+  if (unit1_on_ && order_.size() < kMaxPrimitiveVertices) prim_tex1_.push_back(unit1_texcoord(v, eye));
   push_vertex(out);
 }
 
@@ -145,7 +153,7 @@ void Context::push_vertex(const Vertex& v) {
   if (!caching_ && order_.size() >= kAssembleEvery &&
       (mode_ == GL_POINTS || mode_ == GL_LINES || mode_ == GL_TRIANGLES || mode_ == GL_QUADS)) {
     assemble(false);
-    prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear();
+    prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
     if (++pending_gen_ == 0) pending_gen_ = 1;
   }
 }

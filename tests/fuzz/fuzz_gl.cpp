@@ -4,7 +4,8 @@
 // The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
 // without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
 // points (GL 1.5's buffer objects and occlusion queries, 1-D textures and
-// evaluators, GL 1.4's secondary colour and fog coordinates among them),
+// evaluators, GL 1.4's secondary colour and fog coordinates, GL 1.3's multitexture
+// among them),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -466,6 +467,52 @@ void color_sum_call(Bytes& in, const std::vector<float>& attrib, float a, float 
   }
 }
 
+// GL 1.3's multitexture (gl/src/multitexture.cpp): units chosen (and bad ones), each
+// unit's texture state, coordinates and array inside `attrib`, draws, the attribute
+// stacks across a unit change.
+void multitexture_call(Bytes& in, const std::vector<float>& attrib, GLuint* names, float a, float b, GLenum e1) {
+  const GLenum unit = in.u8() < 230 ? GL_TEXTURE0 + GLenum(in.below(3)) : e1;
+  switch (in.below(6)) {
+    case 0: (in.u8() & 1 ? glActiveTexture : glActiveTextureARB)(unit); break;
+    case 1: glClientActiveTexture(unit); break;
+    case 2:
+      glMultiTexCoord4f(unit, a, b, a, in.u8() & 1 ? 1.0f : b);
+      if (in.u8() & 1) glMultiTexCoord2s(unit, GLshort(in.integer()), GLshort(in.integer()));
+      if (in.u8() & 1) glMultiTexCoord1dARB(unit, double(a));
+      break;
+    case 3:
+      glActiveTexture(unit);
+      glBindTexture(in.u8() & 1 ? GL_TEXTURE_2D : GL_TEXTURE_1D, names[in.below(4)]);
+      (in.u8() & 1 ? glEnable : glDisable)(in.u8() & 1 ? GL_TEXTURE_2D : GL_TEXTURE_1D);
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, in.u8() & 1 ? GL_MODULATE : GL_ADD + GLint(in.below(3)) - 1);
+      if (in.u8() & 1) (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_GEN_S + GLenum(in.below(4)));
+      if (in.u8() & 1) glMatrixMode(GL_TEXTURE), glRotatef(a, 0, 0, 1), glMatrixMode(GL_MODELVIEW);
+      break;
+    case 4:
+      glClientActiveTexture(unit);
+      glTexCoordPointer(1 + in.below(4), in.u8() & 1 ? GL_FLOAT : GL_SHORT, GLsizei(in.below(3) * 4), attrib.data() + 20);
+      (in.u8() & 1 ? glEnableClientState : glDisableClientState)(GL_TEXTURE_COORD_ARRAY);
+      glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+      glClientActiveTexture(GL_TEXTURE0 + GLenum(in.below(2)));
+      if (in.u8() & 1) glPopClientAttrib();
+      break;
+    default: {
+      glPushAttrib(in.u8() & 1 ? GL_TEXTURE_BIT : GL_ENABLE_BIT | GL_CURRENT_BIT);
+      glActiveTexture(unit);
+      glBegin(in.u8() & 1 ? GL_QUADS : GL_LINE_STRIP);
+      for (int k = 0; k < 4; ++k) {
+        glMultiTexCoord2f(GL_TEXTURE0, a * float(k), b);
+        glMultiTexCoord2f(GL_TEXTURE1, b, a * float(k));
+        glVertex2f(k & 1 ? a : b, k & 2 ? b : a);
+      }
+      glEnd();
+      glRasterPos2f(a, b);
+      if (in.u8() & 1) glPopAttrib();
+      break;
+    }
+  }
+}
+
 void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
   static const GLenum names[] = {GL_NONE, GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT, GL_FRONT,
                                  GL_BACK, GL_LEFT, GL_RIGHT, GL_FRONT_AND_BACK, GL_AUX0, GL_AUX3};
@@ -779,6 +826,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         evaluator_call(in, attrib, a, b, e1);
         buffer_lod_call(in, a, b, e1);
         color_sum_call(in, attrib, a, b, c, e1);
+        multitexture_call(in, attrib, names, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif
