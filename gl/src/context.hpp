@@ -242,6 +242,9 @@ class Context {
   ArrayState arrays;
   void client_state(GLenum cap, bool on);
   void array_element(GLint i);
+  void element(GLint i);  // array_element without the checks, after note_array_extras
+  void note_array_extras();
+  bool array_extras_ = false;
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
 
@@ -444,6 +447,7 @@ class Context {
     std::vector<Vec4> secondary;  // with state.color_sum (color_sum.cpp)
     std::vector<Vec4> texcoord1;  // with state.texture1 (multitexture.cpp)
     bool stage0_unit1 = false;    // texcoord holds unit 1's (unit 0 is off)
+    bool extras = false;          // texcoord1 or secondary is kept
     void clear() {
       position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear();
       secondary.clear(), texcoord1.clear();
@@ -468,6 +472,8 @@ class Context {
   // --- the vertex stage (vertex.cpp)
   void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
   void finish_vertex(Vertex& out, const Vec4& eye, const Vec4& object);  // texture coordinates, secondary colour
+  void vertex_extras(Vertex& out, const Vec4& eye, const Vec4& object);
+  bool vertex_extras_ = false;  // for this glBegin/glEnd
   // A lit vertex with GL_SEPARATE_SPECULAR_COLOR: the specular part kept apart (color_sum.cpp).
   void vertex_separate_specular(Vertex& out, const Vec4& eye, Vec3 n, const Vec4& object);
   void assemble(bool final);

@@ -249,6 +249,7 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled
     pending_.stippled = stippled;
     pending_.state = pixel_state(offset, stippled);
     pending_.stage0_unit1 = stage0_unit1_;
+    pending_.extras = pending_.state.texture1.texture || pending_.state.color_sum;
     const Box& vp = transform_.viewport;
     // The framebuffer is kept bottom row first (see update_derived): GL's y as it is.
     pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};
@@ -277,9 +278,11 @@ void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared, const Vec4
   p.position.push_back(v.clip);
   p.color.push_back(color);
   if (p.state.texture.texture) p.texcoord.push_back(p.stage0_unit1 ? prim_tex1_[i] : v.tex);
-  if (p.state.texture1.texture) p.texcoord1.push_back(prim_tex1_[i]);  // (multitexture.cpp)
   if (p.state.fog) p.fog.push_back(v.fog);
-  if (p.state.color_sum) p.secondary.push_back(secondary ? *secondary : Vec4{0, 0, 0, 0});
+  if (p.extras) {  // (multitexture.cpp, color_sum.cpp)
+    if (p.state.texture1.texture) p.texcoord1.push_back(prim_tex1_[i]);
+    if (p.state.color_sum) p.secondary.push_back(secondary ? *secondary : Vec4{0, 0, 0, 0});
+  }
   for (uint32_t k = 0; k < p.clip_planes; ++k) p.clip_distance.push_back(v.clip_distance[k]);
 }
 

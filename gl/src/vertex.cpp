@@ -32,6 +32,7 @@ void Context::begin(GLenum mode) {
     parked_unit_.matrix_identity = parked_unit_.matrix.back() == Mat4{};
     if (tex_gen_needs_eye(parked_unit_.tex_gen)) need_eye_ = true;
   }
+  vertex_extras_ = unit1_on_ || (color_sum_on_ && !separate_on_) || color_sum_.fog_coord_src == GL_FOG_COORD;
 }
 
 void Context::end() {
@@ -94,14 +95,21 @@ Vec4 Context::lit_front(const Vec4& eye) {
     // A 1-D texture reads s alone: t = 0 keeps the level of detail s's own.
     if (texturing_1d() && !feeding_back()) out.tex.y = 0;
   }
+  if (vertex_extras_) vertex_extras(out, eye, v);
+  push_vertex(out);
+}
+
+// What GL 1.3 and 1.4 add to a vertex, when any is on (vertex_extras_, set by glBegin):
+// the fog coordinate, the colour sum's secondary colour, unit 1's coordinates.
+void Context::vertex_extras(Vertex& out, const Vec4& eye, const Vec4& v) {
   if (color_sum_.fog_coord_src == GL_FOG_COORD) out.fog = fog_coord_;  // (color_sum.cpp)
-  if (color_sum_on_ && !separate_on_ && order_.size() < kMaxPrimitiveVertices) {
+  if (order_.size() >= kMaxPrimitiveVertices) return;  // (push_vertex drops it)
+  if (color_sum_on_ && !separate_on_) {
     // Without lighting's own, the current secondary colour (black with lighting on).
     const Vec4 c = lighting_.enabled ? Vec4{0, 0, 0, 0} : clamp_color(secondary_);
     prim_secondary_.push_back({c, c});
   }
-  if (unit1_on_ && order_.size() < kMaxPrimitiveVertices) prim_tex1_.push_back(unit1_texcoord(v, eye));
-  push_vertex(out);
+  if (unit1_on_) prim_tex1_.push_back(unit1_texcoord(v, eye));  // (multitexture.cpp)
 }
 
 // A lit vertex with GL_SEPARATE_SPECULAR_COLOR: its primary colours without the
