@@ -1179,6 +1179,9 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
   if (state.logic_op) throw Error("the GPU backend does not apply glLogicOp yet");
   if (state.polygon_stipple) throw Error("the GPU backend does not apply glPolygonStipple yet");
   if (state.samples_passed) throw Error("the GPU backend does not count samples (occlusion queries) yet");
+  if (state.color_sum) throw Error("the GPU backend does not add a secondary colour (GL_COLOR_SUM) yet");
+  if (state.texture.texture && state.texture1.texture)
+    throw Error("the GPU backend does not apply a second texture unit yet");
   {
     const SamplerState& ss = state.texture.sampler;
     if (state.texture.texture && (ss.lod_bias != 0 || ss.min_lod > -1000 || ss.max_lod < 1000))

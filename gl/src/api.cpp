@@ -77,13 +77,23 @@ void record_array_element(Context& c, GLint i) {
     const Vec3 n = c.arrays.normal.fetch_normalized(i, {}, 3).xyz();
     compiled([=](Context& k) { k.set_normal(n); });
   }
-  if (c.arrays.texcoord.enabled && c.arrays.texcoord.usable()) {
-    const Vec4 t = c.arrays.texcoord.fetch(i, {0, 0, 0, 1});
-    compiled([=](Context& k) { k.set_texcoord(t); });
+  for (GLenum unit : {GLenum(GL_TEXTURE0), GLenum(GL_TEXTURE1)}) {  // each unit's array (multitexture.cpp)
+    const velocity::gl::ClientArray& a = c.texcoord_array(int(unit - GL_TEXTURE0));
+    if (!a.enabled || !a.usable()) continue;
+    const Vec4 t = a.fetch(i, {0, 0, 0, 1});
+    compiled([=](Context& k) { k.multi_tex_coord(unit, t); });
   }
   if (c.arrays.edge_enabled && c.arrays.edge_usable()) {
     const bool e = c.arrays.edge(i);
     compiled([=](Context& k) { k.set_edge_flag(e); });
+  }
+  if (c.arrays.secondary_color.enabled && c.arrays.secondary_color.usable()) {
+    const Vec4 s = c.arrays.secondary_color.fetch_normalized(i, {0, 0, 0, 1}, 3);
+    compiled([=](Context& k) { k.set_secondary_color(s); });
+  }
+  if (c.arrays.fog_coord.enabled && c.arrays.fog_coord.usable()) {
+    const float f = c.arrays.fog_coord.fetch(i, {}).x;
+    compiled([=](Context& k) { k.set_fog_coord(f); });
   }
   if (c.arrays.vertex.enabled && c.arrays.vertex.usable()) {
     const Vec4 v = c.arrays.vertex.fetch(i, {0, 0, 0, 1});
@@ -767,7 +777,8 @@ const GLubyte* glGetString(GLenum name) {
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
           "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
-          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query "
+          "GL_ARB_multitexture ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

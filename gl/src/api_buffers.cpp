@@ -104,6 +104,9 @@ void glGetPointerv(GLenum pname, GLvoid** params) {
     case GL_EDGE_FLAG_ARRAY_POINTER: p = c.arrays.edge_pointer; break;
     case GL_SELECTION_BUFFER_POINTER: p = c.selection().buffer; break;
     case GL_FEEDBACK_BUFFER_POINTER: p = c.feedback().buffer; break;
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: p = c.arrays.secondary_color.pointer; break;
+    case GL_FOG_COORD_ARRAY_POINTER: p = c.arrays.fog_coord.pointer; break;
+    case GL_INDEX_ARRAY_POINTER: p = c.arrays.index.pointer; break;
     default: return c.error(GL_INVALID_ENUM);
   } if (params) *params = const_cast<void*>(p));
 }

@@ -82,17 +82,39 @@ void Context::client_state(GLenum cap, bool on) {
     case GL_COLOR_ARRAY: arrays.color.enabled = on; break;
     case GL_TEXTURE_COORD_ARRAY: arrays.texcoord.enabled = on; break;
     case GL_EDGE_FLAG_ARRAY: arrays.edge_enabled = on; break;
-    default: error(GL_INVALID_ENUM);
+    default:
+      if (color_sum_client_state(cap, on)) break;  // (color_sum.cpp)
+      error(GL_INVALID_ENUM);
   }
 }
 
 void Context::array_element(GLint i) {
   if (i < 0) return error(GL_INVALID_VALUE);
+  note_array_extras();
+  element(i);
+}
+
+// Are the arrays GL 1.3 and 1.4 add (the texture unit glClientActiveTexture does not
+// name, the secondary colour, the fog coordinate) on? Once per draw, not per element.
+void Context::note_array_extras() {
+  array_extras_ = parked_texcoord_.enabled || arrays.secondary_color.enabled || arrays.fog_coord.enabled;
+}
+
+void Context::element(GLint i) {
   if (arrays.color.enabled && arrays.color.usable())
     set_color(arrays.color.fetch_normalized(i, {0, 0, 0, 1}, arrays.color.size));
   if (arrays.normal.enabled && arrays.normal.usable()) normal_ = arrays.normal.fetch_normalized(i, {}, 3).xyz();
-  if (arrays.texcoord.enabled && arrays.texcoord.usable()) texcoord_ = arrays.texcoord.fetch(i, {0, 0, 0, 1});
+  // The coordinates of the unit glClientActiveTexture names (multitexture.cpp).
+  if (arrays.texcoord.enabled && arrays.texcoord.usable())
+    (live_client_unit_ == 0 ? texcoord_ : texcoord1_) = arrays.texcoord.fetch(i, {0, 0, 0, 1});
   if (arrays.edge_enabled && arrays.edge_usable()) edge_flag_ = arrays.edge(i);
+  if (array_extras_) {
+    if (const ClientArray& t = parked_texcoord_; t.enabled && t.usable())
+      (live_client_unit_ == 0 ? texcoord1_ : texcoord_) = t.fetch(i, {0, 0, 0, 1});
+    if (arrays.secondary_color.enabled && arrays.secondary_color.usable())
+      secondary_ = arrays.secondary_color.fetch_normalized(i, {0, 0, 0, 1}, 3);
+    if (arrays.fog_coord.enabled && arrays.fog_coord.usable()) fog_coord_ = arrays.fog_coord.fetch(i, {}).x;
+  }
   if (arrays.vertex.enabled && arrays.vertex.usable()) vertex(arrays.vertex.fetch(i, {0, 0, 0, 1}));
 }
 
@@ -106,15 +128,19 @@ struct Context::KeptCurrent {
   Vec3 normal;
   bool edge;
   Material materials[2];
+  Vec4 secondary;
+  float fog_coord;
+  Vec4 texcoord1;
 };
 
 Context::KeptCurrent Context::keep_current() const {
-  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}};
+  return {color_, texcoord_, normal_, edge_flag_, {lighting_.materials[0], lighting_.materials[1]}, secondary_, fog_coord_, texcoord1_};
 }
 
 void Context::restore_current(const KeptCurrent& k) {
   color_ = k.color, texcoord_ = k.texcoord, normal_ = k.normal, edge_flag_ = k.edge;
   lighting_.materials[0] = k.materials[0], lighting_.materials[1] = k.materials[1];
+  secondary_ = k.secondary, fog_coord_ = k.fog_coord, texcoord1_ = k.texcoord1;
 }
 
 void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
@@ -124,7 +150,8 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   if (!arrays.vertex.enabled || !arrays.vertex.usable()) return;
   const KeptCurrent kept = keep_current();
   begin(mode);
-  for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) array_element(GLint(i));
+  note_array_extras();
+  for (int64_t i = first; i < int64_t(first) + count && i <= INT32_MAX; ++i) element(GLint(i));
   end();
   restore_current(kept);
 }
@@ -156,6 +183,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   element_cache_.assign(cache_size, 0);
   const KeptCurrent kept = keep_current();
   begin(mode);
+  note_array_extras();
   caching_ = true;
   for (GLsizei k = 0; k < count; ++k) {
     const uint32_t i = index_at(k);
@@ -165,7 +193,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
       continue;
     }
     const size_t before = prim_.size();
-    array_element(GLint(i));
+    element(GLint(i));
     if (i < cache_size && prim_.size() > before) element_cache_[i] = uint32_t(prim_.size());
   }
   caching_ = false;

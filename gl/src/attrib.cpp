@@ -11,6 +11,7 @@ void Context::push_attrib(GLbitfield mask) {
   if (attrib_stack_.size() >= size_t(kMaxAttribDepth)) return error(GL_STACK_OVERFLOW);
   AttribFrame f;
   f.mask = mask;
+  save_units(f);  // (multitexture.cpp: unit 0 live from here)
   f.raster = raster_;
   f.lighting = lighting_;
   f.stencil = stencil_;
@@ -30,7 +31,9 @@ void Context::push_attrib(GLbitfield mask) {
   f.tex_gen = tex_gen_;
   f.draw_buffer = draw_buffer_, f.read_buffer = read_buffer_;
   f.transfer = pixels.transfer;
+  save_color_sum(f);  // (color_sum.cpp)
   attrib_stack_.push_back(std::move(f));
+  make_live(active_unit_);
 }
 
 void Context::pop_attrib() {
@@ -38,6 +41,7 @@ void Context::pop_attrib() {
   if (attrib_stack_.empty()) return error(GL_STACK_UNDERFLOW);
   const AttribFrame f = std::move(attrib_stack_.back());
   attrib_stack_.pop_back();
+  make_live(0);  // (multitexture.cpp: the frame's fields are unit 0's)
   const GLbitfield m = f.mask;
   RasterState& r = raster_;
   const RasterState& s = f.raster;
@@ -114,6 +118,9 @@ void Context::pop_attrib() {
     tex_gen_ = f.tex_gen;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;
+  restore_color_sum(f);  // (color_sum.cpp)
+  restore_units(f);
+  make_live(active_unit_);
   update_clip_planes();
   transform_.derived_dirty = true;
   if (lighting_.color_material) apply_color_material();
@@ -127,8 +134,10 @@ void Context::push_client_attrib(GLbitfield mask) {
   f.mask = mask;
   f.unpack_alignment = unpack_alignment, f.pack_alignment = pack_alignment;
   f.unpack = pixels.unpack, f.pack = pixels.pack;
+  save_client_units(f);  // (multitexture.cpp: unit 0's array live from here)
   f.arrays = arrays;
   client_attrib_stack_.push_back(f);
+  make_client_live(client_unit_);
 }
 
 void Context::pop_client_attrib() {
@@ -140,7 +149,10 @@ void Context::pop_client_attrib() {
     unpack_alignment = f.unpack_alignment, pack_alignment = f.pack_alignment;
     pixels.unpack = f.unpack, pixels.pack = f.pack;
   }
+  make_client_live(0);
   if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) arrays = f.arrays;
+  restore_client_units(f);
+  make_client_live(client_unit_);
 }
 
 int Context::attrib_depth() const { return int(attrib_stack_.size()); }

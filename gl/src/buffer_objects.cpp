@@ -201,6 +201,10 @@ bool Context::get_buffer_binding(GLenum pname, std::vector<double>& out) const {
     case GL_COLOR_ARRAY_BUFFER_BINDING: out = {name(arrays.color.buffer)}; return true;
     case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING: out = {name(arrays.texcoord.buffer)}; return true;
     case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: out = {name(arrays.edge_buffer)}; return true;
+    // (color_sum.cpp's arrays)
+    case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: out = {name(arrays.secondary_color.buffer)}; return true;
+    case GL_FOG_COORD_ARRAY_BUFFER_BINDING: out = {name(arrays.fog_coord.buffer)}; return true;
+    case GL_INDEX_ARRAY_BUFFER_BINDING: out = {name(arrays.index.buffer)}; return true;
     default: return false;
   }
 }

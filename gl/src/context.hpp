@@ -46,6 +46,9 @@
 //   api_buffers.cpp   their C entry points, glGetPointerv
 //   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
 //   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
+//   color_sum.cpp     GL 1.4's secondary colour and fog coordinates, GL 1.2's separate
+//                     specular colour; api_color_sum.cpp their C calls
+//   multitexture.cpp  GL 1.3's texture units; api_multitexture.cpp their C calls
 #pragma once
 
 #include <GL/gl.h>
@@ -239,6 +242,9 @@ class Context {
   ArrayState arrays;
   void client_state(GLenum cap, bool on);
   void array_element(GLint i);
+  void element(GLint i);  // array_element without the checks, after note_array_extras
+  void note_array_extras();
+  bool array_extras_ = false;
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
 
@@ -364,6 +370,39 @@ class Context {
   void polygon_stipple(const std::array<uint32_t, 32>& rows);
   void get_polygon_stipple(GLubyte* out) const;  // packed with the pixel store's pack state
 
+  // --- GL 1.4's secondary colour and fog coordinates, GL 1.2's separate specular
+  // --- colour (color_sum.cpp)
+  void set_secondary_color(Vec4 c) { secondary_ = c; }
+  void set_fog_coord(float f) { fog_coord_ = f; }
+  bool enable_color_sum(GLenum cap, bool on);                // false: not GL_COLOR_SUM
+  bool light_model_color_control(GLenum pname, float v);    // false: not its parameter
+  bool fog_coord_source(GLenum pname, float v);             // false: not GL_FOG_COORD_SRC
+  bool color_sum_client_state(GLenum cap, bool on);         // false: not one of its arrays
+  bool get_color_sum(GLenum pname, std::vector<double>& out, int& kind) const;
+  bool color_sum_enabled(GLenum cap, bool* known) const;    // glIsEnabled's
+  // Does the colour sum apply to what is drawn now (GL_COLOR_SUM, or lighting with
+  // GL_SEPARATE_SPECULAR_COLOR)?
+  bool color_sum_applies() const { return color_sum_.enabled || (lighting_.enabled && color_sum_.separate_specular); }
+  void save_color_sum(AttribFrame& f) const;
+  void restore_color_sum(const AttribFrame& f);
+
+  // --- GL 1.3's texture units (multitexture.cpp)
+  void active_texture(GLenum unit);
+  void client_active_texture(GLenum unit);
+  void multi_tex_coord(GLenum unit, Vec4 t);
+  bool get_multitexture(GLenum pname, std::vector<double>& out) const;
+  // Unit u's coordinate array (whichever glClientActiveTexture selects is `arrays.texcoord`).
+  const ClientArray& texcoord_array(int u) const { return u == live_client_unit_ ? arrays.texcoord : parked_texcoord_; }
+  void unbind_deleted_unit_texture(GLuint id);  // glDeleteTextures: unit bindings not live
+  // The live fields hold unit u's state (and, for the client state, unit u's array).
+  void make_live(int u);
+  void make_client_live(int u);
+  int active_unit() const { return active_unit_; }
+  void save_units(AttribFrame& f);  // (unit 0 live after it)
+  void restore_units(const AttribFrame& f);
+  void save_client_units(ClientAttribFrame& f);
+  void restore_client_units(const ClientAttribFrame& f);
+
  private:
   void update_clip_planes();
   // The "on" pieces of the line from prim_[a] (colour color_a) to prim_[b], as lines;
@@ -374,7 +413,9 @@ class Context {
   bool tex_gen_needs_eye() const;
   // The current texture coordinates with the enabled ones generated, for a vertex at
   // `object` (object space) and `eye` (eye space; needed by all but object linear).
-  Vec4 generate_texcoord(const Vec4& object, const Vec4& eye) const;
+  Vec4 generate_texcoord(const Vec4& object, const Vec4& eye) const { return generate_texcoord(tex_gen_, texcoord_, object, eye); }
+  Vec4 generate_texcoord(const TexGenState& g, const Vec4& current, const Vec4& object, const Vec4& eye) const;
+  static bool tex_gen_needs_eye(const TexGenState& g);
 
   // A window-space rectangle of fragments (glBitmap's, glDrawPixels'), drawn as two
   // triangles: the fragments whose centres it covers, with its colour and depth.
@@ -403,7 +444,14 @@ class Context {
     std::vector<Vec4> position, color, texcoord;
     std::vector<float> fog, clip_distance;
     std::vector<uint32_t> index;
-    void clear() { position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear(); }
+    std::vector<Vec4> secondary;  // with state.color_sum (color_sum.cpp)
+    std::vector<Vec4> texcoord1;  // with state.texture1 (multitexture.cpp)
+    bool stage0_unit1 = false;    // texcoord holds unit 1's (unit 0 is off)
+    bool extras = false;          // texcoord1 or secondary is kept
+    void clear() {
+      position.clear(), color.clear(), texcoord.clear(), fog.clear(), clip_distance.clear(), index.clear();
+      secondary.clear(), texcoord1.clear();
+    }
   };
   void ensure_frame();
   void submit_pending();
@@ -415,7 +463,8 @@ class Context {
   uint8_t stencil_clear_value() const;
   // Vertex `i` of prim_ into the pending batch; `shared`: with its own front colour,
   // so a vertex already in the batch is referenced again instead of copied.
-  void emit_vertex(uint32_t i, const Vec4& color, bool shared);
+  // `secondary`: its secondary colour where the batch has a colour sum (null: black).
+  void emit_vertex(uint32_t i, const Vec4& color, bool shared, const Vec4* secondary = nullptr);
   // `stippled`: the draws of filled polygons, which the polygon stipple applies to.
   Pending& target(PrimitiveKind kind, bool offset, bool stippled = false);
   void changed() { pixel_dirty_ = true; }
@@ -424,12 +473,18 @@ class Context {
   void push_vertex(const Vertex& v);  // to prim_ and order_ (assembling independent ones now and then)
   Vertex* new_vertex();  // push_vertex in two: a new vertex's place (null: GL_OUT_OF_MEMORY),
   void vertex_added();   // then, once it is filled in, the assembly check
+  void finish_vertex(Vertex& out, const Vec4& eye, const Vec4& object);  // texture coordinates, secondary colour
+  void vertex_extras(Vertex& out, const Vec4& eye, const Vec4& object);
+  bool vertex_extras_ = false;  // for this glBegin/glEnd
+  // A lit vertex with GL_SEPARATE_SPECULAR_COLOR: the specular part kept apart (color_sum.cpp).
+  void vertex_separate_specular(Vertex& out, const Vec4& eye, Vec3 n, const Vec4& object);
   void assemble(bool final);
   void polygon(const uint32_t* idx, int n, int provoking);
   void line_segment(uint32_t a, uint32_t b, uint32_t provoking);
   void point_vertex(uint32_t a);
-  Vec4 lit(const Vec4& eye, Vec3 normal, bool back) const;
-  Vec4 lit_unclamped(const Vec4& eye, Vec3 normal, bool back) const;
+  // `specular`: null, or where the specular part goes (it is then not in the result).
+  Vec4 lit(const Vec4& eye, Vec3 normal, bool back, Vec3* specular = nullptr) const;
+  Vec4 lit_unclamped(const Vec4& eye, Vec3 normal, bool back, Vec3* specular = nullptr) const;
   void prepare_lighting();
   shading::GlLight light_use_[kMaxLights];  // the enabled lights, for this glBegin
   int lights_used_ = 0;
@@ -566,6 +621,43 @@ class Context {
   // GL 1.5's occlusion queries (occlusion.cpp).
   QueryState queries_;
   void settle_query(QueryObject& q);  // run the frame its draws are in, if it has not run
+
+  // The colour sum and fog coordinates (color_sum.cpp): the state, the current
+  // secondary colour and fog coordinate, and per prim_ vertex its secondary colours
+  // (kept only while the colour sum applies: color_sum_on_, set by glBegin).
+  ColorSumState color_sum_;
+  Vec4 secondary_{0, 0, 0, 1};
+  float fog_coord_ = 0;
+  struct Secondary {
+    Vec4 front, back;
+  };
+  std::vector<Secondary> prim_secondary_;
+  bool color_sum_on_ = false, separate_on_ = false;
+
+  // Texture units (multitexture.cpp). The live fields (texture_'s enables, bindings and
+  // environment, transform_.texture, tex_gen_) hold unit live_unit_'s state, the
+  // active unit's except between glBegin and glEnd (unit 0's there); parked_unit_ the
+  // other's. Unit 1's coordinates per prim_ vertex while it is on (unit1_on_).
+  int active_unit_ = 0, live_unit_ = 0, client_unit_ = 0, live_client_unit_ = 0;
+  TextureUnitState parked_unit_;
+  ClientArray parked_texcoord_;
+  Vec4 texcoord1_{0, 0, 0, 1}, raster_texcoord1_{0, 0, 0, 1};
+  std::vector<Vec4> prim_tex1_;
+  bool unit1_on_ = false;
+  bool stage0_unit1_ = false;  // what the last texture_stages said
+  void swap_units();
+  // Unit 1's state during glBegin/glEnd (parked there) and its coordinates for a vertex.
+  bool unit1_texturing() const { return parked_unit_.enabled || parked_unit_.enabled_1d; }
+  Vec4 unit1_texcoord(const Vec4& object, const Vec4& eye) const;
+  // The texture stages of a draw from the units (unit 0 live): the enabled units in
+  // order, first in PixelState::texture; true when that first one is unit 1.
+  bool texture_stages(PixelState& s);
+  bool unit_stage(TextureStage& st, bool enabled, bool enabled_1d, GLuint bound, GLuint bound_1d, GLenum env_mode,
+                  const Vec4& env_color, float lod_bias);
+  // The secondary colour of prim_ vertex i as drawn (flat: `provoking`'s), or null.
+  const Vec4* secondary_of(uint32_t i, bool back) const {
+    return color_sum_on_ ? (back ? &prim_secondary_[i].back : &prim_secondary_[i].front) : nullptr;
+  }
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

@@ -43,7 +43,9 @@ void Context::draw_window_rects(const std::vector<WindowRect>& rects) {
       p.position.push_back({xs[k] * sx - 1, 1 - ys[k] * sy, 2 * r.z - 1, 1});
       p.color.push_back(r.color);
       if (p.state.texture.texture) p.texcoord.push_back(rp.texcoord);
+      if (p.state.texture1.texture) p.texcoord1.push_back(rp.texcoord);  // (unit 0's: the one kept)
       if (p.state.fog) p.fog.push_back(rp.distance);
+      if (p.state.color_sum) p.secondary.push_back({0, 0, 0, 0});  // (no secondary colour of its own)
     }
     for (uint32_t k : {0u, 1u, 2u, 0u, 2u, 3u}) p.index.push_back(base + k);
   }

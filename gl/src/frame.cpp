@@ -78,6 +78,11 @@ void Context::submit_pending() {
   b.color = kept.color.data();
   b.texcoord = kept.texcoord.empty() ? nullptr : kept.texcoord.data();
   b.fog = kept.fog.empty() ? nullptr : kept.fog.data();
+  b.texcoord1 = kept.texcoord1.empty() ? nullptr : kept.texcoord1.data();
+  if (kept.state.color_sum) {  // (color_sum.cpp; a vertex given none has black)
+    kept.secondary.resize(kept.position.size());
+    b.secondary = kept.secondary.data();
+  }
   b.vertex_count = uint32_t(kept.position.size());
   b.indices = kept.index.data();
   b.index_count = uint32_t(kept.index.size());
@@ -194,48 +199,9 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
     s.depth_test = s.depth_write = false;
     return s;
   }
-  if (texturing()) {
-    TextureObject* t = target_texture(texturing_1d() ? GL_TEXTURE_1D : GL_TEXTURE_2D);  // (texture_1d.cpp)
-    if (const Texture* tex = texture_for_draw(*t)) {
-      TextureStage& st = s.texture;
-      st.texture = tex;
-      st.format = t->format;
-      st.env = texture_.env_mode == GL_REPLACE ? TexEnvMode::Replace
-               : texture_.env_mode == GL_DECAL ? TexEnvMode::Decal
-               : texture_.env_mode == GL_BLEND ? TexEnvMode::Blend
-               : texture_.env_mode == GL_ADD    ? TexEnvMode::Add
-                                       : TexEnvMode::Modulate;
-      st.env_color = texture_.env_color;
-      using T = SamplerState::Texel;
-      using Mp = SamplerState::Mip;
-      SamplerState& sm = st.sampler;
-      sm.mag = t->mag_filter == GL_NEAREST ? T::Nearest : T::Linear;
-      switch (t->min_filter) {
-        case GL_NEAREST: sm.min = T::Nearest, sm.mip = Mp::None; break;
-        case GL_LINEAR: sm.min = T::Linear, sm.mip = Mp::None; break;
-        case GL_NEAREST_MIPMAP_NEAREST: sm.min = T::Nearest, sm.mip = Mp::Nearest; break;
-        case GL_LINEAR_MIPMAP_NEAREST: sm.min = T::Linear, sm.mip = Mp::Nearest; break;
-        case GL_NEAREST_MIPMAP_LINEAR: sm.min = T::Nearest, sm.mip = Mp::Linear; break;
-        default: sm.min = T::Linear, sm.mip = Mp::Linear; break;
-      }
-      auto wrap = [](GLenum w) {
-        // GL_CLAMP clamps s to [0, 1] and filters with the border: for GL_NEAREST that
-        // is the edge texel; with GL_LINEAR it differs from the edge only in the last
-        // half texel, where GL blends in the border colour (not done here: docs/gl.md).
-        return w == GL_CLAMP || w == GL_CLAMP_TO_EDGE ? Wrap::Clamp
-               : w == GL_MIRRORED_REPEAT ? Wrap::MirroredRepeat
-                                         : Wrap::Repeat;
-      };
-      sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
-      if (texturing_1d()) sm.wrap_t = Wrap::Repeat;  // a 1-D image is one row: t is not read
-      sm.border_color = t->border;
-      // GL 1.4: the object's and the unit's bias, their sum clamped to GL_MAX_TEXTURE_LOD_BIAS.
-      const float bias = t->lod_bias + texture_.lod_bias;
-      sm.lod_bias = bias > -kMaxLodBias ? (bias < kMaxLodBias ? bias : kMaxLodBias) : -kMaxLodBias;
-      sm.min_lod = t->min_lod, sm.max_lod = t->max_lod;
-    }
-  }
+  stage0_unit1_ = texture_stages(s);  // (multitexture.cpp)
   s.fog = raster_.fog;
+  s.color_sum = color_sum_applies();  // (color_sum.cpp)
   s.fog_mode = raster_.fog_mode == GL_LINEAR ? FogMode::Linear : raster_.fog_mode == GL_EXP2 ? FogMode::Exp2 : FogMode::Exp;
   s.fog_start = raster_.fog_start, s.fog_end = raster_.fog_end, s.fog_density = raster_.fog_density;
   s.fog_color = raster_.fog_color;
@@ -282,6 +248,8 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled
     pending_.offset = offset;
     pending_.stippled = stippled;
     pending_.state = pixel_state(offset, stippled);
+    pending_.stage0_unit1 = stage0_unit1_;
+    pending_.extras = pending_.state.texture1.texture || pending_.state.color_sum;
     const Box& vp = transform_.viewport;
     // The framebuffer is kept bottom row first (see update_derived): GL's y as it is.
     pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};
@@ -298,7 +266,7 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled
   return pending_;
 }
 
-void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
+void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared, const Vec4* secondary) {
   Pending& p = pending_;
   if (shared) {
     const Emitted e = emitted_[i];
@@ -309,8 +277,12 @@ void Context::emit_vertex(uint32_t i, const Vec4& color, bool shared) {
   p.index.push_back(uint32_t(p.position.size()));
   p.position.push_back(v.clip);
   p.color.push_back(color);
-  if (p.state.texture.texture) p.texcoord.push_back(v.tex);
+  if (p.state.texture.texture) p.texcoord.push_back(p.stage0_unit1 ? prim_tex1_[i] : v.tex);
   if (p.state.fog) p.fog.push_back(v.fog);
+  if (p.extras) {  // (multitexture.cpp, color_sum.cpp)
+    if (p.state.texture1.texture) p.texcoord1.push_back(prim_tex1_[i]);
+    if (p.state.color_sum) p.secondary.push_back(secondary ? *secondary : Vec4{0, 0, 0, 0});
+  }
   for (uint32_t k = 0; k < p.clip_planes; ++k) p.clip_distance.push_back(v.clip_distance[k]);
 }
 

@@ -62,7 +62,9 @@ void Context::light_model(GLenum pname, const float* v) {
     case GL_LIGHT_MODEL_AMBIENT: lighting_.model_ambient = {v[0], v[1], v[2], v[3]}; break;
     case GL_LIGHT_MODEL_TWO_SIDE: lighting_.two_side = v[0] != 0; break;
     case GL_LIGHT_MODEL_LOCAL_VIEWER: lighting_.local_viewer = v[0] != 0; break;
-    default: return error(GL_INVALID_ENUM);
+    default:
+      if (light_model_color_control(pname, v[0])) break;  // (color_sum.cpp)
+      return error(GL_INVALID_ENUM);
   }
 }
 

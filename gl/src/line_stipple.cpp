@@ -72,10 +72,18 @@ void Context::stippled_line(uint32_t a, uint32_t b, Vec4 color_a, Vec4 color_b, 
       ends[e] = uint32_t(prim_.size());
       prim_.push_back(v);
       emitted_.emplace_back();
+      if (unit1_on_) {  // unit 1's coordinates along it (multitexture.cpp)
+        const Vec4 ta = prim_tex1_[a], tb = prim_tex1_[b];
+        prim_tex1_.push_back(ta + (tb - ta) * t);
+      }
+      if (color_sum_on_) {  // the secondary colours along the line (color_sum.cpp)
+        const Secondary sa = prim_secondary_[a], sb = prim_secondary_[b];
+        prim_secondary_.push_back({sa.front + (sb.front - sa.front) * t, sa.back + (sb.back - sa.back) * t});
+      }
     }
     target(PrimitiveKind::Lines, offset);
-    emit_vertex(ends[0], prim_[ends[0]].front, false);
-    emit_vertex(ends[1], prim_[ends[1]].front, false);
+    emit_vertex(ends[0], prim_[ends[0]].front, false, secondary_of(ends[0], false));
+    emit_vertex(ends[1], prim_[ends[1]].front, false, secondary_of(ends[1], false));
   };
   bool on = false;
   int start = 0;

@@ -18,6 +18,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   bool known = false;
   const bool enabled = is_enabled(pname, &known);
   if (known) return out = {enabled ? 1.0 : 0.0}, true;
+  if (get_multitexture(pname, out)) return true;  // (multitexture.cpp: before the units' own)
   if (get_stencil(pname, out)) return true;
   if (get_blend(pname, out, kind)) return true;
   if (get_pixel_ops(pname, out, kind)) return true;  // (draw_pixels.cpp)
@@ -25,6 +26,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_eval(pname, out)) return true;             // (evaluators.cpp)
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
   if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
+  if (get_color_sum(pname, out, kind)) return true;  // (color_sum.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;
@@ -121,10 +123,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ALIASED_LINE_WIDTH_RANGE:
       out = {1, double(kMaxPointLineSize)}; return true;
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
-    // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
-    // so a program that asks learns that they are missing (docs/gl.md): evaluators,
-    // pixel maps.
-    case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
+    // No compressed formats. The features pGL lacks have a limit of 0, so a program
+    // that asks learns that they are missing (docs/gl.md): pixel maps.
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
     case GL_MAX_PIXEL_MAP_TABLE:
@@ -156,6 +156,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
   if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
   if (const bool on = map1_enabled(cap, known); *known) return on;  // (evaluators.cpp)
+  if (const bool on = color_sum_enabled(cap, known); *known) return on;  // (color_sum.cpp)
   *known = true;
   switch (cap) {
     case GL_DEPTH_TEST: return raster_.depth_test;

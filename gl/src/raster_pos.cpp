@@ -29,7 +29,11 @@ void Context::raster_pos(Vec4 v) {
               float(vp.y) + (clip.y * d + 1) * 0.5f * float(vp.height), n + (clip.z * d + 1) * 0.5f * (f - n), clip.w};
   r.valid = true;
   r.color = lighting_.enabled ? lit_front(eye) : Vec4{unit(color_.x), unit(color_.y), unit(color_.z), unit(color_.w)};
+  make_live(0);  // unit 0's coordinates, and unit 1's (multitexture.cpp)
   r.texcoord = transform_.texture.back() * (tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_);
+  parked_unit_.matrix_identity = parked_unit_.matrix.back() == Mat4{};
+  raster_texcoord1_ = unit1_texcoord(v, eye);
+  make_live(active_unit_);
   r.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
 }
 

@@ -29,6 +29,7 @@ void Context::enable(GLenum cap, bool on) {
   if (in_begin_error()) return;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return void(lighting_.lights[cap - GL_LIGHT0].enabled = on);
   if (enable_map1(cap, on)) return;  // (evaluators.cpp)
+  if (enable_color_sum(cap, on)) return;  // (color_sum.cpp)
   if (enable_clip_plane(cap, on)) return;  // (clip_planes.cpp)
   if (enable_tex_gen(cap, on)) return;     // (tex_gen.cpp)
   switch (cap) {
@@ -170,7 +171,9 @@ void Context::fog(GLenum pname, const float* v) {
     case GL_FOG_END: raster_.fog_end = v[0]; break;
     case GL_FOG_COLOR: raster_.fog_color = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])}; break;
     case GL_FOG_INDEX: break;
-    default: return error(GL_INVALID_ENUM);
+    default:
+      if (fog_coord_source(pname, v[0])) break;  // (color_sum.cpp)
+      return error(GL_INVALID_ENUM);
   }
   changed();
 }

@@ -294,6 +294,35 @@ struct ArrayState {
   bool edge(GLint i) const;  // (arrays.cpp; outside its buffer: true)
   // GL 1.5's GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER bindings (buffer_objects.cpp).
   std::shared_ptr<BufferObject> array_buffer, element_buffer;
+  // GL 1.4's secondary colour and fog coordinate arrays; the colour index array's state
+  // (never drawn: no colour index mode) (color_sum.cpp).
+  ClientArray secondary_color, fog_coord, index;
+  ArrayState() { secondary_color.size = 3, fog_coord.size = 1, index.size = 1; }
+};
+
+// --- multitexture (multitexture.cpp): GL 1.3's texture units ---------------------
+constexpr int kTextureUnits = 2;  // GL_MAX_TEXTURE_UNITS (the renderer's kMaxTextureUnits)
+// A texture unit's server state while another unit's is in the live fields (the
+// TextureState enables, bindings, environment and bias, the texture matrix stack, the
+// glTexGen state): the context keeps the active unit's there, for every call that works
+// on "the" unit, and the other one here.
+struct TextureUnitState {
+  bool enabled = false, enabled_1d = false;
+  GLuint bound = 0, bound_1d = 0;
+  GLenum env_mode = GL_MODULATE;
+  Vec4 env_color{0, 0, 0, 0};
+  float lod_bias = 0;
+  std::vector<Mat4> matrix{Mat4{}};
+  bool matrix_identity = true;
+  TexGenState tex_gen;
+};
+
+// --- GL 1.2's separate specular colour, GL 1.4's colour sum and fog coordinate ----
+// --- source (color_sum.cpp) -------------------------------------------------------
+struct ColorSumState {
+  bool enabled = false;            // GL_COLOR_SUM (GL_FOG_BIT and GL_ENABLE_BIT)
+  bool separate_specular = false;  // GL_LIGHT_MODEL_COLOR_CONTROL (GL_LIGHTING_BIT)
+  GLenum fog_coord_src = 0x8452;   // GL_FOG_COORD_SRC: GL_FRAGMENT_DEPTH (GL_FOG_BIT)
 };
 
 // --- display lists (lists.cpp) ----------------------------------------------------
@@ -357,6 +386,14 @@ struct AttribFrame {
   GLenum draw_buffer = GL_FRONT;  // GL_COLOR_BUFFER_BIT (buffers.cpp)
   GLenum read_buffer = GL_FRONT;  // GL_PIXEL_MODE_BIT
   PixelTransfer transfer;         // GL_PIXEL_MODE_BIT (pixel_transfer.cpp)
+  ColorSumState color_sum;        // (color_sum.cpp: by bit)
+  Vec4 secondary{0, 0, 0, 1};     // GL_CURRENT_BIT
+  float fog_coord = 0;            // GL_CURRENT_BIT
+  // multitexture.cpp: the other unit (unit 1: the frame is taken with unit 0 live),
+  // the active unit, unit 1's current coordinates.
+  TextureUnitState unit1;  // GL_TEXTURE_BIT, GL_ENABLE_BIT (its enables)
+  int active_unit = 0;     // GL_TEXTURE_BIT
+  Vec4 texcoord1{0, 0, 0, 1}, raster_texcoord1{0, 0, 0, 1};  // GL_CURRENT_BIT
 };
 
 struct ClientAttribFrame {
@@ -364,6 +401,8 @@ struct ClientAttribFrame {
   GLint unpack_alignment = 4, pack_alignment = 4;
   PixelStore unpack, pack;  // every GL_UNPACK_* and GL_PACK_* value
   ArrayState arrays;
+  ClientArray texcoord1;  // unit 1's coordinate array (multitexture.cpp; unit 0 live)
+  int client_unit = 0;
 };
 
 }  // namespace velocity::gl

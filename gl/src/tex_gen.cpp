@@ -79,19 +79,22 @@ bool Context::enable_tex_gen(GLenum cap, bool on) {
   return true;
 }
 
-bool Context::tex_gen_needs_eye() const {
-  for (const TexGenCoord& g : tex_gen_.coords)
+bool Context::tex_gen_needs_eye() const { return tex_gen_needs_eye(tex_gen_); }
+
+bool Context::tex_gen_needs_eye(const TexGenState& state) {
+  for (const TexGenCoord& g : state.coords)
     if (g.enabled && g.mode != GL_OBJECT_LINEAR) return true;
   return false;
 }
 
-Vec4 Context::generate_texcoord(const Vec4& object, const Vec4& eye) const {
-  float out[4] = {texcoord_.x, texcoord_.y, texcoord_.z, texcoord_.w};
+// `state` and `current`: a texture unit's (multitexture.cpp keeps the other unit's).
+Vec4 Context::generate_texcoord(const TexGenState& state, const Vec4& current, const Vec4& object, const Vec4& eye) const {
+  float out[4] = {current.x, current.y, current.z, current.w};
   // The eye-space normal and the reflection, only when a mode needs them.
   bool have_normal = false;
   Vec3 n, r;
   for (int i = 0; i < 4; ++i) {
-    const TexGenCoord& g = tex_gen_.coords[i];
+    const TexGenCoord& g = state.coords[i];
     if (!g.enabled) continue;
     if (g.mode == GL_OBJECT_LINEAR) {
       out[i] = plane_dot(g.object_plane, object);

@@ -47,6 +47,7 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
     if (ids[i] == 0) continue;
     if (ids[i] == texture_.bound) texture_.bound = 0, changed();
     if (ids[i] == texture_.bound_1d) texture_.bound_1d = 0, changed();
+    unbind_deleted_unit_texture(ids[i]);  // (multitexture.cpp: the other unit)
     texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }

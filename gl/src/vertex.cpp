@@ -39,13 +39,22 @@ void Context::begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = true;
   mode_ = mode;
-  prim_.clear(), order_.clear(), emitted_.clear();
+  make_live(0);  // unit 0's state in the live fields until glEnd (multitexture.cpp)
+  unit1_on_ = unit1_texturing();
+  prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
   run_position_.clear(), run_normal_.clear();
   stipple_counter_ = 0;
   ++pending_gen_;  // prim_ indices start again
   if (pending_gen_ == 0) pending_gen_ = 1;
   update_derived();
   prepare_lighting();
+  if (unit1_on_) {  // (multitexture.cpp)
+    parked_unit_.matrix_identity = parked_unit_.matrix.back() == Mat4{};
+    if (tex_gen_needs_eye(parked_unit_.tex_gen)) need_eye_ = true;
+  }
+  vertex_extras_ = unit1_on_ || (color_sum_on_ && !separate_on_) || color_sum_.fog_coord_src == GL_FOG_COORD;
+  // Runs light the primary colour alone, with no eye position and no GL 1.3/1.4 extras.
+  if (vertex_extras_ || separate_on_ || need_eye_) run_vertices_ = false;
 }
 
 void Context::end() {
@@ -53,13 +62,16 @@ void Context::end() {
   flush_vertices();
   assemble(true);
   in_begin_ = false;
-  prim_.clear(), order_.clear(), emitted_.clear();
+  prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
+  make_live(active_unit_);
 }
 
 // What lighting needs per light that stays the same through a glBegin/glEnd (lights
 // and the light model cannot change inside it; materials can).
 void Context::prepare_lighting() {
   lights_used_ = 0;
+  color_sum_on_ = color_sum_applies();  // (color_sum.cpp)
+  separate_on_ = lighting_.enabled && color_sum_.separate_specular;
   need_eye_ = raster_.fog || (lighting_.enabled && lighting_.local_viewer) || user_clip.count ||
               (texturing() && tex_gen_needs_eye());
   run_vertices_ = false;
@@ -102,15 +114,15 @@ void Context::flush_vertices() {
 }
 
 // OpenGL's lighting equation (shading::light_gl) for one vertex and one side.
-[[gnu::always_inline]] inline Vec4 Context::lit_unclamped(const Vec4& eye4, Vec3 n, bool back) const {
+[[gnu::always_inline]] inline Vec4 Context::lit_unclamped(const Vec4& eye4, Vec3 n, bool back, Vec3* specular) const {
   Vec3 eye{};
   if (need_eye_) eye = eye4.w != 0 && eye4.w != 1 ? eye4.xyz() / eye4.w : eye4.xyz();
   return shading::light_gl(light_use_, lights_used_, lighting_.model_ambient.xyz(), lighting_.local_viewer,
-                           lighting_.materials[back ? 1 : 0], back ? -n : n, eye);
+                           lighting_.materials[back ? 1 : 0], back ? -n : n, eye, specular);
 }
 
-[[gnu::always_inline]] inline Vec4 Context::lit(const Vec4& eye4, Vec3 n, bool back) const {
-  return clamp_color(lit_unclamped(eye4, n, back));
+[[gnu::always_inline]] inline Vec4 Context::lit(const Vec4& eye4, Vec3 n, bool back, Vec3* specular) const {
+  return clamp_color(lit_unclamped(eye4, n, back, specular));
 }
 
 Vec4 Context::lit_front(const Vec4& eye) {
@@ -118,6 +130,47 @@ Vec4 Context::lit_front(const Vec4& eye) {
   Vec3 n = transform_.normal_matrix.transform_vector(normal_);
   if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
   return lit(eye, n, false);
+}
+
+// The texture coordinates and the colour sum's secondary colour of a vertex whose
+// position, colours and fog coordinate are set, then the vertex to the primitive.
+[[gnu::always_inline]] inline void Context::finish_vertex(Vertex& out, const Vec4& eye, const Vec4& v) {
+  // (Feedback reports the coordinates untransformed while texturing is off, as Mesa does.)
+  if (!texturing() && feeding_back()) out.tex = texcoord_;
+  if (texturing()) {
+    const Vec4 t = tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_;  // (tex_gen.cpp)
+    out.tex = transform_.texture_identity ? t : transform_.texture.back() * t;
+    // A 1-D texture reads s alone: t = 0 keeps the level of detail s's own.
+    if (texturing_1d() && !feeding_back()) out.tex.y = 0;
+  }
+  if (vertex_extras_) vertex_extras(out, eye, v);
+  push_vertex(out);
+}
+
+// What GL 1.3 and 1.4 add to a vertex, when any is on (vertex_extras_, set by glBegin):
+// the fog coordinate, the colour sum's secondary colour, unit 1's coordinates.
+void Context::vertex_extras(Vertex& out, const Vec4& eye, const Vec4& v) {
+  if (color_sum_.fog_coord_src == GL_FOG_COORD) out.fog = fog_coord_;  // (color_sum.cpp)
+  if (order_.size() >= kMaxPrimitiveVertices) return;  // (push_vertex drops it)
+  if (color_sum_on_ && !separate_on_) {
+    // Without lighting's own, the current secondary colour (black with lighting on).
+    const Vec4 c = lighting_.enabled ? Vec4{0, 0, 0, 0} : clamp_color(secondary_);
+    prim_secondary_.push_back({c, c});
+  }
+  if (unit1_on_) prim_tex1_.push_back(unit1_texcoord(v, eye));  // (multitexture.cpp)
+}
+
+// A lit vertex with GL_SEPARATE_SPECULAR_COLOR: its primary colours without the
+// specular part, which becomes its secondary colour (added after texturing).
+void Context::vertex_separate_specular(Vertex& out, const Vec4& eye, Vec3 n, const Vec4& v) {
+  Vec3 front, back;
+  out.front = lit(eye, n, false, &front);
+  out.back = lighting_.two_side ? lit(eye, n, true, &back) : out.front;
+  if (!lighting_.two_side) back = front;
+  out.fog = std::fabs(eye.z);
+  if (order_.size() < kMaxPrimitiveVertices)
+    prim_secondary_.push_back({clamp_color({front.x, front.y, front.z, 0}), clamp_color({back.x, back.y, back.z, 0})});
+  finish_vertex(out, eye, v);
 }
 
 void Context::vertex(Vec4 v) {
@@ -146,21 +199,14 @@ void Context::vertex(Vec4 v) {
     if (lighting_.enabled) {
       Vec3 n = transform_.normal_matrix.transform_vector(normal_);
       if (transform_.normalize || transform_.rescale_normal) n = normalize(n);
+      if (separate_on_) return vertex_separate_specular(out, eye, n, v);
       if (lighting_.two_side) out.front = lit(eye, n, false), out.back = lit(eye, n, true);
       else store_clamped(lit_unclamped(eye, n, false), out.front, out.back);
     }
     out.fog = std::fabs(eye.z);
   }
   if (!lighting_.enabled) out.front = out.back = clamp_color(color_);
-  // (Feedback reports the coordinates untransformed while texturing is off, as Mesa does.)
-  if (!texturing() && feeding_back()) out.tex = texcoord_;
-  if (texturing()) {
-    const Vec4 t = tex_gen_.any() ? generate_texcoord(v, eye) : texcoord_;  // (tex_gen.cpp)
-    out.tex = transform_.texture_identity ? t : transform_.texture.back() * t;
-    // A 1-D texture reads s alone: t = 0 keeps the level of detail s's own.
-    if (texturing_1d() && !feeding_back()) out.tex.y = 0;
-  }
-  push_vertex(out);
+  finish_vertex(out, eye, v);
 }
 
 void Context::push_vertex(const Vertex& v) {
@@ -188,7 +234,7 @@ void Context::vertex_added() {
       (mode_ == GL_POINTS || mode_ == GL_LINES || mode_ == GL_TRIANGLES || mode_ == GL_QUADS)) {
     flush_vertices();
     assemble(false);
-    prim_.clear(), order_.clear(), emitted_.clear();
+    prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
     if (++pending_gen_ == 0) pending_gen_ = 1;
   }
 }
@@ -296,13 +342,15 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
   const Vertex& pv = prim_[idx[provoking]];
   const Vec4 flat_color = back_colors ? pv.back : pv.front;
   auto color = [&](uint32_t i) -> const Vec4& { return flat ? flat_color : back_colors ? prim_[i].back : prim_[i].front; };
+  auto spec = [&](uint32_t i) { return secondary_of(flat ? idx[provoking] : i, back_colors); };
   const bool shared = !flat && !back_colors;
   const GLenum mode = raster_.polygon_mode[front ? 0 : 1];
   if (feeding_back() && mode == GL_FILL) return feedback_polygon(idx, n, provoking, back_colors);
   if (mode == GL_FILL) {
     target(PrimitiveKind::Triangles, raster_.offset_fill, true);
     auto tri = [&](uint32_t a, uint32_t b, uint32_t c) {
-      emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared), emit_vertex(c, color(c), shared);
+      emit_vertex(a, color(a), shared, spec(a)), emit_vertex(b, color(b), shared, spec(b));
+      emit_vertex(c, color(c), shared, spec(c));
     };
     for (int k = 1; k + 1 < n; ++k) tri(idx[0], idx[k], idx[k + 1]);  // a fan from the first vertex
   } else {
@@ -320,13 +368,13 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
           continue;
         }
         if (raster_.line_stipple) stippled_line(a, b, color(a), color(b), raster_.offset_line);
-        else emit_vertex(a, color(a), shared), emit_vertex(b, color(b), shared);
+        else emit_vertex(a, color(a), shared, spec(a)), emit_vertex(b, color(b), shared, spec(b));
       }
     } else {
       target(PrimitiveKind::Points, raster_.offset_point);
       for (int k = 0; k < n; ++k)
         if (feeding_back() && (!flags || prim_[idx[k]].edge)) feedback_point(idx[k]);
-        else if (!flags || prim_[idx[k]].edge) emit_vertex(idx[k], color(idx[k]), shared);
+        else if (!flags || prim_[idx[k]].edge) emit_vertex(idx[k], color(idx[k]), shared, spec(idx[k]));
     }
   }
 }
@@ -343,15 +391,15 @@ void Context::line_segment(uint32_t a, uint32_t b, uint32_t provoking) {
     return stippled_line(a, b, ca, cb, false);
   }
   target(PrimitiveKind::Lines, false);
-  emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat);
-  emit_vertex(b, flat ? prim_[provoking].front : prim_[b].front, !flat);
+  emit_vertex(a, flat ? prim_[provoking].front : prim_[a].front, !flat, secondary_of(flat ? provoking : a, false));
+  emit_vertex(b, flat ? prim_[provoking].front : prim_[b].front, !flat, secondary_of(flat ? provoking : b, false));
 }
 
 void Context::point_vertex(uint32_t a) {
   if (selecting()) return select_hit(&a, 1, false);
   if (feeding_back()) return feedback_point(a);
   target(PrimitiveKind::Points, false);
-  emit_vertex(a, prim_[a].front, true);
+  emit_vertex(a, prim_[a].front, true, secondary_of(a, false));
 }
 
 void Context::rect(float x1, float y1, float x2, float y2) {

@@ -104,6 +104,9 @@ struct SamplerState {
   float lod_bias = 0, min_lod = -1000, max_lod = 1000;
 };
 
+// The texture units a batch may use (OpenGL 1.3's multitexture, GL_MAX_TEXTURE_UNITS).
+inline constexpr int kMaxTextureUnits = 2;
+
 struct TextureStage {
   const Texture* texture = nullptr;  // null: no texturing
   TexFormat format = TexFormat::Rgba;
@@ -116,6 +119,14 @@ struct TextureStage {
 // the depth test is on.
 struct PixelState {
   TextureStage texture;
+  // The second texture unit (OpenGL 1.3's multitexture): its environment takes what
+  // `texture`'s gave, its coordinates are the batch's texcoord1. Read only when
+  // `texture` is set (a front end hands its enabled units over in order, first here).
+  TextureStage texture1;
+  // OpenGL 1.4's colour sum (GL_COLOR_SUM, or lighting with GL_SEPARATE_SPECULAR_COLOR):
+  // the batch's secondary colour (RGB) is added after the texture environments, before
+  // fog, the sum clamped to 1.
+  bool color_sum = false;
 
   // Fog: colour = f * colour + (1 - f) * fog_color (alpha unchanged), f clamped to
   // [0, 1] from the interpolated fog coordinate c: Linear (end - c) / (end - start),
@@ -191,12 +202,15 @@ struct Viewport {
 struct PrimitiveBatch {
   PrimitiveKind kind = PrimitiveKind::Triangles;
   // Per vertex. `position` (clip space) is required; the rest may be null: colour
-  // defaults to opaque white, texture coordinates to (0, 0, 0, 1), fog to 0. Texture
+  // defaults to opaque white, texture coordinates to (0, 0, 0, 1), fog to 0, the
+  // secondary colour to black. Texture
   // coordinates are projective: s/q and t/q are read, interpolated perspective-correct.
   const Vec4* position = nullptr;
   const Vec4* color = nullptr;     // RGBA, each in [0, 1]
   const Vec4* texcoord = nullptr;  // (s, t, r, q)
   const float* fog = nullptr;      // fog coordinate (GL: eye-space distance)
+  const Vec4* texcoord1 = nullptr;  // the second texture unit's (PixelState::texture1)
+  const Vec4* secondary = nullptr;  // secondary colour, RGB in [0, 1] (PixelState::color_sum)
   uint32_t vertex_count = 0;
   // The vertices of each primitive (1 per point, 2 per line, 3 per triangle); null
   // means 0, 1, 2, ... vertex_count - 1. Out-of-range indices drop their primitive.

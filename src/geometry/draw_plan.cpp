@@ -202,9 +202,11 @@ BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawStat
   d.batch = batch;
   d.primitive_count = primitives;
   d.textured = state.texture.texture != nullptr;
+  d.units = d.textured ? (state.texture1.texture ? 2 : 1) : 0;
   d.fog = state.fog;
-  d.kernel = raster::fixed_kernel(d.textured, d.fog);
-  d.num_varyings = raster::fixed_varyings(d.textured, d.fog);
+  d.color_sum = state.color_sum;
+  d.kernel = raster::fixed_kernel(d.units, d.fog, d.color_sum);
+  d.num_varyings = raster::fixed_varyings(d.units, d.fog, d.color_sum);
 
   // The viewport, within the guard band's reach of the framebuffer (as OpenGL's
   // GL_MAX_VIEWPORT_DIMS bounds it).
@@ -233,6 +235,7 @@ BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawStat
   raster::DrawState st;
   st.pixel = state;
   if (d.textured) st.texture = raster::SamplerView(*state.texture.texture, state.texture.sampler);
+  if (d.units > 1) st.texture1 = raster::SamplerView(*state.texture1.texture, state.texture1.sampler);
   d.draw_state = uint32_t(states.size());
   states.push_back(st);
   return d;

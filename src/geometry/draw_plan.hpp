@@ -67,6 +67,8 @@ struct BatchDrawPlan {
   uint32_t draw_state = 0;
   uint8_t kernel = 0;
   bool textured = false, fog = false;
+  int units = 0;           // texture units read (textured: 1 or 2)
+  bool color_sum = false;  // a secondary colour added after texturing
   int num_varyings = 0;
   uint32_t primitive_count = 0;
   ViewportMap viewport{};

@@ -172,9 +172,10 @@ inline uint32_t pack_rgba(float r, float g, float b, float a = 1.0f) {
 //                 eye-space position, 6-7 uv (the material's uv set), then with a
 //                 normal map (T) 4 more: the eye-space tangent and its handedness, then
 //                 with vertex colours (C) 4 more: r, g, b, a (linear)
-//   Fixed<T, G>   the fixed-function (OpenGL) kernel: 0-3 RGBA, then with a texture
-//                 (T) 3 more: s, t, q (the texture reads s/q, t/q), then with fog (G)
-//                 the fog coordinate; the rest of PixelState is read per draw.
+//   Fixed<U, G, S> the fixed-function (OpenGL) kernel: 0-3 RGBA, then 3 more per
+//                 texture unit (U of them, 0-2): s, t, q (the texture reads s/q, t/q),
+//                 then with a colour sum (S) the secondary colour's r, g, b, then with
+//                 fog (G) the fog coordinate; the rest of PixelState is read per draw.
 // <F> is the texture filter (nearest, bilinear, trilinear).
 enum class KernelId : uint8_t {
   Flat,
@@ -186,8 +187,8 @@ enum class KernelId : uint8_t {
   PhongEnv = PhongTex + 3,
   PhongTexEnv = PhongEnv + 3,
   Pbr = PhongTexEnv + 3,    // + 6 * tangents + 3 * vertex colours + filter (12 ids)
-  Fixed = Pbr + 12,         // + 2 * textured + fog (4 ids)
-  Count = Fixed + 4,
+  Fixed = Pbr + 12,         // + 4 * units + 2 * colour sum + fog (12 ids)
+  Count = Fixed + 12,
 };
 // The varying layouts above, by name: the triangle stage writes them
 // (triangle/) and the shaders read them.
@@ -199,7 +200,7 @@ inline constexpr int kNormal = 3;       // Phong*: eye-space normal x, y, z
 inline constexpr int kEye = 6;          // Phong*: eye-space position x, y, z
 inline constexpr int kPhongUv = 9;      // PhongTex*: u, v
 inline constexpr int kFixedColor = 0;   // Fixed: r, g, b, a
-inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q
+inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q (then unit 1's)
 inline constexpr int kPbrNormal = 0;    // Pbr: eye-space normal
 inline constexpr int kPbrEye = 3;       // Pbr: eye-space position
 inline constexpr int kPbrUv = 6;        // Pbr: u, v
@@ -226,8 +227,12 @@ inline constexpr KernelId kernel_family(uint8_t id) {
   return KernelId::Fixed;
 }
 inline constexpr uint8_t kernel_with_filter(KernelId k, Filter f) { return uint8_t(uint8_t(k) + uint8_t(f)); }
-inline constexpr uint8_t fixed_kernel(bool textured, bool fog) { return uint8_t(uint8_t(KernelId::Fixed) + 2 * textured + fog); }
-inline constexpr int fixed_varyings(bool textured, bool fog) { return 4 + (textured ? 3 : 0) + (fog ? 1 : 0); }
+inline constexpr uint8_t fixed_kernel(int units, bool fog, bool color_sum) {
+  return uint8_t(uint8_t(KernelId::Fixed) + 4 * units + 2 * color_sum + fog);
+}
+inline constexpr int fixed_varyings(int units, bool fog, bool color_sum) {
+  return 4 + 3 * units + (color_sum ? 3 : 0) + (fog ? 1 : 0);
+}
 
 // A texture as the SIMD sampler reads it: each mip level's texels, size and the
 // addressing, resolved once per draw.
@@ -293,8 +298,10 @@ struct DrawState {
   SamplerView texture, env_map;
   float env_mix = 1;
   PbrState pbr;  // Pbr kernels
-  // The fixed-function kernel (PrimitiveBatch draws).
+  // The fixed-function kernel (PrimitiveBatch draws): `texture` is unit 0's, this
+  // unit 1's.
   PixelState pixel;
+  SamplerView texture1;
   // 0..1 multipliers the kernel uses for the texture environment, per TexFormat (see
   // raster/shade_fixed-inl.h).
   float tex_rgb = 1, tex_alpha = 1;

@@ -1,8 +1,9 @@
 // The fixed-function kernel: OpenGL 1.x's per-fragment work for PrimitiveBatch draws,
-// in GL's order — texture environment, fog, (scissor: the set-up clipped the box),
-// alpha test, depth test, blending, colour mask.
+// in GL's order — texture environments (one per unit), colour sum, fog, (scissor: the
+// set-up clipped the box), alpha test, depth test, blending, colour mask.
 //
-// Templated on what changes the work per pixel most (a texture, fog); the rest of
+// Templated on what changes the work per pixel most (the texture units, the colour sum,
+// fog); the rest of
 // PixelState is read per draw and branched on per vector of pixels, never per pixel.
 // Colours are floats in [0, 1] until they are packed to the RGBA8 framebuffer.
 #if defined(VELOCITY_RASTER_SHADE_FIXED_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -98,11 +99,11 @@ HWY_INLINE MF stencil_and_depth(const PixelState& p, MF m, MF depth, uint8_t* sp
   return both;
 }
 
-// The texture environment (OpenGL 1.x's table of texture functions). `f` is the
-// fragment's colour, `t` the texel as the Texture stores it for its format.
-HWY_INLINE Rgba texture_environment(const DrawState& draw, const Rgba& f, const Rgba& t) {
+// The texture environment of one unit (OpenGL 1.x's table of texture functions). `f`
+// is the fragment's colour (the previous unit's result), `t` the texel as the Texture
+// stores it for its format.
+HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const Rgba& t) {
   const DF d;
-  const TextureStage& st = draw.pixel.texture;
   const VF one = hn::Set(d, 1.0f);
   const bool color = st.format != TexFormat::Alpha;  // does the texture bring a colour?
   const bool alpha = st.format == TexFormat::Rgba || st.format == TexFormat::LuminanceAlpha ||
@@ -201,42 +202,53 @@ HWY_INLINE VF blend_channel(const PixelState& p, int ch, const Rgba& s, const Rg
   }
 }
 
-// Interpolated RGBA (planes 0-3), then with kTex s, t, q (4-6), then with kFog the fog
-// coordinate.
-template <bool kTex, bool kFog>
+// Interpolated RGBA (planes 0-3), then s, t, q per texture unit (kUnits of them), then
+// with kSpec the secondary colour's RGB, then with kFog the fog coordinate.
+template <int kUnits, bool kFog, bool kSpec>
 struct FixedShader {
-  static constexpr int N = fixed_varyings(kTex, kFog);
-  static constexpr int kFogAt = varying::kFixedTex + (kTex ? 3 : 0);
+  static constexpr int N = fixed_varyings(kUnits, kFog, kSpec);
+  static constexpr int kSpecAt = varying::kFixedTex + 3 * kUnits;
+  static constexpr int kFogAt = kSpecAt + (kSpec ? 3 : 0);
   Perspective<N> in;
   const DrawState& draw;
-  LevelChoice level{};
+  LevelChoice level[kUnits > 0 ? kUnits : 1]{};
 
   FixedShader(const RecordHeader& r, const DrawState& d) : draw(d) { in.load(r); }
 
+  const SamplerView& view(int unit) const { return unit == 0 ? draw.texture : draw.texture1; }
+  const TextureStage& stage(int unit) const { return unit == 0 ? draw.pixel.texture : draw.pixel.texture1; }
+
   void begin_block(float fx, float fy) {
     in.begin(fx, fy);
-    if constexpr (kTex) {
+    for (int u = 0; u < kUnits; ++u) {
       // u = s/q, v = t/q: derivatives of the quotients at the block's centre.
       float s, sx, sy, t, tx, ty, q, qx, qy;
-      constexpr int st = varying::kFixedTex;
+      const int st = varying::kFixedTex + 3 * u;
       in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(st + 2, q, qx, qy);
       const float iq = q != 0 ? 1.0f / q : 0.0f;
-      const float u = s * iq, v = t * iq;
-      const SamplerView& tex = draw.texture;
-      level = choose_levels(tex, level_of_detail(tex, (sx - u * qx) * iq, (tx - v * qx) * iq, (sy - u * qy) * iq,
-                                                 (ty - v * qy) * iq));
+      const float uu = s * iq, vv = t * iq;
+      const SamplerView& tex = view(u);
+      level[u] = choose_levels(tex, level_of_detail(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (sy - uu * qy) * iq,
+                                                    (ty - vv * qy) * iq));
     }
   }
 
   HWY_INLINE Rgba shade(int v) {
     const DF d;
     in.at_vector(v);
-    constexpr int c0 = varying::kFixedColor, st = varying::kFixedTex;
+    constexpr int c0 = varying::kFixedColor;
     Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
-    if constexpr (kTex) {
+    for (int u = 0; u < kUnits; ++u) {  // the units in order, each on the last one's colour
+      const int st = varying::kFixedTex + 3 * u;
       const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + 2, v));
-      Rgba t = sample(draw.texture, level, hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
-      c = texture_environment(draw, c, t);
+      Rgba t = sample(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
+      c = texture_environment(stage(u), c, t);
+    }
+    if constexpr (kSpec) {  // the colour sum: the secondary colour after texturing
+      const VF one = hn::Set(d, 1.0f);
+      c.r = hn::Min(hn::Add(c.r, saturate(in(kSpecAt, v))), one);
+      c.g = hn::Min(hn::Add(c.g, saturate(in(kSpecAt + 1, v))), one);
+      c.b = hn::Min(hn::Add(c.b, saturate(in(kSpecAt + 2, v))), one);
     }
     if constexpr (kFog) {
       const PixelState& p = draw.pixel;

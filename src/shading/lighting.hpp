@@ -205,8 +205,11 @@ struct GlMaterial {
 // (read for positional lights and a local viewer). Always inlined: pGL calls it per
 // vertex, and a colour returned through memory would be stored in two halves and
 // reloaded whole, a store-forwarding stall per vertex.
+//
+// `specular`: null, or where the specular part goes (OpenGL's separate specular colour,
+// GL_SEPARATE_SPECULAR_COLOR): the result is then without it.
 [[gnu::always_inline]] inline Vec4 light_gl(const GlLight* lights, int count, Vec3 model_ambient, bool local_viewer,
-                                            const GlMaterial& m, Vec3 n, Vec3 eye) {
+                                            const GlMaterial& m, Vec3 n, Vec3 eye, Vec3* specular = nullptr) {
   LightTerms t{{}, {}, model_ambient};
   const Vec3 to_eye = local_viewer ? normalize(-eye) : Vec3{0, 0, 1};
   Specular s;
@@ -228,6 +231,11 @@ struct GlMaterial {
     else
       detail::add_light<Highlight::Blinn>(
           t, n, to_light, {l.colors.ambient * att, l.colors.diffuse * att, l.colors.specular * att}, to_eye, s, half);
+  }
+  if (specular) {
+    *specular = m.specular.xyz() * t.specular;
+    const Vec3 c = m.emission.xyz() + m.ambient.xyz() * t.ambient + m.diffuse.xyz() * t.diffuse;
+    return {c.x, c.y, c.z, m.diffuse.w};
   }
   const Vec3 c = m.emission.xyz() + m.ambient.xyz() * t.ambient + m.diffuse.xyz() * t.diffuse +
                  m.specular.xyz() * t.specular;

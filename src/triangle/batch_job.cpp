@@ -21,6 +21,7 @@ class BatchPrimitives {
     projected_ = plan.vertices.projected.data() + draw.vertex_base;
     codes_ = plan.vertices.codes.data() + draw.vertex_base;
     info_ = {draw.kernel, draw.draw_state, 0};
+    extras_ = draw.units > 1 || draw.color_sum;
   }
 
   void run(uint32_t begin, uint32_t end) {
@@ -63,7 +64,8 @@ class BatchPrimitives {
     return c;
   }
 
-  // Varyings of vertex v: RGBA, then s, t, q, then the fog coordinate.
+  // Varyings of vertex v: RGBA, then s, t, q per texture unit, then the secondary
+  // colour's RGB, then the fog coordinate.
   void varyings(uint32_t v, float* out) const {
     const Vec4 c = b_.color ? b_.color[v] : Vec4{1, 1, 1, 1};
     using namespace raster::varying;
@@ -73,7 +75,21 @@ class BatchPrimitives {
       const Vec4 t = b_.texcoord ? b_.texcoord[v] : Vec4{0, 0, 0, 1};
       out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
     }
+    if (extras_) at = more_varyings(v, out, at);
     if (d_.fog) out[at] = b_.fog ? b_.fog[v] : 0.0f;
+  }
+
+  // Unit 1's s, t, q and the secondary colour, where the draw has them; the next slot.
+  int more_varyings(uint32_t v, float* out, int at) const {
+    if (d_.units > 1) {
+      const Vec4 t = b_.texcoord1 ? b_.texcoord1[v] : Vec4{0, 0, 0, 1};
+      out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
+    }
+    if (d_.color_sum) {
+      const Vec4 s = b_.secondary ? b_.secondary[v] : Vec4{0, 0, 0, 0};
+      out[at++] = s.x, out[at++] = s.y, out[at++] = s.z;
+    }
+    return at;
   }
 
   void triangle(uint32_t i0, uint32_t i1, uint32_t i2) {
@@ -184,6 +200,7 @@ class BatchPrimitives {
   const geometry::ProjectedVertex* projected_;
   const uint32_t* codes_;
   RecordInfo info_;
+  bool extras_ = false;  // a second texture unit or a secondary colour (more_varyings)
 };
 
 }  // namespace

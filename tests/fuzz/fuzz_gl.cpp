@@ -4,7 +4,8 @@
 // The input's bytes choose a context (1..96 pixels a side, any OSMesa format, with or
 // without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
 // points (GL 1.5's buffer objects and occlusion queries, 1-D textures and
-// evaluators among them),
+// evaluators, GL 1.4's secondary colour and fog coordinates, GL 1.3's multitexture
+// among them),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -401,6 +402,117 @@ void shape_call(Bytes& in, float a, float b) {
 // every buffer name and any enum (OSMesa's single buffer: the back, right and
 // auxiliary ones are errors), GL_NONE before drawing and reading; GL_TEXTURE_MIN_LOD,
 // _MAX_LOD and both biases at any value (NaN, infinities), then a textured draw.
+// GL 1.4's secondary colour and fog coordinates, GL 1.2's separate specular colour
+// (gl/src/color_sum.cpp): their state at any values, their arrays inside `attrib` (64
+// elements of any type fit), draws with the colour sum on, lit and textured or not.
+void color_sum_call(Bytes& in, const std::vector<float>& attrib, float a, float b, float c, GLenum e1) {
+  static const GLenum caps[] = {GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_FOG_COORD_ARRAY, GL_INDEX_ARRAY};
+  static const GLenum types[] = {GL_FLOAT, GL_DOUBLE, GL_UNSIGNED_BYTE, GL_BYTE, GL_SHORT, GL_UNSIGNED_INT};
+  const GLenum cap = in.u8() < 230 ? caps[in.below(4)] : e1;
+  switch (in.below(6)) {
+    case 0:
+      glSecondaryColor3f(a, b, c);
+      if (in.u8() & 1) glSecondaryColor3ub(in.u8(), in.u8(), in.u8());
+      if (in.u8() & 1) glSecondaryColor3s(GLshort(in.integer()), GLshort(in.integer()), GLshort(in.integer()));
+      if (in.u8() & 1) glSecondaryColor3i(in.integer(), in.integer(), in.integer());
+      break;
+    case 1:
+      glFogCoordf(a);
+      if (in.u8() & 1) glFogCoordd(b);
+      glFogi(GL_FOG_COORD_SRC, in.u8() < 230 ? (in.u8() & 1 ? GL_FOG_COORD : GL_FRAGMENT_DEPTH) : e1);
+      break;
+    case 2:
+      glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, in.u8() < 230 ? (in.u8() & 1 ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR) : e1);
+      (in.u8() & 1 ? glEnable : glDisable)(cap);
+      (in.u8() & 1 ? glEnableClientState : glDisableClientState)(cap);
+      break;
+    case 3: {
+      const GLsizei stride = GLsizei(in.below(4) * 4) - (in.u8() < 240 ? 0 : 8);
+      const GLenum type = in.u8() < 240 ? types[in.below(6)] : e1;
+      glSecondaryColorPointer(in.u8() < 230 ? 3 : in.below(6), type, stride, attrib.data() + 16);
+      glFogCoordPointer(in.u8() & 1 ? GL_FLOAT : type, stride, attrib.data() + 260);
+      glIndexPointer(type, stride, attrib.data() + 8);
+      break;
+    }
+    case 4: {
+      static const GLenum queries[] = {GL_CURRENT_SECONDARY_COLOR, GL_CURRENT_FOG_COORD, GL_FOG_COORD_SRC,
+                                       GL_LIGHT_MODEL_COLOR_CONTROL, GL_SECONDARY_COLOR_ARRAY_SIZE,
+                                       GL_SECONDARY_COLOR_ARRAY_TYPE, GL_SECONDARY_COLOR_ARRAY_STRIDE,
+                                       GL_FOG_COORD_ARRAY_TYPE, GL_FOG_COORD_ARRAY_STRIDE, GL_INDEX_ARRAY_TYPE,
+                                       GL_INDEX_ARRAY_STRIDE, GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING,
+                                       GL_FOG_COORD_ARRAY_BUFFER_BINDING, GL_INDEX_ARRAY_BUFFER_BINDING};
+      GLfloat v[16];
+      GLvoid* p;
+      glGetFloatv(queries[in.below(14)], v);
+      glGetPointerv(in.u8() & 1 ? GL_SECONDARY_COLOR_ARRAY_POINTER : GL_FOG_COORD_ARRAY_POINTER, &p);
+      glGetPointerv(GL_INDEX_ARRAY_POINTER, &p);
+      glIsEnabled(cap);
+      glPushAttrib(in.u8() & 1 ? GL_ALL_ATTRIB_BITS : GL_FOG_BIT | GL_CURRENT_BIT);
+      glEnable(GL_COLOR_SUM);
+      glPopAttrib();
+      break;
+    }
+    default: {
+      glEnable(GL_COLOR_SUM);
+      if (in.u8() & 1) glEnable(GL_LIGHTING), glEnable(GL_LIGHT0);
+      glBegin(in.u8() & 1 ? GL_TRIANGLES : GL_LINE_LOOP);
+      glSecondaryColor3f(a, 0.5f, c), glFogCoordf(b), glVertex2f(a, b);
+      glSecondaryColor3f(b, c, 1), glFogCoordf(c), glVertex2f(b, c);
+      glSecondaryColor3f(0, a, b), glFogCoordf(a), glVertex2f(c, a);
+      glEnd();
+      glDrawArrays(GL_TRIANGLES, in.below(20), in.below(36));
+      glDisable(GL_LIGHTING);
+      break;
+    }
+  }
+}
+
+// GL 1.3's multitexture (gl/src/multitexture.cpp): units chosen (and bad ones), each
+// unit's texture state, coordinates and array inside `attrib`, draws, the attribute
+// stacks across a unit change.
+void multitexture_call(Bytes& in, const std::vector<float>& attrib, GLuint* names, float a, float b, GLenum e1) {
+  const GLenum unit = in.u8() < 230 ? GL_TEXTURE0 + GLenum(in.below(3)) : e1;
+  switch (in.below(6)) {
+    case 0: (in.u8() & 1 ? glActiveTexture : glActiveTextureARB)(unit); break;
+    case 1: glClientActiveTexture(unit); break;
+    case 2:
+      glMultiTexCoord4f(unit, a, b, a, in.u8() & 1 ? 1.0f : b);
+      if (in.u8() & 1) glMultiTexCoord2s(unit, GLshort(in.integer()), GLshort(in.integer()));
+      if (in.u8() & 1) glMultiTexCoord1dARB(unit, double(a));
+      break;
+    case 3:
+      glActiveTexture(unit);
+      glBindTexture(in.u8() & 1 ? GL_TEXTURE_2D : GL_TEXTURE_1D, names[in.below(4)]);
+      (in.u8() & 1 ? glEnable : glDisable)(in.u8() & 1 ? GL_TEXTURE_2D : GL_TEXTURE_1D);
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, in.u8() & 1 ? GL_MODULATE : GL_ADD + GLint(in.below(3)) - 1);
+      if (in.u8() & 1) (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_GEN_S + GLenum(in.below(4)));
+      if (in.u8() & 1) glMatrixMode(GL_TEXTURE), glRotatef(a, 0, 0, 1), glMatrixMode(GL_MODELVIEW);
+      break;
+    case 4:
+      glClientActiveTexture(unit);
+      glTexCoordPointer(1 + in.below(4), in.u8() & 1 ? GL_FLOAT : GL_SHORT, GLsizei(in.below(3) * 4), attrib.data() + 20);
+      (in.u8() & 1 ? glEnableClientState : glDisableClientState)(GL_TEXTURE_COORD_ARRAY);
+      glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+      glClientActiveTexture(GL_TEXTURE0 + GLenum(in.below(2)));
+      if (in.u8() & 1) glPopClientAttrib();
+      break;
+    default: {
+      glPushAttrib(in.u8() & 1 ? GL_TEXTURE_BIT : GL_ENABLE_BIT | GL_CURRENT_BIT);
+      glActiveTexture(unit);
+      glBegin(in.u8() & 1 ? GL_QUADS : GL_LINE_STRIP);
+      for (int k = 0; k < 4; ++k) {
+        glMultiTexCoord2f(GL_TEXTURE0, a * float(k), b);
+        glMultiTexCoord2f(GL_TEXTURE1, b, a * float(k));
+        glVertex2f(k & 1 ? a : b, k & 2 ? b : a);
+      }
+      glEnd();
+      glRasterPos2f(a, b);
+      if (in.u8() & 1) glPopAttrib();
+      break;
+    }
+  }
+}
+
 void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
   static const GLenum names[] = {GL_NONE, GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT, GL_FRONT,
                                  GL_BACK, GL_LEFT, GL_RIGHT, GL_FRONT_AND_BACK, GL_AUX0, GL_AUX3};
@@ -713,6 +825,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         texture_1d_call(in, pixels, names, a, b, e1);
         evaluator_call(in, attrib, a, b, e1);
         buffer_lod_call(in, a, b, e1);
+        color_sum_call(in, attrib, a, b, c, e1);
+        multitexture_call(in, attrib, names, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif
