@@ -46,6 +46,8 @@
 //   api_buffers.cpp   their C entry points, glGetPointerv
 //   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
 //   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
+//   framebuffer_objects.cpp  framebuffer objects and renderbuffers; api_framebuffer.cpp
+//                     their C calls (and glBlitFramebuffer's, blit.cpp)
 #pragma once
 
 #include <GL/gl.h>
@@ -55,6 +57,7 @@
 #include <vector>
 
 #include "clip_planes.hpp"
+#include "framebuffer_objects.hpp"
 #include "pixel_ops.hpp"
 #include "state.hpp"
 #include "tex_gen.hpp"
@@ -364,6 +367,39 @@ class Context {
   void polygon_stipple(const std::array<uint32_t, 32>& rows);
   void get_polygon_stipple(GLubyte* out) const;  // packed with the pixel store's pack state
 
+  // --- framebuffer objects (framebuffer_objects.cpp)
+  void gen_framebuffers(GLsizei n, GLuint* out);
+  void delete_framebuffers(GLsizei n, const GLuint* ids);
+  void bind_framebuffer(GLenum target, GLuint id);
+  bool is_framebuffer(GLuint id) const;
+  GLenum check_framebuffer_status(GLenum target);
+  // `dims`: 1, 2 or 3 (glFramebufferTexture1D, 2D, 3D / Layer).
+  void framebuffer_texture(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, int dims);
+  void framebuffer_renderbuffer(GLenum target, GLenum attachment, GLenum rb_target, GLuint rb);
+  void get_framebuffer_attachment_parameter(GLenum target, GLenum attachment, GLenum pname, GLint* out);
+  void gen_renderbuffers(GLsizei n, GLuint* out);
+  void delete_renderbuffers(GLsizei n, const GLuint* ids);
+  void bind_renderbuffer(GLenum target, GLuint id);
+  bool is_renderbuffer(GLuint id) const;
+  void renderbuffer_storage(GLenum target, GLsizei samples, GLenum internal, GLsizei w, GLsizei h);
+  void get_renderbuffer_parameter(GLenum target, GLenum pname, GLint* out);
+  void generate_mipmap(GLenum target);
+  bool get_framebuffer(GLenum pname, std::vector<double>& out) const;  // glGet's bindings and limits
+  // GL_INVALID_FRAMEBUFFER_OPERATION, and true, when the framebuffer drawn into (or
+  // read from) is an incomplete framebuffer object.
+  bool framebuffer_incomplete();
+  bool read_framebuffer_incomplete();
+  // Runs `f` with the window's framebuffer as the context's own (GLX and OSMesa calls
+  // that are about the window while a framebuffer object is bound).
+  void with_window(const std::function<void()>& f);
+  // The framebuffer read from (GL_READ_FRAMEBUFFER) becomes the context's surface for
+  // a read, and the one drawn into again after it.
+  void use_read_framebuffer() { use_surface(fb_.read); }
+  void use_draw_framebuffer() { use_surface(fb_.draw); }
+  // glBlitFramebuffer (blit.cpp)
+  void blit_framebuffer(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1, GLint dy1,
+                        GLbitfield mask, GLenum filter);
+
  private:
   void update_clip_planes();
   // The "on" pieces of the line from prim_[a] (colour color_a) to prim_[b], as lines;
@@ -554,6 +590,34 @@ class Context {
   // GL 1.5's occlusion queries (occlusion.cpp).
   QueryState queries_;
   void settle_query(QueryObject& q);  // run the frame its draws are in, if it has not run
+
+  // Framebuffer objects (framebuffer_objects.cpp).
+  FramebufferState fb_;
+  Surface window_;                  // the window's surface while an FBO is drawn into
+  FramebufferObject* fbo_ = nullptr;  // the FBO whose surface the context holds, or null
+  struct AttachedImage {
+    TextureObject* texture = nullptr;
+    Renderbuffer* renderbuffer = nullptr;
+    int width = 0, height = 0;
+    bool colour = false, depth = false, stencil = false;  // what it can be attached as
+    uint64_t serial = 0;
+  };
+  FramebufferObject* framebuffer_object(GLuint id);
+  Renderbuffer* renderbuffer_object(GLuint id);
+  FramebufferObject* bound_framebuffer(GLenum target);
+  AttachedImage attached_image(const Attachment& a);
+  GLenum framebuffer_status(GLuint id, int* width, int* height);
+  void set_attachment(GLenum target, GLenum attachment, const Attachment& a);
+  void detach_everywhere(GLenum type, GLuint name);
+  void swap_surface(Surface& s);
+  void use_surface(GLuint id);
+  void prepare_framebuffer();  // the renderer sized and loaded from the attachments if they changed
+  void write_back(FramebufferObject& f);
+  void image_writing(GLenum type, GLuint name);
+  void texture_writing(const TextureObject& t);
+  void image_written();
+  void framebuffer_buffers_changing();
+  void window_attachment_parameter(GLenum attachment, GLenum pname, GLint* out);  // glDrawBuffer / glReadBuffer with an FBO bound
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

@@ -37,7 +37,10 @@ BlendFactor blend_factor(GLenum f) {
 }  // namespace
 
 void Context::ensure_frame() {
-  if (in_frame_ || !renderer_) return;
+  if (in_frame_) return;
+  if (fbo_) prepare_framebuffer();  // (framebuffer_objects.cpp: loaded again if its images changed)
+  if (!renderer_) return;
+  if (fbo_) fbo_->drawn = true;
   FrameStart start;
   start.clear_color_buffer = start.clear_depth_buffer = first_frame_;
   // Without a stencil buffer, clearing the renderer's keeps its empty tiles skippable.
@@ -97,6 +100,7 @@ void Context::submit_pending() {
 }
 
 void Context::run_frame() {
+  if (fbo_ && !in_frame_) prepare_framebuffer();
   submit_pending();
   if (double_buffered_) park_colour();
   if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
@@ -105,7 +109,7 @@ void Context::run_frame() {
   // buffer of the framebuffer's width takes the colour directly, unless there is a back
   // buffer (buffers.cpp). Either way each tile is copied out by the thread that drew it,
   // as soon as it is drawn.
-  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
+  direct_ = buffer_ && format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
   renderer_->end_frame_into(direct_ ? static_cast<uint8_t*>(buffer_) : colour_.data(), size_t(width_) * 4, 4);
   if (mirror_) {
     mirror_->end_frame();
@@ -121,6 +125,7 @@ void Context::run_frame() {
     if (depth_requested_) copy_depth();
     return;
   }
+  if (!buffer_) return;  // a framebuffer object's: its colour stays in colour_
   const int stride_px = row_length > 0 ? row_length : width_;
   const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   uint8_t* out = static_cast<uint8_t*>(buffer_);

@@ -25,6 +25,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_eval(pname, out)) return true;             // (evaluators.cpp)
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
   if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
+  if (get_framebuffer(pname, out)) return true;      // (framebuffer_objects.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;

@@ -78,7 +78,7 @@ void Context::clear(GLbitfield mask) {
   if (in_begin_error()) return;
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
-  if (!renderer_) return;
+  if (framebuffer_incomplete() || !renderer_) return;
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer();  // (the context's own: accum.cpp)
   submit_pending();
   const RasterState& r = raster_;

@@ -18,6 +18,7 @@ constexpr size_t kAssembleEvery = 3072;
 void Context::begin(GLenum mode) {
   if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
   if (in_begin_) return error(GL_INVALID_OPERATION);
+  if (fbo_) framebuffer_incomplete();  // (its error; nothing is drawn into an incomplete FBO)
   in_begin_ = true;
   mode_ = mode;
   prim_.clear(), order_.clear(), emitted_.clear();
