@@ -95,6 +95,7 @@ void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum ty
   const TextureObject* tp = target_texture(target);
   if (!tp) return;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE);
+  texture_writing(*tp);  // (an FBO drawing into it writes back what it drew: framebuffer_objects.cpp)
   int comps;
   switch (format) {
     case GL_RGBA: case GL_BGRA: comps = 4; break;

@@ -6,7 +6,8 @@
  * window; a render-to-texture loop that draws each of two textures into the other six
  * times (blended); glGenerateMipmap of a rendered texture drawn minified; glDrawPixels,
  * glCopyPixels, glCopyTexSubImage2D and glBitmap inside an FBO; glTexSubImage2D into the
- * texture while it is attached and bound, drawn over after; a 1-D texture level as the
+ * texture while it is attached and bound, drawn over after, and glGetTexImage of it
+ * while still bound; a 1-D texture level as the
  * colour attachment; a packed depth-stencil renderbuffer (stencil test in an FBO);
  * glBlitFramebuffer from an FBO to the window (nearest: scaled, mirrored, scissored;
  * linear: enlarged), from the window to an FBO, and depth and stencil between two
@@ -373,6 +374,16 @@ static void pixels_in_fbo(void) {
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 2, 3, 18, 13, 14, 12);
   read_values("pix_copied", 22, 17);
   read_values("pix_sub", 32, 21);
+  { /* the attached texture read back while its FBO is bound: what was drawn */
+    static GLubyte level[40 * 30 * 4];
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, level);
+    for (i = 0; i < 4; ++i) {
+      char n[32];
+      snprintf(n, sizeof n, "pix_getteximage_%d", i);
+      conf_value(n, level[(28 * 40 + 33) * 4 + i]); /* inside the yellow triangle */
+    }
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ortho(W, H);
   glClearColor(0.3f, 0.3f, 0.3f, 1);
