@@ -129,6 +129,7 @@ void Context::blit_framebuffer(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint
         ClearRequest q;
         q.color = q.depth = q.stencil = false;
         q.scissor = true;
+        q.color_mask = channel_mask_;
         q.x0 = x_lo + i, q.x1 = x_lo + e, q.y0 = y, q.y1 = y + 1;
         set(q, i);
         renderer_->clear(q);

@@ -617,7 +617,10 @@ class Context {
   void texture_writing(const TextureObject& t);
   void image_written();
   void framebuffer_buffers_changing();
-  void window_attachment_parameter(GLenum attachment, GLenum pname, GLint* out);  // glDrawBuffer / glReadBuffer with an FBO bound
+  void window_attachment_parameter(GLenum attachment, GLenum pname, GLint* out);
+  // The colour channels the framebuffer drawn into keeps (RGBA bits; an FBO's luminance,
+  // alpha or RGB image fewer), ANDed into every colour mask.
+  uint8_t channel_mask_ = 0xf;  // glDrawBuffer / glReadBuffer with an FBO bound
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

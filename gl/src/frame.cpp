@@ -195,7 +195,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
       s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
       s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
     }
-    s.color_mask = drawn_ ? raster_.color_mask_bits() : 0;
+    s.color_mask = drawn_ ? raster_.color_mask_bits() & channel_mask_ : 0;
     s.depth_test = s.depth_write = false;
     return s;
   }
@@ -269,7 +269,9 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
                : raster_.blend_equation == GL_MAX                   ? BlendOp::Max
                                                                     : BlendOp::Add;
   s.blend_color = raster_.blend_color;
-  s.color_mask = drawn_ ? raster_.color_mask_bits() : 0;  // (glDrawBuffer(GL_NONE): no colour written)
+  // (glDrawBuffer(GL_NONE): no colour written; an FBO's luminance or alpha buffer keeps
+  // only its channels: framebuffer_objects.cpp)
+  s.color_mask = drawn_ ? raster_.color_mask_bits() & channel_mask_ : 0;
   stencil_pixel_state(s);
   s.samples_passed = queries_.active_object ? &queries_.active_object->samples : nullptr;  // (occlusion.cpp)
   s.polygon_stipple = stippled && raster_.polygon_stipple;

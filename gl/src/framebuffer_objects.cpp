@@ -56,6 +56,29 @@ bool renderbuffer_format(GLenum f, Renderbuffer& rb) {
   }
 }
 
+// A texel of a texture of base format `base` as its colour buffer holds it: luminance
+// and intensity in red (GL 3.0's rule for luminance buffers, as Mesa reads them back),
+// alpha alone, RGB opaque.
+uint32_t framebuffer_texel(GLenum base, uint32_t p) {
+  switch (base) {
+    case GL_LUMINANCE: case GL_INTENSITY: return (p & 0xffu) | 0xff000000u;
+    case GL_LUMINANCE_ALPHA: return (p & 0xffu) | (p & 0xff000000u);
+    case GL_ALPHA: return p & 0xff000000u;
+    default: return p;
+  }
+}
+
+// The channels a colour buffer of base format `base` keeps (RGBA bits).
+uint8_t channels_of(GLenum base) {
+  switch (base) {
+    case GL_LUMINANCE: case GL_INTENSITY: return 0x1;
+    case GL_LUMINANCE_ALPHA: return 0x9;
+    case GL_ALPHA: return 0x8;
+    case GL_RGB: return 0x7;
+    default: return 0xf;
+  }
+}
+
 // The attachment point `attachment` names: kColour, kDepth, kStencil, 3 for
 // GL_DEPTH_STENCIL_ATTACHMENT; -1 with GL's error set in *err.
 int attachment_index(GLenum attachment, GLenum* err) {
@@ -323,6 +346,7 @@ bool Context::framebuffer_incomplete() {
 }
 
 bool Context::read_framebuffer_incomplete() {
+  if (fbo_) prepare_framebuffer();  // (attachments changed since the bind: the renderer is made now)
   if (framebuffer_status(fb_.read, nullptr, nullptr) == GL_FRAMEBUFFER_COMPLETE) return false;
   error(GL_INVALID_FRAMEBUFFER_OPERATION);
   return true;
@@ -342,6 +366,7 @@ void Context::swap_surface(Surface& s) {
   accum_.swap(s.accum), depth_out_.swap(s.depth_out);
   std::swap(draw_buffer_, s.draw_buffer), std::swap(read_buffer_, s.read_buffer);
   std::swap(drawn_, s.drawn), std::swap(read_, s.read), std::swap(held_, s.held);
+  std::swap(channel_mask_, s.channel_mask);
   changed();
 }
 
@@ -386,7 +411,12 @@ void Context::prepare_framebuffer() {
   // The images' w x h corners (bottom left), as the renderer's rows.
   if (const AttachedImage& c = im[kColour]; c.width > 0) {
     const uint32_t* src = c.texture ? c.texture->levels[size_t(f->colour.level)].texels.data() : c.renderbuffer->colour.data();
-    for (int y = 0; y < h; ++y) std::memcpy(&colour_[size_t(y) * size_t(w) * 4], src + size_t(y) * size_t(c.width), size_t(w) * 4);
+    const GLenum base = c.texture ? c.texture->internal_format : GLenum(GL_RGBA);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const uint32_t v = framebuffer_texel(base, src[size_t(y) * size_t(c.width) + size_t(x)]);
+        std::memcpy(&colour_[(size_t(y) * size_t(w) + size_t(x)) * 4], &v, 4);
+      }
   }
   if (const AttachedImage& d = im[kDepth]; d.renderbuffer) {
     depth.resize(n);
@@ -400,6 +430,9 @@ void Context::prepare_framebuffer() {
                   stencil.data() + size_t(y) * size_t(w));
   }
   depth_bits_ = im[kDepth].renderbuffer ? im[kDepth].renderbuffer->depth : 0;
+  const AttachedImage& c = im[kColour];
+  channel_mask_ = c.texture ? channels_of(c.texture->internal_format)
+                  : c.renderbuffer && c.renderbuffer->alpha == 0 ? channels_of(GL_RGB) : 0xf;
   stencil_bits_ = im[kStencil].renderbuffer ? 8 : 0;
   const bool colour = f->colour.type != GL_NONE;
   drawn_ = draw_buffer_ != GL_NONE && colour ? 1 : 0;
@@ -627,6 +660,15 @@ void Context::get_framebuffer_attachment_parameter(GLenum target, GLenum attachm
 }
 
 bool Context::get_framebuffer(GLenum pname, std::vector<double>& out) const {
+  if (fbo_) {  // the bits of the FBO drawn into: its image's channels, its depth renderbuffer's
+    const bool luminance = (channel_mask_ & 0x6) == 0;  // (luminance and intensity bits are not red)
+    switch (pname) {
+      case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: out = {luminance ? 0.0 : 8.0}; return true;
+      case GL_ALPHA_BITS: out = {channel_mask_ & 0x8 ? 8.0 : 0.0}; return true;
+      case GL_DEPTH_BITS: out = {double(depth_bits_)}; return true;
+      default: break;
+    }
+  }
   switch (pname) {
     case GL_FRAMEBUFFER_BINDING: out = {double(fb_.draw)}; return true;  // (= GL_DRAW_FRAMEBUFFER_BINDING)
     case GL_READ_FRAMEBUFFER_BINDING: out = {double(fb_.read)}; return true;

@@ -35,6 +35,7 @@ struct Surface {
   std::vector<uint32_t> depth_out;
   GLenum draw_buffer = GL_COLOR_ATTACHMENT0_EXT, read_buffer = GL_COLOR_ATTACHMENT0_EXT;
   int drawn = 1, read = 1, held = 1;
+  uint8_t channel_mask = 0xf;
 };
 
 // A renderbuffer: one image of colour (RGBA8), depth, stencil or both, kept here while

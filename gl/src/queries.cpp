@@ -6,6 +6,7 @@
 namespace velocity::gl {
 
 bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
+  if (fbo_) prepare_framebuffer();  // (an FBO's bits after its attachments changed: framebuffer_objects.cpp)
   kind = 0;
   out.clear();
   auto v4 = [&](Vec4 c) { out = {c.x, c.y, c.z, c.w}; };

@@ -553,6 +553,53 @@ static void depth_stencil_and_blits(void) {
   glDeleteRenderbuffers(2, ds);
 }
 
+/* Colour buffers of the luminance, alpha and intensity formats read back as RGBA
+ * (luminance in red), drawn into and blended; the bits of an FBO just completed. */
+static void formats(void) {
+  static const GLenum bases[3] = {GL_LUMINANCE, GL_ALPHA, GL_LUMINANCE_ALPHA};
+  static const GLfloat texel[8] = {0.25f, 0.75f, 0.25f, 0.75f, 0.25f, 0.75f, 0.25f, 0.75f};
+  GLuint fb, tex[3], depth;
+  GLint v;
+  GLfloat got[4];
+  int i, k;
+  char n[48];
+  glGenFramebuffers(1, &fb);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glGenTextures(3, tex);
+  for (i = 0; i < 3; ++i) {
+    glBindTexture(GL_TEXTURE_2D, tex[i]);
+    glTexImage2D(GL_TEXTURE_2D, 0, (GLint)bases[i], 2, 2, 0, bases[i], GL_FLOAT, texel);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex[i], 0);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, got);
+    for (k = 0; k < 4; ++k) snprintf(n, sizeof n, "fmt%d_read_%d", i, k), conf_value(n, (int)(got[k] * 255 + 0.5f));
+    ortho(2, 2);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_DST_COLOR);
+    glColor4f(0.25f, 0.5f, 0.75f, 0.5f);
+    glBegin(GL_QUADS);
+    glVertex2f(1, 0), glVertex2f(2, 0), glVertex2f(2, 2), glVertex2f(1, 2);
+    glEnd();
+    glDisable(GL_BLEND);
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_FLOAT, got);
+    for (k = 0; k < 4; ++k) snprintf(n, sizeof n, "fmt%d_blended_%d", i, k), conf_value(n, (int)(got[k] * 255 + 0.5f));
+  }
+  glGetIntegerv(GL_DEPTH_BITS, &v);
+  conf_value("bits_depth_before", v);
+  glGenRenderbuffers(1, &depth);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, 2, 2);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+  glGetIntegerv(GL_DEPTH_BITS, &v);
+  conf_value("bits_depth_16", v);
+  glGetIntegerv(GL_RED_BITS, &v);
+  conf_value("bits_red", v);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &fb);
+  glDeleteRenderbuffers(1, &depth);
+  glDeleteTextures(3, tex);
+  err("formats_errors");
+}
+
 int main(int argc, char** argv) {
   conf_stencil_bits = 8;
   conf_init(argc, argv, W, H);
@@ -563,6 +610,7 @@ int main(int argc, char** argv) {
   pixels_in_fbo();
   one_d();
   depth_stencil_and_blits();
+  formats();
   err("final");
   return conf_end();
 }
