@@ -451,12 +451,12 @@ void Context::write_back(FramebufferObject& f) {
   if (const AttachedImage& c = im[kColour]; c.width >= w && c.height >= h) {
     uint32_t* dst = c.texture ? c.texture->levels[size_t(f.colour.level)].texels.data() : c.renderbuffer->colour.data();
     const GLenum base = c.texture ? c.texture->internal_format : GLenum(GL_RGBA);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const uint8_t* p = &colour_[(size_t(y) * size_t(w) + size_t(x)) * 4];
-        const uint32_t v = uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-        dst[size_t(y) * size_t(c.width) + size_t(x)] = stored_texel(base, v);
-      }
+    for (int y = 0; y < h; ++y) {
+      uint32_t* row = dst + size_t(y) * size_t(c.width);
+      std::memcpy(row, &colour_[size_t(y) * size_t(w) * 4], size_t(w) * 4);  // (RGBA bytes: R in the low byte)
+      if (base != GL_RGBA)
+        for (int x = 0; x < w; ++x) row[x] = stored_texel(base, row[x]);
+    }
     if (c.texture) {
       c.texture->dirty = true;
       c.texture->serial = ++fb_.serial;
