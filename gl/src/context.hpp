@@ -396,6 +396,11 @@ class Context {
   // a read, and the one drawn into again after it.
   void use_read_framebuffer() { use_surface(fb_.read); }
   void use_draw_framebuffer() { use_surface(fb_.draw); }
+  // The window's size and whether its front buffer is drawn into, whichever framebuffer
+  // is bound (GLX's showing of the front at glFlush).
+  int window_width() const { return fbo_ ? window_.width : width_; }
+  int window_height() const { return fbo_ ? window_.height : height_; }
+  bool window_draws_front() const { return fbo_ ? window_.double_buffered && (window_.drawn & 1) : draws_front(); }
   // glBlitFramebuffer (blit.cpp)
   void blit_framebuffer(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1, GLint dy1,
                         GLbitfield mask, GLenum filter);
