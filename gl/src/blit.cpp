@@ -3,8 +3,8 @@
 // two rectangles say, into the draw framebuffer's. Nothing but the scissor test applies
 // (GL 3.0, 4.3.3). The source is read once (the read framebuffer's surface, its frame
 // run); each destination pixel takes the source pixel under its centre (GL_NEAREST) or
-// the bilinear mix of the four nearest
-// (GL_LINEAR, colour only; clamped to the source framebuffer's edge); destination pixels whose centre maps outside the source
+// the bilinear mix of the four nearest, clamped to the source framebuffer's edge
+// (GL_LINEAR, colour only); destination pixels whose centre maps outside the source
 // framebuffer are left as they are. The values are written as clears of runs of equal
 // pixels in each row (as write_surface_rows, buffers.cpp): exact, whatever the backend.
 #include <algorithm>
