@@ -12,7 +12,8 @@
  * glBlitFramebuffer from an FBO to the window (nearest: scaled, mirrored, scissored;
  * linear: enlarged), from the window to an FBO, and depth and stencil between two
  * FBOs. Values: glCheckFramebufferStatus for complete and incomplete framebuffers,
- * glGetRenderbufferParameteriv, glGetFramebufferAttachmentParameteriv, the bindings,
+ * glGetRenderbufferParameteriv, glGetFramebufferAttachmentParameteriv (types, names,
+ * levels, the channels' sizes, component types, GL_DEPTH_STENCIL_ATTACHMENT), the bindings,
  * glIs*, glReadPixels of colour, depth and stencil from FBOs (and from the
  * GL_READ_FRAMEBUFFER while another is drawn into), and the errors. Compared with Mesa. */
 #define GL_GLEXT_PROTOTYPES 1
@@ -466,9 +467,28 @@ static void depth_stencil_and_blits(void) {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fb[0]);
   {
+    static const struct { GLenum attachment, pname; const char* name; } q[] = {
+        {GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, "att_ds_depth_size"},
+        {GL_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, "att_ds_stencil_size"},
+        {GL_DEPTH_STENCIL_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, "att_ds_type"},
+        {GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE, "att_colour_red_size"},
+        {GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE, "att_colour_alpha_size"},
+        {GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, "att_colour_depth_size"},
+        {GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, "att_colour_type"},
+        {GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, "att_depth_level"},
+    };
     GLint bits;
+    unsigned k;
+    char n[48];
     glGetIntegerv(GL_STENCIL_BITS, &bits);
     conf_value("ds_stencil_bits_fbo", bits);
+    for (k = 0; k < sizeof q / sizeof q[0]; ++k) {
+      bits = -1;
+      glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, q[k].attachment, q[k].pname, &bits);
+      conf_value(q[k].name, bits);
+      snprintf(n, sizeof n, "%s_error", q[k].name);
+      err(n);
+    }
   }
   ortho(50, 40);
   glEnable(GL_STENCIL_TEST);
