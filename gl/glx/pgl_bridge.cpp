@@ -18,7 +18,7 @@ void velocity_glx_swap_buffers() {
 
 bool velocity_glx_front(unsigned char* bgra, int width, int height) {
   velocity::gl::Context* gl = velocity::gl::current();
-  if (!gl || !gl->draws_front() || gl->width() != width || gl->height() != height) return false;
+  if (!gl || !gl->window_draws_front() || gl->window_width() != width || gl->window_height() != height) return false;
   const unsigned char* rows = gl->front_rows();
   if (!rows) return false;
   // RGBA bottom row first to the XImage's BGRA top row first.

@@ -38,10 +38,23 @@ int buffers_named(GLenum mode, bool read, bool* exists) {
   }
 }
 
+// A framebuffer object's colour buffers (framebuffer_objects.cpp): GL_COLOR_ATTACHMENT0
+// as kFront, GL_NONE 0; the window's names and the attachments past the first are
+// no buffer it has (0 and GL_INVALID_OPERATION), anything else -1.
+int attachment_named(GLenum mode) {
+  if (mode == GL_COLOR_ATTACHMENT0) return kFront;
+  if (mode == GL_NONE || (mode > GL_COLOR_ATTACHMENT0 && mode <= GL_COLOR_ATTACHMENT15)) return 0;
+  bool exists = true;
+  return buffers_named(mode, false, &exists) < 0 ? -1 : 0;
+}
+
+}  // namespace
+
 // A frame of `r` that writes the given colour, depth and stencil rows (bottom first;
 // null: left as they are) as clears of the runs of equal values in each row: exact
 // values, whatever the backend. `fresh`: the buffers start cleared (a new renderer).
-void write_rows(Renderer& r, int w, int h, const uint8_t* rgba, const float* depth, const uint8_t* stencil, bool fresh) {
+// (Also what loads a framebuffer object's renderer: framebuffer_objects.cpp.)
+void write_surface_rows(Renderer& r, int w, int h, const uint8_t* rgba, const float* depth, const uint8_t* stencil, bool fresh) {
   FrameStart start;
   start.clear_color_buffer = start.clear_depth_buffer = start.clear_stencil_buffer = fresh;
   start.color = {0, 0, 0, 0};
@@ -86,9 +99,9 @@ void write_rows(Renderer& r, int w, int h, const uint8_t* rgba, const float* dep
   }
   r.end_frame();
 }
-}  // namespace
 
 void Context::set_double_buffered(bool on) {
+  if (fbo_) return with_window([&] { set_double_buffered(on); });  // (the window's buffers)
   if (on == double_buffered_) return;
   double_buffered_ = on;
   // GL's initial draw and read buffer: the back one where there is one.
@@ -101,10 +114,11 @@ void Context::set_double_buffered(bool on) {
 void Context::draw_buffer(GLenum mode) {
   if (in_begin_error()) return;
   bool exists = true;
-  int named = buffers_named(mode, false, &exists);
+  int named = fbo_ ? attachment_named(mode) : buffers_named(mode, false, &exists);
   if (named < 0) return error(GL_INVALID_ENUM);
   if (!double_buffered_) named &= kFront;
   if (mode != GL_NONE && named == 0) return error(GL_INVALID_OPERATION);
+  if (fbo_) framebuffer_buffers_changing();  // (its completeness depends on them)
   draw_buffer_ = mode;
   if (named == drawn_) return;
   run_frame();  // what was drawn goes to the buffers it was drawn to
@@ -118,10 +132,11 @@ void Context::draw_buffer(GLenum mode) {
 void Context::read_buffer(GLenum mode) {
   if (in_begin_error()) return;
   bool exists = true;
-  int named = buffers_named(mode, true, &exists);
+  int named = fbo_ ? attachment_named(mode) : buffers_named(mode, true, &exists);
   if (named < 0) return error(GL_INVALID_ENUM);
   if (!double_buffered_) named &= kFront;
   if (mode != GL_NONE && named == 0) return error(GL_INVALID_OPERATION);
+  if (fbo_) framebuffer_buffers_changing();
   read_buffer_ = mode;
   read_ = named;
 }
@@ -142,7 +157,7 @@ void Context::hold(int which) {
   if (!renderer_ || width_ <= 0) return void(held_ = which);
   run_frame();
   // colour_ is the renderer's colour as the last frame left it (run_frame keeps it).
-  write_rows(*renderer_, width_, height_, parked_.data(), nullptr, nullptr, first_frame_);
+  write_surface_rows(*renderer_, width_, height_, parked_.data(), nullptr, nullptr, first_frame_);
   first_frame_ = false;
   colour_.swap(parked_);
   held_ = which;
@@ -163,12 +178,13 @@ void Context::start_mirror() {
   }
   auto m = std::make_unique<Renderer>(width_, height_, backend_);
   m->options = renderer_->options;
-  write_rows(*m, width_, height_, parked_.data(), depth.empty() ? nullptr : depth.data(),
+  write_surface_rows(*m, width_, height_, parked_.data(), depth.empty() ? nullptr : depth.data(),
              stencil.empty() ? nullptr : stencil.data(), true);
   mirror_ = std::move(m);
 }
 
 void Context::swap_buffers() {
+  if (fbo_) return with_window([&] { swap_buffers(); });
   if (!double_buffered_ || !renderer_) return;
   run_frame();
   park_colour();
@@ -177,7 +193,7 @@ void Context::swap_buffers() {
   if (held_ == kBack) {
     parked_ = colour_;
   } else {
-    write_rows(*renderer_, width_, height_, parked_.data(), nullptr, nullptr, first_frame_);
+    write_surface_rows(*renderer_, width_, height_, parked_.data(), nullptr, nullptr, first_frame_);
     first_frame_ = false;
     colour_ = parked_;
   }
@@ -185,6 +201,11 @@ void Context::swap_buffers() {
 }
 
 const uint8_t* Context::front_rows() {
+  if (fbo_) {  // (the rows stay where they are when the surfaces are exchanged back)
+    const uint8_t* rows = nullptr;
+    with_window([&] { rows = front_rows(); });
+    return rows;
+  }
   if (!double_buffered_ || !renderer_) return nullptr;
   run_frame();
   park_colour();

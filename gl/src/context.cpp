@@ -40,6 +40,11 @@ Context::~Context() = default;
 bool Context::make_current(void* buffer, GLenum type, int width, int height) {
   if (!buffer || type != GL_UNSIGNED_BYTE || width < 1 || height < 1 || width > kMaxViewport || height > kMaxViewport)
     return false;
+  if (fbo_) {  // a framebuffer object is bound: the window's surface is the one made current
+    bool ok = false;
+    with_window([&] { ok = make_current(buffer, type, width, height); });
+    return ok;
+  }
   if (in_frame_) run_frame();
   const bool first = !renderer_;
   try {
@@ -76,6 +81,11 @@ void Context::release() {
 }
 
 bool Context::depth_buffer(GLint* width, GLint* height, GLint* bytes_per_value, void** buffer) {
+  if (fbo_) {
+    bool ok = false;
+    with_window([&] { ok = depth_buffer(width, height, bytes_per_value, buffer); });
+    return ok;
+  }
   if (depth_bits_ <= 0 || !renderer_) {
     if (width) *width = 0;
     if (height) *height = 0;

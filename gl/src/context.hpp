@@ -49,6 +49,8 @@
 //   color_sum.cpp     GL 1.4's secondary colour and fog coordinates, GL 1.2's separate
 //                     specular colour; api_color_sum.cpp their C calls
 //   multitexture.cpp  GL 1.3's texture units; api_multitexture.cpp their C calls
+//   framebuffer_objects.cpp  framebuffer objects and renderbuffers; api_framebuffer.cpp
+//                     their C calls (and glBlitFramebuffer's, blit.cpp)
 #pragma once
 
 #include <GL/gl.h>
@@ -58,6 +60,7 @@
 #include <vector>
 
 #include "clip_planes.hpp"
+#include "framebuffer_objects.hpp"
 #include "pixel_ops.hpp"
 #include "state.hpp"
 #include "tex_gen.hpp"
@@ -402,6 +405,43 @@ class Context {
   void restore_units(const AttribFrame& f);
   void save_client_units(ClientAttribFrame& f);
   void restore_client_units(const ClientAttribFrame& f);
+  // --- framebuffer objects (framebuffer_objects.cpp)
+  void gen_framebuffers(GLsizei n, GLuint* out);
+  void delete_framebuffers(GLsizei n, const GLuint* ids);
+  void bind_framebuffer(GLenum target, GLuint id);
+  bool is_framebuffer(GLuint id) const;
+  GLenum check_framebuffer_status(GLenum target);
+  // `dims`: 1, 2 or 3 (glFramebufferTexture1D, 2D, 3D / Layer).
+  void framebuffer_texture(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level, int dims);
+  void framebuffer_renderbuffer(GLenum target, GLenum attachment, GLenum rb_target, GLuint rb);
+  void get_framebuffer_attachment_parameter(GLenum target, GLenum attachment, GLenum pname, GLint* out);
+  void gen_renderbuffers(GLsizei n, GLuint* out);
+  void delete_renderbuffers(GLsizei n, const GLuint* ids);
+  void bind_renderbuffer(GLenum target, GLuint id);
+  bool is_renderbuffer(GLuint id) const;
+  void renderbuffer_storage(GLenum target, GLsizei samples, GLenum internal, GLsizei w, GLsizei h);
+  void get_renderbuffer_parameter(GLenum target, GLenum pname, GLint* out);
+  void generate_mipmap(GLenum target);
+  bool get_framebuffer(GLenum pname, std::vector<double>& out) const;  // glGet's bindings and limits
+  // GL_INVALID_FRAMEBUFFER_OPERATION, and true, when the framebuffer drawn into (or
+  // read from) is an incomplete framebuffer object.
+  bool framebuffer_incomplete();
+  bool read_framebuffer_incomplete();
+  // Runs `f` with the window's framebuffer as the context's own (GLX and OSMesa calls
+  // that are about the window while a framebuffer object is bound).
+  void with_window(const std::function<void()>& f);
+  // The framebuffer read from (GL_READ_FRAMEBUFFER) becomes the context's surface for
+  // a read, and the one drawn into again after it.
+  void use_read_framebuffer() { use_surface(fb_.read); }
+  void use_draw_framebuffer() { use_surface(fb_.draw); }
+  // The window's size and whether its front buffer is drawn into, whichever framebuffer
+  // is bound (GLX's showing of the front at glFlush).
+  int window_width() const { return fbo_ ? window_.width : width_; }
+  int window_height() const { return fbo_ ? window_.height : height_; }
+  bool window_draws_front() const { return fbo_ ? window_.double_buffered && (window_.drawn & 1) : draws_front(); }
+  // glBlitFramebuffer (blit.cpp)
+  void blit_framebuffer(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1, GLint dy1,
+                        GLbitfield mask, GLenum filter);
 
  private:
   void update_clip_planes();
@@ -658,6 +698,36 @@ class Context {
   const Vec4* secondary_of(uint32_t i, bool back) const {
     return color_sum_on_ ? (back ? &prim_secondary_[i].back : &prim_secondary_[i].front) : nullptr;
   }
+  // Framebuffer objects (framebuffer_objects.cpp).
+  FramebufferState fb_;
+  Surface window_;                  // the window's surface while an FBO is drawn into
+  FramebufferObject* fbo_ = nullptr;  // the FBO whose surface the context holds, or null
+  struct AttachedImage {
+    TextureObject* texture = nullptr;
+    Renderbuffer* renderbuffer = nullptr;
+    int width = 0, height = 0;
+    bool colour = false, depth = false, stencil = false;  // what it can be attached as
+    uint64_t serial = 0;
+  };
+  FramebufferObject* framebuffer_object(GLuint id);
+  Renderbuffer* renderbuffer_object(GLuint id);
+  FramebufferObject* bound_framebuffer(GLenum target);
+  AttachedImage attached_image(const Attachment& a);
+  GLenum framebuffer_status(GLuint id, int* width, int* height);
+  void set_attachment(GLenum target, GLenum attachment, const Attachment& a);
+  void detach_everywhere(GLenum type, GLuint name);
+  void swap_surface(Surface& s);
+  void use_surface(GLuint id);
+  void prepare_framebuffer();  // the renderer sized and loaded from the attachments if they changed
+  void write_back(FramebufferObject& f);
+  void image_writing(GLenum type, GLuint name);
+  void texture_writing(const TextureObject& t);
+  void image_written();
+  void framebuffer_buffers_changing();
+  void window_attachment_parameter(GLenum attachment, GLenum pname, GLint* out);
+  // The colour channels the framebuffer drawn into keeps (RGBA bits; an FBO's luminance,
+  // alpha or RGB image fewer), ANDed into every colour mask.
+  uint8_t channel_mask_ = 0xf;  // glDrawBuffer / glReadBuffer with an FBO bound
 };
 
 // A parameter in [0, 1] (NaN reads 0), and an enum passed as a float (glFogf,

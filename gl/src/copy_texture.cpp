@@ -12,6 +12,12 @@ namespace velocity::gl {
 
 std::vector<uint32_t> Context::read_colour_rect(GLint x, GLint y, GLsizei w, GLsizei h) {
   std::vector<uint32_t> texels(size_t(w) * size_t(h), 0xff000000u);
+  if (fb_.read != fb_.in_use) {  // GL_READ_FRAMEBUFFER is another framebuffer (framebuffer_objects.cpp)
+    use_read_framebuffer();
+    texels = read_colour_rect(x, y, w, h);
+    use_draw_framebuffer();
+    return texels;
+  }
   if (!renderer_) return texels;
   run_frame();
   const uint8_t* rows = colour_rows();
@@ -39,6 +45,7 @@ void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint 
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
       h > (kMaxTextureSize >> level) || border != 0 || !base_format(GLint(internal)))
     return error(GL_INVALID_VALUE);
+  if (read_framebuffer_incomplete()) return;
   const std::vector<uint32_t> texels = read_colour_rect(x, y, w, h);
   tex_image(target, level, GLint(internal), w, h, border, &texels);
 }
@@ -53,6 +60,7 @@ void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLin
   if (l.width == 0) return error(GL_INVALID_OPERATION);
   if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + w > l.width || int64_t(yoffset) + h > l.height)
     return error(GL_INVALID_VALUE);
+  if (read_framebuffer_incomplete()) return;
   tex_sub_image(target, level, xoffset, yoffset, w, h, read_colour_rect(x, y, w, h));
 }
 
@@ -87,6 +95,7 @@ void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum ty
   const TextureObject* tp = target_texture(target);
   if (!tp) return;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE);
+  texture_writing(*tp);  // (an FBO drawing into it writes back what it drew: framebuffer_objects.cpp)
   int comps;
   switch (format) {
     case GL_RGBA: case GL_BGRA: comps = 4; break;

@@ -94,6 +94,7 @@ void Context::bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove
                      const std::vector<uint8_t>* bits) {
   if (in_begin_error()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  if (framebuffer_incomplete()) return;
   RasterPosition& rp = pixels.raster;
   if (!rp.valid) return;
   if (pixels_not_rendered(GL_BITMAP_TOKEN)) bits = nullptr;  // (the raster position still moves)
@@ -124,7 +125,7 @@ void Context::bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove
 }
 
 void Context::draw_pixels(GLsizei w, GLsizei h, GLenum format, const std::vector<Vec4>& image) {
-  if (in_begin_error()) return;
+  if (in_begin_error() || framebuffer_incomplete()) return;
   if (format == GL_DEPTH_COMPONENT && depth_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (pixels_not_rendered(GL_DRAW_PIXEL_TOKEN) || !pixels.raster.valid || !renderer_ || w <= 0 || h <= 0) return;
   std::vector<WindowRect> rects;
@@ -151,7 +152,7 @@ void Context::draw_stencil_rects(const std::vector<WindowRect>& rects) {
 }
 
 void Context::draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices) {
-  if (in_begin_error()) return;
+  if (in_begin_error() || framebuffer_incomplete()) return;
   if (stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (pixels_not_rendered(GL_DRAW_PIXEL_TOKEN) || !pixels.raster.valid || !renderer_ || w <= 0 || h <= 0) return;
   std::vector<Vec4> image(indices.size());
@@ -162,7 +163,7 @@ void Context::draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_
 }
 
 void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {
-  if (in_begin_error()) return;
+  if (in_begin_error() || read_framebuffer_incomplete() || framebuffer_incomplete()) return;
   if (type == kDepthStencil) {  // (packed depth-stencil's: the depth, then the stencil, no colour)
     if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
     if (depth_bits_ <= 0 || stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);

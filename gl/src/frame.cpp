@@ -37,7 +37,10 @@ BlendFactor blend_factor(GLenum f) {
 }  // namespace
 
 void Context::ensure_frame() {
-  if (in_frame_ || !renderer_) return;
+  if (in_frame_) return;
+  if (fbo_) prepare_framebuffer();  // (framebuffer_objects.cpp: loaded again if its images changed)
+  if (!renderer_) return;
+  if (fbo_) fbo_->drawn = true;
   FrameStart start;
   start.clear_color_buffer = start.clear_depth_buffer = first_frame_;
   // Without a stencil buffer, clearing the renderer's keeps its empty tiles skippable.
@@ -102,6 +105,7 @@ void Context::submit_pending() {
 }
 
 void Context::run_frame() {
+  if (fbo_ && !in_frame_) prepare_framebuffer();
   submit_pending();
   if (double_buffered_) park_colour();
   if (!renderer_ || (!in_frame_ && !start_clear_)) return;  // nothing drawn or cleared since the last frame
@@ -110,7 +114,7 @@ void Context::run_frame() {
   // buffer of the framebuffer's width takes the colour directly, unless there is a back
   // buffer (buffers.cpp). Either way each tile is copied out by the thread that drew it,
   // as soon as it is drawn.
-  direct_ = format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
+  direct_ = buffer_ && format_ == GL_RGBA && y_up && (row_length == 0 || row_length == width_) && !double_buffered_;
   renderer_->end_frame_into(direct_ ? static_cast<uint8_t*>(buffer_) : colour_.data(), size_t(width_) * 4, 4);
   if (mirror_) {
     mirror_->end_frame();
@@ -126,6 +130,7 @@ void Context::run_frame() {
     if (depth_requested_) copy_depth();
     return;
   }
+  if (!buffer_) return;  // a framebuffer object's: its colour stays in colour_
   const int stride_px = row_length > 0 ? row_length : width_;
   const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   uint8_t* out = static_cast<uint8_t*>(buffer_);
@@ -195,7 +200,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
       s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
       s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
     }
-    s.color_mask = drawn_ ? raster_.color_mask_bits() : 0;
+    s.color_mask = drawn_ ? raster_.color_mask_bits() & channel_mask_ : 0;
     s.depth_test = s.depth_write = false;
     return s;
   }
@@ -230,7 +235,9 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
                : raster_.blend_equation == GL_MAX                   ? BlendOp::Max
                                                                     : BlendOp::Add;
   s.blend_color = raster_.blend_color;
-  s.color_mask = drawn_ ? raster_.color_mask_bits() : 0;  // (glDrawBuffer(GL_NONE): no colour written)
+  // (glDrawBuffer(GL_NONE): no colour written; an FBO's luminance or alpha buffer keeps
+  // only its channels: framebuffer_objects.cpp)
+  s.color_mask = drawn_ ? raster_.color_mask_bits() & channel_mask_ : 0;
   stencil_pixel_state(s);
   s.samples_passed = queries_.active_object ? &queries_.active_object->samples : nullptr;  // (occlusion.cpp)
   s.polygon_stipple = stippled && raster_.polygon_stipple;

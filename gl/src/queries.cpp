@@ -6,6 +6,7 @@
 namespace velocity::gl {
 
 bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
+  if (fbo_) prepare_framebuffer();  // (an FBO's bits after its attachments changed: framebuffer_objects.cpp)
   kind = 0;
   out.clear();
   auto v4 = [&](Vec4 c) { out = {c.x, c.y, c.z, c.w}; };
@@ -27,6 +28,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
   if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
   if (get_color_sum(pname, out, kind)) return true;  // (color_sum.cpp)
+  if (get_framebuffer(pname, out)) return true;      // (framebuffer_objects.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
     case GL_MODELVIEW_MATRIX: matrix_out(transform_.modelview.back()); return true;

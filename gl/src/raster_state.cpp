@@ -79,13 +79,13 @@ void Context::clear(GLbitfield mask) {
   if (in_begin_error()) return;
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
-  if (!renderer_) return;
+  if (framebuffer_incomplete() || !renderer_) return;
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum_buffer();  // (the context's own: accum.cpp)
   submit_pending();
   const RasterState& r = raster_;
   const bool color = (mask & GL_COLOR_BUFFER_BIT) && drawn_ != 0, depth = (mask & GL_DEPTH_BUFFER_BIT) && depth_bits_ > 0;
   const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && stencil_bits_ > 0;
-  const bool all_channels = r.color_mask_bits() == 0xf;
+  const bool all_channels = (r.color_mask_bits() & channel_mask_) == 0xf;
   const bool all_stencil = (stencil_.write_mask & 0xff) == 0xff;
   if (!in_frame_ && !r.scissor_test && (!color || all_channels) && (!depth || r.depth_write) && (!stencil || all_stencil) &&
       (color || depth || stencil)) {
@@ -104,7 +104,7 @@ void Context::clear(GLbitfield mask) {
   q.depth = depth;
   q.color_value = {unit(r.clear_color.x), unit(r.clear_color.y), unit(r.clear_color.z), unit(r.clear_color.w)};
   q.depth_value = r.clear_depth;
-  q.color_mask = raster_.color_mask_bits();
+  q.color_mask = raster_.color_mask_bits() & channel_mask_;
   q.depth_write = r.depth_write;
   q.stencil = stencil;
   q.stencil_value = stencil_clear_value();

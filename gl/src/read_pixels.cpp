@@ -51,7 +51,12 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
     case GL_FLOAT: case GL_UNSIGNED_INT: case GL_INT: tsize = 4; break;
     default: return error(GL_INVALID_ENUM);
   }
-  if (in_begin_error()) return;
+  if (in_begin_error() || read_framebuffer_incomplete()) return;
+  if (fb_.read != fb_.in_use) {  // GL_READ_FRAMEBUFFER is another framebuffer (framebuffer_objects.cpp)
+    use_read_framebuffer();
+    read_pixels(x, y, w, h, format, type, pixels);
+    return use_draw_framebuffer();
+  }
   if (!renderer_ || !pixels || w == 0 || h == 0) return;
   run_frame();
   const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;

@@ -183,6 +183,7 @@ struct TextureObject {
   int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
   GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once first bound (texture_1d.cpp)
   float min_lod = -1000, max_lod = 1000, lod_bias = 0;  // GL_TEXTURE_MIN_LOD, _MAX_LOD, _LOD_BIAS
+  uint64_t serial = 0;  // changed by every write of its texels (framebuffer_objects.cpp)
   // What the renderer samples, built when first drawn after a change (null: not yet,
   // or incomplete). Draws already recorded keep their own reference.
   std::shared_ptr<const Texture> built;

@@ -48,6 +48,7 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
     if (ids[i] == texture_.bound) texture_.bound = 0, changed();
     if (ids[i] == texture_.bound_1d) texture_.bound_1d = 0, changed();
     unbind_deleted_unit_texture(ids[i]);  // (multitexture.cpp: the other unit)
+    if (texture_.objects.count(ids[i])) detach_everywhere(GL_TEXTURE, ids[i]);  // (framebuffer_objects.cpp)
     texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }
@@ -70,8 +71,6 @@ void Context::bind_texture(GLenum target, GLuint id) {
   bound = id;
 }
 
-namespace {
-
 // An RGBA8 texel (R in the low byte) as a texture of internal format `base` keeps it:
 // RGB opaque, luminance (L, L, L, 1), luminance-alpha (L, L, L, A), alpha (0, 0, 0, A),
 // intensity (GL_INTENSITY) (I, I, I, I); RGBA as it is.
@@ -87,8 +86,6 @@ uint32_t stored_texel(GLenum base, uint32_t p) {
   }
 }
 
-}  // namespace
-
 void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
                         const std::vector<uint32_t>* rgba) {
   if (in_begin_error()) return;
@@ -100,6 +97,7 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
       h > (kMaxTextureSize >> level) || border != 0)
     return error(GL_INVALID_VALUE);
   TextureObject& t = *tp;
+  texture_writing(t);  // (framebuffer_objects.cpp: an FBO drawing into it writes back first)
   Texture::Level& l = t.levels[size_t(level)];
   l.width = w, l.height = h;
   l.texels.assign(size_t(w) * h, 0xff000000u);
@@ -116,6 +114,7 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
   // The texels as the format keeps them: luminance (L, L, L, 1), alpha (0, 0, 0, A)...
   for (uint32_t& p : l.texels) p = stored_texel(base, p);
   t.dirty = true;
+  t.serial = ++fb_.serial;
   changed();
 }
 
@@ -138,12 +137,14 @@ void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsize
   if (l.width == 0) return error(GL_INVALID_OPERATION);
   if (x < 0 || y < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height) return error(GL_INVALID_VALUE);
   if (rgba.size() != size_t(w) * size_t(h)) return;
+  texture_writing(t);
   const GLenum base = t.internal_format;
   for (int row = 0; row < h; ++row)
     for (int col = 0; col < w; ++col) {
       l.texels[size_t(y + row) * l.width + size_t(x + col)] = stored_texel(base, rgba[size_t(row) * w + col]);
     }
   t.dirty = true;
+  t.serial = ++fb_.serial;
   changed();
 }
 

@@ -37,6 +37,7 @@ constexpr size_t kAssembleEvery = 3072;
 void Context::begin(GLenum mode) {
   if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
   if (in_begin_) return error(GL_INVALID_OPERATION);
+  if (fbo_) framebuffer_incomplete();  // (its error; nothing is drawn into an incomplete FBO)
   in_begin_ = true;
   mode_ = mode;
   make_live(0);  // unit 0's state in the live fields until glEnd (multitexture.cpp)

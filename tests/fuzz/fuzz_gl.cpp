@@ -5,7 +5,7 @@
 // without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
 // points (GL 1.5's buffer objects and occlusion queries, 1-D textures and
 // evaluators, GL 1.4's secondary colour and fog coordinates, GL 1.3's multitexture
-// among them),
+// among them; framebuffer objects, renderbuffers and glBlitFramebuffer),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -356,6 +356,68 @@ void texture_1d_call(Bytes& in, const std::vector<float>& pixels, GLuint* names,
 // One-dimensional evaluators: any target, domain (NaN too), stride and order (the
 // points read stay inside `attrib`: order * stride at most 30 * 8 of its 512 floats),
 // enabled, evaluated inside and outside glBegin/glEnd, on grids of any size below 300.
+// Framebuffer objects and renderbuffers: any target, attachment, texture (1-D or 2-D,
+// any level, possibly deleted), renderbuffer format and size (small: at most 70 a side),
+// bound for drawing and reading in any combination, drawn into, cleared, read, blitted
+// between with any rectangles and filters, mipmaps generated.
+void framebuffer_call(Bytes& in, std::vector<float>& scratch, GLuint* textures, GLuint* fbs, GLuint* rbs, float a,
+                      float b, GLenum e1, GLenum e2) {
+  static const GLenum targets[] = {GL_FRAMEBUFFER, GL_DRAW_FRAMEBUFFER, GL_READ_FRAMEBUFFER};
+  static const GLenum attachments[] = {GL_COLOR_ATTACHMENT0, GL_DEPTH_ATTACHMENT, GL_STENCIL_ATTACHMENT,
+                                       GL_DEPTH_STENCIL_ATTACHMENT, GL_COLOR_ATTACHMENT1};
+  static const GLenum formats[] = {GL_RGBA8, GL_RGB, GL_RGBA4, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
+                                   GL_DEPTH_COMPONENT32, GL_STENCIL_INDEX8, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL};
+  const GLenum target = in.u8() < 230 ? targets[in.below(3)] : e1;
+  const GLenum attachment = in.u8() < 230 ? attachments[in.below(5)] : e2;
+  const GLuint fb = fbs[in.below(4)] + GLuint(in.below(2));
+  const GLuint rb = rbs[in.below(4)] + GLuint(in.below(2));
+  const GLuint tex = textures[in.below(4)] + GLuint(in.below(2));
+  switch (in.below(12)) {
+    case 0: glGenFramebuffers(in.below(5) - 1, fbs); break;
+    case 1: glBindFramebuffer(target, fb); break;
+    case 2: glDeleteFramebuffers(in.below(3), fbs); break;
+    case 3: glGenRenderbuffers(in.below(5) - 1, rbs), glBindRenderbuffer(in.u8() < 230 ? GL_RENDERBUFFER : e1, rb); break;
+    case 4:
+      glRenderbufferStorage(in.u8() < 230 ? GL_RENDERBUFFER : e1, in.u8() < 230 ? formats[in.below(9)] : e2,
+                            in.below(72) - 1, in.below(72) - 1);
+      break;
+    case 5: glFramebufferRenderbuffer(target, attachment, in.u8() < 230 ? GL_RENDERBUFFER : e1, rb); break;
+    case 6:
+      if (in.u8() & 1)
+        glFramebufferTexture2D(target, attachment, in.u8() < 230 ? GL_TEXTURE_2D : e1, tex, in.below(15) - 1);
+      else
+        glFramebufferTexture1D(target, attachment, in.u8() < 230 ? GL_TEXTURE_1D : e1, tex, in.below(15) - 1);
+      break;
+    case 7: {
+      GLint v[4];
+      glCheckFramebufferStatus(target);
+      glGetFramebufferAttachmentParameteriv(target, in.u8() & 1 ? attachment : GL_DEPTH, e1, v);
+      glGetRenderbufferParameteriv(GL_RENDERBUFFER, e2, v);
+      glIsFramebuffer(fb), glIsRenderbuffer(rb);
+      glDeleteRenderbuffers(in.below(3), rbs);
+      break;
+    }
+    case 8: glGenerateMipmap(in.u8() < 230 ? GL_TEXTURE_1D + GLenum(in.below(2)) : e1); break;
+    case 9:
+      glBlitFramebuffer(in.integer(), in.integer(), in.integer(), in.integer(), in.integer(), in.integer(),
+                        in.integer(), in.integer(), GLbitfield(in.u8() < 230 ? in.below(8) << 8 : in.u16()),
+                        in.u8() & 1 ? GL_NEAREST : GL_LINEAR);
+      break;
+    case 10:
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+      glRectf(a, b, b, a);
+      glReadPixels(in.below(80) - 4, in.below(80) - 4, in.below(8), in.below(8),
+                   in.u8() & 1 ? GL_RGBA : GL_DEPTH_COMPONENT, GL_FLOAT, scratch.data());
+      break;
+    default:
+      glDrawBuffer(in.u8() & 1 ? GL_COLOR_ATTACHMENT0 : e1);
+      glReadBuffer(in.u8() & 1 ? GL_COLOR_ATTACHMENT0 : e2);
+      glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, in.below(70) - 2, in.below(70) - 2, in.below(40), in.below(40), 0);
+      glDeleteTextures(in.below(2), textures);
+      break;
+  }
+}
+
 void evaluator_call(Bytes& in, const std::vector<float>& attrib, float a, float b, GLenum e1) {
   const GLenum target = in.u8() < 230 ? GL_MAP1_COLOR_4 + GLenum(in.below(9)) : e1;
   switch (in.below(6)) {
@@ -578,7 +640,7 @@ void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
 }
 
 bool valid_error(GLenum e) {
-  return e == GL_NO_ERROR || (e >= GL_INVALID_ENUM && e <= GL_OUT_OF_MEMORY);
+  return e == GL_NO_ERROR || (e >= GL_INVALID_ENUM && e <= GL_OUT_OF_MEMORY) || e == GL_INVALID_FRAMEBUFFER_OPERATION;
 }
 
 }  // namespace
@@ -608,6 +670,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<float> out(96 * 96 * 4 + 16);
   GLuint names[4] = {0, 0, 0, 0};
   GLuint buffer_names[4] = {0, 0, 0, 0};
+  GLuint framebuffer_names[4] = {0, 0, 0, 0}, renderbuffer_names[4] = {0, 0, 0, 0};
   GLUquadric* quadric = gluNewQuadric();
 
   for (int call = 0; call < 512 && !in.empty(); ++call) {
@@ -827,6 +890,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         buffer_lod_call(in, a, b, e1);
         color_sum_call(in, attrib, a, b, c, e1);
         multitexture_call(in, attrib, names, a, b, e1);
+        framebuffer_call(in, pixels, names, framebuffer_names, renderbuffer_names, a, b, e1, e2);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
 #endif
@@ -844,6 +908,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   glFinish();
   glGetError();
   glViewport(0, 0, w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);  // (the sequence may have left a framebuffer object bound)
   // The sequence may have left colour reads and writes on no buffer (GL_NONE).
   glDrawBuffer(GL_FRONT);
   glReadBuffer(GL_FRONT);
