@@ -48,6 +48,7 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
       renderer_ = std::make_unique<Renderer>(width, height, backend_);
       renderer_->options.threads = threads_from_environment();
       renderer_->options.cull_back_faces = false;
+      renderer_->options.ssaa = ssaa_;  // (multisample.cpp)
     } else if (width != width_ || height != height_) {
       renderer_->resize(width, height);
       first_frame_ = true;

@@ -340,6 +340,12 @@ class Context {
   // GL_INVALID_OPERATION, and true, when glReadBuffer is GL_NONE.
   bool no_read_buffer();
 
+  // --- multisample buffers (multisample.cpp)
+  // A GLX configuration with samples (gl/glx/) gives its context k x k samples a pixel,
+  // the renderer's super-sampling: set before the first frame.
+  void set_samples_side(int k);
+  bool get_multisample(GLenum pname, std::vector<double>& out) const;
+
   // --- the accumulation buffer (accum.cpp)
   void accum(GLenum op, float value);
   void clear_accum(float r, float g, float b, float a);
@@ -497,6 +503,12 @@ class Context {
   std::unique_ptr<Renderer> mirror_;  // GL_FRONT_AND_BACK: the parked buffer, drawn into too
   BackendChoice backend_ = BackendChoice::Cpu;  // the renderers'
   void park_colour();  // parked_ at the framebuffer's size
+
+  // Multisample buffers (multisample.cpp): the renderer's window coordinates are in
+  // samples, k to a pixel's side; GL's pixel coordinates go to it through these.
+  int ssaa_ = 1;
+  int to_samples(int pixels) const { return pixels * ssaa_; }
+  void sample_scissor(const Box& b, int& x0, int& y0, int& x1, int& y1) const;
   void hold(int which);
   void start_mirror();
   bool get_buffers(GLenum pname, std::vector<double>& out) const;

@@ -24,6 +24,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_buffer_binding(pname, out)) return true;   // (buffer_objects.cpp)
   if (get_eval(pname, out)) return true;             // (evaluators.cpp)
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
+  if (get_multisample(pname, out)) return true;      // (multisample.cpp)
   if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
   switch (pname) {
     case GL_MATRIX_MODE: out = {double(transform_.matrix_mode)}; return true;
@@ -109,7 +110,6 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ACCUM_ALPHA_BITS: out = {double(accum_bits_)}; return true;
     case GL_ACCUM_CLEAR_VALUE: v4(accum_clear_), kind = 1; return true;
     case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
-    case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
     case GL_RGBA_MODE: out = {1}; return true;
     // The rasterizer's: window coordinates snap to 24.8 fixed point; points and lines
