@@ -319,6 +319,9 @@ class Context {
   void copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type);
   // `indices`: unpack_stencil's (glDrawPixels' GL_STENCIL_INDEX).
   void draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices);
+  // GL_DEPTH_STENCIL_EXT: unpack_depth_stencil's depths and indices (draw_pixels.cpp).
+  void draw_depth_stencil_pixels(GLsizei w, GLsizei h, const std::vector<Vec4>& depth,
+                                 const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
   void pixel_transfer(GLenum pname, double value);  // (pixel_transfer.cpp)
   bool get_pixel_transfer(GLenum pname, std::vector<double>& out) const;
