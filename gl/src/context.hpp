@@ -509,7 +509,9 @@ class Context {
 
   // Multisample buffers (multisample.cpp): the renderer's window coordinates are in
   // samples, k to a pixel's side; GL's pixel coordinates go to it through these.
-  int ssaa_ = 1;
+  int ssaa_ = 1, ssaa_wanted_ = 1;  // in use; the configuration's
+  void fit_samples();               // ssaa_: the wanted one where the sample buffer fits
+  int samples_side_for(int width, int height) const;
   int to_samples(int pixels) const { return pixels * ssaa_; }
   void sample_scissor(const Box& b, int& x0, int& y0, int& x1, int& y1) const;
   void hold(int which);

@@ -12,9 +12,22 @@
 namespace velocity::gl {
 
 void Context::set_samples_side(int k) {
-  k = std::clamp(k, 1, 4);
+  ssaa_wanted_ = std::clamp(k, 1, 4);
+  fit_samples();
+}
+
+// The sample buffer is at most kMaxViewport a side (the renderer's limit): a drawable
+// wider or taller than kMaxViewport / k gets fewer samples (GL_SAMPLES says how many).
+int Context::samples_side_for(int width, int height) const {
+  int k = ssaa_wanted_;
+  while (k > 1 && int64_t(std::max(width, height)) * k > kMaxViewport) --k;
+  return k;
+}
+
+void Context::fit_samples() {
+  const int k = samples_side_for(width_, height_);
   if (k == ssaa_) return;
-  run_frame();
+  if (in_frame_) run_frame();
   ssaa_ = k;
   if (renderer_) {
     // The sample buffers are made again at the next frame: their contents start cleared.

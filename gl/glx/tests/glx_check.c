@@ -141,6 +141,24 @@ static void check_multisample(int screen) {
   CHECK(vis9 && glXGetConfig(dpy, vis9, GLX_SAMPLES, &v) == 0 && v == 9, "glXChooseVisual 9 samples: %d", v);
   XFree(vis9);
 
+  {
+    /* 16 samples where the sample buffer fits the renderer's 16384 a side; a drawable
+     * 6000 wide gets 2 x 2. */
+    const int wide_size[] = {GLX_PBUFFER_WIDTH, 6000, GLX_PBUFFER_HEIGHT, 4, None};
+    GLXPbuffer wide = glXCreatePbuffer(dpy, c4[2], wide_size);
+    GLXContext wide_ctx = glXCreateNewContext(dpy, c4[2], GLX_RGBA_TYPE, NULL, True);
+    unsigned char corner[4] = {0, 0, 0, 0};
+    GLint samples = 0;
+    CHECK(wide && wide_ctx && glXMakeContextCurrent(dpy, wide, wide, wide_ctx), "a 6000-pixel pbuffer");
+    glGetIntegerv(GL_SAMPLES, &samples);
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glReadPixels(5999, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, corner);
+    CHECK(samples == 4 && corner[1] == 255, "6000 wide: GL_SAMPLES %d, green %d", samples, corner[1]);
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    glXDestroyContext(dpy, wide_ctx);
+    glXDestroyPbuffer(dpy, wide);
+  }
   const GLXFBConfig ms = c4[1];  /* 9 samples: k = 3 */
   const int k = 3, w = 40, h = 24;
   XFree(c4);
