@@ -10,7 +10,10 @@
 
 namespace velocity::glx {
 
-const Config kConfigs[kConfigCount] = {{1, true, 24, 8, 16}, {2, false, 24, 8, 16}, {3, true, 0, 0, 0}, {4, false, 0, 0, 0}};
+const Config kConfigs[kConfigCount] = {{1, true, 24, 8, 16}, {2, false, 24, 8, 16}, {3, true, 0, 0, 0}, {4, false, 0, 0, 0},
+                                       // multisample (GLX_ARB_multisample): 4, 9 and 16 samples
+                                       {5, true, 24, 8, 16, 2}, {6, false, 24, 8, 16, 2}, {7, true, 24, 8, 16, 3},
+                                       {8, false, 24, 8, 16, 3}, {9, true, 24, 8, 16, 4}, {10, false, 24, 8, 16, 4}};
 
 namespace {
 constexpr int kDontCare = int(GLX_DONT_CARE);
@@ -88,8 +91,9 @@ bool config_attribute(const Config& c, unsigned long visual, int attribute, int*
     case GLX_STENCIL_SIZE: v = c.stencil; break;
     case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE: case GLX_ACCUM_ALPHA_SIZE:
       v = c.accum; break;
+    case GLX_SAMPLE_BUFFERS: v = c.samples() > 0; break;
+    case GLX_SAMPLES: v = c.samples(); break;
     case GLX_LEVEL: case GLX_STEREO: case GLX_AUX_BUFFERS:
-    case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES:
     case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE: case GLX_TRANSPARENT_GREEN_VALUE:
     case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE:
       v = 0; break;
@@ -124,8 +128,10 @@ bool satisfies(int i, int visuals, const Wanted& w) {
   if (w.stencil != kDontCare && w.stencil > c.stencil) return false;
   for (int v : w.accum)
     if (v != kDontCare && v > c.accum) return false;
-  for (int v : {w.aux, w.samples, w.sample_buffers})
-    if (v != kDontCare && v > 0) return false;
+  if (w.aux != kDontCare && w.aux > 0) return false;
+  // Minimums: GLX_SAMPLES N is met by the configurations with N samples or more.
+  if (w.sample_buffers != kDontCare && w.sample_buffers > (c.samples() > 0 ? 1 : 0)) return false;
+  if (w.samples != kDontCare && w.samples > c.samples()) return false;
   if (w.render_type != kDontCare && !(w.render_type & GLX_RGBA_BIT)) return false;
   int drawable_types = 0;
   config_attribute(c, visual ? 1 : 0, GLX_DRAWABLE_TYPE, &drawable_types);
@@ -141,21 +147,25 @@ std::vector<const Config*> choose_fbconfigs(const Wanted& w, int visuals) {
   std::vector<const Config*> found;
   for (int i = 0; i < kConfigCount; ++i)
     if (satisfies(i, visuals, w)) found.push_back(&kConfigs[i]);
-  // GLX 1.4's order: single before double buffered, then the smaller depth buffer, then
-  // the smaller stencil buffer.
+  // GLX 1.4's order: single before double buffered, then the fewer samples, then the
+  // smaller depth buffer, then the smaller stencil buffer.
   std::stable_sort(found.begin(), found.end(), [](const Config* a, const Config* b) {
-    return std::make_tuple(a->double_buffer, a->depth, a->stencil) < std::make_tuple(b->double_buffer, b->depth, b->stencil);
+    return std::make_tuple(a->double_buffer, a->samples(), a->depth, a->stencil) <
+           std::make_tuple(b->double_buffer, b->samples(), b->depth, b->stencil);
   });
   return found;
 }
 
 const Config* choose_visual(const Wanted& w, int visuals) {
-  // Of those that qualify: no depth buffer if none was asked for, else the deepest.
+  // Of those that qualify: the fewest samples (GLX_SAMPLES is met by the smallest
+  // count that reaches it), then no depth buffer if none was asked for, else the deepest.
   const Config* best = nullptr;
   for (int i = 0; i < kConfigCount && i < visuals; ++i) {
     const Config& c = kConfigs[i];
     if (!satisfies(i, visuals, w)) continue;
-    if (!best || (w.depth == 0 ? c.depth < best->depth : c.depth > best->depth)) best = &c;
+    if (!best || c.samples() < best->samples() ||
+        (c.samples() == best->samples() && (w.depth == 0 ? c.depth < best->depth : c.depth > best->depth)))
+      best = &c;
   }
   return best;
 }

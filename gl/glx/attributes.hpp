@@ -10,17 +10,23 @@ namespace velocity::glx {
 
 // What exists: 8-bit red, green, blue and alpha, a 24-bit depth buffer with an 8-bit
 // stencil buffer and a 16-bit accumulation buffer, or none of them, single or double
-// buffered. No auxiliary buffers, stereo or multisampling: pGL has none, so no
-// configuration claims them. Configuration i is
-// shown in the screen's i-th usable X visual; one without a visual is for pbuffers.
+// buffered. No auxiliary buffers or stereo: pGL has none, so no configuration claims
+// them. Configuration i is shown in the screen's i-th usable X visual; one without a
+// visual is for pbuffers.
+//
+// Multisample configurations (GLX_ARB_multisample) have k x k samples a pixel, k = 2,
+// 3 or 4 (GLX_SAMPLES 4, 9, 16: the renderer's super-sampling, gl/src/multisample.cpp),
+// with depth, stencil and accumulation buffers.
 struct Config {
   int id;
   bool double_buffer;
   int depth;
   int stencil;
-  int accum;  // bits a component
+  int accum;             // bits a component
+  int samples_side = 1;  // k: k x k samples a pixel (1: no multisample buffer)
+  int samples() const { return samples_side > 1 ? samples_side * samples_side : 0; }
 };
-constexpr int kConfigCount = 4;
+constexpr int kConfigCount = 10;
 extern const Config kConfigs[kConfigCount];
 constexpr int kMaxSize = 16384;  // the largest drawable pGL renders (velocity::gl::kMaxViewport)
 constexpr int kMaxSwapInterval = 1000;

@@ -310,6 +310,7 @@ bool bind(Context* c, Surface* s) {
     return false;
   OSMesaPixelStore(OSMESA_Y_UP, 0);  // top row first, as the XImage
   velocity_glx_set_double_buffered(c->config->double_buffer);
+  velocity_glx_set_samples_side(c->config->samples_side);
   return true;
 }
 
@@ -767,7 +768,8 @@ void impl_WaitX() {
 
 constexpr char kExtensions[] =
     "GLX_ARB_create_context GLX_ARB_get_proc_address GLX_EXT_swap_control GLX_MESA_swap_control "
-    "GLX_SGI_swap_control";
+    "GLX_SGI_swap_control "
+    "GLX_ARB_multisample";  // (the GLX attributes; attributes.hpp)
 
 const char* glx_string(int name) {
   switch (name) {

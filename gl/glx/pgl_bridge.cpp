@@ -8,6 +8,10 @@ void velocity_glx_set_double_buffered(bool double_buffered) {
   if (velocity::gl::Context* gl = velocity::gl::current()) gl->set_double_buffered(double_buffered);
 }
 
+void velocity_glx_set_samples_side(int k) {
+  if (velocity::gl::Context* gl = velocity::gl::current()) gl->set_samples_side(k);
+}
+
 void velocity_glx_gl_error(unsigned error) {
   if (velocity::gl::Context* gl = velocity::gl::current()) gl->error(error);
 }

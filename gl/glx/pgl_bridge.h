@@ -3,6 +3,8 @@
 
 // A double-buffered drawable: glGet answers GL_DOUBLEBUFFER 1, GL_DRAW_BUFFER GL_BACK.
 void velocity_glx_set_double_buffered(bool double_buffered);
+// A configuration with samples: k x k samples a pixel (1: none).
+void velocity_glx_set_samples_side(int k);
 // Records a GL error in the current context (none current: nothing).
 void velocity_glx_gl_error(unsigned error);
 // glXSwapBuffers: the back buffer's colour becomes the front's too.

@@ -780,7 +780,9 @@ const GLubyte* glGetString(GLenum name) {
           "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
           "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query "
           "GL_ARB_multitexture "  // a space after each, as Mesa's (piglit's glinfo relies on it)
-          "GL_EXT_framebuffer_object GL_EXT_framebuffer_blit ";  // (not ARB: docs/gl.md)
+          "GL_EXT_framebuffer_object GL_EXT_framebuffer_blit "  // (not ARB: docs/gl.md)
+          // (multisample.cpp: the default framebuffer's packed depth and stencil pixels)
+          "GL_EXT_packed_depth_stencil ";
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

@@ -98,6 +98,15 @@ void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid
       if (w < 0 || h < 0) return compiled_error(GL_INVALID_VALUE);
       // (Colour index mode is not implemented: docs/gl.md.)
       const bool stencil = format == GL_STENCIL_INDEX;
+      // GL_EXT_packed_depth_stencil: depth and stencil in one word (draw_pixels.cpp).
+      if (const GLenum e = velocity::gl::check_depth_stencil(format, type)) return compiled_error(e);
+      if (format == velocity::gl::kDepthStencilFormat) {
+        if (int64_t(w) * h > kMaxPixelRectangle) return compiled_error(GL_OUT_OF_MEMORY);
+        auto depth = std::make_shared<std::vector<Vec4>>();
+        auto indices = std::make_shared<std::vector<uint8_t>>();
+        velocity::gl::unpack_depth_stencil(w, h, c.pixels.unpack, pixels, c.pixels.transfer, *depth, *indices);
+        return compiled([=](Context& k) { k.draw_depth_stencil_pixels(w, h, *depth, *indices); });
+      }
       if (const GLenum e = stencil ? velocity::gl::check_stencil_type(type) : velocity::gl::check_draw_format(format, type))
         return compiled_error(e);
       if (int64_t(w) * h > kMaxPixelRectangle) return compiled_error(GL_OUT_OF_MEMORY);

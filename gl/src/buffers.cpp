@@ -53,8 +53,10 @@ int attachment_named(GLenum mode) {
 // A frame of `r` that writes the given colour, depth and stencil rows (bottom first;
 // null: left as they are) as clears of the runs of equal values in each row: exact
 // values, whatever the backend. `fresh`: the buffers start cleared (a new renderer).
-// (Also what loads a framebuffer object's renderer: framebuffer_objects.cpp.)
-void write_surface_rows(Renderer& r, int w, int h, const uint8_t* rgba, const float* depth, const uint8_t* stencil, bool fresh) {
+// `k`: samples a pixel's side (multisample.cpp); every sample of a pixel gets its value.
+// (Also what loads a framebuffer object's renderer, k = 1: framebuffer_objects.cpp.)
+void write_surface_rows(Renderer& r, int w, int h, int k, const uint8_t* rgba, const float* depth,
+                        const uint8_t* stencil, bool fresh) {
   FrameStart start;
   start.clear_color_buffer = start.clear_depth_buffer = start.clear_stencil_buffer = fresh;
   start.color = {0, 0, 0, 0};
@@ -68,13 +70,13 @@ void write_surface_rows(Renderer& r, int w, int h, const uint8_t* rgba, const fl
     const size_t row = size_t(y) * size_t(w);
     ClearRequest q;
     q.scissor = true;
-    q.y0 = y, q.y1 = y + 1;
+    q.y0 = y * k, q.y1 = (y + 1) * k;
     for (int x = 0; rgba && x < w;) {
       const uint8_t* p = rgba + (row + size_t(x)) * 4;
       const int e = run_end(x, [&](int i) { return std::memcmp(rgba + (row + size_t(i)) * 4, p, 4) == 0; });
       q.color = true, q.depth = false, q.stencil = false;
       q.color_value = {p[0] / 255.0f, p[1] / 255.0f, p[2] / 255.0f, p[3] / 255.0f};
-      q.x0 = x, q.x1 = e;
+      q.x0 = x * k, q.x1 = e * k;
       r.clear(q);
       x = e;
     }
@@ -83,7 +85,7 @@ void write_surface_rows(Renderer& r, int w, int h, const uint8_t* rgba, const fl
       const int e = run_end(x, [&](int i) { return depth[row + size_t(i)] == d; });
       q.color = false, q.depth = true, q.stencil = false;
       q.depth_value = d;
-      q.x0 = x, q.x1 = e;
+      q.x0 = x * k, q.x1 = e * k;
       r.clear(q);
       x = e;
     }
@@ -92,7 +94,7 @@ void write_surface_rows(Renderer& r, int w, int h, const uint8_t* rgba, const fl
       const int e = run_end(x, [&](int i) { return stencil[row + size_t(i)] == s; });
       q.color = false, q.depth = false, q.stencil = true;
       q.stencil_value = s, q.stencil_mask = 0xff;
-      q.x0 = x, q.x1 = e;
+      q.x0 = x * k, q.x1 = e * k;
       r.clear(q);
       x = e;
     }
@@ -157,7 +159,7 @@ void Context::hold(int which) {
   if (!renderer_ || width_ <= 0) return void(held_ = which);
   run_frame();
   // colour_ is the renderer's colour as the last frame left it (run_frame keeps it).
-  write_surface_rows(*renderer_, width_, height_, parked_.data(), nullptr, nullptr, first_frame_);
+  write_surface_rows(*renderer_, width_, height_, ssaa_, parked_.data(), nullptr, nullptr, first_frame_);
   first_frame_ = false;
   colour_.swap(parked_);
   held_ = which;
@@ -178,7 +180,7 @@ void Context::start_mirror() {
   }
   auto m = std::make_unique<Renderer>(width_, height_, backend_);
   m->options = renderer_->options;
-  write_surface_rows(*m, width_, height_, parked_.data(), depth.empty() ? nullptr : depth.data(),
+  write_surface_rows(*m, width_, height_, ssaa_, parked_.data(), depth.empty() ? nullptr : depth.data(),
              stencil.empty() ? nullptr : stencil.data(), true);
   mirror_ = std::move(m);
 }
@@ -193,7 +195,7 @@ void Context::swap_buffers() {
   if (held_ == kBack) {
     parked_ = colour_;
   } else {
-    write_surface_rows(*renderer_, width_, height_, parked_.data(), nullptr, nullptr, first_frame_);
+    write_surface_rows(*renderer_, width_, height_, ssaa_, parked_.data(), nullptr, nullptr, first_frame_);
     first_frame_ = false;
     colour_ = parked_;
   }

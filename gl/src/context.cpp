@@ -53,8 +53,18 @@ bool Context::make_current(void* buffer, GLenum type, int width, int height) {
       renderer_ = std::make_unique<Renderer>(width, height, backend_);
       renderer_->options.threads = threads_from_environment();
       renderer_->options.cull_back_faces = false;
+      renderer_->options.ssaa = ssaa_;  // (multisample.cpp)
     } else if (width != width_ || height != height_) {
-      renderer_->resize(width, height);
+      if (const int k = samples_side_for(width, height); k != ssaa_) {
+        // Another number of samples fits the new size (multisample.cpp): a new renderer,
+        // as the old one's samples could not be resized to it.
+        auto fresh = std::make_unique<Renderer>(width, height, backend_);
+        fresh->options = renderer_->options;
+        fresh->options.ssaa = ssaa_ = k;
+        renderer_ = std::move(fresh);
+      } else {
+        renderer_->resize(width, height);
+      }
       first_frame_ = true;
     }
   } catch (const std::exception& e) {

@@ -328,6 +328,9 @@ class Context {
   void copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type);
   // `indices`: unpack_stencil's (glDrawPixels' GL_STENCIL_INDEX).
   void draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices);
+  // GL_DEPTH_STENCIL_EXT: unpack_depth_stencil's depths and indices (draw_pixels.cpp).
+  void draw_depth_stencil_pixels(GLsizei w, GLsizei h, const std::vector<Vec4>& depth,
+                                 const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
   void pixel_transfer(GLenum pname, double value);  // (pixel_transfer.cpp)
   bool get_pixel_transfer(GLenum pname, std::vector<double>& out) const;
@@ -348,6 +351,12 @@ class Context {
   bool draws_front() const { return double_buffered_ && (drawn_ & 1); }
   // GL_INVALID_OPERATION, and true, when glReadBuffer is GL_NONE.
   bool no_read_buffer();
+
+  // --- multisample buffers (multisample.cpp)
+  // A GLX configuration with samples (gl/glx/) gives its context k x k samples a pixel,
+  // the renderer's super-sampling: set before the first frame.
+  void set_samples_side(int k);
+  bool get_multisample(GLenum pname, std::vector<double>& out) const;
 
   // --- the accumulation buffer (accum.cpp)
   void accum(GLenum op, float value);
@@ -604,6 +613,14 @@ class Context {
   std::unique_ptr<Renderer> mirror_;  // GL_FRONT_AND_BACK: the parked buffer, drawn into too
   BackendChoice backend_ = BackendChoice::Cpu;  // the renderers'
   void park_colour();  // parked_ at the framebuffer's size
+
+  // Multisample buffers (multisample.cpp): the renderer's window coordinates are in
+  // samples, k to a pixel's side; GL's pixel coordinates go to it through these.
+  int ssaa_ = 1, ssaa_wanted_ = 1;  // in use; the configuration's
+  void fit_samples();               // ssaa_: the wanted one where the sample buffer fits
+  int samples_side_for(int width, int height) const;
+  int to_samples(int pixels) const { return pixels * ssaa_; }
+  void sample_scissor(const Box& b, int& x0, int& y0, int& x1, int& y1) const;
   void hold(int which);
   void start_mirror();
   bool get_buffers(GLenum pname, std::vector<double>& out) const;

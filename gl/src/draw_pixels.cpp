@@ -14,7 +14,7 @@ namespace velocity::gl {
 
 namespace {
 // glCopyPixels' GL_DEPTH_STENCIL (GL_EXT_packed_depth_stencil's name; <GL/gl.h> is 1.4's).
-constexpr GLenum kDepthStencil = 0x84F9;
+constexpr GLenum kDepthStencil = kDepthStencilFormat;
 
 bool same(const Vec4& a, const Vec4& b) { return a.x == b.x && a.y == b.y && a.z == b.z && a.w == b.w; }
 }  // namespace
@@ -160,6 +160,21 @@ void Context::draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_
   std::vector<WindowRect> rects;
   zoomed_rects(w, h, image.data(), false, rects);
   draw_stencil_rects(rects);
+}
+
+// GL_EXT_packed_depth_stencil: the depth, as GL_DEPTH_COMPONENT's fragments with no
+// colour written, then the stencil indices, as glCopyPixels' GL_DEPTH_STENCIL does.
+void Context::draw_depth_stencil_pixels(GLsizei w, GLsizei h, const std::vector<Vec4>& depth,
+                                        const std::vector<uint8_t>& indices) {
+  if (in_begin_error()) return;
+  if (depth_bits_ <= 0 || stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
+  const RasterState saved = raster_;
+  for (bool& m : raster_.color_mask) m = false;
+  changed();
+  draw_pixels(w, h, GL_DEPTH_COMPONENT, depth);
+  raster_ = saved;
+  changed();
+  draw_stencil_pixels(w, h, indices);
 }
 
 void Context::copy_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) {

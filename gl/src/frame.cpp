@@ -180,10 +180,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
   PixelState s;
   if (stencil_write_ >= 0) {  // stencil indices (draw_pixels.cpp): the scissor test and the write mask only
     s.scissor = raster_.scissor_test;
-    if (raster_.scissor_test) {
-      s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
-      s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
-    }
+    if (raster_.scissor_test) sample_scissor(raster_.scissor, s.scissor_x0, s.scissor_y0, s.scissor_x1, s.scissor_y1);
     s.color_mask = 0;
     s.depth_test = s.depth_write = false;
     s.stencil_test = true;
@@ -196,10 +193,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
   }
   if (accum_returning_) {  // glAccum(GL_RETURN): the scissor test and the colour mask only
     s.scissor = raster_.scissor_test;
-    if (raster_.scissor_test) {
-      s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
-      s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
-    }
+    if (raster_.scissor_test) sample_scissor(raster_.scissor, s.scissor_x0, s.scissor_y0, s.scissor_x1, s.scissor_y1);
     s.color_mask = drawn_ ? raster_.color_mask_bits() & channel_mask_ : 0;
     s.depth_test = s.depth_write = false;
     return s;
@@ -211,10 +205,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
   s.fog_start = raster_.fog_start, s.fog_end = raster_.fog_end, s.fog_density = raster_.fog_density;
   s.fog_color = raster_.fog_color;
   s.scissor = raster_.scissor_test;
-  if (raster_.scissor_test) {
-    s.scissor_x0 = raster_.scissor.x, s.scissor_x1 = raster_.scissor.x + raster_.scissor.width;
-    s.scissor_y0 = raster_.scissor.y, s.scissor_y1 = raster_.scissor.y + raster_.scissor.height;
-  }
+  if (raster_.scissor_test) sample_scissor(raster_.scissor, s.scissor_x0, s.scissor_y0, s.scissor_x1, s.scissor_y1);
   s.alpha_test = raster_.alpha_test;
   s.alpha_func = compare_func(raster_.alpha_func);
   s.alpha_ref = raster_.alpha_ref;
@@ -258,10 +249,12 @@ Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled
     pending_.stage0_unit1 = stage0_unit1_;
     pending_.extras = pending_.state.texture1.texture || pending_.state.color_sum;
     const Box& vp = transform_.viewport;
-    // The framebuffer is kept bottom row first (see update_derived): GL's y as it is.
-    pending_.viewport = {vp.x, vp.y, vp.width, vp.height, transform_.depth_near, transform_.depth_far};
-    pending_.point_size = std::max(1.0f, raster_.point_size);
-    pending_.line_width = std::max(1.0f, raster_.line_width);
+    // The framebuffer is kept bottom row first (see update_derived): GL's y as it is,
+    // in samples (multisample.cpp).
+    pending_.viewport = {to_samples(vp.x), to_samples(vp.y), to_samples(vp.width), to_samples(vp.height),
+                         transform_.depth_near, transform_.depth_far};
+    pending_.point_size = std::max(1.0f, raster_.point_size) * float(ssaa_);
+    pending_.line_width = std::max(1.0f, raster_.line_width) * float(ssaa_);
     pending_.clip_planes = user_clip.count;
     have_pending_ = true;
     if (++pending_gen_ == 0) {  // wrapped: forget every old mark

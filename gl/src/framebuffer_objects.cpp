@@ -367,6 +367,7 @@ void Context::swap_surface(Surface& s) {
   std::swap(draw_buffer_, s.draw_buffer), std::swap(read_buffer_, s.read_buffer);
   std::swap(drawn_, s.drawn), std::swap(read_, s.read), std::swap(held_, s.held);
   std::swap(channel_mask_, s.channel_mask);
+  std::swap(ssaa_, s.ssaa);  // (an FBO's renderer: one sample a pixel)
   changed();
 }
 
@@ -437,7 +438,7 @@ void Context::prepare_framebuffer() {
   const bool colour = f->colour.type != GL_NONE;
   drawn_ = draw_buffer_ != GL_NONE && colour ? 1 : 0;
   read_ = read_buffer_ != GL_NONE && colour ? 1 : 0;
-  write_surface_rows(*renderer_, w, h, colour_.data(), depth.empty() ? nullptr : depth.data(),
+  write_surface_rows(*renderer_, w, h, 1, colour_.data(), depth.empty() ? nullptr : depth.data(),
                      stencil.empty() ? nullptr : stencil.data(), true);
   first_frame_ = false;
   changed();

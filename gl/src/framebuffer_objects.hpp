@@ -36,6 +36,7 @@ struct Surface {
   GLenum draw_buffer = GL_COLOR_ATTACHMENT0_EXT, read_buffer = GL_COLOR_ATTACHMENT0_EXT;
   int drawn = 1, read = 1, held = 1;
   uint8_t channel_mask = 0xf;
+  int ssaa = 1;  // samples a pixel's side (multisample.cpp)
 };
 
 // A renderbuffer: one image of colour (RGBA8), depth, stencil or both, kept here while
@@ -84,7 +85,7 @@ struct FramebufferState {
 uint32_t stored_texel(GLenum base, uint32_t p);
 // A frame of `r` that writes the given colour, depth and stencil rows (bottom first;
 // null: left as they are) exactly (buffers.cpp). `fresh`: the buffers start cleared.
-void write_surface_rows(Renderer& r, int w, int h, const uint8_t* rgba, const float* depth, const uint8_t* stencil,
+void write_surface_rows(Renderer& r, int w, int h, int k, const uint8_t* rgba, const float* depth, const uint8_t* stencil,
                         bool fresh);
 
 constexpr size_t kMaxFramebufferObjects = size_t(1) << 16;  // more is GL_OUT_OF_MEMORY

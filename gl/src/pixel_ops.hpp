@@ -91,6 +91,21 @@ GLenum check_stencil_type(GLenum type);
 std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const PixelStore& store, const void* data,
                                     const PixelTransfer& transfer = {});
 
+// GL_EXT_packed_depth_stencil for the default framebuffer: GL_DEPTH_STENCIL_EXT pixels
+// of type GL_UNSIGNED_INT_24_8_EXT, each a 32-bit word of 24 bits of depth (high) and
+// 8 of stencil (low). <GL/gl.h> is 1.4's: the extension's names are here.
+constexpr GLenum kDepthStencilFormat = 0x84F9;  // GL_DEPTH_STENCIL_EXT
+constexpr GLenum kUnsignedInt24_8 = 0x84FA;     // GL_UNSIGNED_INT_24_8_EXT
+// glDrawPixels' and glReadPixels' check of the pair, where either is the extension's:
+// GL_INVALID_ENUM for GL_DEPTH_STENCIL_EXT with another type, GL_INVALID_OPERATION for
+// GL_UNSIGNED_INT_24_8_EXT with another format (as Mesa).
+GLenum check_depth_stencil(GLenum format, GLenum type);
+// The width x height words at `data` as `store` lays them out: the depth (through
+// glPixelTransfer's depth scale and bias, clamped) in each Vec4's x and the stencil
+// index (shifted and offset) in `stencil`. Rows bottom first.
+void unpack_depth_stencil(int width, int height, const PixelStore& store, const void* data,
+                          const PixelTransfer& transfer, std::vector<Vec4>& depth, std::vector<uint8_t>& stencil);
+
 // glBitmap's width x height bits at `data` (GL_BITMAP with `store`'s row length, skips,
 // alignment and bit order): one byte per pixel, 1 where a fragment is drawn.
 std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data);

@@ -213,6 +213,29 @@ std::vector<uint8_t> unpack_stencil(GLenum type, int width, int height, const Pi
   return out;
 }
 
+GLenum check_depth_stencil(GLenum format, GLenum type) {
+  if (format == kDepthStencilFormat) return type == kUnsignedInt24_8 ? GL_NO_ERROR : GLenum(GL_INVALID_ENUM);
+  return type == kUnsignedInt24_8 ? GLenum(GL_INVALID_OPERATION) : GLenum(GL_NO_ERROR);
+}
+
+void unpack_depth_stencil(int width, int height, const PixelStore& store, const void* data,
+                          const PixelTransfer& transfer, std::vector<Vec4>& depth, std::vector<uint8_t>& stencil) {
+  depth.assign(size_t(width) * size_t(height), Vec4{0, 0, 0, 1});
+  stencil.assign(size_t(width) * size_t(height), 0);
+  if (!data) return;
+  const uint8_t* src = static_cast<const uint8_t*>(data);
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = src + row_offset(store, width, y, 4, 4);
+    for (int x = 0; x < width; ++x) {
+      const uint32_t word = load(row + size_t(x) * 4, 4, store.swap_bytes);
+      const size_t at = size_t(y) * size_t(width) + size_t(x);
+      const float d = transfer.depth(float(double(word >> 8) / 16777215.0));
+      depth[at].x = d > 0 ? (d < 1 ? d : 1.0f) : 0.0f;
+      stencil[at] = uint8_t(transfer.index(int64_t(word & 0xff)) & 0xff);
+    }
+  }
+}
+
 std::vector<uint8_t> unpack_bitmap(int width, int height, const PixelStore& store, const void* data) {
   std::vector<uint8_t> out(size_t(width) * size_t(height), 0);
   if (!data) return out;

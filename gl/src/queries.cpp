@@ -26,6 +26,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
   if (get_buffer_binding(pname, out)) return true;   // (buffer_objects.cpp)
   if (get_eval(pname, out)) return true;             // (evaluators.cpp)
   if (get_buffers(pname, out)) return true;          // (buffers.cpp)
+  if (get_multisample(pname, out)) return true;      // (multisample.cpp)
   if (get_pixel_transfer(pname, out)) return true;   // (pixel_transfer.cpp)
   if (get_color_sum(pname, out, kind)) return true;  // (color_sum.cpp)
   if (get_framebuffer(pname, out)) return true;      // (framebuffer_objects.cpp)
@@ -113,7 +114,6 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_ACCUM_ALPHA_BITS: out = {double(accum_bits_)}; return true;
     case GL_ACCUM_CLEAR_VALUE: v4(accum_clear_), kind = 1; return true;
     case GL_AUX_BUFFERS: case GL_INDEX_BITS: case GL_INDEX_MODE: case GL_STEREO:
-    case GL_SAMPLE_BUFFERS: case GL_SAMPLES:
       out = {0}; return true;
     case GL_RGBA_MODE: out = {1}; return true;
     // The rasterizer's: window coordinates snap to 24.8 fixed point; points and lines

@@ -110,8 +110,7 @@ void Context::clear(GLbitfield mask) {
   q.stencil_value = stencil_clear_value();
   q.stencil_mask = uint8_t(stencil_.write_mask);
   q.scissor = r.scissor_test;
-  if (r.scissor_test)
-    q.x0 = r.scissor.x, q.x1 = r.scissor.x + r.scissor.width, q.y0 = r.scissor.y, q.y1 = r.scissor.y + r.scissor.height;
+  if (r.scissor_test) sample_scissor(r.scissor, q.x0, q.y0, q.x1, q.y1);  // (multisample.cpp)
   if (q.color || q.depth || q.stencil) renderer_->clear(q);
   if (mirror_ && (q.color || q.depth || q.stencil)) mirror_->clear(q);  // GL_FRONT_AND_BACK (buffers.cpp)
 }

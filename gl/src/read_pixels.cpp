@@ -34,8 +34,12 @@ void write_normalized(float c, GLenum type, uint8_t* dst) {
 
 void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  if (const GLenum e = check_depth_stencil(format, type)) return error(e);  // (pixel_unpack.cpp)
+  // GL_EXT_packed_depth_stencil: one 32-bit word a pixel, its depth and stencil.
+  const bool packed = format == kDepthStencilFormat;
   int comps;
   switch (format) {
+    case kDepthStencilFormat: comps = 1; break;
     case GL_RGBA: case GL_BGRA: comps = 4; break;
     case GL_RGB: case GL_BGR: comps = 3; break;
     case GL_ALPHA: case GL_LUMINANCE: case GL_RED: case GL_GREEN:
@@ -48,7 +52,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   switch (type) {
     case GL_UNSIGNED_BYTE: case GL_BYTE: tsize = 1; break;
     case GL_UNSIGNED_SHORT: case GL_SHORT: tsize = 2; break;
-    case GL_FLOAT: case GL_UNSIGNED_INT: case GL_INT: tsize = 4; break;
+    case GL_FLOAT: case GL_UNSIGNED_INT: case GL_INT: case kUnsignedInt24_8: tsize = 4; break;
     default: return error(GL_INVALID_ENUM);
   }
   if (in_begin_error() || read_framebuffer_incomplete()) return;
@@ -59,7 +63,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   }
   if (!renderer_ || !pixels || w == 0 || h == 0) return;
   run_frame();
-  const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
+  const bool depth = format == GL_DEPTH_COMPONENT || packed, stencil = format == GL_STENCIL_INDEX || packed;
   if (depth && depth_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (stencil && stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (!depth && !stencil && no_read_buffer()) return;  // glReadBuffer(GL_NONE)
@@ -108,6 +112,14 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
         }
       }
       uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * comps * tsize;
+      if (packed) {  // 24 bits of depth above 8 of stencil
+        const double d = std::clamp(double(zbuf[at]), 0.0, 1.0);
+        const uint32_t word = uint32_t(std::lround(d * 16777215.0)) << 8 | sbuf[at];
+        uint8_t bytes[4];
+        std::memcpy(bytes, &word, 4);
+        for (int b = 0; b < 4; ++b) dst[b] = bytes[swap ? 3 - b : b];
+        continue;
+      }
       if (stencil) {  // an index: its value in any type, not scaled
         write_index(sbuf[at], type, dst);
         if (swap) std::reverse(dst, dst + tsize);

@@ -144,8 +144,12 @@ void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, fl
                                  GL_UNSIGNED_SHORT_4_4_4_4_REV, GL_UNSIGNED_SHORT_5_5_5_1,
                                  GL_UNSIGNED_SHORT_1_5_5_5_REV, GL_UNSIGNED_INT_8_8_8_8, GL_UNSIGNED_INT_8_8_8_8_REV,
                                  GL_UNSIGNED_INT_10_10_10_2, GL_UNSIGNED_INT_2_10_10_10_REV};
-  const GLenum format = in.u8() < 230 ? formats[in.below(13)] : e1;
-  const GLenum type = in.u8() < 230 ? types[in.below(20)] : e2;
+  GLenum format = in.u8() < 230 ? formats[in.below(13)] : e1;
+  GLenum type = in.u8() < 230 ? types[in.below(20)] : e2;
+  // GL_EXT_packed_depth_stencil's GL_DEPTH_STENCIL_EXT and GL_UNSIGNED_INT_24_8_EXT,
+  // paired or with another type or format (4 bytes a pixel: inside `image`).
+  if (const uint8_t pick = in.u8(); pick < 24) format = 0x84F9, type = pick < 16 ? 0x84FA : type;
+  else if (pick < 32) type = 0x84FA;
   // At most 16 x 16 pixels of 16 bytes, with skips and row lengths below 16: inside the
   // 64 x 64 x 16-byte image.
   const int w = in.below(18) - 1, h = in.below(18) - 1;
@@ -849,6 +853,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         glPixelStorei(GL_PACK_ALIGNMENT, 1 << in.below(4));
         glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, e1, in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
                      out.data());
+        // GL_EXT_packed_depth_stencil: 4 bytes a pixel, as GL_FLOAT's.
+        if (in.u8() < 32) glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, 0x84F9, 0x84FA, out.data());
         break;
       }
       case 60: {

@@ -12,6 +12,7 @@
 #include <GL/glxext.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -96,6 +97,157 @@ static int config_attribute(GLXFBConfig c, int attribute) {
   return v;
 }
 
+/* A scene with edges at every slope: a triangle and a thin line on black, drawn in an
+ * ortho projection of 0..40 x 0..24 whatever the viewport. */
+static void draw_edges(int w, int h) {
+  glViewport(0, 0, w, h);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 40, 0, 24, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glBegin(GL_TRIANGLES);
+  glColor3f(1, 0.5f, 0.25f);
+  glVertex2f(3.3f, 2.1f);
+  glVertex2f(36.7f, 7.4f);
+  glVertex2f(13.2f, 22.6f);
+  glEnd();
+}
+
+/* GLX_ARB_multisample: configurations with 4, 9 and 16 samples; a context on one draws
+ * k x k samples a pixel and reads (and shows) their mean. The oracle: the box filter of
+ * the same scene drawn without samples at k times the size. */
+static void check_multisample(int screen) {
+  const char* extensions = glXQueryExtensionsString(dpy, screen);
+  CHECK(extensions && strstr(extensions, "GLX_ARB_multisample"), "GLX_ARB_multisample in %s", extensions);
+  int n = 0;
+  const int want4[] = {GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 2, GLX_DOUBLEBUFFER, True, None};
+  GLXFBConfig* c4 = glXChooseFBConfig(dpy, screen, want4, &n);
+  CHECK(c4 && n == 3 && config_attribute(c4[0], GLX_SAMPLES) == 4 && config_attribute(c4[0], GLX_SAMPLE_BUFFERS) == 1 &&
+            config_attribute(c4[1], GLX_SAMPLES) == 9 && config_attribute(c4[2], GLX_SAMPLES) == 16,
+        "%d configs for 2 samples", n);
+  const int want6[] = {GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 6, None};
+  GLXFBConfig* c9 = glXChooseFBConfig(dpy, screen, want6, &n);
+  CHECK(c9 && n == 4 && config_attribute(c9[0], GLX_SAMPLES) == 9, "%d configs for 6 samples", n);
+  XFree(c9);
+  const int want32[] = {GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 32, None};
+  CHECK(!glXChooseFBConfig(dpy, screen, want32, &n) && n == 0, "32 samples offered");
+  int vis_attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 9, None};
+  XVisualInfo* vis9 = glXChooseVisual(dpy, screen, vis_attributes);
+  int v = 0;
+  CHECK(vis9 && glXGetConfig(dpy, vis9, GLX_SAMPLES, &v) == 0 && v == 9, "glXChooseVisual 9 samples: %d", v);
+  XFree(vis9);
+
+  {
+    /* 16 samples where the sample buffer fits the renderer's 16384 a side; a drawable
+     * 6000 wide gets 2 x 2. */
+    const int wide_size[] = {GLX_PBUFFER_WIDTH, 6000, GLX_PBUFFER_HEIGHT, 4, None};
+    GLXPbuffer wide = glXCreatePbuffer(dpy, c4[2], wide_size);
+    GLXContext wide_ctx = glXCreateNewContext(dpy, c4[2], GLX_RGBA_TYPE, NULL, True);
+    unsigned char corner[4] = {0, 0, 0, 0};
+    GLint samples = 0;
+    CHECK(wide && wide_ctx && glXMakeContextCurrent(dpy, wide, wide, wide_ctx), "a 6000-pixel pbuffer");
+    glGetIntegerv(GL_SAMPLES, &samples);
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glReadPixels(5999, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, corner);
+    CHECK(samples == 4 && corner[1] == 255, "6000 wide: GL_SAMPLES %d, green %d", samples, corner[1]);
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    glXDestroyContext(dpy, wide_ctx);
+    glXDestroyPbuffer(dpy, wide);
+  }
+  const GLXFBConfig ms = c4[1];  /* 9 samples: k = 3 */
+  const int k = 3, w = 40, h = 24;
+  XFree(c4);
+  const int plain_list[] = {GLX_DOUBLEBUFFER, True, GLX_DEPTH_SIZE, 1, None};
+  GLXFBConfig* plain = glXChooseFBConfig(dpy, screen, plain_list, &n);
+  CHECK(plain && config_attribute(plain[0], GLX_SAMPLES) == 0, "a configuration without samples");
+  /* The oracle: the scene at k times the size, one sample a pixel, box-filtered. */
+  const int big_size[] = {GLX_PBUFFER_WIDTH, k * w, GLX_PBUFFER_HEIGHT, k * h, None};
+  GLXPbuffer big = glXCreatePbuffer(dpy, plain[0], big_size);
+  GLXContext plain_ctx = glXCreateNewContext(dpy, plain[0], GLX_RGBA_TYPE, NULL, True);
+  XFree(plain);
+  CHECK(big && plain_ctx && glXMakeContextCurrent(dpy, big, big, plain_ctx), "the oracle's pbuffer");
+  GLint iv[2] = {-1, -1};
+  glGetIntegerv(GL_SAMPLE_BUFFERS, iv);
+  glGetIntegerv(GL_SAMPLES, iv + 1);
+  CHECK(iv[0] == 0 && iv[1] == 0, "no samples: GL_SAMPLE_BUFFERS %d GL_SAMPLES %d", iv[0], iv[1]);
+  draw_edges(k * w, k * h);
+  static unsigned char large[3 * 40 * 3 * 24 * 4], want[40 * 24 * 4], got[40 * 24 * 4];
+  glReadPixels(0, 0, k * w, k * h, GL_RGBA, GL_UNSIGNED_BYTE, large);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 4; ++c) {
+        int sum = 0;
+        for (int j = 0; j < k; ++j)
+          for (int i = 0; i < k; ++i) sum += large[((y * k + j) * k * w + x * k + i) * 4 + c];
+        want[(y * w + x) * 4 + c] = (unsigned char)((sum + k * k / 2) / (k * k));
+      }
+
+  /* A window on the multisample configuration: drawn, read, swapped. */
+  XVisualInfo* mvis = glXGetVisualFromFBConfig(dpy, ms);
+  CHECK(mvis, "a visual for the multisample configuration");
+  Window mwin = open_window(mvis, w, h);
+  GLXContext mctx = glXCreateNewContext(dpy, ms, GLX_RGBA_TYPE, NULL, True);
+  CHECK(mctx && glXMakeCurrent(dpy, mwin, mctx), "multisample context");
+  glGetIntegerv(GL_SAMPLE_BUFFERS, iv);
+  glGetIntegerv(GL_SAMPLES, iv + 1);
+  CHECK(iv[0] == 1 && iv[1] == 9, "GL_SAMPLE_BUFFERS %d GL_SAMPLES %d", iv[0], iv[1]);
+  draw_edges(w, h);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, got);
+  int worst = 0, partial = 0;
+  for (int i = 0; i < w * h * 4; ++i) {
+    const int d = abs(got[i] - want[i]);
+    if (d > worst) worst = d;
+    if (i % 4 == 0 && got[i] > 0 && got[i] < 255) ++partial;
+  }
+  CHECK(worst <= 1, "resolved colour differs from the box filter by %d", worst);
+  CHECK(partial >= 40, "%d edge pixels partly covered", partial);
+  glXSwapBuffers(dpy, mwin);
+  check_window_is_frame(mwin, w, h, got);
+  printf("ok multisample: 9 samples, resolved = box filter of 3x the size (%d edge pixels, within %d)\n", partial, worst);
+
+  /* Pixel operations act on every sample of a pixel: a scissored clear, glDrawPixels
+   * of colour and depth, read back exactly; depth and stencil read one value a pixel. */
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(5, 3, 7, 4);
+  glClearColor(0.2f, 0.4f, 0.6f, 1);
+  glClearStencil(0x5a);
+  glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  unsigned char px[4 * 9];
+  glReadPixels(4, 2, 3, 3, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  CHECK(px[0] == got[(2 * w + 4) * 4] && px[4 * 4] == 51 && px[4 * 4 + 1] == 102 && px[4 * 4 + 2] == 153,
+        "scissored clear: %d %d %d", px[4 * 4], px[4 * 4 + 1], px[4 * 4 + 2]);
+  unsigned char st[12];  /* rows of 3, 4-byte aligned */
+  glReadPixels(4, 2, 3, 3, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, st);
+  CHECK(st[0] == 0 && st[5] == 0x5a && st[10] == 0x5a, "stencil %d %d %d", st[0], st[5], st[10]);
+  const float depths[4] = {0.25f, 0.5f, 0.75f, 0.125f};
+  const unsigned char colours[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 9, 99, 199, 255};
+  glRasterPos2f(20.25f, 10.25f); /* pixel (20, 10) in draw_edges' projection */
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, colours);
+  unsigned char back[16];
+  float dback[4];
+  glReadPixels(20, 10, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, back);
+  CHECK(memcmp(back, colours, 16) == 0, "glDrawPixels colour %d %d %d", back[12], back[13], back[14]);
+  glEnable(GL_DEPTH_TEST);  /* (depth is written only with the test on) */
+  glDepthFunc(GL_ALWAYS);
+  glDrawPixels(2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, depths);  /* (and the raster colour) */
+  glDisable(GL_DEPTH_TEST);
+  glReadPixels(20, 10, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, dback);
+  for (int i = 0; i < 4; ++i) CHECK(fabsf(dback[i] - depths[i]) < 1e-6f, "depth %d: %f", i, dback[i]);
+  printf("ok multisample pixel operations: clear, glDrawPixels, depth and stencil reads\n");
+  glXMakeCurrent(dpy, None, NULL);
+  glXDestroyContext(dpy, mctx);
+  glXDestroyContext(dpy, plain_ctx);
+  glXDestroyPbuffer(dpy, big);
+  XDestroyWindow(dpy, mwin);
+  XFree(mvis);
+}
+
 int main(void) {
   dpy = XOpenDisplay(NULL);
   if (!dpy) {
@@ -108,11 +260,11 @@ int main(void) {
   /* --- configurations: what exists, and nothing that does not */
   int n = 0;
   GLXFBConfig* all = glXGetFBConfigs(dpy, screen, &n);
-  CHECK(all && n == 4, "%d configs", n);
+  CHECK(all && n == 10, "%d configs", n);
   XFree(all);
   const int with_stencil[] = {GLX_STENCIL_SIZE, 1, None};
   GLXFBConfig* stencil = glXChooseFBConfig(dpy, screen, with_stencil, &n);
-  CHECK(stencil && n == 2 && config_attribute(stencil[0], GLX_STENCIL_SIZE) == 8 &&
+  CHECK(stencil && n == 8 && config_attribute(stencil[0], GLX_STENCIL_SIZE) == 8 &&
             config_attribute(stencil[0], GLX_DEPTH_SIZE) == 24,
         "%d configs with a stencil buffer", n);
   XFree(stencil);
@@ -121,7 +273,7 @@ int main(void) {
   CHECK(!none && n == 0, "a 9-bit stencil buffer is offered");
   const int with_accum[] = {GLX_ACCUM_RED_SIZE, 1, GLX_ACCUM_ALPHA_SIZE, 16, None};
   GLXFBConfig* accum = glXChooseFBConfig(dpy, screen, with_accum, &n);
-  CHECK(accum && n == 2 && config_attribute(accum[0], GLX_ACCUM_GREEN_SIZE) == 16 &&
+  CHECK(accum && n == 8 && config_attribute(accum[0], GLX_ACCUM_GREEN_SIZE) == 16 &&
             config_attribute(accum[0], GLX_STENCIL_SIZE) == 8,
         "%d configs with an accumulation buffer", n);
   XFree(accum);
@@ -131,7 +283,7 @@ int main(void) {
   const int wanted[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, GLX_DOUBLEBUFFER, True,
                         GLX_RED_SIZE, 8, GLX_ALPHA_SIZE, 1, GLX_DEPTH_SIZE, 16, None};
   GLXFBConfig* configs = glXChooseFBConfig(dpy, screen, wanted, &n);
-  CHECK(configs && n == 1, "%d double-buffered configs with depth", n);
+  CHECK(configs && n == 4 && config_attribute(configs[0], GLX_SAMPLES) == 0, "%d double-buffered configs with depth", n);
   GLXFBConfig config = configs[0];
   XFree(configs);
   CHECK(config_attribute(config, GLX_DEPTH_SIZE) == 24, "depth");
@@ -141,9 +293,9 @@ int main(void) {
   CHECK(config_attribute(config, GLX_VISUAL_ID) != 0, "visual");
   const int single_no_depth[] = {GLX_DOUBLEBUFFER, False, None};
   configs = glXChooseFBConfig(dpy, screen, single_no_depth, &n);
-  CHECK(configs && n == 2 && config_attribute(configs[0], GLX_DEPTH_SIZE) == 0, "smaller depth first");
+  CHECK(configs && n == 5 && config_attribute(configs[0], GLX_DEPTH_SIZE) == 0, "smaller depth first");
   XFree(configs);
-  printf("ok configs: 4, depth 24, stencil 8 and accumulation 16 or none, alpha 8\n");
+  printf("ok configs: 10, depth 24, stencil 8 and accumulation 16 or none, alpha 8, 4, 9 or 16 samples\n");
 
   int rgba_only[] = {GLX_RED_SIZE, 1, None};
   CHECK(!glXChooseVisual(dpy, screen, rgba_only), "a colour-index visual");
@@ -341,6 +493,8 @@ int main(void) {
   glReadPixels(15, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
   CHECK(px[0] == 0 && px[1] == 255 && px[2] == 0, "pbuffer pixel %d %d %d", px[0], px[1], px[2]);
   printf("ok pbuffer\n");
+
+  check_multisample(screen);
 
   /* --- misuse: GLX's errors, no crash */
   CHECK(glXMakeCurrent(dpy, None, NULL), "release");
