@@ -202,9 +202,10 @@ BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawStat
   d.batch = batch;
   d.primitive_count = primitives;
   d.textured = state.texture.texture != nullptr;
+  d.volume = d.textured && state.texture.texture->volume();
   d.fog = state.fog;
-  d.kernel = raster::fixed_kernel(d.textured, d.fog);
-  d.num_varyings = raster::fixed_varyings(d.textured, d.fog);
+  d.kernel = raster::fixed_kernel(d.textured, d.fog, d.volume);
+  d.num_varyings = raster::fixed_varyings(d.textured, d.fog, d.volume);
 
   // The viewport, within the guard band's reach of the framebuffer (as OpenGL's
   // GL_MAX_VIEWPORT_DIMS bounds it).

@@ -67,6 +67,7 @@ struct BatchDrawPlan {
   uint32_t draw_state = 0;
   uint8_t kernel = 0;
   bool textured = false, fog = false;
+  bool volume = false;  // the texture is 3-D: s, t, r, q are interpolated
   int num_varyings = 0;
   uint32_t primitive_count = 0;
   ViewportMap viewport{};

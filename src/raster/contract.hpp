@@ -186,8 +186,8 @@ enum class KernelId : uint8_t {
   PhongEnv = PhongTex + 3,
   PhongTexEnv = PhongEnv + 3,
   Pbr = PhongTexEnv + 3,    // + 6 * tangents + 3 * vertex colours + filter (12 ids)
-  Fixed = Pbr + 12,         // + 2 * textured + fog (4 ids)
-  Count = Fixed + 4,
+  Fixed = Pbr + 12,         // + 2 * textured + fog (4 ids), then 3-D textured + fog (2)
+  Count = Fixed + 6,
 };
 // The varying layouts above, by name: the triangle stage writes them
 // (triangle/) and the shaders read them.
@@ -199,7 +199,7 @@ inline constexpr int kNormal = 3;       // Phong*: eye-space normal x, y, z
 inline constexpr int kEye = 6;          // Phong*: eye-space position x, y, z
 inline constexpr int kPhongUv = 9;      // PhongTex*: u, v
 inline constexpr int kFixedColor = 0;   // Fixed: r, g, b, a
-inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q
+inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q (a 3-D texture: s, t, r, q)
 inline constexpr int kPbrNormal = 0;    // Pbr: eye-space normal
 inline constexpr int kPbrEye = 3;       // Pbr: eye-space position
 inline constexpr int kPbrUv = 6;        // Pbr: u, v
@@ -226,14 +226,21 @@ inline constexpr KernelId kernel_family(uint8_t id) {
   return KernelId::Fixed;
 }
 inline constexpr uint8_t kernel_with_filter(KernelId k, Filter f) { return uint8_t(uint8_t(k) + uint8_t(f)); }
-inline constexpr uint8_t fixed_kernel(bool textured, bool fog) { return uint8_t(uint8_t(KernelId::Fixed) + 2 * textured + fog); }
-inline constexpr int fixed_varyings(bool textured, bool fog) { return 4 + (textured ? 3 : 0) + (fog ? 1 : 0); }
+inline constexpr uint8_t fixed_kernel(bool textured, bool fog, bool volume = false) {
+  return uint8_t(uint8_t(KernelId::Fixed) + (volume ? 4 : 2 * textured) + fog);
+}
+// Texture coordinates a fixed-function draw interpolates: none, s t q, or (3-D) s t r q.
+inline constexpr int fixed_tex_varyings(bool textured, bool volume) { return volume ? 4 : textured ? 3 : 0; }
+inline constexpr int fixed_varyings(bool textured, bool fog, bool volume = false) {
+  return 4 + fixed_tex_varyings(textured, volume) + (fog ? 1 : 0);
+}
 
 // A texture as the SIMD sampler reads it: each mip level's texels, size and the
 // addressing, resolved once per draw.
 struct SamplerLevel {
   const uint32_t* texels = nullptr;
   int32_t width = 1, height = 1;
+  int32_t depth = 1;  // a 3-D texture's slices (SamplerView::volume)
   const uint64_t* linear = nullptr;  // srgb views: Texture::linear_levels(), RGBA16
 };
 struct SamplerView {
@@ -241,6 +248,9 @@ struct SamplerView {
   SamplerLevel levels[kMaxLevels];
   int level_count = 0;
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  // A 3-D texture (Texture::volume): sampled at (s, t, r), r addressed by wrap_r.
+  bool volume = false;
+  Wrap wrap_r = Wrap::Repeat;
   SamplerState::Texel mag = SamplerState::Texel::Linear, min = SamplerState::Texel::Linear;
   SamplerState::Mip mip = SamplerState::Mip::Linear;
   float lod_bias = 0, min_lod = -1000, max_lod = 1000;  // (SamplerState's)

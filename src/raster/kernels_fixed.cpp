@@ -50,13 +50,13 @@ HWY_INLINE uint16_t stipple_mask(const PixelState& p, int x, int y) {
 }
 
 // --- the fixed-function kernel (PrimitiveBatch draws).
-template <bool kTex, bool kFog>
+template <bool kTex, bool kFog, bool k3D = false>
 HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
   const DF d;
   const DU du;
   const DrawState& draw = (*t.frame.draws)[r.draw];
   const PixelState& p = draw.pixel;
-  FixedShader<kTex, kFog> shader(r, draw);
+  FixedShader<kTex, kFog, k3D> shader(r, draw);
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
   // With no alpha or stencil test, the depth test can come first and spare the shading.
@@ -124,8 +124,9 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
 }
 
 const KernelFn* fixed_kernels() {
-  static const KernelFn table[] = {fixed_kernel<false, false>, fixed_kernel<false, true>, fixed_kernel<true, false>,
-                                   fixed_kernel<true, true>};
+  static const KernelFn table[] = {fixed_kernel<false, false>,      fixed_kernel<false, true>,
+                                   fixed_kernel<true, false>,       fixed_kernel<true, true>,
+                                   fixed_kernel<true, false, true>, fixed_kernel<true, true, true>};
   static_assert(sizeof(table) / sizeof(table[0]) == size_t(KernelId::Count) - size_t(KernelId::Fixed));
   return table;
 }

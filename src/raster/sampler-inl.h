@@ -187,6 +187,69 @@ HWY_INLINE Rgba texel_filter(const SamplerView& s, const SamplerLevel& l, VF u, 
   return f == SamplerState::Texel::Nearest ? nearest<kAlpha>(s, l, u, v) : bilinear<kAlpha>(s, l, u, v);
 }
 
+// --- 3-D textures (SamplerView::volume): the same addressing on a third axis, r, over
+// a level's slices. GL_LINEAR within a level blends the eight nearest texels.
+
+// The texels at (x, y, z): slice z's row y.
+template <bool kAlpha>
+HWY_INLINE Rgba fetch3(const SamplerView& s, const SamplerLevel& l, VI x, VI y, VI z) {
+  const DI di;
+  return fetch<kAlpha>(s, l, x, hn::Add(hn::Mul(z, hn::Set(di, l.height)), y));
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba nearest3(const SamplerView& s, const SamplerLevel& l, VF u, VF v, VF w) {
+  const DF d;
+  const DI di;
+  MI outside = hn::FirstN(di, 0);
+  auto index = [&](VF c, Wrap wrap, int32_t n) {
+    const VF x = hn::Mul(prepare_coord(c, wrap), hn::Set(d, float(n)));
+    return wrap_index(hn::ConvertTo(di, hn::Floor(x)), n, wrap, outside);
+  };
+  const VI ix = index(u, s.wrap_s, l.width), iy = index(v, s.wrap_t, l.height), iz = index(w, s.wrap_r, l.depth);
+  Rgba c = fetch3<kAlpha>(s, l, ix, iy, iz);
+  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder || s.wrap_r == Wrap::ClampToBorder)
+    c = with_border(c, outside, s.border, texel_unit(s));
+  return c;
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba linear3(const SamplerView& s, const SamplerLevel& l, VF u, VF v, VF w) {
+  const DF d;
+  const DI di;
+  struct Axis {
+    VI i0, i1;
+    MI out0, out1;
+    VF frac;
+  };
+  auto axis = [&](VF c, Wrap wrap, int32_t n) {
+    const VF x = hn::MulSub(prepare_coord(c, wrap), hn::Set(d, float(n)), hn::Set(d, 0.5f));
+    const VF fx = hn::Floor(x);
+    const VI i = hn::ConvertTo(di, fx);
+    Axis a{i, i, hn::FirstN(di, 0), hn::FirstN(di, 0), hn::Sub(x, fx)};
+    a.i0 = wrap_index(i, n, wrap, a.out0), a.i1 = wrap_index(hn::Add(i, hn::Set(di, 1)), n, wrap, a.out1);
+    return a;
+  };
+  const Axis ax = axis(u, s.wrap_s, l.width), ay = axis(v, s.wrap_t, l.height), az = axis(w, s.wrap_r, l.depth);
+  const bool border = s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder || s.wrap_r == Wrap::ClampToBorder;
+  const float k = texel_unit(s);
+  auto tap = [&](bool x1, bool y1, bool z1) {
+    Rgba t = fetch3<kAlpha>(s, l, x1 ? ax.i1 : ax.i0, y1 ? ay.i1 : ay.i0, z1 ? az.i1 : az.i0);
+    if (border) t = with_border(t, hn::Or(x1 ? ax.out1 : ax.out0, hn::Or(y1 ? ay.out1 : ay.out0, z1 ? az.out1 : az.out0)), s.border, k);
+    return t;
+  };
+  auto slice = [&](bool z1) {
+    return lerp(lerp(tap(false, false, z1), tap(true, false, z1), ax.frac), lerp(tap(false, true, z1), tap(true, true, z1), ax.frac),
+                ay.frac);
+  };
+  return lerp(slice(false), slice(true), az.frac);
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba texel_filter3(const SamplerView& s, const SamplerLevel& l, VF u, VF v, VF w, SamplerState::Texel f) {
+  return f == SamplerState::Texel::Nearest ? nearest3<kAlpha>(s, l, u, v, w) : linear3<kAlpha>(s, l, u, v, w);
+}
+
 // How a block samples: the filter and the level(s), chosen once per block.
 struct LevelChoice {
   SamplerState::Texel filter;
@@ -231,6 +294,15 @@ HWY_INLINE Rgba sample(const SamplerView& s, const LevelChoice& c, VF u, VF v) {
   return sample<kAlpha>(s, c, u, v, hn::Set(DF(), c.frac));
 }
 
+// A 3-D texture's sample at (u, v, w); mip-mapped, the two levels' samples blended as
+// sample's are (GL_LINEAR_MIPMAP_LINEAR: "trilinear" between two trilinear samples).
+template <bool kAlpha = true>
+HWY_INLINE Rgba sample3(const SamplerView& s, const LevelChoice& c, VF u, VF v, VF w) {
+  Rgba a = texel_filter3<kAlpha>(s, s.levels[c.level0], u, v, w, c.filter);
+  if (c.level1 != c.level0) a = lerp(a, texel_filter3<kAlpha>(s, s.levels[c.level1], u, v, w, c.filter), hn::Set(DF(), c.frac));
+  return scale(a, 1.0f / texel_unit(s));
+}
+
 // log2(x) for a positive normal float, to about 0.002 (enough to choose and blend mip
 // levels): the exponent, plus a cubic in the mantissa.
 inline float fast_log2(float x) {
@@ -248,6 +320,17 @@ inline float level_of_detail(const SamplerView& s, float dudx, float dvdx, float
   const float w = float(s.levels[0].width), h = float(s.levels[0].height);
   const float rx = (dudx * w) * (dudx * w) + (dvdx * h) * (dvdx * h);
   const float ry = (dudy * w) * (dudy * w) + (dvdy * h) * (dvdy * h);
+  const float rho2 = std::max(rx, ry);
+  return rho2 > 1e-30f && rho2 < 1e30f ? 0.5f * fast_log2(rho2) : (rho2 > 0 ? (rho2 < 1 ? -100.0f : 50.0f) : -100.0f);
+}
+
+// A 3-D texture's level of detail: rho from the derivatives of (u, v, w) (GL 1.5,
+// equation 3.17, the larger of the two screen axes).
+inline float level_of_detail3(const SamplerView& s, float dudx, float dvdx, float dwdx, float dudy, float dvdy,
+                              float dwdy) {
+  const float w = float(s.levels[0].width), h = float(s.levels[0].height), dp = float(s.levels[0].depth);
+  const float rx = (dudx * w) * (dudx * w) + (dvdx * h) * (dvdx * h) + (dwdx * dp) * (dwdx * dp);
+  const float ry = (dudy * w) * (dudy * w) + (dvdy * h) * (dvdy * h) + (dwdy * dp) * (dwdy * dp);
   const float rho2 = std::max(rx, ry);
   return rho2 > 1e-30f && rho2 < 1e30f ? 0.5f * fast_log2(rho2) : (rho2 > 0 ? (rho2 < 1 ? -100.0f : 50.0f) : -100.0f);
 }

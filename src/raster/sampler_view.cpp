@@ -10,7 +10,11 @@ void set_levels(SamplerView& s, const Texture& t) {
   s.texture = &t;
   const auto& levels = t.levels();
   s.level_count = int(std::min<size_t>(levels.size(), SamplerView::kMaxLevels));
-  for (int i = 0; i < s.level_count; ++i) s.levels[i] = {levels[size_t(i)].texels.data(), levels[size_t(i)].width, levels[size_t(i)].height};
+  for (int i = 0; i < s.level_count; ++i) {
+    const Texture::Level& l = levels[size_t(i)];
+    s.levels[i] = {l.texels.data(), l.width, l.height, l.depth};
+  }
+  s.volume = t.volume();
 }
 }  // namespace
 
@@ -28,7 +32,7 @@ SamplerView::SamplerView(const Texture& t, Filter f, Wrap w) {
 
 SamplerView::SamplerView(const Texture& t, const SamplerState& s) {
   set_levels(*this, t);
-  wrap_s = s.wrap_s, wrap_t = s.wrap_t;
+  wrap_s = s.wrap_s, wrap_t = s.wrap_t, wrap_r = s.wrap_r;
   mag = s.mag, min = s.min, mip = s.mip;
   lod_bias = s.lod_bias, min_lod = s.min_lod, max_lod = s.max_lod;
   border[0] = s.border_color.x, border[1] = s.border_color.y, border[2] = s.border_color.z, border[3] = s.border_color.w;

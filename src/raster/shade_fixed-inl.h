@@ -201,12 +201,13 @@ HWY_INLINE VF blend_channel(const PixelState& p, int ch, const Rgba& s, const Rg
   }
 }
 
-// Interpolated RGBA (planes 0-3), then with kTex s, t, q (4-6), then with kFog the fog
-// coordinate.
-template <bool kTex, bool kFog>
+// Interpolated RGBA (planes 0-3), then with kTex s, t, q (4-6) — with k3D (a 3-D
+// texture) s, t, r, q (4-7) — then with kFog the fog coordinate.
+template <bool kTex, bool kFog, bool k3D = false>
 struct FixedShader {
-  static constexpr int N = fixed_varyings(kTex, kFog);
-  static constexpr int kFogAt = varying::kFixedTex + (kTex ? 3 : 0);
+  static constexpr int N = fixed_varyings(kTex, kFog, k3D);
+  static constexpr int kFogAt = varying::kFixedTex + fixed_tex_varyings(kTex, k3D);
+  static constexpr int kQ = varying::kFixedTex + (k3D ? 3 : 2);  // q's plane
   Perspective<N> in;
   const DrawState& draw;
   LevelChoice level{};
@@ -216,15 +217,23 @@ struct FixedShader {
   void begin_block(float fx, float fy) {
     in.begin(fx, fy);
     if constexpr (kTex) {
-      // u = s/q, v = t/q: derivatives of the quotients at the block's centre.
+      // u = s/q, v = t/q (w = r/q): derivatives of the quotients at the block's centre.
       float s, sx, sy, t, tx, ty, q, qx, qy;
       constexpr int st = varying::kFixedTex;
-      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(st + 2, q, qx, qy);
+      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(kQ, q, qx, qy);
       const float iq = q != 0 ? 1.0f / q : 0.0f;
       const float u = s * iq, v = t * iq;
       const SamplerView& tex = draw.texture;
-      level = choose_levels(tex, level_of_detail(tex, (sx - u * qx) * iq, (tx - v * qx) * iq, (sy - u * qy) * iq,
-                                                 (ty - v * qy) * iq));
+      if constexpr (k3D) {
+        float r, rx, ry;
+        in.derivatives(st + 2, r, rx, ry);
+        const float w = r * iq;
+        level = choose_levels(tex, level_of_detail3(tex, (sx - u * qx) * iq, (tx - v * qx) * iq, (rx - w * qx) * iq,
+                                                    (sy - u * qy) * iq, (ty - v * qy) * iq, (ry - w * qy) * iq));
+      } else {
+        level = choose_levels(tex, level_of_detail(tex, (sx - u * qx) * iq, (tx - v * qx) * iq, (sy - u * qy) * iq,
+                                                   (ty - v * qy) * iq));
+      }
     }
   }
 
@@ -234,8 +243,10 @@ struct FixedShader {
     constexpr int c0 = varying::kFixedColor, st = varying::kFixedTex;
     Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
     if constexpr (kTex) {
-      const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + 2, v));
-      Rgba t = sample(draw.texture, level, hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
+      const VF iq = hn::Div(hn::Set(d, 1.0f), in(kQ, v));
+      Rgba t;
+      if constexpr (k3D) t = sample3(draw.texture, level, hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq), hn::Mul(in(st + 2, v), iq));
+      else t = sample(draw.texture, level, hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
       c = texture_environment(draw, c, t);
     }
     if constexpr (kFog) {

@@ -63,7 +63,8 @@ class BatchPrimitives {
     return c;
   }
 
-  // Varyings of vertex v: RGBA, then s, t, q, then the fog coordinate.
+  // Varyings of vertex v: RGBA, then s, t, q (a 3-D texture: s, t, r, q), then the fog
+  // coordinate.
   void varyings(uint32_t v, float* out) const {
     const Vec4 c = b_.color ? b_.color[v] : Vec4{1, 1, 1, 1};
     using namespace raster::varying;
@@ -71,7 +72,9 @@ class BatchPrimitives {
     int at = kFixedTex;
     if (d_.textured) {
       const Vec4 t = b_.texcoord ? b_.texcoord[v] : Vec4{0, 0, 0, 1};
-      out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
+      out[at++] = t.x, out[at++] = t.y;
+      if (d_.volume) out[at++] = t.z;
+      out[at++] = t.w;
     }
     if (d_.fog) out[at] = b_.fog ? b_.fog[v] : 0.0f;
   }
