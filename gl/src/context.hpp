@@ -205,12 +205,12 @@ class Context {
   void delete_textures(GLsizei n, const GLuint* ids);
   void bind_texture(GLenum target, GLuint id);
   bool is_texture(GLuint id) const { return texture_.objects.count(id) != 0; }
-  // `rgba` holds width * height texels already converted (see api.cpp); null for a
-  // level with undefined contents.
+  // `rgba` holds width * height (* depth) texels already converted (see api.cpp); null
+  // for a level with undefined contents. `depth`: a 3-D texture's slices.
   void tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
-                 const std::vector<uint32_t>* rgba);
+                 const std::vector<uint32_t>* rgba, GLsizei depth = 1);
   void tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
-                     const std::vector<uint32_t>& rgba);
+                     const std::vector<uint32_t>& rgba, GLint z = 0, GLsizei depth = 1);
   void tex_parameter(GLenum target, GLenum pname, const float* v);
   void tex_env(GLenum target, GLenum pname, const float* v);
   // The internal format glTexImage2D's argument names, or 0 if none.
@@ -221,8 +221,18 @@ class Context {
   // The object bound to `target` (GL_TEXTURE_1D or GL_TEXTURE_2D), or null with
   // GL_INVALID_ENUM.
   TextureObject* target_texture(GLenum target);
-  bool texturing() const { return texture_.enabled || texture_.enabled_1d; }
-  bool texturing_1d() const { return !texture_.enabled && texture_.enabled_1d; }  // 1-D is the one drawn
+  bool texturing() const { return texture_.enabled || texture_.enabled_1d || texture_.enabled_3d; }
+  bool texturing_1d() const { return !texture_.enabled && !texture_.enabled_3d && texture_.enabled_1d; }  // 1-D is the one drawn
+
+  // --- 3-D textures (texture_3d.cpp); api_texture_3d.cpp their C calls
+  bool texturing_3d() const { return texture_.enabled_3d; }  // 3-D is the one drawn
+  // The target whose texture the next draws sample (while texturing()).
+  GLenum drawn_target() const { return texturing_3d() ? GL_TEXTURE_3D : texturing_1d() ? GL_TEXTURE_1D : GL_TEXTURE_2D; }
+  // glTexImage3D(GL_PROXY_TEXTURE_3D): as proxy_tex_image. The arguments were checked.
+  void proxy_tex_image_3d(GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d);
+  // glCopyTexSubImage3D: a rectangle of the colour buffer into slice `zoffset`.
+  void copy_tex_sub_image_3d(GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei w,
+                             GLsizei h);
 
   // --- copies from the framebuffer, level queries (copy_texture.cpp)
   void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);

@@ -33,6 +33,7 @@ std::vector<uint32_t> Context::read_colour_rect(GLint x, GLint y, GLsizei w, GLs
 void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h,
                              GLint border) {
   if (in_begin_error()) return;
+  if (target == GL_TEXTURE_3D) return error(GL_INVALID_ENUM);  // (glCopyTexImage3D does not exist)
   if (!target_texture(target)) return;
   // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats.
   if (internal >= 1 && internal <= 4) return error(GL_INVALID_ENUM);
@@ -46,6 +47,7 @@ void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint 
 void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
                                  GLsizei h) {
   if (in_begin_error()) return;
+  if (target == GL_TEXTURE_3D) return error(GL_INVALID_ENUM);  // (glCopyTexSubImage3D's: texture_3d.cpp)
   const TextureObject* t = target_texture(target);
   if (!t) return;
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
@@ -58,7 +60,9 @@ void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLin
 
 bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out) {
   if (in_begin_error()) return false;
-  const TextureObject* tp = target == GL_PROXY_TEXTURE_2D ? &texture_.proxy : target_texture(target);
+  const TextureObject* tp = target == GL_PROXY_TEXTURE_2D   ? &texture_.proxy
+                            : target == GL_PROXY_TEXTURE_3D ? &texture_.proxy_3d
+                                                            : target_texture(target);
   if (!tp) return false;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE), false;
   const TextureObject& t = *tp;
@@ -70,6 +74,7 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
   switch (pname) {
     case GL_TEXTURE_WIDTH: *out = l.width; return true;
     case GL_TEXTURE_HEIGHT: *out = l.height; return true;
+    case GL_TEXTURE_DEPTH: *out = l.width ? l.depth : 0; return true;
     case GL_TEXTURE_BORDER: *out = 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *out = GLint(l.width ? t.internal_format : 1); return true;  // (GL_TEXTURE_COMPONENTS)
     case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: *out = bits(rgb); return true;
@@ -101,33 +106,39 @@ void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum ty
   if (!pixels || l.width == 0) return;
   const size_t tsize = type == GL_FLOAT ? 4 : 1, align = size_t(std::max(pack_alignment, 1));
   const size_t row_bytes = (size_t(l.width) * size_t(comps) * tsize + align - 1) / align * align;
+  // A 3-D texture's slices one after another, each of GL_PACK_IMAGE_HEIGHT rows (or its
+  // height), GL_PACK_SKIP_IMAGES of them skipped first.
+  const PixelStore& pack = this->pixels.pack;
+  const size_t image_bytes = row_bytes * size_t(pack.image_height > 0 ? pack.image_height : l.height);
+  uint8_t* const first = static_cast<uint8_t*>(pixels) + size_t(target == GL_TEXTURE_3D ? pack.skip_images : 0) * image_bytes;
   const GLenum base = t.internal_format;
-  for (int y = 0; y < l.height; ++y)
-    for (int x = 0; x < l.width; ++x) {
-      const uint32_t p = l.texels[size_t(y) * size_t(l.width) + size_t(x)];
-      float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
-      // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
-      // intensity as R), then the format's.
-      if (base == GL_LUMINANCE || base == GL_INTENSITY) g = b = 0, a = 1;
-      if (base == GL_LUMINANCE_ALPHA) g = b = 0;
-      if (base == GL_RGB) a = 1;
-      if (base == GL_ALPHA) r = g = b = 0;
-      float c[4] = {r, g, b, a};
-      switch (format) {
-        case GL_BGRA: c[0] = b, c[2] = r; break;
-        case GL_BGR: c[0] = b, c[2] = r; break;
-        case GL_LUMINANCE_ALPHA: c[1] = a; break;
-        case GL_GREEN: c[0] = g; break;
-        case GL_BLUE: c[0] = b; break;
-        case GL_ALPHA: c[0] = a; break;
-        default: break;  // RGBA, RGB, RED, LUMINANCE: as they are
+  for (int z = 0; z < l.depth; ++z)
+    for (int y = 0; y < l.height; ++y)
+      for (int x = 0; x < l.width; ++x) {
+        const uint32_t p = l.texels[(size_t(z) * size_t(l.height) + size_t(y)) * size_t(l.width) + size_t(x)];
+        float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
+        // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
+        // intensity as R), then the format's.
+        if (base == GL_LUMINANCE || base == GL_INTENSITY) g = b = 0, a = 1;
+        if (base == GL_LUMINANCE_ALPHA) g = b = 0;
+        if (base == GL_RGB) a = 1;
+        if (base == GL_ALPHA) r = g = b = 0;
+        float c[4] = {r, g, b, a};
+        switch (format) {
+          case GL_BGRA: c[0] = b, c[2] = r; break;
+          case GL_BGR: c[0] = b, c[2] = r; break;
+          case GL_LUMINANCE_ALPHA: c[1] = a; break;
+          case GL_GREEN: c[0] = g; break;
+          case GL_BLUE: c[0] = b; break;
+          case GL_ALPHA: c[0] = a; break;
+          default: break;  // RGBA, RGB, RED, LUMINANCE: as they are
+        }
+        uint8_t* dst = first + size_t(z) * image_bytes + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
+        for (int k = 0; k < comps; ++k) {
+          if (type == GL_FLOAT) std::memcpy(dst + 4 * k, &c[k], 4);
+          else dst[k] = uint8_t(c[k] * 255.0f + 0.5f);
+        }
       }
-      uint8_t* dst = static_cast<uint8_t*>(pixels) + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
-      for (int k = 0; k < comps; ++k) {
-        if (type == GL_FLOAT) std::memcpy(dst + 4 * k, &c[k], 4);
-        else dst[k] = uint8_t(c[k] * 255.0f + 0.5f);
-      }
-    }
 }
 
 }  // namespace velocity::gl

@@ -195,7 +195,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
     return s;
   }
   if (texturing()) {
-    TextureObject* t = target_texture(texturing_1d() ? GL_TEXTURE_1D : GL_TEXTURE_2D);  // (texture_1d.cpp)
+    TextureObject* t = target_texture(drawn_target());  // (texture_1d.cpp, texture_3d.cpp)
     if (const Texture* tex = texture_for_draw(*t)) {
       TextureStage& st = s.texture;
       st.texture = tex;
@@ -228,6 +228,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
       };
       sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
       if (texturing_1d()) sm.wrap_t = Wrap::Repeat;  // a 1-D image is one row: t is not read
+      sm.wrap_r = wrap(t->wrap_r);                    // (read by 3-D textures only)
       sm.border_color = t->border;
       // GL 1.4: the object's and the unit's bias, their sum clamped to GL_MAX_TEXTURE_LOD_BIAS.
       const float bias = t->lod_bias + texture_.lod_bias;

@@ -124,4 +124,24 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
   return out;
 }
 
+// --- 3-D images (texture_3d.cpp) ---------------------------------------------------
+std::optional<std::vector<uint32_t>> unpack_rgba_3d(GLenum format, GLenum type, int width, int height, int depth,
+                                                    const PixelStore& store, const void* data,
+                                                    const PixelTransfer& transfer) {
+  if (!format_components(format) || check_draw_format(format, type) != GL_NO_ERROR) return std::nullopt;
+  // GL 1.5 section 3.8.1: images of GL_UNPACK_IMAGE_HEIGHT rows (or height), each of
+  // unpack_rgba's rows; GL_UNPACK_SKIP_IMAGES whole images skipped first.
+  const size_t row_bytes = pixel_row_bytes(format, type, width, store);
+  const size_t image_bytes = row_bytes * size_t(store.image_height > 0 ? store.image_height : height);
+  std::vector<uint32_t> out;
+  out.reserve(size_t(width) * size_t(height) * size_t(depth));
+  for (int z = 0; z < depth; ++z) {
+    const void* slice = data ? static_cast<const uint8_t*>(data) + (size_t(store.skip_images) + size_t(z)) * image_bytes : nullptr;
+    auto texels = unpack_rgba(format, type, width, height, store, slice, transfer);
+    if (!texels) return std::nullopt;
+    out.insert(out.end(), texels->begin(), texels->end());
+  }
+  return out;
+}
+
 }  // namespace velocity::gl

@@ -47,24 +47,25 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
     if (ids[i] == 0) continue;
     if (ids[i] == texture_.bound) texture_.bound = 0, changed();
     if (ids[i] == texture_.bound_1d) texture_.bound_1d = 0, changed();
+    if (ids[i] == texture_.bound_3d) texture_.bound_3d = 0, changed();
     texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }
 
 void Context::bind_texture(GLenum target, GLuint id) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D) return error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D && target != GL_TEXTURE_3D) return error(GL_INVALID_ENUM);
   if (id != 0 && !texture_.objects.count(id)) {
     if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
     texture_.objects[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
   }
   if (id != 0) {
-    // A texture is 1-D or 2-D from its first bind on (GL 1.5, 3.8.12).
+    // A texture is 1-D, 2-D or 3-D from its first bind on (GL 1.5, 3.8.12).
     TextureObject& t = *texture_.objects[id];
     if (t.target && t.target != target) return error(GL_INVALID_OPERATION);
     t.target = target;
   }
-  GLuint& bound = target == GL_TEXTURE_2D ? texture_.bound : texture_.bound_1d;
+  GLuint& bound = target == GL_TEXTURE_2D ? texture_.bound : target == GL_TEXTURE_3D ? texture_.bound_3d : texture_.bound_1d;
   if (id != bound) changed();
   bound = id;
 }
@@ -89,19 +90,20 @@ uint32_t stored_texel(GLenum base, uint32_t p) {
 }  // namespace
 
 void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
-                        const std::vector<uint32_t>* rgba) {
+                        const std::vector<uint32_t>* rgba, GLsizei depth) {
   if (in_begin_error()) return;
   TextureObject* tp = target_texture(target);
   if (!tp) return;
   const GLenum base = base_format(internal);
   if (!base) return error(GL_INVALID_VALUE);
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
-      h > (kMaxTextureSize >> level) || border != 0)
+  const int max = target == GL_TEXTURE_3D ? kMax3DTextureSize : kMaxTextureSize;
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || depth < 0 || w > (max >> level) ||
+      h > (max >> level) || depth > (max >> level) || border != 0)
     return error(GL_INVALID_VALUE);
   TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
-  l.width = w, l.height = h;
-  l.texels.assign(size_t(w) * h, 0xff000000u);
+  l.width = w, l.height = h, l.depth = depth;
+  l.texels.assign(size_t(w) * h * size_t(depth), 0xff000000u);
   if (rgba && rgba->size() == l.texels.size()) l.texels = *rgba;
   if (level == 0) {
     t.internal_format = base;
@@ -127,21 +129,24 @@ void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h)
 }
 
 void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
-                            const std::vector<uint32_t>& rgba) {
+                            const std::vector<uint32_t>& rgba, GLint z, GLsizei depth) {
   if (in_begin_error()) return;
   TextureObject* tp = target_texture(target);
   if (!tp) return;
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || depth < 0) return error(GL_INVALID_VALUE);
   TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
-  if (x < 0 || y < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height) return error(GL_INVALID_VALUE);
-  if (rgba.size() != size_t(w) * size_t(h)) return;
+  if (x < 0 || y < 0 || z < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height || int64_t(z) + depth > l.depth)
+    return error(GL_INVALID_VALUE);
+  if (rgba.size() != size_t(w) * size_t(h) * size_t(depth)) return;
   const GLenum base = t.internal_format;
-  for (int row = 0; row < h; ++row)
-    for (int col = 0; col < w; ++col) {
-      l.texels[size_t(y + row) * l.width + size_t(x + col)] = stored_texel(base, rgba[size_t(row) * w + col]);
-    }
+  for (int slice = 0; slice < depth; ++slice)
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const size_t at = (size_t(z + slice) * l.height + size_t(y + row)) * l.width + size_t(x + col);
+        l.texels[at] = stored_texel(base, rgba[(size_t(slice) * h + size_t(row)) * w + size_t(col)]);
+      }
   t.dirty = true;
   changed();
 }
@@ -168,6 +173,11 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT)
         return error(GL_INVALID_ENUM);
       (pname == GL_TEXTURE_WRAP_S ? t.wrap_s : t.wrap_t) = e;
+      break;
+    case GL_TEXTURE_WRAP_R:  // (3-D textures: texture_3d.cpp) the modes s and t take
+      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT)
+        return error(GL_INVALID_ENUM);
+      t.wrap_r = e;
       break;
     case GL_TEXTURE_BORDER_COLOR:
       t.border = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
@@ -223,25 +233,27 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     if (t.base_level >= kMaxTextureLevels || t.max_level < t.base_level) return nullptr;
     const size_t first = size_t(t.base_level), last = size_t(std::min(t.max_level, kMaxTextureLevels - 1));
     const Texture::Level& base = t.levels[first];
-    if (base.width == 0 || base.height == 0) return nullptr;
+    if (base.width == 0 || base.height == 0 || base.depth == 0) return nullptr;
     const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
     if (t.generate_mipmap) {
-      for (size_t i = first + 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
+      for (size_t i = first + 1;
+           i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1 || t.levels[i - 1].depth > 1); ++i)
         t.levels[i] = next_mip_level(t.levels[i - 1]);
     }
     std::vector<Texture::Level> levels{base};
     if (mip) {
-      for (size_t i = first + 1; (levels.back().width > 1 || levels.back().height > 1) && i <= last; ++i) {
+      for (size_t i = first + 1; (levels.back().width > 1 || levels.back().height > 1 || levels.back().depth > 1) && i <= last;
+           ++i) {
         if (i >= t.levels.size()) return nullptr;
         const Texture::Level& l = t.levels[i];
-        if (l.width != std::max(1, levels.back().width / 2) ||
-            l.height != std::max(1, levels.back().height / 2))
+        if (l.width != std::max(1, levels.back().width / 2) || l.height != std::max(1, levels.back().height / 2) ||
+            l.depth != std::max(1, levels.back().depth / 2))
           return nullptr;  // an incomplete mip chain
         levels.push_back(l);
       }
     }
     try {
-      t.built = std::make_shared<const Texture>(std::move(levels));
+      t.built = std::make_shared<const Texture>(std::move(levels), t.target == GL_TEXTURE_3D);
     } catch (const std::exception&) {
       return nullptr;
     }

@@ -352,6 +352,64 @@ void texture_1d_call(Bytes& in, const std::vector<float>& pixels, GLuint* names,
   }
 }
 
+// 3-D textures: images of any size up to 8x8x8 (`pixels` holds 64 * 64 RGBA floats;
+// the pixel store reset around the calls that read or write client memory), levels,
+// offsets and targets, proxies, copies from the framebuffer; bound, enabled, drawn.
+void texture_3d_call(Bytes& in, const std::vector<float>& pixels, std::vector<float>& out, GLuint* names, float a,
+                     float b, float c, GLenum e1) {
+  const GLenum target = in.u8() < 230 ? GL_TEXTURE_3D : in.u8() & 1 ? GL_PROXY_TEXTURE_3D : e1;
+  const GLint level = in.below(6) - 1;
+  const GLsizei w = in.below(11) - 2, h = in.below(11) - 2, d = in.below(11) - 2;
+  auto reset_store = [] {
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    for (GLenum p : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_IMAGE_HEIGHT,
+                     GL_UNPACK_SKIP_IMAGES, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
+                     GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES})
+      glPixelStorei(p, 0);
+  };
+  switch (in.below(7)) {
+    case 0: glBindTexture(in.u8() & 1 ? GL_TEXTURE_3D : GL_TEXTURE_2D, names[in.below(4)] + GLuint(in.below(2))); break;
+    case 1:
+      reset_store();
+      glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, in.below(3) ? 0 : 8), glPixelStorei(GL_UNPACK_SKIP_IMAGES, in.below(3));
+      glTexImage3D(target, level, in.u8() & 1 ? GL_RGBA : GLint(in.enumerant()), w, h, d, in.below(3) - 1,
+                   in.u8() & 1 ? GL_RGBA : in.enumerant(), in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
+                   in.u8() & 1 ? pixels.data() : nullptr);
+      glPopClientAttrib();
+      break;
+    case 2:
+      reset_store();
+      glTexSubImage3D(target, level, in.integer() % 10, in.integer() % 10, in.integer() % 10, w, h, d, GL_RGBA,
+                      in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT, in.u8() & 1 ? pixels.data() : nullptr);
+      glPopClientAttrib();
+      break;
+    case 3:
+      glCopyTexSubImage3D(target, level, in.integer() % 10, in.integer() % 10, in.integer() % 10, in.integer() % 128,
+                          in.integer() % 128, w, h);
+      break;
+    case 4: {
+      GLint v;
+      glGetTexLevelParameteriv(target, level, in.u8() & 1 ? GL_TEXTURE_DEPTH : e1, &v);
+      reset_store();
+      glPixelStorei(GL_PACK_IMAGE_HEIGHT, in.below(3) ? 0 : 8), glPixelStorei(GL_PACK_SKIP_IMAGES, in.below(3));
+      // A level is at most 8x8x8 here (glTexImage3D's sizes): 8 * 10 images of 8 rows fit in out.
+      if (target == GL_TEXTURE_3D) glGetTexImage(target, level, GL_RGBA, GL_FLOAT, out.data());
+      glPopClientAttrib();
+      break;
+    }
+    case 5:
+      glTexParameterf(target, in.u8() & 1 ? GL_TEXTURE_WRAP_R : GL_TEXTURE_MIN_FILTER,
+                      float(in.u8() & 1 ? GL_LINEAR_MIPMAP_LINEAR : in.u8() & 1 ? GL_CLAMP_TO_EDGE : e1));
+      break;
+    default:
+      (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_3D);
+      glBegin(GL_TRIANGLES);
+      glTexCoord3f(a, b, c), glVertex2f(-1, -1), glTexCoord4f(b, a, c, a), glVertex2f(1, -0.5f), glVertex2f(a, b);
+      glEnd();
+      break;
+  }
+}
+
 // One-dimensional evaluators: any target, domain (NaN too), stride and order (the
 // points read stay inside `attrib`: order * stride at most 30 * 8 of its 512 floats),
 // enabled, evaluated inside and outside glBegin/glEnd, on grids of any size below 300.
@@ -711,6 +769,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         tex_gen_call(in, a, b, c, d, e1);
         buffer_call(in, pixels, buffer_names, e1, e2);
         texture_1d_call(in, pixels, names, a, b, e1);
+        texture_3d_call(in, pixels, out, names, a, b, c, e1);
         evaluator_call(in, attrib, a, b, e1);
         buffer_lod_call(in, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES

@@ -959,6 +959,21 @@ GLAPI void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum intern
                                        GLsizei width, GLint border);
 GLAPI void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
 
+/* 3-D textures (GL 1.2) */
+#define GL_TEXTURE_BINDING_3D 0x806A
+#define GL_TEXTURE_3D 0x806F
+#define GL_PROXY_TEXTURE_3D 0x8070
+#define GL_TEXTURE_DEPTH 0x8071
+#define GL_TEXTURE_WRAP_R 0x8072
+#define GL_MAX_3D_TEXTURE_SIZE 0x8073
+GLAPI void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                                   GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                                      GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                                      const GLvoid *pixels);
+GLAPI void GLAPIENTRY glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                                          GLint x, GLint y, GLsizei width, GLsizei height);
+
 /* One-dimensional evaluators (glMap1, glEvalCoord1, glMapGrid1, glEvalMesh1) */
 #define GL_MAP1_COLOR_4 0x0D90
 #define GL_MAP1_INDEX 0x0D91
