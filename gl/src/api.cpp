@@ -459,6 +459,7 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
       }
       if (w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level))
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
@@ -473,6 +474,7 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
           w > velocity::gl::kMaxTextureSize || h > velocity::gl::kMaxTextureSize)
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
       if (!pixels) return;

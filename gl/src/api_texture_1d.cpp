@@ -22,6 +22,7 @@ void glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint b
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 ||
           w > (velocity::gl::kMaxTextureSize >> level) || border != 0 || !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, 1, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
@@ -34,6 +35,7 @@ void glTexSubImage1D(GLenum target, GLint level, GLint x, GLsizei w, GLenum form
       if (target != GL_TEXTURE_1D) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || w > velocity::gl::kMaxTextureSize)
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, 1, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);
       if (!pixels) return;

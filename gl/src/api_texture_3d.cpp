@@ -31,6 +31,7 @@ void glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
       }
       const int max = velocity::gl::kMax3DTextureSize >> level;
       if (w > max || h > max || d > max) return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba_3d(format, type, w, h, d, c.pixels.unpack, pixels, c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
@@ -46,6 +47,7 @@ void glTexSubImage3D(GLenum target, GLint level, GLint x, GLint y, GLint z, GLsi
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || d < 0 || w > max || h > max ||
           d > max)
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       // Null pixels: the ranges are still checked (tex_sub_image), nothing is written.
       auto texels = velocity::gl::unpack_rgba_3d(format, type, pixels ? w : 0, h, pixels ? d : 0, c.pixels.unpack,
                                                  pixels, c.pixels.transfer);

@@ -215,6 +215,9 @@ class Context {
   void tex_env(GLenum target, GLenum pname, const float* v);
   // The internal format glTexImage2D's argument names, or 0 if none.
   static GLenum base_format(GLint internal);
+  // The other sized internal formats of GL 1.1's table and GL 1.3's generic compressed
+  // ones (texture_formats.cpp): their base format, or 0.
+  static GLenum sized_base_format(GLint internal);
   GLint unpack_alignment = 4, pack_alignment = 4;  // glPixelStorei
 
   // --- 1-D textures (texture_1d.cpp)

@@ -35,10 +35,11 @@ void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint 
   if (in_begin_error()) return;
   if (target == GL_TEXTURE_3D) return error(GL_INVALID_ENUM);  // (glCopyTexImage3D does not exist)
   if (!target_texture(target)) return;
-  // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats.
-  if (internal >= 1 && internal <= 4) return error(GL_INVALID_ENUM);
+  // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats;
+  // an internal format that is none is GL_INVALID_ENUM here (as Mesa, and GL 3's copies).
+  if ((internal >= 1 && internal <= 4) || !base_format(GLint(internal))) return error(GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
-      h > (kMaxTextureSize >> level) || border != 0 || !base_format(GLint(internal)))
+      h > (kMaxTextureSize >> level) || border != 0)
     return error(GL_INVALID_VALUE);
   const std::vector<uint32_t> texels = read_colour_rect(x, y, w, h);
   tex_image(target, level, GLint(internal), w, h, border, &texels);
@@ -83,6 +84,9 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
       return true;
     case GL_TEXTURE_LUMINANCE_SIZE: *out = bits(base == GL_LUMINANCE || base == GL_LUMINANCE_ALPHA); return true;
     case GL_TEXTURE_INTENSITY_SIZE: *out = bits(base == GL_INTENSITY); return true;
+    // (The sized and generic compressed formats: texture_formats.cpp. Colour textures
+    // have no depth or stencil bits and are kept uncompressed.)
+    case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_COMPRESSED: *out = 0; return true;
     default: return error(GL_INVALID_ENUM), false;
   }
 }

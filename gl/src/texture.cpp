@@ -17,7 +17,7 @@ GLenum Context::base_format(GLint internal) {
     case 4: case GL_RGBA: case GL_RGBA8: return GL_RGBA;
     case GL_ALPHA: case GL_ALPHA8: return GL_ALPHA;
     case GL_INTENSITY: case GL_INTENSITY8: return GL_INTENSITY;
-    default: return 0;
+    default: return sized_base_format(internal);  // (texture_formats.cpp)
   }
 }
 
