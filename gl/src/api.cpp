@@ -475,18 +475,21 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
           w > velocity::gl::kMaxTextureSize || h > velocity::gl::kMaxTextureSize)
           return c.error(GL_INVALID_VALUE);
       if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
-      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
+      // Null pixels: the ranges are still checked (tex_sub_image), nothing is written.
+      auto texels = velocity::gl::unpack_rgba(format, type, pixels ? w : 0, pixels ? h : 0, c.pixels.unpack, pixels,
+                                              c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
-      if (!pixels) return;
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
       compiled([=](Context& k) { k.tex_sub_image(target, level, x, y, w, h, *data); }));
 }
 
 void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
-  LIST(c.copy_tex_image(target, level, internal, x, y, w, h, border));
+  LIST(if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);  // (the 1-D and 3-D targets have their own calls)
+       c.copy_tex_image(target, level, internal, x, y, w, h, border));
 }
 void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h) {
-  LIST(c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
+  LIST(if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
+       c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
 }
 void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid* pixels) {
   NOW(c.get_tex_image(target, level, format, type, pixels));

@@ -7,7 +7,8 @@
  * their sizes, pGL at 8 bits: the spec lets each choose). Values: which components
  * glGetTexLevelParameteriv says have bits (zero or not: the counts are the
  * implementation's), the base format's components in glGetTexImage, GL_PROXY_TEXTURE_2D
- * of a sized format, the errors (a packed type of another number of components). */
+ * of a sized format, the errors (a packed type of another number of components; the
+ * 2-D copies to another target, a sub-image without pixels past the end). */
 #include "harness.h"
 
 static const GLenum formats[] = {
@@ -178,6 +179,14 @@ int main(int argc, char** argv) {
   conf_value("bad_internal", glGetError());
   glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA2 + 100, 0, 0, 4, 4, 0);
   conf_value("copy_bad_internal", glGetError());
+  /* (Not formats: the targets of the 2-D copies, the ranges of a sub-image without pixels.) */
+  glCopyTexImage2D(GL_TEXTURE_1D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  conf_value("copy2d_on_1d", glGetError());
+  glCopyTexSubImage2D(GL_TEXTURE_1D, 0, 0, 0, 0, 0, 4, 1);
+  conf_value("copy_sub2d_on_1d", glGetError());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, full);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 2, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+  conf_value("sub_null_past_end", glGetError());
   glDeleteTextures(1, &tex);
   return conf_end();
 }
