@@ -34,6 +34,12 @@ class Texture {
     // A 3-D texture's levels (OpenGL's GL_TEXTURE_3D) are `depth` slices of width x
     // height texels one after another, slice 0 at r = 0; every other texture has 1.
     int depth = 1;
+    // OpenGL's texture border (0 or 1): `texels` then hold the image with a ring of
+    // border texels around it — (width + 2) x (height + 2), times depth + 2 slices for a
+    // 3-D texture — and width, height and depth are the image's inside the ring. The
+    // sampler reads the ring where clamp-to-border would read the border colour; the
+    // other wrap modes never reach it.
+    int border = 0;
   };
 
   // Builds the texture and its whole mip chain down to 1x1, each level the 2x2 box
@@ -45,6 +51,7 @@ class Texture {
   // chain may stop before 1x1). Throws velocity::Error for no level, an empty level,
   // a size that does not halve, or a texel count that does not match the size. A 3-D
   // texture (`volume`: sampled with r too, whatever its depth) halves in depth too.
+  // Every level has the same border.
   explicit Texture(std::vector<Level> levels, bool volume = false);
 
   int width() const { return levels_[0].width; }
@@ -72,7 +79,7 @@ class Texture {
 // its texel. OpenGL's box filter (Mesa's glGenerateMipmap): the one mip-map builder of
 // Texture(const Image&), pGL's GL_GENERATE_MIPMAP and gluBuild2DMipmaps. A level of
 // depth > 1 halves in depth too, each texel the average of a 2x2x2 block ((sum + 4) / 8;
-// a side of 1 repeats its texels).
+// a side of 1 repeats its texels). `above` has no border (Level::border 0).
 Texture::Level next_mip_level(const Texture::Level& above);
 
 // Reads an image file as a texture: PCX by the extension, everything else through

@@ -238,10 +238,15 @@ inline constexpr int fixed_varyings(bool textured, bool fog, bool volume = false
 // A texture as the SIMD sampler reads it: each mip level's texels, size and the
 // addressing, resolved once per draw.
 struct SamplerLevel {
-  const uint32_t* texels = nullptr;
+  const uint32_t* texels = nullptr;  // texel (0, 0) of the image (inside a border)
   int32_t width = 1, height = 1;
   int32_t depth = 1;  // a 3-D texture's slices (SamplerView::volume)
   const uint64_t* linear = nullptr;  // srgb views: Texture::linear_levels(), RGBA16
+  // Rows are `stride` texels apart, slices `rows` rows apart: the image's width and
+  // height, two more each with a border (Texture::Level::border), whose texels -1 and
+  // width (height, depth) clamp-to-border then reads instead of the border colour.
+  int32_t stride = 1, rows = 1;
+  bool bordered = false;
 };
 struct SamplerView {
   static constexpr int kMaxLevels = 17;  // 65536 down to 1

@@ -77,8 +77,9 @@ HWY_INLINE VF prepare_coord(VF u, Wrap w) {
 }
 
 // A texel index from prepare_coord's range into [0, n); `outside` marks indices that
-// clamp-to-border replaces by the border colour.
-HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
+// clamp-to-border replaces by the border colour — unless the level has a border
+// (`bordered`), whose texels -1 and n clamp-to-border reads instead.
+HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside, bool bordered) {
   const DI di;
   const VI vn = hn::Set(di, n), zero = hn::Zero(di), last = hn::Set(di, n - 1);
   switch (w) {
@@ -92,6 +93,7 @@ HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
       return hn::IfThenElse(hn::Lt(i, vn), i, hn::Sub(hn::Sub(n2, hn::Set(di, 1)), i));
     }
     case Wrap::ClampToBorder:
+      if (bordered) return hn::Min(hn::Max(i, hn::Set(di, -1)), vn);
       outside = hn::Or(outside, hn::Or(hn::Lt(i, zero), hn::Gt(i, last)));
       return hn::Min(hn::Max(i, zero), last);
     default: return hn::Min(hn::Max(i, zero), last);
@@ -139,7 +141,7 @@ HWY_INLINE Rgba unpack_linear(const uint64_t* texels, VI index) {
 template <bool kAlpha>
 HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
   const DI di;
-  const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.width)), x);
+  const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.stride)), x);
   if (s.srgb) return unpack_linear<kAlpha>(l.linear, index);
   return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index)));
 }
@@ -151,8 +153,8 @@ HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v)
   const VF x = hn::Mul(prepare_coord(u, s.wrap_s), hn::Set(d, float(l.width)));
   const VF y = hn::Mul(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)));
   MI outside = hn::FirstN(di, 0);
-  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside);
-  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside);
+  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside, l.bordered);
+  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside, l.bordered);
   Rgba c = fetch<kAlpha>(s, l, ix, iy);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
   return c;
@@ -170,8 +172,9 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const VI x0i = hn::ConvertTo(di, fx), y0i = hn::ConvertTo(di, fy);
   const VI one = hn::Set(di, 1);
   MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
-  const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1);
-  const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1);
+  const bool rb = l.bordered;
+  const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0, rb), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1, rb);
+  const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0, rb), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1, rb);
   Rgba t00 = fetch<kAlpha>(s, l, x0, y0), t10 = fetch<kAlpha>(s, l, x1, y0);
   Rgba t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch<kAlpha>(s, l, x1, y1);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
@@ -194,7 +197,7 @@ HWY_INLINE Rgba texel_filter(const SamplerView& s, const SamplerLevel& l, VF u, 
 template <bool kAlpha>
 HWY_INLINE Rgba fetch3(const SamplerView& s, const SamplerLevel& l, VI x, VI y, VI z) {
   const DI di;
-  return fetch<kAlpha>(s, l, x, hn::Add(hn::Mul(z, hn::Set(di, l.height)), y));
+  return fetch<kAlpha>(s, l, x, hn::Add(hn::Mul(z, hn::Set(di, l.rows)), y));
 }
 
 template <bool kAlpha>
@@ -204,7 +207,7 @@ HWY_INLINE Rgba nearest3(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   MI outside = hn::FirstN(di, 0);
   auto index = [&](VF c, Wrap wrap, int32_t n) {
     const VF x = hn::Mul(prepare_coord(c, wrap), hn::Set(d, float(n)));
-    return wrap_index(hn::ConvertTo(di, hn::Floor(x)), n, wrap, outside);
+    return wrap_index(hn::ConvertTo(di, hn::Floor(x)), n, wrap, outside, l.bordered);
   };
   const VI ix = index(u, s.wrap_s, l.width), iy = index(v, s.wrap_t, l.height), iz = index(w, s.wrap_r, l.depth);
   Rgba c = fetch3<kAlpha>(s, l, ix, iy, iz);
@@ -227,7 +230,7 @@ HWY_INLINE Rgba linear3(const SamplerView& s, const SamplerLevel& l, VF u, VF v,
     const VF fx = hn::Floor(x);
     const VI i = hn::ConvertTo(di, fx);
     Axis a{i, i, hn::FirstN(di, 0), hn::FirstN(di, 0), hn::Sub(x, fx)};
-    a.i0 = wrap_index(i, n, wrap, a.out0), a.i1 = wrap_index(hn::Add(i, hn::Set(di, 1)), n, wrap, a.out1);
+    a.i0 = wrap_index(i, n, wrap, a.out0, l.bordered), a.i1 = wrap_index(hn::Add(i, hn::Set(di, 1)), n, wrap, a.out1, l.bordered);
     return a;
   };
   const Axis ax = axis(u, s.wrap_s, l.width), ay = axis(v, s.wrap_t, l.height), az = axis(w, s.wrap_r, l.depth);

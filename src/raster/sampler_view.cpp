@@ -6,13 +6,23 @@
 namespace velocity::raster {
 
 namespace {
+// Where level l's image starts in its texels: past the border ring, if it has one.
+size_t image_origin(const Texture::Level& l, bool volume) {
+  const size_t b = size_t(l.border), stride = size_t(l.width) + 2 * b, rows = size_t(l.height) + 2 * b;
+  return (volume ? b * rows * stride : 0) + b * stride + b;
+}
+
 void set_levels(SamplerView& s, const Texture& t) {
   s.texture = &t;
   const auto& levels = t.levels();
   s.level_count = int(std::min<size_t>(levels.size(), SamplerView::kMaxLevels));
   for (int i = 0; i < s.level_count; ++i) {
     const Texture::Level& l = levels[size_t(i)];
-    s.levels[i] = {l.texels.data(), l.width, l.height, l.depth};
+    SamplerLevel& v = s.levels[i];
+    v.texels = l.texels.data() + image_origin(l, t.volume());
+    v.width = l.width, v.height = l.height, v.depth = l.depth;
+    v.stride = l.width + 2 * l.border, v.rows = l.height + 2 * l.border;
+    v.bordered = l.border > 0;
   }
   s.volume = t.volume();
 }
@@ -42,7 +52,8 @@ void SamplerView::read_as_srgb(bool on) {
   srgb = on && texture;
   if (!srgb) return;
   const auto& linear = texture->linear_levels();
-  for (int i = 0; i < level_count; ++i) levels[i].linear = linear[size_t(i)].data();
+  for (int i = 0; i < level_count; ++i)
+    levels[i].linear = linear[size_t(i)].data() + image_origin(texture->levels()[size_t(i)], texture->volume());
 }
 
 }  // namespace velocity::raster

@@ -62,10 +62,14 @@ Texture::Texture(std::vector<Level> levels, bool volume)
     : levels_(std::move(levels)), linear_(std::make_shared<LinearCache>()), volume_(volume) {
   if (levels_.empty()) throw Error("texture: no levels");
   if (!volume_ && levels_[0].depth != 1) throw Error("texture: a 2-D texture with slices");
+  const int b = levels_[0].border;
+  if (b != 0 && b != 1) throw Error("texture: a border of " + std::to_string(b) + " texels (0 or 1)");
   for (size_t i = 0; i < levels_.size(); ++i) {
     const Level& l = levels_[i];
+    if (l.border != b) throw Error("texture: level " + std::to_string(i) + " has another border than level 0");
+    const size_t slices = size_t(l.depth) + (volume_ ? 2 * size_t(b) : 0);
     if (l.width <= 0 || l.height <= 0 || l.depth <= 0 || l.width > 65536 || l.height > 65536 || l.depth > 65536 ||
-        l.texels.size() != size_t(l.width) * size_t(l.height) * size_t(l.depth))
+        l.texels.size() != size_t(l.width + 2 * b) * size_t(l.height + 2 * b) * slices)
       throw Error("texture: level " + std::to_string(i) + " is empty or its texels do not match its size");
     if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) || l.height != std::max(1, levels_[i - 1].height / 2) ||
                   l.depth != std::max(1, levels_[i - 1].depth / 2)))

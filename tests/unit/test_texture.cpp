@@ -392,3 +392,45 @@ TEST(Texture3D, SlicesMustMatchTheSizeAndHalve) {
   EXPECT_THROW(Texture({volume_level(4, 4, 4), volume_level(2, 2, 4)}, true), Error);
   EXPECT_NO_THROW(Texture({volume_level(4, 4, 1), volume_level(2, 2, 1)}, true));
 }
+
+// --- texture borders (Texture::Level::border; OpenGL's border = 1)
+
+TEST(TextureBorder, ClampToBorderReadsTheRingTheOtherModesDoNot) {
+  // A 2x2 image (red 10, 20 / 30, 40) inside a ring of red 200 (left, right columns)
+  // and 100 (top, bottom rows): 4x4 texels.
+  Texture::Level l{2, 2, std::vector<uint32_t>(16), 1, 1};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const bool inside = x > 0 && x < 3 && y > 0 && y < 3;
+      const uint32_t red = inside ? uint32_t(10 * ((y - 1) * 2 + (x - 1) + 1)) : (x == 0 || x == 3) ? 200u : 100u;
+      l.texels[size_t(y) * 4 + x] = red | 0xff000000u;
+    }
+  const Texture t({l});
+  SamplerState s;
+  s.mag = s.min = SamplerState::Texel::Nearest, s.mip = SamplerState::Mip::None;
+  s.border_color = {0, 1, 0, 1};
+  auto red = [&](float u, float v) {
+    float c[4];
+    raster::sample_for_test(SamplerView(t, s), u, v, 0, c);
+    return c[0] * 255;
+  };
+  EXPECT_FALSE(SamplerView(t, s).volume);
+  // Inside: the image, not the ring.
+  EXPECT_NEAR(red(0.25f, 0.25f), 10, 1e-3);
+  EXPECT_NEAR(red(0.75f, 0.75f), 40, 1e-3);
+  // Repeat and clamp-to-edge never read the ring.
+  EXPECT_NEAR(red(1.25f, 0.25f), 10, 1e-3);
+  s.wrap_s = s.wrap_t = Wrap::Clamp;
+  EXPECT_NEAR(red(-0.5f, 0.25f), 10, 1e-3);
+  // Clamp-to-border reads the ring's texels, not the border colour.
+  s.wrap_s = s.wrap_t = Wrap::ClampToBorder;
+  EXPECT_NEAR(red(-0.25f, 0.25f), 200, 1e-3);
+  EXPECT_NEAR(red(0.75f, 1.4f), 100, 1e-3);
+  // Linear at the image's edge blends the last texel and the ring half and half.
+  s.mag = SamplerState::Texel::Linear;
+  EXPECT_NEAR(red(0.0f, 0.25f), (200 + 10) / 2.0, 1e-3);
+  // A border of 2, or levels with different borders, are refused.
+  Texture::Level two = l;
+  two.border = 2;
+  EXPECT_THROW(Texture({two}), Error);
+}
