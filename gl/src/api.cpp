@@ -447,7 +447,7 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
       // nothing is read or kept but the answer, and the call is never compiled.
       const bool proxy = target == GL_PROXY_TEXTURE_2D;
       if (target != GL_TEXTURE_2D && !proxy) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || border != 0 ||
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || border < 0 || border > 1 ||
           !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
       if (proxy) {
@@ -455,9 +455,9 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
         // (A packed type of another number of components: GL_INVALID_OPERATION.)
         if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
         if (!velocity::gl::unpack_rgba(format, type, 0, 0, c.pixels.unpack, nullptr)) return c.error(GL_INVALID_ENUM);
-        return c.proxy_tex_image(level, internal, w, h);
+        return c.proxy_tex_image(level, internal, w, h, border);
       }
-      if (w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level))
+      if (w - 2 * border > (velocity::gl::kMaxTextureSize >> level) || h - 2 * border > (velocity::gl::kMaxTextureSize >> level))
           return c.error(GL_INVALID_VALUE);
       if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
@@ -472,7 +472,7 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
   NOW(
       if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
-          w > velocity::gl::kMaxTextureSize || h > velocity::gl::kMaxTextureSize)
+          w > velocity::gl::kMaxTextureSize + 2 || h > velocity::gl::kMaxTextureSize + 2)
           return c.error(GL_INVALID_VALUE);
       if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       // Null pixels: the ranges are still checked (tex_sub_image), nothing is written.

@@ -20,16 +20,16 @@ void glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
   NOW(
       const bool proxy = target == GL_PROXY_TEXTURE_3D;
       if (target != GL_TEXTURE_3D && !proxy) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || d < 0 || border != 0 ||
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || d < 0 || border < 0 || border > 1 ||
           !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
       if (proxy) {
         if (c.in_begin_error()) return;
         if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
         if (!velocity::gl::unpack_rgba(format, type, 0, 0, c.pixels.unpack, nullptr)) return c.error(GL_INVALID_ENUM);
-        return c.proxy_tex_image_3d(level, internal, w, h, d);
+        return c.proxy_tex_image_3d(level, internal, w, h, d, border);
       }
-      const int max = velocity::gl::kMax3DTextureSize >> level;
+      const int max = (velocity::gl::kMax3DTextureSize >> level) + 2 * border;
       if (w > max || h > max || d > max) return c.error(GL_INVALID_VALUE);
       if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba_3d(format, type, w, h, d, c.pixels.unpack, pixels, c.pixels.transfer);
@@ -43,7 +43,7 @@ void glTexSubImage3D(GLenum target, GLint level, GLint x, GLint y, GLint z, GLsi
                      GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
       if (target != GL_TEXTURE_3D) return c.error(GL_INVALID_ENUM);
-      const int max = velocity::gl::kMax3DTextureSize;
+      const int max = velocity::gl::kMax3DTextureSize + 2;
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || d < 0 || w > max || h > max ||
           d > max)
           return c.error(GL_INVALID_VALUE);

@@ -232,7 +232,20 @@ class Context {
   // The target whose texture the next draws sample (while texturing()).
   GLenum drawn_target() const { return texturing_3d() ? GL_TEXTURE_3D : texturing_1d() ? GL_TEXTURE_1D : GL_TEXTURE_2D; }
   // glTexImage3D(GL_PROXY_TEXTURE_3D): as proxy_tex_image. The arguments were checked.
-  void proxy_tex_image_3d(GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d);
+  void proxy_tex_image_3d(GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d, GLint border = 0);
+  // --- texture borders (texture_border.cpp)
+  // A level's border on each axis: x, and y but for a 1-D texture, and z for a 3-D one.
+  struct BorderAxes {
+    int x, y, z;
+  };
+  static BorderAxes border_axes(GLenum target, int border);
+  // Whether a sub-image at (x, y, z) of w x h x d lies inside level `l` with its border
+  // (GL_INVALID_VALUE if not).
+  static bool sub_image_inside(GLenum target, const Texture::Level& l, GLint x, GLint y, GLint z, GLsizei w, GLsizei h,
+                               GLsizei d);
+  // GL_GENERATE_MIPMAP's next level for a level that may have a border: the image's
+  // box filter, its border ring the new image's edges repeated.
+  static Texture::Level next_level_with_border(const Texture::Level& above, bool volume, bool one_d);
   // glCopyTexSubImage3D: a rectangle of the colour buffer into slice `zoffset`.
   void copy_tex_sub_image_3d(GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei w,
                              GLsizei h);
@@ -243,7 +256,7 @@ class Context {
                           GLsizei h);
   // glTexImage2D(GL_PROXY_TEXTURE_2D): the proxy's level says w x h if such an image
   // fits, else 0 x 0 (texture.cpp). The arguments were checked.
-  void proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h);
+  void proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h, GLint border = 0);
   // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
   bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
   void get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels);

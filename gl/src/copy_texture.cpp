@@ -38,8 +38,10 @@ void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint 
   // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats;
   // an internal format that is none is GL_INVALID_ENUM here (as Mesa, and GL 3's copies).
   if ((internal >= 1 && internal <= 4) || !base_format(GLint(internal))) return error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
-      h > (kMaxTextureSize >> level) || border != 0)
+  // (A border, texture_border.cpp, is copied with the image: the rectangle counts it.)
+  const BorderAxes b = border_axes(target, border);
+  if (level < 0 || level >= kMaxTextureLevels || border < 0 || border > 1 || w - 2 * b.x < 0 || h - 2 * b.y < 0 ||
+      w - 2 * b.x > (kMaxTextureSize >> level) || h - 2 * b.y > (kMaxTextureSize >> level))
     return error(GL_INVALID_VALUE);
   const std::vector<uint32_t> texels = read_colour_rect(x, y, w, h);
   tex_image(target, level, GLint(internal), w, h, border, &texels);
@@ -54,8 +56,7 @@ void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLin
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
   const Texture::Level& l = t->levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
-  if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + w > l.width || int64_t(yoffset) + h > l.height)
-    return error(GL_INVALID_VALUE);
+  if (!sub_image_inside(target, l, xoffset, yoffset, 0, w, h, 1)) return error(GL_INVALID_VALUE);
   tex_sub_image(target, level, xoffset, yoffset, w, h, read_colour_rect(x, y, w, h));
 }
 
@@ -72,11 +73,13 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
   const GLenum base = l.width ? t.internal_format : GLenum(0);
   auto bits = [&](bool has) { return has ? 8 : 0; };
   const bool rgb = base == GL_RGB || base == GL_RGBA;
+  // The sizes count the border (texture_border.cpp).
+  const BorderAxes b = border_axes(target, l.border);
   switch (pname) {
-    case GL_TEXTURE_WIDTH: *out = l.width; return true;
-    case GL_TEXTURE_HEIGHT: *out = l.height; return true;
-    case GL_TEXTURE_DEPTH: *out = l.width ? l.depth : 0; return true;
-    case GL_TEXTURE_BORDER: *out = 0; return true;
+    case GL_TEXTURE_WIDTH: *out = l.width ? l.width + 2 * b.x : 0; return true;
+    case GL_TEXTURE_HEIGHT: *out = l.width ? l.height + 2 * b.y : 0; return true;
+    case GL_TEXTURE_DEPTH: *out = l.width ? l.depth + 2 * b.z : 0; return true;
+    case GL_TEXTURE_BORDER: *out = l.width ? l.border : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *out = GLint(l.width ? t.internal_format : 1); return true;  // (GL_TEXTURE_COMPONENTS)
     case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: *out = bits(rgb); return true;
     case GL_TEXTURE_ALPHA_SIZE:
@@ -108,18 +111,23 @@ void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum ty
   const TextureObject& t = *tp;
   const Texture::Level& l = t.levels[size_t(level)];
   if (!pixels || l.width == 0) return;
+  // The image with its border (texture_border.cpp): a 1-D one's is its middle row's ends.
+  const BorderAxes ring = border_axes(target, l.border);
+  const int width = l.width + 2 * ring.x, height = l.height + 2 * ring.y, depth = l.depth + 2 * ring.z;
+  const size_t stride = size_t(l.width) + 2 * size_t(l.border), rows = size_t(l.height) + 2 * size_t(l.border);
+  const size_t first_row = size_t(l.border - ring.y);
   const size_t tsize = type == GL_FLOAT ? 4 : 1, align = size_t(std::max(pack_alignment, 1));
-  const size_t row_bytes = (size_t(l.width) * size_t(comps) * tsize + align - 1) / align * align;
+  const size_t row_bytes = (size_t(width) * size_t(comps) * tsize + align - 1) / align * align;
   // A 3-D texture's slices one after another, each of GL_PACK_IMAGE_HEIGHT rows (or its
   // height), GL_PACK_SKIP_IMAGES of them skipped first.
   const PixelStore& pack = this->pixels.pack;
-  const size_t image_bytes = row_bytes * size_t(pack.image_height > 0 ? pack.image_height : l.height);
+  const size_t image_bytes = row_bytes * size_t(pack.image_height > 0 ? pack.image_height : height);
   uint8_t* const first = static_cast<uint8_t*>(pixels) + size_t(target == GL_TEXTURE_3D ? pack.skip_images : 0) * image_bytes;
   const GLenum base = t.internal_format;
-  for (int z = 0; z < l.depth; ++z)
-    for (int y = 0; y < l.height; ++y)
-      for (int x = 0; x < l.width; ++x) {
-        const uint32_t p = l.texels[(size_t(z) * size_t(l.height) + size_t(y)) * size_t(l.width) + size_t(x)];
+  for (int z = 0; z < depth; ++z)
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const uint32_t p = l.texels[(size_t(z) * rows + first_row + size_t(y)) * stride + size_t(x)];
         float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
         // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
         // intensity as R), then the format's.

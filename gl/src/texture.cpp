@@ -97,14 +97,22 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
   const GLenum base = base_format(internal);
   if (!base) return error(GL_INVALID_VALUE);
   const int max = target == GL_TEXTURE_3D ? kMax3DTextureSize : kMaxTextureSize;
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || depth < 0 || w > (max >> level) ||
-      h > (max >> level) || depth > (max >> level) || border != 0)
+  if (border < 0 || border > 1) return error(GL_INVALID_VALUE);
+  // With a border (texture_border.cpp) the sizes given count it: the image is inside.
+  const BorderAxes b = border_axes(target, border);
+  const GLsizei iw = w - 2 * b.x, ih = h - 2 * b.y, id = depth - 2 * b.z;
+  if (level < 0 || level >= kMaxTextureLevels || iw < 0 || ih < 0 || id < 0 || iw > (max >> level) ||
+      ih > (max >> level) || id > (max >> level) || (border && (iw == 0 || ih == 0 || id == 0)))
     return error(GL_INVALID_VALUE);
   TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
-  l.width = w, l.height = h, l.depth = depth;
-  l.texels.assign(size_t(w) * h * size_t(depth), 0xff000000u);
-  if (rgba && rgba->size() == l.texels.size()) l.texels = *rgba;
+  l.width = iw, l.height = ih, l.depth = id, l.border = border;
+  // A 1-D image's border has no rows: the one row is kept three times (the sampler
+  // never reads t outside it).
+  const size_t rows = size_t(ih) + 2 * size_t(border);
+  l.texels.assign(size_t(w) * rows * size_t(depth), 0xff000000u);
+  if (rgba && rgba->size() * rows == l.texels.size() * size_t(h))
+    for (size_t k = 0; k < l.texels.size(); ++k) l.texels[k] = (*rgba)[b.y == border ? k : k % size_t(w)];
   if (level == 0) {
     t.internal_format = base;
     t.format = base == GL_RGB         ? TexFormat::Rgb
@@ -120,11 +128,12 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
   changed();
 }
 
-void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h) {
-  const bool fits = w <= (kMaxTextureSize >> level) && h <= (kMaxTextureSize >> level);
+void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h, GLint border) {
+  const GLsizei iw = w - 2 * border, ih = h - 2 * border;
+  const bool fits = iw >= 0 && ih >= 0 && iw <= (kMaxTextureSize >> level) && ih <= (kMaxTextureSize >> level);
   TextureObject& p = texture_.proxy;
   Texture::Level& l = p.levels[size_t(level)];
-  l.width = fits ? w : 0, l.height = fits ? h : 0;
+  l.width = fits ? iw : 0, l.height = fits ? ih : 0, l.border = fits ? border : 0;
   if (level == 0) p.internal_format = fits ? base_format(internal) : GLenum(0);
 }
 
@@ -137,14 +146,16 @@ void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsize
   TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
-  if (x < 0 || y < 0 || z < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height || int64_t(z) + depth > l.depth)
-    return error(GL_INVALID_VALUE);
+  if (!sub_image_inside(target, l, x, y, z, w, h, depth)) return error(GL_INVALID_VALUE);
   if (rgba.size() != size_t(w) * size_t(h) * size_t(depth)) return;
   const GLenum base = t.internal_format;
+  // (x, y, z) count from the image's first texel: the border, if any, is at -1.
+  const int bb = l.border, bz = border_axes(target, bb).z;
+  const size_t stride = size_t(l.width) + 2 * size_t(bb), rows = size_t(l.height) + 2 * size_t(bb);
   for (int slice = 0; slice < depth; ++slice)
     for (int row = 0; row < h; ++row)
       for (int col = 0; col < w; ++col) {
-        const size_t at = (size_t(z + slice) * l.height + size_t(y + row)) * l.width + size_t(x + col);
+        const size_t at = (size_t(z + bz + slice) * rows + size_t(y + bb + row)) * stride + size_t(x + bb + col);
         l.texels[at] = stored_texel(base, rgba[(size_t(slice) * h + size_t(row)) * w + size_t(col)]);
       }
   t.dirty = true;
@@ -235,10 +246,12 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     const Texture::Level& base = t.levels[first];
     if (base.width == 0 || base.height == 0 || base.depth == 0) return nullptr;
     const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
+    const bool volume = t.target == GL_TEXTURE_3D;
     if (t.generate_mipmap) {
       for (size_t i = first + 1;
            i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1 || t.levels[i - 1].depth > 1); ++i)
-        t.levels[i] = next_mip_level(t.levels[i - 1]);
+        t.levels[i] = t.levels[i - 1].border ? next_level_with_border(t.levels[i - 1], volume, t.target == GL_TEXTURE_1D)
+                                             : next_mip_level(t.levels[i - 1]);
     }
     std::vector<Texture::Level> levels{base};
     if (mip) {
@@ -247,13 +260,13 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
         if (i >= t.levels.size()) return nullptr;
         const Texture::Level& l = t.levels[i];
         if (l.width != std::max(1, levels.back().width / 2) || l.height != std::max(1, levels.back().height / 2) ||
-            l.depth != std::max(1, levels.back().depth / 2))
+            l.depth != std::max(1, levels.back().depth / 2) || l.border != base.border)
           return nullptr;  // an incomplete mip chain
         levels.push_back(l);
       }
     }
     try {
-      t.built = std::make_shared<const Texture>(std::move(levels), t.target == GL_TEXTURE_3D);
+      t.built = std::make_shared<const Texture>(std::move(levels), volume);
     } catch (const std::exception&) {
       return nullptr;
     }

@@ -11,12 +11,13 @@
 
 namespace velocity::gl {
 
-void Context::proxy_tex_image_3d(GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d) {
+void Context::proxy_tex_image_3d(GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d, GLint border) {
   const int max = kMax3DTextureSize >> level;
-  const bool fits = w <= max && h <= max && d <= max;
+  w -= 2 * border, h -= 2 * border, d -= 2 * border;
+  const bool fits = w >= 0 && h >= 0 && d >= 0 && w <= max && h <= max && d <= max;
   TextureObject& p = texture_.proxy_3d;
   Texture::Level& l = p.levels[size_t(level)];
-  l.width = fits ? w : 0, l.height = fits ? h : 0, l.depth = fits ? d : 0;
+  l.width = fits ? w : 0, l.height = fits ? h : 0, l.depth = fits ? d : 0, l.border = fits ? border : 0;
   if (level == 0) p.internal_format = fits ? base_format(internal) : GLenum(0);
 }
 
@@ -27,9 +28,7 @@ void Context::copy_tex_sub_image_3d(GLint level, GLint xoffset, GLint yoffset, G
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
   const Texture::Level& l = t->levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
-  if (xoffset < 0 || yoffset < 0 || zoffset < 0 || int64_t(xoffset) + w > l.width || int64_t(yoffset) + h > l.height ||
-      zoffset >= l.depth)
-    return error(GL_INVALID_VALUE);
+  if (!sub_image_inside(GL_TEXTURE_3D, l, xoffset, yoffset, zoffset, w, h, 1)) return error(GL_INVALID_VALUE);
   tex_sub_image(GL_TEXTURE_3D, level, xoffset, yoffset, w, h, read_colour_rect(x, y, w, h), zoffset, 1);
 }
 
