@@ -767,12 +767,14 @@ const GLubyte* glGetString(GLenum name) {
     // The extensions whose whole functionality pGL has: token-only ones (GL_ADD, NPOT
     // sizes, BGR/BGRA pixels, GL_RESCALE_NORMAL, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT,
     // GL 1.4's blending and multi-draws) and GL 1.5's buffer objects and occlusion
-    // queries under their ARB names (api_buffers.cpp).
+    // queries under their ARB names (api_buffers.cpp); GL 1.2's 3-D textures under
+    // GL_EXT_texture3D's names (api_texture_3d.cpp).
     case GL_EXTENSIONS:
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
           "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
-          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query "
+          "GL_EXT_texture3D ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

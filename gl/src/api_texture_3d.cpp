@@ -62,4 +62,14 @@ void glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffse
        c.copy_tex_sub_image_3d(level, xoffset, yoffset, zoffset, x, y, w, h));
 }
 
+// GL_EXT_texture3D's names (the extension GL 1.2 took in whole).
+void glTexImage3DEXT(GLenum target, GLint level, GLenum internal, GLsizei w, GLsizei h, GLsizei d, GLint border,
+                     GLenum format, GLenum type, const GLvoid* pixels) {
+  glTexImage3D(target, level, GLint(internal), w, h, d, border, format, type, pixels);
+}
+void glTexSubImage3DEXT(GLenum target, GLint level, GLint x, GLint y, GLint z, GLsizei w, GLsizei h, GLsizei d,
+                        GLenum format, GLenum type, const GLvoid* pixels) {
+  glTexSubImage3D(target, level, x, y, z, w, h, d, format, type, pixels);
+}
+
 }  // extern "C"

@@ -1011,6 +1011,11 @@ GLAPI void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset,
                                       const GLvoid *pixels);
 GLAPI void GLAPIENTRY glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
                                           GLint x, GLint y, GLsizei width, GLsizei height);
+GLAPI void GLAPIENTRY glTexImage3DEXT(GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height,
+                                      GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glTexSubImage3DEXT(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                                         GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                                         const GLvoid *pixels);
 
 /* One-dimensional evaluators (glMap1, glEvalCoord1, glMapGrid1, glEvalMesh1) */
 #define GL_MAP1_COLOR_4 0x0D90
