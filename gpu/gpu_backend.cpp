@@ -1186,6 +1186,9 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
     const SamplerState& ss = state.texture.sampler;
     if (state.texture.texture && (ss.lod_bias != 0 || ss.min_lod > -1000 || ss.max_lod < 1000))
       throw Error("the GPU backend does not apply the texture's level-of-detail bias or clamp yet");
+    if (state.texture.texture && state.texture.texture->volume()) throw Error("the GPU backend does not sample 3-D textures yet");
+    if (state.texture.texture && state.texture.texture->levels()[0].border)
+      throw Error("the GPU backend does not sample texture borders yet");
   }
   stats_.objects++;
   if (primitives == 0) return;

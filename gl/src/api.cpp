@@ -457,7 +457,7 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
       // nothing is read or kept but the answer, and the call is never compiled.
       const bool proxy = target == GL_PROXY_TEXTURE_2D;
       if (target != GL_TEXTURE_2D && !proxy) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || border != 0 ||
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || border < 0 || border > 1 ||
           !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
       if (proxy) {
@@ -465,10 +465,11 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
         // (A packed type of another number of components: GL_INVALID_OPERATION.)
         if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
         if (!velocity::gl::unpack_rgba(format, type, 0, 0, c.pixels.unpack, nullptr)) return c.error(GL_INVALID_ENUM);
-        return c.proxy_tex_image(level, internal, w, h);
+        return c.proxy_tex_image(level, internal, w, h, border);
       }
-      if (w > (velocity::gl::kMaxTextureSize >> level) || h > (velocity::gl::kMaxTextureSize >> level))
+      if (w - 2 * border > (velocity::gl::kMaxTextureSize >> level) || h - 2 * border > (velocity::gl::kMaxTextureSize >> level))
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
@@ -481,20 +482,24 @@ void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GL
   NOW(
       if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
-          w > velocity::gl::kMaxTextureSize || h > velocity::gl::kMaxTextureSize)
+          w > velocity::gl::kMaxTextureSize + 2 || h > velocity::gl::kMaxTextureSize + 2)
           return c.error(GL_INVALID_VALUE);
-      auto texels = velocity::gl::unpack_rgba(format, type, w, h, c.pixels.unpack, pixels, c.pixels.transfer);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
+      // Null pixels: the ranges are still checked (tex_sub_image), nothing is written.
+      auto texels = velocity::gl::unpack_rgba(format, type, pixels ? w : 0, pixels ? h : 0, c.pixels.unpack, pixels,
+                                              c.pixels.transfer);
       if (!texels) return c.error(GL_INVALID_ENUM);
-      if (!pixels) return;
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
       compiled([=](Context& k) { k.tex_sub_image(target, level, x, y, w, h, *data); }));
 }
 
 void glCopyTexImage2D(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
-  LIST(c.copy_tex_image(target, level, internal, x, y, w, h, border));
+  LIST(if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);  // (the 1-D and 3-D targets have their own calls)
+       c.copy_tex_image(target, level, internal, x, y, w, h, border));
 }
 void glCopyTexSubImage2D(GLenum target, GLint level, GLint xo, GLint yo, GLint x, GLint y, GLsizei w, GLsizei h) {
-  LIST(c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
+  LIST(if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
+       c.copy_tex_sub_image(target, level, xo, yo, x, y, w, h));
 }
 void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid* pixels) {
   NOW(c.get_tex_image(target, level, format, type, pixels));
@@ -772,7 +777,8 @@ const GLubyte* glGetString(GLenum name) {
     // The extensions whose whole functionality pGL has: token-only ones (GL_ADD, NPOT
     // sizes, BGR/BGRA pixels, GL_RESCALE_NORMAL, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT,
     // GL 1.4's blending and multi-draws) and GL 1.5's buffer objects and occlusion
-    // queries under their ARB names (api_buffers.cpp).
+    // queries under their ARB names (api_buffers.cpp); GL 1.2's 3-D textures under
+    // GL_EXT_texture3D's names (api_texture_3d.cpp).
     // Framebuffer objects and their blit (api_framebuffer.cpp): a line of its own.
     case GL_EXTENSIONS:
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
@@ -782,7 +788,8 @@ const GLubyte* glGetString(GLenum name) {
           "GL_ARB_multitexture "  // a space after each, as Mesa's (piglit's glinfo relies on it)
           "GL_EXT_framebuffer_object GL_EXT_framebuffer_blit "  // (not ARB: docs/gl.md)
           // (multisample.cpp: the default framebuffer's packed depth and stencil pixels)
-          "GL_EXT_packed_depth_stencil ";
+          "GL_EXT_packed_depth_stencil "
+          "GL_EXT_texture3D ";
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

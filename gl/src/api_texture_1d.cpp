@@ -19,9 +19,10 @@ void glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint b
                   const GLvoid* pixels) {
   NOW(
       if (target != GL_TEXTURE_1D) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 ||
-          w > (velocity::gl::kMaxTextureSize >> level) || border != 0 || !Context::base_format(internal))
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || border < 0 || border > 1 ||
+          w - 2 * border > (velocity::gl::kMaxTextureSize >> level) || !Context::base_format(internal))
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, 1, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);
       auto data = std::make_shared<const std::vector<uint32_t>>(std::move(*texels));
@@ -32,8 +33,9 @@ void glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint b
 void glTexSubImage1D(GLenum target, GLint level, GLint x, GLsizei w, GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
       if (target != GL_TEXTURE_1D) return c.error(GL_INVALID_ENUM);
-      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || w > velocity::gl::kMaxTextureSize)
+      if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || w > velocity::gl::kMaxTextureSize + 2)
           return c.error(GL_INVALID_VALUE);
+      if (velocity::gl::check_draw_format(format, type) == GL_INVALID_OPERATION) return c.error(GL_INVALID_OPERATION);
       auto texels = velocity::gl::unpack_rgba(format, type, w, 1, c.pixels.unpack, pixels);
       if (!texels) return c.error(GL_INVALID_ENUM);
       if (!pixels) return;

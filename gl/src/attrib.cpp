@@ -22,6 +22,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.normalize = transform_.normalize, f.rescale_normal = transform_.rescale_normal;
   f.texture_enabled = texture_.enabled, f.texture_bound = texture_.bound;
   f.texture_enabled_1d = texture_.enabled_1d, f.texture_bound_1d = texture_.bound_1d;
+  f.texture_enabled_3d = texture_.enabled_3d, f.texture_bound_3d = texture_.bound_3d;
   f.env_mode = texture_.env_mode, f.env_color = texture_.env_color;
   f.color = color_, f.texcoord = texcoord_, f.normal = normal_, f.edge_flag = edge_flag_;
   f.list_base = lists_.base;
@@ -92,6 +93,7 @@ void Context::pop_attrib() {
     stencil_.test = f.stencil.test;
     texture_.enabled = f.texture_enabled;
     texture_.enabled_1d = f.texture_enabled_1d;
+    texture_.enabled_3d = f.texture_enabled_3d;
     for (int i = 0; i < kMaxClipPlanes; ++i) user_clip.enabled[i] = f.user_clip.enabled[i];
     for (int i = 0; i < 4; ++i) tex_gen_.coords[i].enabled = f.tex_gen.coords[i].enabled;
   }
@@ -114,6 +116,8 @@ void Context::pop_attrib() {
     texture_.bound = f.texture_bound == 0 || texture_.objects.count(f.texture_bound) ? f.texture_bound : 0;
     texture_.enabled_1d = f.texture_enabled_1d;
     texture_.bound_1d = f.texture_bound_1d == 0 || texture_.objects.count(f.texture_bound_1d) ? f.texture_bound_1d : 0;
+    texture_.enabled_3d = f.texture_enabled_3d;
+    texture_.bound_3d = f.texture_bound_3d == 0 || texture_.objects.count(f.texture_bound_3d) ? f.texture_bound_3d : 0;
     texture_.env_mode = f.env_mode, texture_.env_color = f.env_color;
     tex_gen_ = f.tex_gen;
   }

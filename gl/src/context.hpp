@@ -211,24 +211,50 @@ class Context {
   void delete_textures(GLsizei n, const GLuint* ids);
   void bind_texture(GLenum target, GLuint id);
   bool is_texture(GLuint id) const { return texture_.objects.count(id) != 0; }
-  // `rgba` holds width * height texels already converted (see api.cpp); null for a
-  // level with undefined contents.
+  // `rgba` holds width * height (* depth) texels already converted (see api.cpp); null
+  // for a level with undefined contents. `depth`: a 3-D texture's slices.
   void tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
-                 const std::vector<uint32_t>* rgba);
+                 const std::vector<uint32_t>* rgba, GLsizei depth = 1);
   void tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
-                     const std::vector<uint32_t>& rgba);
+                     const std::vector<uint32_t>& rgba, GLint z = 0, GLsizei depth = 1);
   void tex_parameter(GLenum target, GLenum pname, const float* v);
   void tex_env(GLenum target, GLenum pname, const float* v);
   // The internal format glTexImage2D's argument names, or 0 if none.
   static GLenum base_format(GLint internal);
+  // The other sized internal formats of GL 1.1's table and GL 1.3's generic compressed
+  // ones (texture_formats.cpp): their base format, or 0.
+  static GLenum sized_base_format(GLint internal);
   GLint unpack_alignment = 4, pack_alignment = 4;  // glPixelStorei
 
   // --- 1-D textures (texture_1d.cpp)
   // The object bound to `target` (GL_TEXTURE_1D or GL_TEXTURE_2D), or null with
   // GL_INVALID_ENUM.
   TextureObject* target_texture(GLenum target);
-  bool texturing() const { return texture_.enabled || texture_.enabled_1d; }
-  bool texturing_1d() const { return !texture_.enabled && texture_.enabled_1d; }  // 1-D is the one drawn
+  bool texturing() const { return texture_.enabled || texture_.enabled_1d || texture_.enabled_3d; }
+  bool texturing_1d() const { return !texture_.enabled && !texture_.enabled_3d && texture_.enabled_1d; }  // 1-D is the one drawn
+
+  // --- 3-D textures (texture_3d.cpp); api_texture_3d.cpp their C calls
+  bool texturing_3d() const { return texture_.enabled_3d; }  // 3-D is the one drawn
+  // The target whose texture the next draws sample (while texturing()).
+  GLenum drawn_target() const { return texturing_3d() ? GL_TEXTURE_3D : texturing_1d() ? GL_TEXTURE_1D : GL_TEXTURE_2D; }
+  // glTexImage3D(GL_PROXY_TEXTURE_3D): as proxy_tex_image. The arguments were checked.
+  void proxy_tex_image_3d(GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d, GLint border = 0);
+  // --- texture borders (texture_border.cpp)
+  // A level's border on each axis: x, and y but for a 1-D texture, and z for a 3-D one.
+  struct BorderAxes {
+    int x, y, z;
+  };
+  static BorderAxes border_axes(GLenum target, int border);
+  // Whether a sub-image at (x, y, z) of w x h x d lies inside level `l` with its border
+  // (GL_INVALID_VALUE if not).
+  static bool sub_image_inside(GLenum target, const Texture::Level& l, GLint x, GLint y, GLint z, GLsizei w, GLsizei h,
+                               GLsizei d);
+  // GL_GENERATE_MIPMAP's next level for a level that may have a border: the image's
+  // box filter, its border ring the new image's edges repeated.
+  static Texture::Level next_level_with_border(const Texture::Level& above, bool volume, bool one_d);
+  // glCopyTexSubImage3D: a rectangle of the colour buffer into slice `zoffset`.
+  void copy_tex_sub_image_3d(GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei w,
+                             GLsizei h);
 
   // --- copies from the framebuffer, level queries (copy_texture.cpp)
   void copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h, GLint border);
@@ -236,7 +262,7 @@ class Context {
                           GLsizei h);
   // glTexImage2D(GL_PROXY_TEXTURE_2D): the proxy's level says w x h if such an image
   // fits, else 0 x 0 (texture.cpp). The arguments were checked.
-  void proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h);
+  void proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h, GLint border = 0);
   // glGetTexLevelParameteriv: true when *out was set (else GL's error is recorded).
   bool tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out);
   void get_tex_image(GLenum target, GLint level, GLenum format, GLenum type, void* pixels);
@@ -704,13 +730,12 @@ class Context {
   bool stage0_unit1_ = false;  // what the last texture_stages said
   void swap_units();
   // Unit 1's state during glBegin/glEnd (parked there) and its coordinates for a vertex.
-  bool unit1_texturing() const { return parked_unit_.enabled || parked_unit_.enabled_1d; }
+  bool unit1_texturing() const { return parked_unit_.enabled || parked_unit_.enabled_1d || parked_unit_.enabled_3d; }
   Vec4 unit1_texcoord(const Vec4& object, const Vec4& eye) const;
   // The texture stages of a draw from the units (unit 0 live): the enabled units in
   // order, first in PixelState::texture; true when that first one is unit 1.
   bool texture_stages(PixelState& s);
-  bool unit_stage(TextureStage& st, bool enabled, bool enabled_1d, GLuint bound, GLuint bound_1d, GLenum env_mode,
-                  const Vec4& env_color, float lod_bias);
+  bool unit_stage(TextureStage& st, const TextureUnitState& u);
   // The secondary colour of prim_ vertex i as drawn (flat: `provoking`'s), or null.
   const Vec4* secondary_of(uint32_t i, bool back) const {
     return color_sum_on_ ? (back ? &prim_secondary_[i].back : &prim_secondary_[i].front) : nullptr;

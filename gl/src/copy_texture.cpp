@@ -39,11 +39,15 @@ std::vector<uint32_t> Context::read_colour_rect(GLint x, GLint y, GLsizei w, GLs
 void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint x, GLint y, GLsizei w, GLsizei h,
                              GLint border) {
   if (in_begin_error()) return;
+  if (target == GL_TEXTURE_3D) return error(GL_INVALID_ENUM);  // (glCopyTexImage3D does not exist)
   if (!target_texture(target)) return;
-  // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats.
-  if (internal >= 1 && internal <= 4) return error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
-      h > (kMaxTextureSize >> level) || border != 0 || !base_format(GLint(internal)))
+  // GL 1.1, 3.8: unlike glTexImage, the copies do not take 1, 2, 3 or 4 as formats;
+  // an internal format that is none is GL_INVALID_ENUM here (as Mesa, and GL 3's copies).
+  if ((internal >= 1 && internal <= 4) || !base_format(GLint(internal))) return error(GL_INVALID_ENUM);
+  // (A border, texture_border.cpp, is copied with the image: the rectangle counts it.)
+  const BorderAxes b = border_axes(target, border);
+  if (level < 0 || level >= kMaxTextureLevels || border < 0 || border > 1 || w - 2 * b.x < 0 || h - 2 * b.y < 0 ||
+      w - 2 * b.x > (kMaxTextureSize >> level) || h - 2 * b.y > (kMaxTextureSize >> level))
     return error(GL_INVALID_VALUE);
   if (read_framebuffer_incomplete()) return;
   const std::vector<uint32_t> texels = read_colour_rect(x, y, w, h);
@@ -53,20 +57,22 @@ void Context::copy_tex_image(GLenum target, GLint level, GLenum internal, GLint 
 void Context::copy_tex_sub_image(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei w,
                                  GLsizei h) {
   if (in_begin_error()) return;
+  if (target == GL_TEXTURE_3D) return error(GL_INVALID_ENUM);  // (glCopyTexSubImage3D's: texture_3d.cpp)
   const TextureObject* t = target_texture(target);
   if (!t) return;
   if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
   const Texture::Level& l = t->levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
-  if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + w > l.width || int64_t(yoffset) + h > l.height)
-    return error(GL_INVALID_VALUE);
+  if (!sub_image_inside(target, l, xoffset, yoffset, 0, w, h, 1)) return error(GL_INVALID_VALUE);
   if (read_framebuffer_incomplete()) return;
   tex_sub_image(target, level, xoffset, yoffset, w, h, read_colour_rect(x, y, w, h));
 }
 
 bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLint* out) {
   if (in_begin_error()) return false;
-  const TextureObject* tp = target == GL_PROXY_TEXTURE_2D ? &texture_.proxy : target_texture(target);
+  const TextureObject* tp = target == GL_PROXY_TEXTURE_2D   ? &texture_.proxy
+                            : target == GL_PROXY_TEXTURE_3D ? &texture_.proxy_3d
+                                                            : target_texture(target);
   if (!tp) return false;
   if (level < 0 || level >= kMaxTextureLevels) return error(GL_INVALID_VALUE), false;
   const TextureObject& t = *tp;
@@ -75,10 +81,13 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
   const GLenum base = l.width ? t.internal_format : GLenum(0);
   auto bits = [&](bool has) { return has ? 8 : 0; };
   const bool rgb = base == GL_RGB || base == GL_RGBA;
+  // The sizes count the border (texture_border.cpp).
+  const BorderAxes b = border_axes(target, l.border);
   switch (pname) {
-    case GL_TEXTURE_WIDTH: *out = l.width; return true;
-    case GL_TEXTURE_HEIGHT: *out = l.height; return true;
-    case GL_TEXTURE_BORDER: *out = 0; return true;
+    case GL_TEXTURE_WIDTH: *out = l.width ? l.width + 2 * b.x : 0; return true;
+    case GL_TEXTURE_HEIGHT: *out = l.width ? l.height + 2 * b.y : 0; return true;
+    case GL_TEXTURE_DEPTH: *out = l.width ? l.depth + 2 * b.z : 0; return true;
+    case GL_TEXTURE_BORDER: *out = l.width ? l.border : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *out = GLint(l.width ? t.internal_format : 1); return true;  // (GL_TEXTURE_COMPONENTS)
     case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: *out = bits(rgb); return true;
     case GL_TEXTURE_ALPHA_SIZE:
@@ -86,6 +95,9 @@ bool Context::tex_level_parameter(GLenum target, GLint level, GLenum pname, GLin
       return true;
     case GL_TEXTURE_LUMINANCE_SIZE: *out = bits(base == GL_LUMINANCE || base == GL_LUMINANCE_ALPHA); return true;
     case GL_TEXTURE_INTENSITY_SIZE: *out = bits(base == GL_INTENSITY); return true;
+    // (The sized and generic compressed formats: texture_formats.cpp. Colour textures
+    // have no depth or stencil bits and are kept uncompressed.)
+    case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: case GL_TEXTURE_COMPRESSED: *out = 0; return true;
     default: return error(GL_INVALID_ENUM), false;
   }
 }
@@ -108,35 +120,46 @@ void Context::get_tex_image(GLenum target, GLint level, GLenum format, GLenum ty
   const TextureObject& t = *tp;
   const Texture::Level& l = t.levels[size_t(level)];
   if (!pixels || l.width == 0) return;
+  // The image with its border (texture_border.cpp): a 1-D one's is its middle row's ends.
+  const BorderAxes ring = border_axes(target, l.border);
+  const int width = l.width + 2 * ring.x, height = l.height + 2 * ring.y, depth = l.depth + 2 * ring.z;
+  const size_t stride = size_t(l.width) + 2 * size_t(l.border), rows = size_t(l.height) + 2 * size_t(l.border);
+  const size_t first_row = size_t(l.border - ring.y);
   const size_t tsize = type == GL_FLOAT ? 4 : 1, align = size_t(std::max(pack_alignment, 1));
-  const size_t row_bytes = (size_t(l.width) * size_t(comps) * tsize + align - 1) / align * align;
+  const size_t row_bytes = (size_t(width) * size_t(comps) * tsize + align - 1) / align * align;
+  // A 3-D texture's slices one after another, each of GL_PACK_IMAGE_HEIGHT rows (or its
+  // height), GL_PACK_SKIP_IMAGES of them skipped first.
+  const PixelStore& pack = this->pixels.pack;
+  const size_t image_bytes = row_bytes * size_t(pack.image_height > 0 ? pack.image_height : height);
+  uint8_t* const first = static_cast<uint8_t*>(pixels) + size_t(target == GL_TEXTURE_3D ? pack.skip_images : 0) * image_bytes;
   const GLenum base = t.internal_format;
-  for (int y = 0; y < l.height; ++y)
-    for (int x = 0; x < l.width; ++x) {
-      const uint32_t p = l.texels[size_t(y) * size_t(l.width) + size_t(x)];
-      float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
-      // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
-      // intensity as R), then the format's.
-      if (base == GL_LUMINANCE || base == GL_INTENSITY) g = b = 0, a = 1;
-      if (base == GL_LUMINANCE_ALPHA) g = b = 0;
-      if (base == GL_RGB) a = 1;
-      if (base == GL_ALPHA) r = g = b = 0;
-      float c[4] = {r, g, b, a};
-      switch (format) {
-        case GL_BGRA: c[0] = b, c[2] = r; break;
-        case GL_BGR: c[0] = b, c[2] = r; break;
-        case GL_LUMINANCE_ALPHA: c[1] = a; break;
-        case GL_GREEN: c[0] = g; break;
-        case GL_BLUE: c[0] = b; break;
-        case GL_ALPHA: c[0] = a; break;
-        default: break;  // RGBA, RGB, RED, LUMINANCE: as they are
+  for (int z = 0; z < depth; ++z)
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const uint32_t p = l.texels[(size_t(z) * rows + first_row + size_t(y)) * stride + size_t(x)];
+        float r = (p & 0xff) / 255.0f, g = (p >> 8 & 0xff) / 255.0f, b = (p >> 16 & 0xff) / 255.0f, a = (p >> 24) / 255.0f;
+        // GL 1.5's table 6.1: a texture's components as R, G, B, A (luminance and
+        // intensity as R), then the format's.
+        if (base == GL_LUMINANCE || base == GL_INTENSITY) g = b = 0, a = 1;
+        if (base == GL_LUMINANCE_ALPHA) g = b = 0;
+        if (base == GL_RGB) a = 1;
+        if (base == GL_ALPHA) r = g = b = 0;
+        float c[4] = {r, g, b, a};
+        switch (format) {
+          case GL_BGRA: c[0] = b, c[2] = r; break;
+          case GL_BGR: c[0] = b, c[2] = r; break;
+          case GL_LUMINANCE_ALPHA: c[1] = a; break;
+          case GL_GREEN: c[0] = g; break;
+          case GL_BLUE: c[0] = b; break;
+          case GL_ALPHA: c[0] = a; break;
+          default: break;  // RGBA, RGB, RED, LUMINANCE: as they are
+        }
+        uint8_t* dst = first + size_t(z) * image_bytes + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
+        for (int k = 0; k < comps; ++k) {
+          if (type == GL_FLOAT) std::memcpy(dst + 4 * k, &c[k], 4);
+          else dst[k] = uint8_t(c[k] * 255.0f + 0.5f);
+        }
       }
-      uint8_t* dst = static_cast<uint8_t*>(pixels) + size_t(y) * row_bytes + size_t(x) * size_t(comps) * tsize;
-      for (int k = 0; k < comps; ++k) {
-        if (type == GL_FLOAT) std::memcpy(dst + 4 * k, &c[k], 4);
-        else dst[k] = uint8_t(c[k] * 255.0f + 0.5f);
-      }
-    }
 }
 
 }  // namespace velocity::gl

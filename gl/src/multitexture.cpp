@@ -21,6 +21,7 @@ void Context::swap_units() {
   TextureUnitState& p = parked_unit_;
   std::swap(p.enabled, texture_.enabled), std::swap(p.enabled_1d, texture_.enabled_1d);
   std::swap(p.bound, texture_.bound), std::swap(p.bound_1d, texture_.bound_1d);
+  std::swap(p.enabled_3d, texture_.enabled_3d), std::swap(p.bound_3d, texture_.bound_3d);
   std::swap(p.env_mode, texture_.env_mode), std::swap(p.env_color, texture_.env_color);
   std::swap(p.lod_bias, texture_.lod_bias);
   std::swap(p.matrix, transform_.texture), std::swap(p.matrix_identity, transform_.texture_identity);
@@ -79,35 +80,36 @@ bool Context::get_multitexture(GLenum pname, std::vector<double>& out) const {
 void Context::unbind_deleted_unit_texture(GLuint id) {
   if (id == parked_unit_.bound) parked_unit_.bound = 0, changed();
   if (id == parked_unit_.bound_1d) parked_unit_.bound_1d = 0, changed();
+  if (id == parked_unit_.bound_3d) parked_unit_.bound_3d = 0, changed();
 }
 
 Vec4 Context::unit1_texcoord(const Vec4& object, const Vec4& eye) const {
   const TextureUnitState& u = parked_unit_;
   const Vec4 t = u.tex_gen.any() ? generate_texcoord(u.tex_gen, texcoord1_, object, eye) : texcoord1_;
   Vec4 out = u.matrix_identity ? t : u.matrix.back() * t;
-  if (!u.enabled && u.enabled_1d) out.y = 0;  // a 1-D texture reads s alone (texture_1d.cpp)
+  if (!u.enabled && !u.enabled_3d && u.enabled_1d) out.y = 0;  // a 1-D texture reads s alone (texture_1d.cpp)
   return out;
 }
 
 // One unit's stage from its state; false when it does not texture (off, or incomplete).
-bool Context::unit_stage(TextureStage& st, bool enabled, bool enabled_1d, GLuint bound, GLuint bound_1d, GLenum env_mode,
-                         const Vec4& env_color, float lod_bias) {
-  if (!enabled && !enabled_1d) return false;
-  const bool one_d = !enabled;  // GL_TEXTURE_2D takes precedence
-  const GLuint id = one_d ? bound_1d : bound;
-  TextureObject* t = one_d ? &texture_.default_1d : &texture_.default_object;
+bool Context::unit_stage(TextureStage& st, const TextureUnitState& u) {
+  if (!u.enabled && !u.enabled_1d && !u.enabled_3d) return false;
+  // GL_TEXTURE_3D takes precedence, then GL_TEXTURE_2D (texture_3d.cpp, texture_1d.cpp).
+  const bool three_d = u.enabled_3d, one_d = !three_d && !u.enabled;
+  const GLuint id = three_d ? u.bound_3d : one_d ? u.bound_1d : u.bound;
+  TextureObject* t = three_d ? &texture_.default_3d : one_d ? &texture_.default_1d : &texture_.default_object;
   if (id != 0)
     if (auto it = texture_.objects.find(id); it != texture_.objects.end()) t = it->second.get();
   const Texture* tex = texture_for_draw(*t);
   if (!tex) return false;
   st.texture = tex;
   st.format = t->format;
-  st.env = env_mode == GL_REPLACE ? TexEnvMode::Replace
-           : env_mode == GL_DECAL ? TexEnvMode::Decal
-           : env_mode == GL_BLEND ? TexEnvMode::Blend
-           : env_mode == GL_ADD   ? TexEnvMode::Add
-                                  : TexEnvMode::Modulate;
-  st.env_color = env_color;
+  st.env = u.env_mode == GL_REPLACE ? TexEnvMode::Replace
+           : u.env_mode == GL_DECAL ? TexEnvMode::Decal
+           : u.env_mode == GL_BLEND ? TexEnvMode::Blend
+           : u.env_mode == GL_ADD   ? TexEnvMode::Add
+                                    : TexEnvMode::Modulate;
+  st.env_color = u.env_color;
   using T = SamplerState::Texel;
   using Mp = SamplerState::Mip;
   SamplerState& sm = st.sampler;
@@ -128,9 +130,10 @@ bool Context::unit_stage(TextureStage& st, bool enabled, bool enabled_1d, GLuint
   };
   sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
   if (one_d) sm.wrap_t = Wrap::Repeat;  // a 1-D image is one row: t is not read
+  sm.wrap_r = wrap(t->wrap_r);          // (read by 3-D textures only)
   sm.border_color = t->border;
   // GL 1.4: the object's and the unit's bias, their sum clamped to GL_MAX_TEXTURE_LOD_BIAS.
-  const float bias = t->lod_bias + lod_bias;
+  const float bias = t->lod_bias + u.lod_bias;
   sm.lod_bias = bias > -kMaxLodBias ? (bias < kMaxLodBias ? bias : kMaxLodBias) : -kMaxLodBias;
   sm.min_lod = t->min_lod, sm.max_lod = t->max_lod;
   return true;
@@ -144,8 +147,13 @@ bool Context::texture_stages(PixelState& s) {
   bool on[kTextureUnits];
   for (int u = 0; u < kTextureUnits; ++u) {
     const bool live = u == live_unit_;
-    on[u] = live ? unit_stage(stage[u], l.enabled, l.enabled_1d, l.bound, l.bound_1d, l.env_mode, l.env_color, l.lod_bias)
-                 : unit_stage(stage[u], p.enabled, p.enabled_1d, p.bound, p.bound_1d, p.env_mode, p.env_color, p.lod_bias);
+    TextureUnitState live_state;
+    if (live) {
+      live_state.enabled = l.enabled, live_state.enabled_1d = l.enabled_1d, live_state.enabled_3d = l.enabled_3d;
+      live_state.bound = l.bound, live_state.bound_1d = l.bound_1d, live_state.bound_3d = l.bound_3d;
+      live_state.env_mode = l.env_mode, live_state.env_color = l.env_color, live_state.lod_bias = l.lod_bias;
+    }
+    on[u] = unit_stage(stage[u], live ? live_state : p);
   }
   if (on[0]) {
     s.texture = stage[0];
@@ -170,7 +178,7 @@ void Context::restore_units(const AttribFrame& f) {
   TextureUnitState& u = parked_unit_;
   if (m & GL_CURRENT_BIT) texcoord1_ = f.texcoord1, raster_texcoord1_ = f.raster_texcoord1;
   if (m & GL_ENABLE_BIT) {
-    u.enabled = f.unit1.enabled, u.enabled_1d = f.unit1.enabled_1d;
+    u.enabled = f.unit1.enabled, u.enabled_1d = f.unit1.enabled_1d, u.enabled_3d = f.unit1.enabled_3d;
     for (int i = 0; i < 4; ++i) u.tex_gen.coords[i].enabled = f.unit1.tex_gen.coords[i].enabled;
   }
   if (m & GL_TEXTURE_BIT) {

@@ -83,6 +83,12 @@ GLenum check_draw_format(GLenum format, GLenum type);
 std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
                                 const void* data, const PixelTransfer& transfer = {});
 
+// The bytes from one row of a pixel rectangle to the next (GL 1.5 equation 3.11: the
+// row length or width, in groups of `format` and `type`, padded to the alignment
+// unless a component is as large), for formats and types check_draw_format accepted.
+// 3-D images step by this times their image height (texture_3d.cpp).
+size_t pixel_row_bytes(GLenum format, GLenum type, int width, const PixelStore& store);
+
 // glDrawPixels' stencil indices (GL_STENCIL_INDEX): GL_NO_ERROR for the integer types,
 // GL_FLOAT and GL_BITMAP, GL_INVALID_OPERATION for a packed type, else GL_INVALID_ENUM.
 GLenum check_stencil_type(GLenum type);

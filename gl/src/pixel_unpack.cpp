@@ -104,6 +104,13 @@ size_t row_offset(const PixelStore& s, int width, int row, size_t group, size_t 
 
 }  // namespace
 
+size_t pixel_row_bytes(GLenum format, GLenum type, int width, const PixelStore& store) {
+  const Packed p = packed(type);
+  const size_t element = size_t(p.bytes ? p.bytes : type_bytes(type));
+  const size_t group = p.bytes ? element : element * size_t(components(format));
+  return row_offset(store, width, 1, group, element) - row_offset(store, width, 0, group, element);
+}
+
 GLenum check_draw_format(GLenum format, GLenum type) {
   // (GL_BITMAP is for the index formats, which pGL's glDrawPixels does not take.)
   if (type == GL_BITMAP) return GL_INVALID_ENUM;

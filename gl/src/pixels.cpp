@@ -17,6 +17,23 @@ int format_components(GLenum format) {
 }
 
 namespace {
+// unpack_rgba of the other types (GL_BYTE ... GL_INT, the packed ones of GL 1.2):
+// glDrawPixels' reader (pixel_unpack.cpp), then 8 bits a component. nullopt for a type
+// that is no type, or a packed one of another number of components than the format's
+// (check_draw_format).
+std::optional<std::vector<uint32_t>> unpack_rgba_any(GLenum format, GLenum type, int width, int height,
+                                                     const PixelStore& store, const void* data,
+                                                     const PixelTransfer& transfer) {
+  if (check_draw_format(format, type) != GL_NO_ERROR) return std::nullopt;
+  std::vector<uint32_t> out(size_t(width) * size_t(height), 0xff000000u);
+  if (!data) return out;
+  const std::vector<Vec4> rgba = unpack_pixels(format, type, width, height, store, data, transfer);
+  auto byte = [](float f) { return uint32_t(std::lround(f * 255.0f)); };  // (already clamped to [0, 1])
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = byte(rgba[i].x) | byte(rgba[i].y) << 8 | byte(rgba[i].z) << 16 | byte(rgba[i].w) << 24;
+  return out;
+}
+
 // unpack_rgba with glPixelTransfer's scale, bias and maps: each component as a float
 // (a missing colour component 0, alpha 1; luminance to red, green and blue), then the
 // transfer, then the clamp and the 8 bits a texel keeps.
@@ -72,7 +89,7 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
   switch (type) {
     case GL_UNSIGNED_BYTE: tsize = 1; break;
     case GL_FLOAT: tsize = 4; break;
-    default: return std::nullopt;
+    default: return unpack_rgba_any(format, type, width, height, store, data, transfer);
   }
   std::vector<uint32_t> out(size_t(width) * size_t(height), 0xff000000u);
   if (!data) return out;
@@ -121,6 +138,26 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
       }
       out[size_t(y) * width + x] = r | g << 8 | b << 16 | a << 24;
     }
+  return out;
+}
+
+// --- 3-D images (texture_3d.cpp) ---------------------------------------------------
+std::optional<std::vector<uint32_t>> unpack_rgba_3d(GLenum format, GLenum type, int width, int height, int depth,
+                                                    const PixelStore& store, const void* data,
+                                                    const PixelTransfer& transfer) {
+  if (!format_components(format) || check_draw_format(format, type) != GL_NO_ERROR) return std::nullopt;
+  // GL 1.5 section 3.8.1: images of GL_UNPACK_IMAGE_HEIGHT rows (or height), each of
+  // unpack_rgba's rows; GL_UNPACK_SKIP_IMAGES whole images skipped first.
+  const size_t row_bytes = pixel_row_bytes(format, type, width, store);
+  const size_t image_bytes = row_bytes * size_t(store.image_height > 0 ? store.image_height : height);
+  std::vector<uint32_t> out;
+  out.reserve(size_t(width) * size_t(height) * size_t(depth));
+  for (int z = 0; z < depth; ++z) {
+    const void* slice = data ? static_cast<const uint8_t*>(data) + (size_t(store.skip_images) + size_t(z)) * image_bytes : nullptr;
+    auto texels = unpack_rgba(format, type, width, height, store, slice, transfer);
+    if (!texels) return std::nullopt;
+    out.insert(out.end(), texels->begin(), texels->end());
+  }
   return out;
 }
 

@@ -23,4 +23,10 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
                                                  const PixelStore& store, const void* data,
                                                  const PixelTransfer& transfer = {});
 
+// A 3-D image of `depth` such images (glTexImage3D), slice after slice, laid out as
+// `store` says (its image height and skipped images too).
+std::optional<std::vector<uint32_t>> unpack_rgba_3d(GLenum format, GLenum type, int width, int height, int depth,
+                                                    const PixelStore& store, const void* data,
+                                                    const PixelTransfer& transfer = {});
+
 }  // namespace velocity::gl

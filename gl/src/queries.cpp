@@ -98,6 +98,8 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_CURRENT_TEXTURE_COORDS: v4(texcoord_); return true;
     case GL_TEXTURE_BINDING_2D: out = {double(texture_.bound)}; return true;
     case GL_TEXTURE_BINDING_1D: out = {double(texture_.bound_1d)}; return true;
+    case GL_TEXTURE_BINDING_3D: out = {double(texture_.bound_3d)}; return true;
+    case GL_MAX_3D_TEXTURE_SIZE: out = {double(kMax3DTextureSize)}; return true;
     case GL_LIST_BASE: out = {double(lists_.base)}; return true;
     case GL_LIST_INDEX: out = {double(lists_.compiling)}; return true;
     case GL_LIST_MODE: out = {lists_.compiling ? double(lists_.mode) : 0.0}; return true;
@@ -169,6 +171,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
     case GL_COLOR_MATERIAL: return lighting_.color_material;
     case GL_TEXTURE_2D: return texture_.enabled;
     case GL_TEXTURE_1D: return texture_.enabled_1d;
+    case GL_TEXTURE_3D: return texture_.enabled_3d;
     case GL_BLEND: return raster_.blend;
     case GL_COLOR_LOGIC_OP: return raster_.logic_op;
     case GL_LINE_STIPPLE: return raster_.line_stipple;

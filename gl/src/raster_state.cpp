@@ -44,6 +44,7 @@ void Context::enable(GLenum cap, bool on) {
       return;
     case GL_TEXTURE_2D: texture_.enabled = on; break;
     case GL_TEXTURE_1D: texture_.enabled_1d = on; break;
+    case GL_TEXTURE_3D: texture_.enabled_3d = on; break;
     case GL_BLEND: raster_.blend = on; break;
     case GL_COLOR_LOGIC_OP: raster_.logic_op = on; break;
     case GL_LINE_STIPPLE: raster_.line_stipple = on; return;

@@ -47,6 +47,7 @@ constexpr int kMaxLights = 8;
 constexpr int kMaxModelviewDepth = 32, kMaxProjectionDepth = 32, kMaxTextureDepth = 10;
 constexpr int kMaxTextureSize = 4096;
 constexpr int kMaxTextureLevels = 13;  // 4096 down to 1
+constexpr int kMax3DTextureSize = 256;  // GL_MAX_3D_TEXTURE_SIZE: 256^3 RGBA8 is 64 MiB (texture_3d.cpp)
 constexpr float kMaxLodBias = 16;        // GL_MAX_TEXTURE_LOD_BIAS (llvmpipe's)
 constexpr int kMaxListNesting = 64;
 constexpr int kMaxAttribDepth = 16;
@@ -178,6 +179,7 @@ struct TextureObject {
   GLenum internal_format = GL_RGBA;
   GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
   GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
+  GLenum wrap_r = GL_REPEAT;  // GL_TEXTURE_WRAP_R (3-D textures, texture_3d.cpp)
   Vec4 border{0, 0, 0, 0};
   bool generate_mipmap = false;
   int base_level = 0, max_level = 1000;  // GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL
@@ -204,6 +206,15 @@ struct TextureState {
   TextureObject default_1d;  // name 0 on GL_TEXTURE_1D
   float lod_bias = 0;  // GL 1.4's glTexEnv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS)
   TextureObject proxy;  // GL_PROXY_TEXTURE_2D: levels' sizes only, never texels
+  // 3-D textures (texture_3d.cpp): levels of slices in the same objects, sampled at (s, t, r).
+  bool enabled_3d = false;  // GL_TEXTURE_3D (takes precedence over GL_TEXTURE_2D and 1D)
+  GLuint bound_3d = 0;
+  TextureObject default_3d = [] {  // name 0 on GL_TEXTURE_3D
+    TextureObject t;
+    t.target = GL_TEXTURE_3D;
+    return t;
+  }();
+  TextureObject proxy_3d;    // GL_PROXY_TEXTURE_3D
 };
 
 // --- buffer objects (buffer_objects.cpp): GL 1.5's vertex and index data kept by ---
@@ -308,8 +319,8 @@ constexpr int kTextureUnits = 2;  // GL_MAX_TEXTURE_UNITS (the renderer's kMaxTe
 // glTexGen state): the context keeps the active unit's there, for every call that works
 // on "the" unit, and the other one here.
 struct TextureUnitState {
-  bool enabled = false, enabled_1d = false;
-  GLuint bound = 0, bound_1d = 0;
+  bool enabled = false, enabled_1d = false, enabled_3d = false;
+  GLuint bound = 0, bound_1d = 0, bound_3d = 0;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color{0, 0, 0, 0};
   float lod_bias = 0;
@@ -374,6 +385,8 @@ struct AttribFrame {
   GLuint texture_bound = 0;
   bool texture_enabled_1d = false;
   GLuint texture_bound_1d = 0;
+  bool texture_enabled_3d = false;
+  GLuint texture_bound_3d = 0;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color;
   Vec4 color, texcoord;

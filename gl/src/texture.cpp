@@ -17,7 +17,7 @@ GLenum Context::base_format(GLint internal) {
     case 4: case GL_RGBA: case GL_RGBA8: return GL_RGBA;
     case GL_ALPHA: case GL_ALPHA8: return GL_ALPHA;
     case GL_INTENSITY: case GL_INTENSITY8: return GL_INTENSITY;
-    default: return 0;
+    default: return sized_base_format(internal);  // (texture_formats.cpp)
   }
 }
 
@@ -49,24 +49,25 @@ void Context::delete_textures(GLsizei n, const GLuint* ids) {
     if (ids[i] == texture_.bound_1d) texture_.bound_1d = 0, changed();
     unbind_deleted_unit_texture(ids[i]);  // (multitexture.cpp: the other unit)
     if (texture_.objects.count(ids[i])) detach_everywhere(GL_TEXTURE, ids[i]);  // (framebuffer_objects.cpp)
+    if (ids[i] == texture_.bound_3d) texture_.bound_3d = 0, changed();
     texture_.objects.erase(ids[i]);  // draws already recorded keep their built texture
   }
 }
 
 void Context::bind_texture(GLenum target, GLuint id) {
   if (in_begin_error()) return;
-  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D) return error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D && target != GL_TEXTURE_3D) return error(GL_INVALID_ENUM);
   if (id != 0 && !texture_.objects.count(id)) {
     if (texture_.objects.size() >= 65536) return error(GL_OUT_OF_MEMORY);
     texture_.objects[id] = std::make_unique<TextureObject>();  // a name never generated is created on first bind
   }
   if (id != 0) {
-    // A texture is 1-D or 2-D from its first bind on (GL 1.5, 3.8.12).
+    // A texture is 1-D, 2-D or 3-D from its first bind on (GL 1.5, 3.8.12).
     TextureObject& t = *texture_.objects[id];
     if (t.target && t.target != target) return error(GL_INVALID_OPERATION);
     t.target = target;
   }
-  GLuint& bound = target == GL_TEXTURE_2D ? texture_.bound : texture_.bound_1d;
+  GLuint& bound = target == GL_TEXTURE_2D ? texture_.bound : target == GL_TEXTURE_3D ? texture_.bound_3d : texture_.bound_1d;
   if (id != bound) changed();
   bound = id;
 }
@@ -87,21 +88,30 @@ uint32_t stored_texel(GLenum base, uint32_t p) {
 }
 
 void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border,
-                        const std::vector<uint32_t>* rgba) {
+                        const std::vector<uint32_t>* rgba, GLsizei depth) {
   if (in_begin_error()) return;
   TextureObject* tp = target_texture(target);
   if (!tp) return;
   const GLenum base = base_format(internal);
   if (!base) return error(GL_INVALID_VALUE);
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || w > (kMaxTextureSize >> level) ||
-      h > (kMaxTextureSize >> level) || border != 0)
+  const int max = target == GL_TEXTURE_3D ? kMax3DTextureSize : kMaxTextureSize;
+  if (border < 0 || border > 1) return error(GL_INVALID_VALUE);
+  // With a border (texture_border.cpp) the sizes given count it: the image is inside.
+  const BorderAxes b = border_axes(target, border);
+  const GLsizei iw = w - 2 * b.x, ih = h - 2 * b.y, id = depth - 2 * b.z;
+  if (level < 0 || level >= kMaxTextureLevels || iw < 0 || ih < 0 || id < 0 || iw > (max >> level) ||
+      ih > (max >> level) || id > (max >> level) || (border && (iw == 0 || ih == 0 || id == 0)))
     return error(GL_INVALID_VALUE);
   TextureObject& t = *tp;
   texture_writing(t);  // (framebuffer_objects.cpp: an FBO drawing into it writes back first)
   Texture::Level& l = t.levels[size_t(level)];
-  l.width = w, l.height = h;
-  l.texels.assign(size_t(w) * h, 0xff000000u);
-  if (rgba && rgba->size() == l.texels.size()) l.texels = *rgba;
+  l.width = iw, l.height = ih, l.depth = id, l.border = border;
+  // A 1-D image's border has no rows: the one row is kept three times (the sampler
+  // never reads t outside it).
+  const size_t rows = size_t(ih) + 2 * size_t(border);
+  l.texels.assign(size_t(w) * rows * size_t(depth), 0xff000000u);
+  if (rgba && rgba->size() * rows == l.texels.size() * size_t(h))
+    for (size_t k = 0; k < l.texels.size(); ++k) l.texels[k] = (*rgba)[b.y == border ? k : k % size_t(w)];
   if (level == 0) {
     t.internal_format = base;
     t.format = base == GL_RGB         ? TexFormat::Rgb
@@ -118,31 +128,37 @@ void Context::tex_image(GLenum target, GLint level, GLint internal, GLsizei w, G
   changed();
 }
 
-void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h) {
-  const bool fits = w <= (kMaxTextureSize >> level) && h <= (kMaxTextureSize >> level);
+void Context::proxy_tex_image(GLint level, GLint internal, GLsizei w, GLsizei h, GLint border) {
+  const GLsizei iw = w - 2 * border, ih = h - 2 * border;
+  const bool fits = iw >= 0 && ih >= 0 && iw <= (kMaxTextureSize >> level) && ih <= (kMaxTextureSize >> level);
   TextureObject& p = texture_.proxy;
   Texture::Level& l = p.levels[size_t(level)];
-  l.width = fits ? w : 0, l.height = fits ? h : 0;
+  l.width = fits ? iw : 0, l.height = fits ? ih : 0, l.border = fits ? border : 0;
   if (level == 0) p.internal_format = fits ? base_format(internal) : GLenum(0);
 }
 
 void Context::tex_sub_image(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h,
-                            const std::vector<uint32_t>& rgba) {
+                            const std::vector<uint32_t>& rgba, GLint z, GLsizei depth) {
   if (in_begin_error()) return;
   TextureObject* tp = target_texture(target);
   if (!tp) return;
-  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  if (level < 0 || level >= kMaxTextureLevels || w < 0 || h < 0 || depth < 0) return error(GL_INVALID_VALUE);
   TextureObject& t = *tp;
   Texture::Level& l = t.levels[size_t(level)];
   if (l.width == 0) return error(GL_INVALID_OPERATION);
-  if (x < 0 || y < 0 || int64_t(x) + w > l.width || int64_t(y) + h > l.height) return error(GL_INVALID_VALUE);
-  if (rgba.size() != size_t(w) * size_t(h)) return;
+  if (!sub_image_inside(target, l, x, y, z, w, h, depth)) return error(GL_INVALID_VALUE);
+  if (rgba.size() != size_t(w) * size_t(h) * size_t(depth)) return;
   texture_writing(t);
   const GLenum base = t.internal_format;
-  for (int row = 0; row < h; ++row)
-    for (int col = 0; col < w; ++col) {
-      l.texels[size_t(y + row) * l.width + size_t(x + col)] = stored_texel(base, rgba[size_t(row) * w + col]);
-    }
+  // (x, y, z) count from the image's first texel: the border, if any, is at -1.
+  const int bb = l.border, bz = border_axes(target, bb).z;
+  const size_t stride = size_t(l.width) + 2 * size_t(bb), rows = size_t(l.height) + 2 * size_t(bb);
+  for (int slice = 0; slice < depth; ++slice)
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const size_t at = (size_t(z + bz + slice) * rows + size_t(y + bb + row)) * stride + size_t(x + bb + col);
+        l.texels[at] = stored_texel(base, rgba[(size_t(slice) * h + size_t(row)) * w + size_t(col)]);
+      }
   t.dirty = true;
   t.serial = ++fb_.serial;
   changed();
@@ -170,6 +186,11 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT)
         return error(GL_INVALID_ENUM);
       (pname == GL_TEXTURE_WRAP_S ? t.wrap_s : t.wrap_t) = e;
+      break;
+    case GL_TEXTURE_WRAP_R:  // (3-D textures: texture_3d.cpp) the modes s and t take
+      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT)
+        return error(GL_INVALID_ENUM);
+      t.wrap_r = e;
       break;
     case GL_TEXTURE_BORDER_COLOR:
       t.border = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
@@ -225,25 +246,29 @@ const Texture* Context::texture_for_draw(TextureObject& t) {
     if (t.base_level >= kMaxTextureLevels || t.max_level < t.base_level) return nullptr;
     const size_t first = size_t(t.base_level), last = size_t(std::min(t.max_level, kMaxTextureLevels - 1));
     const Texture::Level& base = t.levels[first];
-    if (base.width == 0 || base.height == 0) return nullptr;
+    if (base.width == 0 || base.height == 0 || base.depth == 0) return nullptr;
     const bool mip = t.min_filter != GL_NEAREST && t.min_filter != GL_LINEAR;
+    const bool volume = t.target == GL_TEXTURE_3D;
     if (t.generate_mipmap) {
-      for (size_t i = first + 1; i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1); ++i)
-        t.levels[i] = next_mip_level(t.levels[i - 1]);
+      for (size_t i = first + 1;
+           i < t.levels.size() && (t.levels[i - 1].width > 1 || t.levels[i - 1].height > 1 || t.levels[i - 1].depth > 1); ++i)
+        t.levels[i] = t.levels[i - 1].border ? next_level_with_border(t.levels[i - 1], volume, t.target == GL_TEXTURE_1D)
+                                             : next_mip_level(t.levels[i - 1]);
     }
     std::vector<Texture::Level> levels{base};
     if (mip) {
-      for (size_t i = first + 1; (levels.back().width > 1 || levels.back().height > 1) && i <= last; ++i) {
+      for (size_t i = first + 1; (levels.back().width > 1 || levels.back().height > 1 || levels.back().depth > 1) && i <= last;
+           ++i) {
         if (i >= t.levels.size()) return nullptr;
         const Texture::Level& l = t.levels[i];
-        if (l.width != std::max(1, levels.back().width / 2) ||
-            l.height != std::max(1, levels.back().height / 2))
+        if (l.width != std::max(1, levels.back().width / 2) || l.height != std::max(1, levels.back().height / 2) ||
+            l.depth != std::max(1, levels.back().depth / 2) || l.border != base.border)
           return nullptr;  // an incomplete mip chain
         levels.push_back(l);
       }
     }
     try {
-      t.built = std::make_shared<const Texture>(std::move(levels));
+      t.built = std::make_shared<const Texture>(std::move(levels), volume);
     } catch (const std::exception&) {
       return nullptr;
     }

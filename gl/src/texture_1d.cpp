@@ -14,6 +14,7 @@ TextureObject* Context::target_texture(GLenum target) {
   switch (target) {
     case GL_TEXTURE_2D: id = texture_.bound, name_zero = &texture_.default_object; break;
     case GL_TEXTURE_1D: id = texture_.bound_1d, name_zero = &texture_.default_1d; break;
+    case GL_TEXTURE_3D: id = texture_.bound_3d, name_zero = &texture_.default_3d; break;  // (texture_3d.cpp)
     default: error(GL_INVALID_ENUM); return nullptr;
   }
   if (id == 0) return name_zero;

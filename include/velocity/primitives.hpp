@@ -97,6 +97,7 @@ struct SamplerState {
   Texel min = Texel::Linear;
   Mip mip = Mip::Linear;
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Wrap wrap_r = Wrap::Repeat;  // a 3-D texture's third coordinate (Texture::volume)
   Vec4 border_color{0, 0, 0, 0};  // read outside the texture with Wrap::ClampToBorder
   // OpenGL's level-of-detail controls: the level of detail chosen is the texture's
   // plus lod_bias, then clamped to [min_lod, max_lod] (GL_TEXTURE_LOD_BIAS,

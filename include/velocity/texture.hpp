@@ -31,6 +31,15 @@ class Texture {
   struct Level {
     int width, height;
     std::vector<uint32_t> texels;  // RGBA8, byte 0 red; row 0 is v = 0 (the image's top row)
+    // A 3-D texture's levels (OpenGL's GL_TEXTURE_3D) are `depth` slices of width x
+    // height texels one after another, slice 0 at r = 0; every other texture has 1.
+    int depth = 1;
+    // OpenGL's texture border (0 or 1): `texels` then hold the image with a ring of
+    // border texels around it — (width + 2) x (height + 2), times depth + 2 slices for a
+    // 3-D texture — and width, height and depth are the image's inside the ring. The
+    // sampler reads the ring where clamp-to-border would read the border colour; the
+    // other wrap modes never reach it.
+    int border = 0;
   };
 
   // Builds the texture and its whole mip chain down to 1x1, each level the 2x2 box
@@ -40,11 +49,15 @@ class Texture {
   // A texture from levels the caller made (OpenGL's glTexImage2D per level): level 0
   // first, each next level max(1, size / 2) of the one above, as many as given (a
   // chain may stop before 1x1). Throws velocity::Error for no level, an empty level,
-  // a size that does not halve, or a texel count that does not match the size.
-  explicit Texture(std::vector<Level> levels);
+  // a size that does not halve, or a texel count that does not match the size. A 3-D
+  // texture (`volume`: sampled with r too, whatever its depth) halves in depth too.
+  // Every level has the same border.
+  explicit Texture(std::vector<Level> levels, bool volume = false);
 
   int width() const { return levels_[0].width; }
   int height() const { return levels_[0].height; }
+  int depth() const { return levels_[0].depth; }
+  bool volume() const { return volume_; }  // a 3-D texture
   const std::vector<Level>& levels() const { return levels_; }
   // The levels' texels read as sRGB-encoded colours and decoded to linear light, 16
   // bits a channel (RGBA16, red in the low bits; alpha as it is, times 257): what a
@@ -58,12 +71,15 @@ class Texture {
   struct LinearCache;
   std::vector<Level> levels_;
   std::shared_ptr<LinearCache> linear_;
+  bool volume_ = false;
 };
 
 // The mip level below `above`: max(1, size / 2) on each side, each texel the rounded
 // average of the 2x2 block above it, per channel ((sum + 2) / 4); a side of 1 repeats
 // its texel. OpenGL's box filter (Mesa's glGenerateMipmap): the one mip-map builder of
-// Texture(const Image&), pGL's GL_GENERATE_MIPMAP and gluBuild2DMipmaps.
+// Texture(const Image&), pGL's GL_GENERATE_MIPMAP and gluBuild2DMipmaps. A level of
+// depth > 1 halves in depth too, each texel the average of a 2x2x2 block ((sum + 4) / 8;
+// a side of 1 repeats its texels). `above` has no border (Level::border 0).
 Texture::Level next_mip_level(const Texture::Level& above);
 
 // Reads an image file as a texture: PCX by the extension, everything else through

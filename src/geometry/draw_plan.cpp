@@ -203,10 +203,12 @@ BatchDrawPlan plan_batch_draw(const DrawList& plan, std::vector<raster::DrawStat
   d.primitive_count = primitives;
   d.textured = state.texture.texture != nullptr;
   d.units = d.textured ? (state.texture1.texture ? 2 : 1) : 0;
+  d.volumes = (d.units > 0 && state.texture.texture->volume() ? 1 : 0) |
+              (d.units > 1 && state.texture1.texture->volume() ? 2 : 0);
   d.fog = state.fog;
   d.color_sum = state.color_sum;
-  d.kernel = raster::fixed_kernel(d.units, d.fog, d.color_sum);
-  d.num_varyings = raster::fixed_varyings(d.units, d.fog, d.color_sum);
+  d.kernel = raster::fixed_kernel(d.units, d.fog, d.color_sum, d.volumes);
+  d.num_varyings = raster::fixed_varyings(d.units, d.fog, d.color_sum, d.volumes);
 
   // The viewport, within the guard band's reach of the framebuffer (as OpenGL's
   // GL_MAX_VIEWPORT_DIMS bounds it).

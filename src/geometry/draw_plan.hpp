@@ -68,6 +68,7 @@ struct BatchDrawPlan {
   uint8_t kernel = 0;
   bool textured = false, fog = false;
   int units = 0;           // texture units read (textured: 1 or 2)
+  int volumes = 0;         // bit u: unit u's texture is 3-D (s, t, r, q interpolated)
   bool color_sum = false;  // a secondary colour added after texturing
   int num_varyings = 0;
   uint32_t primitive_count = 0;

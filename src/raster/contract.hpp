@@ -187,8 +187,8 @@ enum class KernelId : uint8_t {
   PhongEnv = PhongTex + 3,
   PhongTexEnv = PhongEnv + 3,
   Pbr = PhongTexEnv + 3,    // + 6 * tangents + 3 * vertex colours + filter (12 ids)
-  Fixed = Pbr + 12,         // + 4 * units + 2 * colour sum + fog (12 ids)
-  Count = Fixed + 12,
+  Fixed = Pbr + 12,         // + fixed_kernel (28 ids)
+  Count = Fixed + 28,
 };
 // The varying layouts above, by name: the triangle stage writes them
 // (triangle/) and the shaders read them.
@@ -200,7 +200,7 @@ inline constexpr int kNormal = 3;       // Phong*: eye-space normal x, y, z
 inline constexpr int kEye = 6;          // Phong*: eye-space position x, y, z
 inline constexpr int kPhongUv = 9;      // PhongTex*: u, v
 inline constexpr int kFixedColor = 0;   // Fixed: r, g, b, a
-inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q (then unit 1's)
+inline constexpr int kFixedTex = 4;     // Fixed, textured: s, t, q (a 3-D texture: s, t, r, q), then unit 1's
 inline constexpr int kPbrNormal = 0;    // Pbr: eye-space normal
 inline constexpr int kPbrEye = 3;       // Pbr: eye-space position
 inline constexpr int kPbrUv = 6;        // Pbr: u, v
@@ -227,25 +227,44 @@ inline constexpr KernelId kernel_family(uint8_t id) {
   return KernelId::Fixed;
 }
 inline constexpr uint8_t kernel_with_filter(KernelId k, Filter f) { return uint8_t(uint8_t(k) + uint8_t(f)); }
-inline constexpr uint8_t fixed_kernel(int units, bool fog, bool color_sum) {
-  return uint8_t(uint8_t(KernelId::Fixed) + 4 * units + 2 * color_sum + fog);
+// A fixed-function kernel by the texture units it reads (0-2), which of them are 3-D
+// (`volumes`: bit u for unit u), the colour sum and fog: 4 ids without units, 8 with
+// one (2-D, 3-D), 16 with two (each 2-D or 3-D); each x colour sum x fog.
+inline constexpr uint8_t fixed_kernel(int units, bool fog, bool color_sum, int volumes = 0) {
+  const int base = units == 0 ? 0 : units == 1 ? 4 : 12;
+  return uint8_t(uint8_t(KernelId::Fixed) + base + 4 * volumes + 2 * color_sum + fog);
 }
-inline constexpr int fixed_varyings(int units, bool fog, bool color_sum) {
-  return 4 + 3 * units + (color_sum ? 3 : 0) + (fog ? 1 : 0);
+// The texture coordinates units 0 .. units - 1 interpolate: s t q each, or (3-D) s t r q.
+inline constexpr int fixed_tex_varyings(int units, int volumes) {
+  int n = 0;
+  for (int u = 0; u < units; ++u) n += (volumes >> u & 1) ? 4 : 3;
+  return n;
+}
+inline constexpr int fixed_varyings(int units, bool fog, bool color_sum, int volumes = 0) {
+  return 4 + fixed_tex_varyings(units, volumes) + (color_sum ? 3 : 0) + (fog ? 1 : 0);
 }
 
 // A texture as the SIMD sampler reads it: each mip level's texels, size and the
 // addressing, resolved once per draw.
 struct SamplerLevel {
-  const uint32_t* texels = nullptr;
+  const uint32_t* texels = nullptr;  // texel (0, 0) of the image (inside a border)
   int32_t width = 1, height = 1;
+  int32_t depth = 1;  // a 3-D texture's slices (SamplerView::volume)
   const uint64_t* linear = nullptr;  // srgb views: Texture::linear_levels(), RGBA16
+  // Rows are `stride` texels apart, slices `rows` rows apart: the image's width and
+  // height, two more each with a border (Texture::Level::border), whose texels -1 and
+  // width (height, depth) clamp-to-border then reads instead of the border colour.
+  int32_t stride = 1, rows = 1;
+  bool bordered = false;
 };
 struct SamplerView {
   static constexpr int kMaxLevels = 17;  // 65536 down to 1
   SamplerLevel levels[kMaxLevels];
   int level_count = 0;
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  // A 3-D texture (Texture::volume): sampled at (s, t, r), r addressed by wrap_r.
+  bool volume = false;
+  Wrap wrap_r = Wrap::Repeat;
   SamplerState::Texel mag = SamplerState::Texel::Linear, min = SamplerState::Texel::Linear;
   SamplerState::Mip mip = SamplerState::Mip::Linear;
   float lod_bias = 0, min_lod = -1000, max_lod = 1000;  // (SamplerState's)

@@ -50,13 +50,13 @@ HWY_INLINE uint16_t stipple_mask(const PixelState& p, int x, int y) {
 }
 
 // --- the fixed-function kernel (PrimitiveBatch draws).
-template <int kUnits, bool kFog, bool kSpec>
+template <int kUnits, bool kFog, bool kSpec, int kVolumes>
 HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t) {
   const DF d;
   const DU du;
   const DrawState& draw = (*t.frame.draws)[r.draw];
   const PixelState& p = draw.pixel;
-  FixedShader<kUnits, kFog, kSpec> shader(r, draw);
+  FixedShader<kUnits, kFog, kSpec, kVolumes> shader(r, draw);
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
   // With no alpha or stencil test, the depth test can come first and spare the shading.
@@ -124,11 +124,15 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
 }
 
 const KernelFn* fixed_kernels() {
-  // Indexed by 4 * units + 2 * colour sum + fog (raster::fixed_kernel).
-  static const KernelFn table[] = {
-      fixed_kernel<0, false, false>, fixed_kernel<0, true, false>, fixed_kernel<0, false, true>, fixed_kernel<0, true, true>,
-      fixed_kernel<1, false, false>, fixed_kernel<1, true, false>, fixed_kernel<1, false, true>, fixed_kernel<1, true, true>,
-      fixed_kernel<2, false, false>, fixed_kernel<2, true, false>, fixed_kernel<2, false, true>, fixed_kernel<2, true, true>};
+  // Indexed as raster::fixed_kernel says: no units (4), one 2-D or 3-D (8), two with
+  // each 2-D or 3-D (16); each with and without the colour sum and fog.
+#define VELOCITY_FIXED4(units, volumes)                                                                    \
+  fixed_kernel<units, false, false, volumes>, fixed_kernel<units, true, false, volumes>,                   \
+      fixed_kernel<units, false, true, volumes>, fixed_kernel<units, true, true, volumes>
+  static const KernelFn table[] = {VELOCITY_FIXED4(0, 0), VELOCITY_FIXED4(1, 0), VELOCITY_FIXED4(1, 1),
+                                   VELOCITY_FIXED4(2, 0), VELOCITY_FIXED4(2, 1), VELOCITY_FIXED4(2, 2),
+                                   VELOCITY_FIXED4(2, 3)};
+#undef VELOCITY_FIXED4
   static_assert(sizeof(table) / sizeof(table[0]) == size_t(KernelId::Count) - size_t(KernelId::Fixed));
   return table;
 }

@@ -164,6 +164,12 @@ void SampleForTest(const SamplerView& view, float u, float v, float lod, float r
   rgba[0] = hn::GetLane(c.r), rgba[1] = hn::GetLane(c.g), rgba[2] = hn::GetLane(c.b), rgba[3] = hn::GetLane(c.a);
 }
 
+void Sample3ForTest(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]) {
+  const DF d;
+  const Rgba c = sample3(view, choose_levels(view, lod), hn::Set(d, u), hn::Set(d, v), hn::Set(d, w));
+  rgba[0] = hn::GetLane(c.r), rgba[1] = hn::GetLane(c.g), rgba[2] = hn::GetLane(c.b), rgba[3] = hn::GetLane(c.a);
+}
+
 float LevelOfDetailForTest(const SamplerView& view, float dudx, float dvdx, float dudy, float dvdy) {
   return level_of_detail(view, dudx, dvdx, dudy, dvdy);
 }
@@ -182,9 +188,13 @@ HWY_EXPORT(CoverageForTest);
 HWY_EXPORT(TargetName);
 HWY_EXPORT(SampleForTest);
 HWY_EXPORT(LevelOfDetailForTest);
+HWY_EXPORT(Sample3ForTest);
 
 void sample_for_test(const SamplerView& view, float u, float v, float lod, float rgba[4]) {
   HWY_DYNAMIC_DISPATCH(SampleForTest)(view, u, v, lod, rgba);
+}
+void sample3_for_test(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]) {
+  HWY_DYNAMIC_DISPATCH(Sample3ForTest)(view, u, v, w, lod, rgba);
 }
 float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, float dudy, float dvdy) {
   return HWY_DYNAMIC_DISPATCH(LevelOfDetailForTest)(view, dudx, dvdx, dudy, dvdy);

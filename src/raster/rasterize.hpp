@@ -34,6 +34,8 @@ void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int
 // and their level of detail for the given screen-space derivatives of (u, v).
 void sample_for_test(const SamplerView& view, float u, float v, float lod, float rgba[4]);
 float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, float dudy, float dvdy);
+// A 3-D texture's sample at (u, v, w) (the view of a Texture::volume texture).
+void sample3_for_test(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]);
 
 // The instruction set the kernels run with ("AVX3", "AVX2", "SSE4", "EMU128", ...).
 const char* simd_target();

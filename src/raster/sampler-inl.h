@@ -77,8 +77,9 @@ HWY_INLINE VF prepare_coord(VF u, Wrap w) {
 }
 
 // A texel index from prepare_coord's range into [0, n); `outside` marks indices that
-// clamp-to-border replaces by the border colour.
-HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
+// clamp-to-border replaces by the border colour — unless the level has a border
+// (`bordered`), whose texels -1 and n clamp-to-border reads instead.
+HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside, bool bordered) {
   const DI di;
   const VI vn = hn::Set(di, n), zero = hn::Zero(di), last = hn::Set(di, n - 1);
   switch (w) {
@@ -92,6 +93,7 @@ HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
       return hn::IfThenElse(hn::Lt(i, vn), i, hn::Sub(hn::Sub(n2, hn::Set(di, 1)), i));
     }
     case Wrap::ClampToBorder:
+      if (bordered) return hn::Min(hn::Max(i, hn::Set(di, -1)), vn);
       outside = hn::Or(outside, hn::Or(hn::Lt(i, zero), hn::Gt(i, last)));
       return hn::Min(hn::Max(i, zero), last);
     default: return hn::Min(hn::Max(i, zero), last);
@@ -139,7 +141,7 @@ HWY_INLINE Rgba unpack_linear(const uint64_t* texels, VI index) {
 template <bool kAlpha>
 HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
   const DI di;
-  const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.width)), x);
+  const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.stride)), x);
   if (s.srgb) return unpack_linear<kAlpha>(l.linear, index);
   return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index)));
 }
@@ -151,8 +153,8 @@ HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v)
   const VF x = hn::Mul(prepare_coord(u, s.wrap_s), hn::Set(d, float(l.width)));
   const VF y = hn::Mul(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)));
   MI outside = hn::FirstN(di, 0);
-  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside);
-  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside);
+  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside, l.bordered);
+  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside, l.bordered);
   Rgba c = fetch<kAlpha>(s, l, ix, iy);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
   return c;
@@ -170,8 +172,9 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const VI x0i = hn::ConvertTo(di, fx), y0i = hn::ConvertTo(di, fy);
   const VI one = hn::Set(di, 1);
   MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
-  const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1);
-  const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1);
+  const bool rb = l.bordered;
+  const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0, rb), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1, rb);
+  const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0, rb), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1, rb);
   Rgba t00 = fetch<kAlpha>(s, l, x0, y0), t10 = fetch<kAlpha>(s, l, x1, y0);
   Rgba t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch<kAlpha>(s, l, x1, y1);
   if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
@@ -185,6 +188,69 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
 template <bool kAlpha>
 HWY_INLINE Rgba texel_filter(const SamplerView& s, const SamplerLevel& l, VF u, VF v, SamplerState::Texel f) {
   return f == SamplerState::Texel::Nearest ? nearest<kAlpha>(s, l, u, v) : bilinear<kAlpha>(s, l, u, v);
+}
+
+// --- 3-D textures (SamplerView::volume): the same addressing on a third axis, r, over
+// a level's slices. GL_LINEAR within a level blends the eight nearest texels.
+
+// The texels at (x, y, z): slice z's row y.
+template <bool kAlpha>
+HWY_INLINE Rgba fetch3(const SamplerView& s, const SamplerLevel& l, VI x, VI y, VI z) {
+  const DI di;
+  return fetch<kAlpha>(s, l, x, hn::Add(hn::Mul(z, hn::Set(di, l.rows)), y));
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba nearest3(const SamplerView& s, const SamplerLevel& l, VF u, VF v, VF w) {
+  const DF d;
+  const DI di;
+  MI outside = hn::FirstN(di, 0);
+  auto index = [&](VF c, Wrap wrap, int32_t n) {
+    const VF x = hn::Mul(prepare_coord(c, wrap), hn::Set(d, float(n)));
+    return wrap_index(hn::ConvertTo(di, hn::Floor(x)), n, wrap, outside, l.bordered);
+  };
+  const VI ix = index(u, s.wrap_s, l.width), iy = index(v, s.wrap_t, l.height), iz = index(w, s.wrap_r, l.depth);
+  Rgba c = fetch3<kAlpha>(s, l, ix, iy, iz);
+  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder || s.wrap_r == Wrap::ClampToBorder)
+    c = with_border(c, outside, s.border, texel_unit(s));
+  return c;
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba linear3(const SamplerView& s, const SamplerLevel& l, VF u, VF v, VF w) {
+  const DF d;
+  const DI di;
+  struct Axis {
+    VI i0, i1;
+    MI out0, out1;
+    VF frac;
+  };
+  auto axis = [&](VF c, Wrap wrap, int32_t n) {
+    const VF x = hn::MulSub(prepare_coord(c, wrap), hn::Set(d, float(n)), hn::Set(d, 0.5f));
+    const VF fx = hn::Floor(x);
+    const VI i = hn::ConvertTo(di, fx);
+    Axis a{i, i, hn::FirstN(di, 0), hn::FirstN(di, 0), hn::Sub(x, fx)};
+    a.i0 = wrap_index(i, n, wrap, a.out0, l.bordered), a.i1 = wrap_index(hn::Add(i, hn::Set(di, 1)), n, wrap, a.out1, l.bordered);
+    return a;
+  };
+  const Axis ax = axis(u, s.wrap_s, l.width), ay = axis(v, s.wrap_t, l.height), az = axis(w, s.wrap_r, l.depth);
+  const bool border = s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder || s.wrap_r == Wrap::ClampToBorder;
+  const float k = texel_unit(s);
+  auto tap = [&](bool x1, bool y1, bool z1) {
+    Rgba t = fetch3<kAlpha>(s, l, x1 ? ax.i1 : ax.i0, y1 ? ay.i1 : ay.i0, z1 ? az.i1 : az.i0);
+    if (border) t = with_border(t, hn::Or(x1 ? ax.out1 : ax.out0, hn::Or(y1 ? ay.out1 : ay.out0, z1 ? az.out1 : az.out0)), s.border, k);
+    return t;
+  };
+  auto slice = [&](bool z1) {
+    return lerp(lerp(tap(false, false, z1), tap(true, false, z1), ax.frac), lerp(tap(false, true, z1), tap(true, true, z1), ax.frac),
+                ay.frac);
+  };
+  return lerp(slice(false), slice(true), az.frac);
+}
+
+template <bool kAlpha>
+HWY_INLINE Rgba texel_filter3(const SamplerView& s, const SamplerLevel& l, VF u, VF v, VF w, SamplerState::Texel f) {
+  return f == SamplerState::Texel::Nearest ? nearest3<kAlpha>(s, l, u, v, w) : linear3<kAlpha>(s, l, u, v, w);
 }
 
 // How a block samples: the filter and the level(s), chosen once per block.
@@ -231,6 +297,15 @@ HWY_INLINE Rgba sample(const SamplerView& s, const LevelChoice& c, VF u, VF v) {
   return sample<kAlpha>(s, c, u, v, hn::Set(DF(), c.frac));
 }
 
+// A 3-D texture's sample at (u, v, w); mip-mapped, the two levels' samples blended as
+// sample's are (GL_LINEAR_MIPMAP_LINEAR: "trilinear" between two trilinear samples).
+template <bool kAlpha = true>
+HWY_INLINE Rgba sample3(const SamplerView& s, const LevelChoice& c, VF u, VF v, VF w) {
+  Rgba a = texel_filter3<kAlpha>(s, s.levels[c.level0], u, v, w, c.filter);
+  if (c.level1 != c.level0) a = lerp(a, texel_filter3<kAlpha>(s, s.levels[c.level1], u, v, w, c.filter), hn::Set(DF(), c.frac));
+  return scale(a, 1.0f / texel_unit(s));
+}
+
 // log2(x) for a positive normal float, to about 0.002 (enough to choose and blend mip
 // levels): the exponent, plus a cubic in the mantissa.
 inline float fast_log2(float x) {
@@ -248,6 +323,17 @@ inline float level_of_detail(const SamplerView& s, float dudx, float dvdx, float
   const float w = float(s.levels[0].width), h = float(s.levels[0].height);
   const float rx = (dudx * w) * (dudx * w) + (dvdx * h) * (dvdx * h);
   const float ry = (dudy * w) * (dudy * w) + (dvdy * h) * (dvdy * h);
+  const float rho2 = std::max(rx, ry);
+  return rho2 > 1e-30f && rho2 < 1e30f ? 0.5f * fast_log2(rho2) : (rho2 > 0 ? (rho2 < 1 ? -100.0f : 50.0f) : -100.0f);
+}
+
+// A 3-D texture's level of detail: rho from the derivatives of (u, v, w) (GL 1.5,
+// equation 3.17, the larger of the two screen axes).
+inline float level_of_detail3(const SamplerView& s, float dudx, float dvdx, float dwdx, float dudy, float dvdy,
+                              float dwdy) {
+  const float w = float(s.levels[0].width), h = float(s.levels[0].height), dp = float(s.levels[0].depth);
+  const float rx = (dudx * w) * (dudx * w) + (dvdx * h) * (dvdx * h) + (dwdx * dp) * (dwdx * dp);
+  const float ry = (dudy * w) * (dudy * w) + (dvdy * h) * (dvdy * h) + (dwdy * dp) * (dwdy * dp);
   const float rho2 = std::max(rx, ry);
   return rho2 > 1e-30f && rho2 < 1e30f ? 0.5f * fast_log2(rho2) : (rho2 > 0 ? (rho2 < 1 ? -100.0f : 50.0f) : -100.0f);
 }

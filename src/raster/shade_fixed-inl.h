@@ -202,13 +202,17 @@ HWY_INLINE VF blend_channel(const PixelState& p, int ch, const Rgba& s, const Rg
   }
 }
 
-// Interpolated RGBA (planes 0-3), then s, t, q per texture unit (kUnits of them), then
-// with kSpec the secondary colour's RGB, then with kFog the fog coordinate.
-template <int kUnits, bool kFog, bool kSpec>
+// Interpolated RGBA (planes 0-3), then per texture unit (kUnits of them) s, t, q — for a
+// 3-D texture (bit u of kVolumes) s, t, r, q —, then with kSpec the secondary colour's
+// RGB, then with kFog the fog coordinate.
+template <int kUnits, bool kFog, bool kSpec, int kVolumes = 0>
 struct FixedShader {
-  static constexpr int N = fixed_varyings(kUnits, kFog, kSpec);
-  static constexpr int kSpecAt = varying::kFixedTex + 3 * kUnits;
+  static constexpr int N = fixed_varyings(kUnits, kFog, kSpec, kVolumes);
+  static constexpr int kSpecAt = varying::kFixedTex + fixed_tex_varyings(kUnits, kVolumes);
   static constexpr int kFogAt = kSpecAt + (kSpec ? 3 : 0);
+  static constexpr bool volume(int u) { return (kVolumes >> u & 1) != 0; }
+  // Unit u's first plane (s; then t, r for a 3-D texture, q last).
+  static constexpr int tex_at(int u) { return varying::kFixedTex + fixed_tex_varyings(u, kVolumes); }
   Perspective<N> in;
   const DrawState& draw;
   LevelChoice level[kUnits > 0 ? kUnits : 1]{};
@@ -221,15 +225,23 @@ struct FixedShader {
   void begin_block(float fx, float fy) {
     in.begin(fx, fy);
     for (int u = 0; u < kUnits; ++u) {
-      // u = s/q, v = t/q: derivatives of the quotients at the block's centre.
+      // u = s/q, v = t/q (w = r/q): derivatives of the quotients at the block's centre.
       float s, sx, sy, t, tx, ty, q, qx, qy;
-      const int st = varying::kFixedTex + 3 * u;
-      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(st + 2, q, qx, qy);
+      const int st = tex_at(u), q_at = st + (volume(u) ? 3 : 2);
+      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(q_at, q, qx, qy);
       const float iq = q != 0 ? 1.0f / q : 0.0f;
       const float uu = s * iq, vv = t * iq;
       const SamplerView& tex = view(u);
-      level[u] = choose_levels(tex, level_of_detail(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (sy - uu * qy) * iq,
-                                                    (ty - vv * qy) * iq));
+      if (volume(u)) {
+        float r, rx, ry;
+        in.derivatives(st + 2, r, rx, ry);
+        const float ww = r * iq;
+        level[u] = choose_levels(tex, level_of_detail3(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (rx - ww * qx) * iq,
+                                                       (sy - uu * qy) * iq, (ty - vv * qy) * iq, (ry - ww * qy) * iq));
+      } else {
+        level[u] = choose_levels(tex, level_of_detail(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (sy - uu * qy) * iq,
+                                                      (ty - vv * qy) * iq));
+      }
     }
   }
 
@@ -239,9 +251,11 @@ struct FixedShader {
     constexpr int c0 = varying::kFixedColor;
     Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
     for (int u = 0; u < kUnits; ++u) {  // the units in order, each on the last one's colour
-      const int st = varying::kFixedTex + 3 * u;
-      const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + 2, v));
-      Rgba t = sample(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
+      const int st = tex_at(u);
+      const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + (volume(u) ? 3 : 2), v));
+      Rgba t;
+      if (volume(u)) t = sample3(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq), hn::Mul(in(st + 2, v), iq));
+      else t = sample(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
       c = texture_environment(stage(u), c, t);
     }
     if constexpr (kSpec) {  // the colour sum: the secondary colour after texturing

@@ -33,34 +33,46 @@ Texture::Texture(const Image& image) : linear_(std::make_shared<LinearCache>()) 
 }
 
 Texture::Level next_mip_level(const Texture::Level& up) {
-  const int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2);
-  Texture::Level next{w, h, std::vector<uint32_t>(size_t(w) * h)};
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      // The 2x2 block above (a 1-texel-wide side repeats its one texel).
-      const int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
-      const int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
-      const uint32_t t[4] = {up.texels[size_t(y0) * up.width + x0], up.texels[size_t(y0) * up.width + x1],
-                             up.texels[size_t(y1) * up.width + x0], up.texels[size_t(y1) * up.width + x1]};
-      uint32_t out = 0;
-      for (int c = 0; c < 4; ++c) {
-        uint32_t sum = 0;
-        for (uint32_t v : t) sum += (v >> (8 * c)) & 0xff;
-        out |= ((sum + 2) / 4) << (8 * c);
+  const int w = std::max(1, up.width / 2), h = std::max(1, up.height / 2), d = up.depth > 1 ? up.depth / 2 : 1;
+  Texture::Level next{w, h, std::vector<uint32_t>(size_t(w) * h * d), d};
+  // The 2x2 (2x2x2) block above: a 1-texel-wide side repeats its one texel.
+  const int slices = up.depth > 1 ? 2 : 1;
+  const size_t plane = size_t(up.width) * up.height;
+  for (int z = 0; z < d; ++z)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const int x0 = std::min(2 * x, up.width - 1), x1 = std::min(2 * x + 1, up.width - 1);
+        const int y0 = std::min(2 * y, up.height - 1), y1 = std::min(2 * y + 1, up.height - 1);
+        uint32_t sum[4] = {0, 0, 0, 0};
+        for (int k = 0; k < slices; ++k) {
+          const uint32_t* s = up.texels.data() + size_t(std::min(2 * z + k, up.depth - 1)) * plane;
+          for (uint32_t v : {s[size_t(y0) * up.width + x0], s[size_t(y0) * up.width + x1], s[size_t(y1) * up.width + x0],
+                             s[size_t(y1) * up.width + x1]})
+            for (int c = 0; c < 4; ++c) sum[c] += (v >> (8 * c)) & 0xff;
+        }
+        const uint32_t n = 4u * uint32_t(slices);
+        uint32_t out = 0;
+        for (int c = 0; c < 4; ++c) out |= ((sum[c] + n / 2) / n) << (8 * c);
+        next.texels[(size_t(z) * h + y) * w + x] = out;
       }
-      next.texels[size_t(y) * w + x] = out;
-    }
   return next;
 }
 
-Texture::Texture(std::vector<Level> levels) : levels_(std::move(levels)), linear_(std::make_shared<LinearCache>()) {
+Texture::Texture(std::vector<Level> levels, bool volume)
+    : levels_(std::move(levels)), linear_(std::make_shared<LinearCache>()), volume_(volume) {
   if (levels_.empty()) throw Error("texture: no levels");
+  if (!volume_ && levels_[0].depth != 1) throw Error("texture: a 2-D texture with slices");
+  const int b = levels_[0].border;
+  if (b != 0 && b != 1) throw Error("texture: a border of " + std::to_string(b) + " texels (0 or 1)");
   for (size_t i = 0; i < levels_.size(); ++i) {
     const Level& l = levels_[i];
-    if (l.width <= 0 || l.height <= 0 || l.width > 65536 || l.height > 65536 ||
-        l.texels.size() != size_t(l.width) * size_t(l.height))
+    if (l.border != b) throw Error("texture: level " + std::to_string(i) + " has another border than level 0");
+    const size_t slices = size_t(l.depth) + (volume_ ? 2 * size_t(b) : 0);
+    if (l.width <= 0 || l.height <= 0 || l.depth <= 0 || l.width > 65536 || l.height > 65536 || l.depth > 65536 ||
+        l.texels.size() != size_t(l.width + 2 * b) * size_t(l.height + 2 * b) * slices)
       throw Error("texture: level " + std::to_string(i) + " is empty or its texels do not match its size");
-    if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) || l.height != std::max(1, levels_[i - 1].height / 2)))
+    if (i > 0 && (l.width != std::max(1, levels_[i - 1].width / 2) || l.height != std::max(1, levels_[i - 1].height / 2) ||
+                  l.depth != std::max(1, levels_[i - 1].depth / 2)))
       throw Error("texture: level " + std::to_string(i) + " is not half the size of the level above");
   }
 }

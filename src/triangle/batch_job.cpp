@@ -64,8 +64,8 @@ class BatchPrimitives {
     return c;
   }
 
-  // Varyings of vertex v: RGBA, then s, t, q per texture unit, then the secondary
-  // colour's RGB, then the fog coordinate.
+  // Varyings of vertex v: RGBA, then s, t, q per texture unit (a 3-D texture: s, t, r,
+  // q), then the secondary colour's RGB, then the fog coordinate.
   void varyings(uint32_t v, float* out) const {
     const Vec4 c = b_.color ? b_.color[v] : Vec4{1, 1, 1, 1};
     using namespace raster::varying;
@@ -73,17 +73,21 @@ class BatchPrimitives {
     int at = kFixedTex;
     if (d_.textured) {
       const Vec4 t = b_.texcoord ? b_.texcoord[v] : Vec4{0, 0, 0, 1};
-      out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
+      out[at++] = t.x, out[at++] = t.y;
+      if (d_.volumes & 1) out[at++] = t.z;
+      out[at++] = t.w;
     }
     if (extras_) at = more_varyings(v, out, at);
     if (d_.fog) out[at] = b_.fog ? b_.fog[v] : 0.0f;
   }
 
-  // Unit 1's s, t, q and the secondary colour, where the draw has them; the next slot.
+  // Unit 1's s, t, (r,) q and the secondary colour, where the draw has them; the next slot.
   int more_varyings(uint32_t v, float* out, int at) const {
     if (d_.units > 1) {
       const Vec4 t = b_.texcoord1 ? b_.texcoord1[v] : Vec4{0, 0, 0, 1};
-      out[at++] = t.x, out[at++] = t.y, out[at++] = t.w;
+      out[at++] = t.x, out[at++] = t.y;
+      if (d_.volumes & 2) out[at++] = t.z;
+      out[at++] = t.w;
     }
     if (d_.color_sum) {
       const Vec4 s = b_.secondary ? b_.secondary[v] : Vec4{0, 0, 0, 0};

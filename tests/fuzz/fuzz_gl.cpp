@@ -357,6 +357,97 @@ void texture_1d_call(Bytes& in, const std::vector<float>& pixels, GLuint* names,
   }
 }
 
+// 3-D textures: images of any size up to 8x8x8 (`pixels` holds 64 * 64 RGBA floats;
+// the pixel store reset around the calls that read or write client memory), levels,
+// offsets and targets, proxies, copies from the framebuffer; bound, enabled, drawn.
+void texture_3d_call(Bytes& in, const std::vector<float>& pixels, std::vector<float>& out, GLuint* names, float a,
+                     float b, float c, GLenum e1) {
+  const GLenum target = in.u8() < 230 ? GL_TEXTURE_3D : in.u8() & 1 ? GL_PROXY_TEXTURE_3D : e1;
+  const GLint level = in.below(6) - 1;
+  const GLsizei w = in.below(11) - 2, h = in.below(11) - 2, d = in.below(11) - 2;
+  auto reset_store = [] {
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    for (GLenum p : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_IMAGE_HEIGHT,
+                     GL_UNPACK_SKIP_IMAGES, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
+                     GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES})
+      glPixelStorei(p, 0);
+  };
+  switch (in.below(7)) {
+    case 0: glBindTexture(in.u8() & 1 ? GL_TEXTURE_3D : GL_TEXTURE_2D, names[in.below(4)] + GLuint(in.below(2))); break;
+    case 1:
+      reset_store();
+      glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, in.below(3) ? 0 : 8), glPixelStorei(GL_UNPACK_SKIP_IMAGES, in.below(3));
+      glTexImage3D(target, level, in.u8() & 1 ? GL_RGBA : GLint(in.enumerant()), w, h, d, in.below(3) - 1,
+                   in.u8() & 1 ? GL_RGBA : in.enumerant(), in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
+                   in.u8() & 1 ? pixels.data() : nullptr);
+      glPopClientAttrib();
+      break;
+    case 2:
+      reset_store();
+      glTexSubImage3D(target, level, in.integer() % 10, in.integer() % 10, in.integer() % 10, w, h, d, GL_RGBA,
+                      in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT, in.u8() & 1 ? pixels.data() : nullptr);
+      glPopClientAttrib();
+      break;
+    case 3:
+      glCopyTexSubImage3D(target, level, in.integer() % 10, in.integer() % 10, in.integer() % 10, in.integer() % 128,
+                          in.integer() % 128, w, h);
+      break;
+    case 4: {
+      GLint v;
+      glGetTexLevelParameteriv(target, level, in.u8() & 1 ? GL_TEXTURE_DEPTH : e1, &v);
+      reset_store();
+      glPixelStorei(GL_PACK_IMAGE_HEIGHT, in.below(3) ? 0 : 8), glPixelStorei(GL_PACK_SKIP_IMAGES, in.below(3));
+      // A level is at most 8x8x8 here (glTexImage3D's sizes): 8 * 10 images of 8 rows fit in out.
+      if (target == GL_TEXTURE_3D) glGetTexImage(target, level, GL_RGBA, GL_FLOAT, out.data());
+      glPopClientAttrib();
+      break;
+    }
+    case 5:
+      glTexParameterf(target, in.u8() & 1 ? GL_TEXTURE_WRAP_R : GL_TEXTURE_MIN_FILTER,
+                      float(in.u8() & 1 ? GL_LINEAR_MIPMAP_LINEAR : in.u8() & 1 ? GL_CLAMP_TO_EDGE : e1));
+      break;
+    default:
+      (in.u8() & 1 ? glEnable : glDisable)(GL_TEXTURE_3D);
+      glBegin(GL_TRIANGLES);
+      glTexCoord3f(a, b, c), glVertex2f(-1, -1), glTexCoord4f(b, a, c, a), glVertex2f(1, -0.5f), glVertex2f(a, b);
+      glEnd();
+      break;
+  }
+}
+
+// Sized and generic compressed internal formats with every pixel type (the packed
+// ones of GL 1.2 with any format, swapped or not), into 2-D, 1-D and 3-D images and
+// copies; the level's sizes queried. Images at most 8x8 (x8) of 4-byte groups.
+void texture_format_call(Bytes& in, const std::vector<float>& pixels, GLenum e1) {
+  static const GLenum formats[] = {GL_ALPHA4,     GL_LUMINANCE16_ALPHA16, GL_INTENSITY12, GL_R3_G3_B2, GL_RGB10,
+                                   GL_RGBA2,      GL_RGB10_A2,            GL_RGBA16,      GL_LUMINANCE6_ALPHA2,
+                                   GL_COMPRESSED_RGB, GL_COMPRESSED_INTENSITY};
+  static const GLenum types[] = {GL_UNSIGNED_BYTE_3_3_2,      GL_UNSIGNED_SHORT_5_6_5_REV, GL_UNSIGNED_SHORT_4_4_4_4,
+                                 GL_UNSIGNED_SHORT_1_5_5_5_REV, GL_UNSIGNED_INT_8_8_8_8,    GL_UNSIGNED_INT_2_10_10_10_REV,
+                                 GL_BYTE, GL_SHORT, GL_UNSIGNED_INT, GL_FLOAT};
+  static const GLenum pixel_formats[] = {GL_RGB, GL_RGBA, GL_BGRA, GL_BGR, GL_LUMINANCE_ALPHA, GL_ALPHA};
+  const GLint internal = in.u8() < 230 ? GLint(formats[in.below(sizeof formats / sizeof formats[0])]) : GLint(e1);
+  const GLenum type = types[in.below(sizeof types / sizeof types[0])];
+  const GLenum format = pixel_formats[in.below(sizeof pixel_formats / sizeof pixel_formats[0])];
+  const GLsizei w = in.below(10) - 1, h = in.below(10) - 1;
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+  for (GLenum p : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_IMAGE_HEIGHT,
+                   GL_UNPACK_SKIP_IMAGES})
+    glPixelStorei(p, 0);
+  glPixelStorei(GL_UNPACK_SWAP_BYTES, in.u8() & 1);
+  switch (in.below(5)) {
+    case 0: glTexImage2D(GL_TEXTURE_2D, 0, internal, w, h, 0, format, type, pixels.data()); break;
+    case 1: glTexImage1D(GL_TEXTURE_1D, 0, internal, w, 0, format, type, pixels.data()); break;
+    case 2: glTexImage3D(GL_TEXTURE_3D, 0, internal, w, h, in.below(9), 0, format, type, pixels.data()); break;
+    case 3: glTexSubImage2D(GL_TEXTURE_2D, 0, in.below(4), in.below(4), w, h, format, type, pixels.data()); break;
+    default: glCopyTexImage2D(GL_TEXTURE_2D, 0, GLenum(internal), in.below(64), in.below(64), w, h, 0); break;
+  }
+  glPopClientAttrib();
+  GLint v;
+  for (GLenum q : {GL_TEXTURE_RED_SIZE, GL_TEXTURE_LUMINANCE_SIZE, GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_COMPRESSED})
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, q, &v);
+}
+
 // One-dimensional evaluators: any target, domain (NaN too), stride and order (the
 // points read stay inside `attrib`: order * stride at most 30 * 8 of its 512 floats),
 // enabled, evaluated inside and outside glBegin/glEnd, on grids of any size below 300.
@@ -892,6 +983,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         tex_gen_call(in, a, b, c, d, e1);
         buffer_call(in, pixels, buffer_names, e1, e2);
         texture_1d_call(in, pixels, names, a, b, e1);
+        texture_3d_call(in, pixels, out, names, a, b, c, e1);
+        texture_format_call(in, pixels, e1);
         evaluator_call(in, attrib, a, b, e1);
         buffer_lod_call(in, a, b, e1);
         color_sum_call(in, attrib, a, b, c, e1);

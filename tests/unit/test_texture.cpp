@@ -9,6 +9,7 @@
 #include "core/srgb.hpp"
 #include "raster/rasterize.hpp"
 #include "velocity/renderer.hpp"
+#include "velocity/error.hpp"
 #include "velocity/texture.hpp"
 
 using namespace velocity;
@@ -299,4 +300,137 @@ TEST(Texture, LinearLevelsAreMadeOnceAcrossThreads) {
   for (auto& th : threads) th.join();
   for (const uint64_t* p : seen) EXPECT_EQ(p, seen[0]);
   EXPECT_EQ(t.linear_levels().size(), t.levels().size());
+}
+
+// --- 3-D textures (Texture::volume; pGL's GL_TEXTURE_3D)
+
+namespace {
+// A w x h x d volume whose texel (x, y, z) has red = 10 x + 1, green = 20 y, blue = 30 z.
+Texture::Level volume_level(int w, int h, int d) {
+  Texture::Level l{w, h, std::vector<uint32_t>(size_t(w) * h * d), d};
+  for (int z = 0; z < d; ++z)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        l.texels[(size_t(z) * h + y) * w + x] = uint32_t(10 * x + 1) | uint32_t(20 * y) << 8 | uint32_t(30 * z) << 16 | 0xffu << 24;
+  return l;
+}
+Rgba sample3(const Texture& t, SamplerState s, float u, float v, float w, float lod = 0) {
+  float c[4];
+  raster::sample3_for_test(SamplerView(t, s), u, v, w, lod, c);
+  return {c[0] * 255, c[1] * 255, c[2] * 255, c[3] * 255};
+}
+}  // namespace
+
+TEST(Texture3D, NearestReadsTheTexelUnderTheSamplePoint) {
+  const Texture t({volume_level(4, 3, 5)}, true);
+  ASSERT_TRUE(t.volume());
+  SamplerState s;
+  s.mag = s.min = SamplerState::Texel::Nearest, s.mip = SamplerState::Mip::None;
+  // Texel (2, 1, 3) covers [2, 3)/4 x [1, 2)/3 x [3, 4)/5.
+  const Rgba c = sample3(t, s, 2.5f / 4, 1.5f / 3, 3.2f / 5);
+  EXPECT_NEAR(c.r, 21, 1e-3);
+  EXPECT_NEAR(c.g, 20, 1e-3);
+  EXPECT_NEAR(c.b, 90, 1e-3);
+  // r wraps with wrap_r alone: repeat reads slice 0 past the end, clamp the last slice.
+  EXPECT_NEAR(sample3(t, s, 0.1f, 0.1f, 1.05f).b, 0, 1e-3);
+  s.wrap_r = Wrap::Clamp;
+  EXPECT_NEAR(sample3(t, s, 0.1f, 0.1f, 1.05f).b, 120, 1e-3);
+  EXPECT_NEAR(sample3(t, s, 0.1f, 0.1f, -7.0f).b, 0, 1e-3);
+  // Outside with clamp-to-border on r: the border colour.
+  s.wrap_r = Wrap::ClampToBorder, s.border_color = {0, 1, 0, 1};
+  EXPECT_NEAR(sample3(t, s, 0.1f, 0.1f, -0.5f).g, 255, 1e-3);
+  // NaN and huge coordinates stay inside the texture.
+  s.wrap_r = Wrap::Repeat;
+  EXPECT_GE(sample3(t, s, NAN, 1e30f, -1e30f).a, 0.0f);
+}
+
+TEST(Texture3D, LinearWeightsTheEightNearestTexels) {
+  const Texture t({volume_level(2, 2, 2)}, true);
+  SamplerState s;
+  s.mag = s.min = SamplerState::Texel::Linear, s.mip = SamplerState::Mip::None;
+  s.wrap_s = s.wrap_t = s.wrap_r = Wrap::Clamp;
+  // Midway between all eight centres: the mean on each axis.
+  Rgba c = sample3(t, s, 0.5f, 0.5f, 0.5f);
+  EXPECT_NEAR(c.r, 6, 1e-3);
+  EXPECT_NEAR(c.g, 10, 1e-3);
+  EXPECT_NEAR(c.b, 15, 1e-3);
+  // A quarter of the way from slice 0's centre to slice 1's: 3/4 and 1/4 in blue only.
+  c = sample3(t, s, 0.25f, 0.25f, 0.375f);
+  EXPECT_NEAR(c.r, 1, 1e-3);
+  EXPECT_NEAR(c.b, 7.5, 1e-3);
+}
+
+TEST(Texture3D, MipChainHalvesDepthAndBlendsLevels) {
+  // 4x2x8 -> 2x1x4 -> 1x1x2 -> 1x1x1, each texel the 2x2x2 box average.
+  std::vector<Texture::Level> chain{volume_level(4, 2, 8)};
+  while (chain.back().width > 1 || chain.back().height > 1 || chain.back().depth > 1)
+    chain.push_back(next_mip_level(chain.back()));
+  ASSERT_EQ(chain.size(), 4u);
+  EXPECT_EQ(chain[1].depth, 4);
+  EXPECT_EQ(chain[2].width, 1);
+  EXPECT_EQ(chain[2].depth, 2);
+  // Level 1's texel (1, 0, 2): red (21 + 31) / 2, green 10, blue (120 + 150) / 2.
+  const Rgba l1 = unpack(chain[1].texels[(2 * 1 + 0) * 2 + 1]);
+  EXPECT_NEAR(l1.r * 255, 26, 0.5);
+  EXPECT_NEAR(l1.g * 255, 10, 0.5);
+  EXPECT_NEAR(l1.b * 255, 135, 0.5);
+  const Texture t(chain, true);
+  SamplerState s;
+  s.mag = s.min = SamplerState::Texel::Nearest, s.mip = SamplerState::Mip::Linear;
+  // Level of detail 1.5: levels 1 and 2 blended half and half.
+  const Rgba a = sample3(t, s, 0.1f, 0.1f, 0.1f, 1.0f), b = sample3(t, s, 0.1f, 0.1f, 0.1f, 2.0f);
+  const Rgba m = sample3(t, s, 0.1f, 0.1f, 0.1f, 1.5f);
+  EXPECT_NEAR(m.b, (a.b + b.b) / 2, 0.5);
+  EXPECT_NE(a.b, b.b);
+}
+
+TEST(Texture3D, SlicesMustMatchTheSizeAndHalve) {
+  EXPECT_THROW(Texture({volume_level(2, 2, 3)}, false), Error);  // a 2-D texture has one slice
+  Texture::Level bad = volume_level(2, 2, 3);
+  bad.texels.pop_back();
+  EXPECT_THROW(Texture({bad}, true), Error);
+  EXPECT_THROW(Texture({volume_level(4, 4, 4), volume_level(2, 2, 4)}, true), Error);
+  EXPECT_NO_THROW(Texture({volume_level(4, 4, 1), volume_level(2, 2, 1)}, true));
+}
+
+// --- texture borders (Texture::Level::border; OpenGL's border = 1)
+
+TEST(TextureBorder, ClampToBorderReadsTheRingTheOtherModesDoNot) {
+  // A 2x2 image (red 10, 20 / 30, 40) inside a ring of red 200 (left, right columns)
+  // and 100 (top, bottom rows): 4x4 texels.
+  Texture::Level l{2, 2, std::vector<uint32_t>(16), 1, 1};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const bool inside = x > 0 && x < 3 && y > 0 && y < 3;
+      const uint32_t red = inside ? uint32_t(10 * ((y - 1) * 2 + (x - 1) + 1)) : (x == 0 || x == 3) ? 200u : 100u;
+      l.texels[size_t(y) * 4 + x] = red | 0xff000000u;
+    }
+  const Texture t({l});
+  SamplerState s;
+  s.mag = s.min = SamplerState::Texel::Nearest, s.mip = SamplerState::Mip::None;
+  s.border_color = {0, 1, 0, 1};
+  auto red = [&](float u, float v) {
+    float c[4];
+    raster::sample_for_test(SamplerView(t, s), u, v, 0, c);
+    return c[0] * 255;
+  };
+  EXPECT_FALSE(SamplerView(t, s).volume);
+  // Inside: the image, not the ring.
+  EXPECT_NEAR(red(0.25f, 0.25f), 10, 1e-3);
+  EXPECT_NEAR(red(0.75f, 0.75f), 40, 1e-3);
+  // Repeat and clamp-to-edge never read the ring.
+  EXPECT_NEAR(red(1.25f, 0.25f), 10, 1e-3);
+  s.wrap_s = s.wrap_t = Wrap::Clamp;
+  EXPECT_NEAR(red(-0.5f, 0.25f), 10, 1e-3);
+  // Clamp-to-border reads the ring's texels, not the border colour.
+  s.wrap_s = s.wrap_t = Wrap::ClampToBorder;
+  EXPECT_NEAR(red(-0.25f, 0.25f), 200, 1e-3);
+  EXPECT_NEAR(red(0.75f, 1.4f), 100, 1e-3);
+  // Linear at the image's edge blends the last texel and the ring half and half.
+  s.mag = SamplerState::Texel::Linear;
+  EXPECT_NEAR(red(0.0f, 0.25f), (200 + 10) / 2.0, 1e-3);
+  // A border of 2, or levels with different borders, are refused.
+  Texture::Level two = l;
+  two.border = 2;
+  EXPECT_THROW(Texture({two}), Error);
 }
