@@ -2,6 +2,9 @@
 // state GL 1.5's tables 6.5-6.35 name, saved and restored group by group. A group
 // restores exactly its own fields (GL_ENABLE_BIT the enables, GL_DEPTH_BUFFER_BIT the
 // depth test, function, mask and clear value, ...), whatever else the frame saved.
+#include <algorithm>
+#include <iterator>
+
 #include "context.hpp"
 
 namespace velocity::gl {
@@ -30,6 +33,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.tex_gen = tex_gen_;
   f.draw_buffer = draw_buffer_, f.read_buffer = read_buffer_;
   f.transfer = pixels.transfer;
+  if (mask & (GL_EVAL_BIT | GL_ENABLE_BIT)) f.eval = eval_;
   attrib_stack_.push_back(std::move(f));
 }
 
@@ -114,6 +118,14 @@ void Context::pop_attrib() {
     tex_gen_ = f.tex_gen;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;
+  if (m & (GL_EVAL_BIT | GL_ENABLE_BIT)) {
+    // Both groups hold the maps' enables and GL_AUTO_NORMAL; GL_EVAL_BIT the grids too
+    // (the maps themselves are in no group).
+    std::copy(std::begin(f.eval.enabled), std::end(f.eval.enabled), eval_.enabled);
+    std::copy(std::begin(f.eval.enabled2), std::end(f.eval.enabled2), eval_.enabled2);
+    eval_.auto_normal = f.eval.auto_normal;
+    if (m & GL_EVAL_BIT) eval_.grid1 = f.eval.grid1, eval_.grid2u = f.eval.grid2u, eval_.grid2v = f.eval.grid2v;
+  }
   update_clip_planes();
   transform_.derived_dirty = true;
   if (lighting_.color_material) apply_color_material();

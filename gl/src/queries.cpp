@@ -155,7 +155,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
   if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
-  if (const bool on = map1_enabled(cap, known); *known) return on;  // (evaluators.cpp)
+  if (const bool on = evaluator_enabled(cap, known); *known) return on;  // (evaluators.cpp)
   *known = true;
   switch (cap) {
     case GL_DEPTH_TEST: return raster_.depth_test;

@@ -378,6 +378,46 @@ void evaluator_call(Bytes& in, const std::vector<float>& attrib, float a, float 
   }
 }
 
+// Two-dimensional evaluators: any target, domains (NaN too), strides and orders (the
+// points read stay inside `attrib`: at most 30 * 4 + 30 * 4 + 4 of its 512 floats),
+// GL_AUTO_NORMAL, evaluated inside and outside glBegin/glEnd, meshes on grids below 40
+// a side in the three modes (and a bad one), in a display list, under glPushAttrib.
+void evaluator2_call(Bytes& in, const std::vector<float>& attrib, float a, float b, GLenum e1) {
+  const GLenum target = in.u8() < 230 ? GL_MAP2_COLOR_4 + GLenum(in.below(9)) : e1;
+  switch (in.below(7)) {
+    case 0:
+      glMap2f(target, a, b, in.below(6) - 1, in.below(33) - 1, b, a + 1, in.below(6) - 1, in.below(33) - 1,
+              attrib.data());
+      break;
+    case 1: (in.u8() & 1 ? glEnable : glDisable)(in.u8() & 1 ? GLenum(GL_AUTO_NORMAL) : target); break;
+    case 2:
+      glBegin(in.u8() & 1 ? GL_TRIANGLE_STRIP : GL_POINTS);
+      for (int i = in.below(20); i >= 0; --i) glEvalCoord2f(a + float(i) * b, b - float(i) * a);
+      glEvalPoint2(in.below(60) - 10, in.below(60) - 10);
+      glEnd();
+      break;
+    case 3: glMapGrid2f(in.below(40) - 1, a, b, in.below(40) - 1, b, a); break;
+    case 4: {
+      const bool listed = in.u8() & 1;
+      if (listed) glNewList(1, GL_COMPILE_AND_EXECUTE);
+      glEvalMesh2(in.u8() < 230 ? GL_POINT + GLenum(in.below(3)) : e1, in.below(40) - 5, in.below(40) - 5,
+                  in.below(40) - 5, in.below(40) - 5);
+      if (listed) glEndList();
+      break;
+    }
+    case 5:
+      glPushAttrib(in.u8() & 1 ? GL_EVAL_BIT : GL_ENABLE_BIT);
+      glEnable(GL_MAP2_VERTEX_3);
+      glPopAttrib();
+      break;
+    default: {
+      static std::vector<GLfloat> v(30 * 30 * 4);
+      glGetMapfv(target, in.u8() < 230 ? GL_COEFF + GLenum(in.below(3)) : e1, v.data());
+      break;
+    }
+  }
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -712,6 +752,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         buffer_call(in, pixels, buffer_names, e1, e2);
         texture_1d_call(in, pixels, names, a, b, e1);
         evaluator_call(in, attrib, a, b, e1);
+        evaluator2_call(in, attrib, a, b, e1);
         buffer_lod_call(in, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);

@@ -988,6 +988,31 @@ GLAPI void GLAPIENTRY glEvalPoint1(GLint i);
 GLAPI void GLAPIENTRY glGetMapfv(GLenum target, GLenum query, GLfloat *v);
 GLAPI void GLAPIENTRY glGetMapdv(GLenum target, GLenum query, GLdouble *v);
 GLAPI void GLAPIENTRY glGetMapiv(GLenum target, GLenum query, GLint *v);
+/* Two-dimensional evaluators (glMap2, glEvalCoord2, glMapGrid2, glEvalMesh2, GL_AUTO_NORMAL) */
+#define GL_AUTO_NORMAL 0x0D80
+#define GL_MAP2_COLOR_4 0x0DB0
+#define GL_MAP2_INDEX 0x0DB1
+#define GL_MAP2_NORMAL 0x0DB2
+#define GL_MAP2_TEXTURE_COORD_1 0x0DB3
+#define GL_MAP2_TEXTURE_COORD_2 0x0DB4
+#define GL_MAP2_TEXTURE_COORD_3 0x0DB5
+#define GL_MAP2_TEXTURE_COORD_4 0x0DB6
+#define GL_MAP2_VERTEX_3 0x0DB7
+#define GL_MAP2_VERTEX_4 0x0DB8
+#define GL_MAP2_GRID_DOMAIN 0x0DD2
+#define GL_MAP2_GRID_SEGMENTS 0x0DD3
+GLAPI void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1,
+                              GLfloat v2, GLint vstride, GLint vorder, const GLfloat *points);
+GLAPI void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder, GLdouble v1,
+                              GLdouble v2, GLint vstride, GLint vorder, const GLdouble *points);
+GLAPI void GLAPIENTRY glEvalCoord2f(GLfloat u, GLfloat v);
+GLAPI void GLAPIENTRY glEvalCoord2d(GLdouble u, GLdouble v);
+GLAPI void GLAPIENTRY glEvalCoord2fv(const GLfloat *u);
+GLAPI void GLAPIENTRY glEvalCoord2dv(const GLdouble *u);
+GLAPI void GLAPIENTRY glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2);
+GLAPI void GLAPIENTRY glMapGrid2d(GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2);
+GLAPI void GLAPIENTRY glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2);
+GLAPI void GLAPIENTRY glEvalPoint2(GLint i, GLint j);
 
 /* GL 1.1's glGetPointerv */
 #define GL_VERTEX_ARRAY_POINTER 0x808E
