@@ -2,9 +2,9 @@
  * tessellator (the gluTess* calls, gluBeginPolygon), which is Debian's libGLU: programs
  * that link velocity-gl link it too (CMake's target, pkg-config's velocity-gl), and its
  * GL calls reach libvelocity-gl, loaded before it. NURBS (gluNurbs*) is libGLU's too, drawing
- * with pGL's evaluators. GLU_VERSION_1_1 and _1_2 are defined;
- * GLU_VERSION_1_3 is not, as its additions (gluCheckExtension, gluBuild*MipmapLevels,
- * gluUnProject4) do not exist here: a program guarded by it takes its fallback. */
+ * with pGL's evaluators, and so are gluScaleImage, gluBuild1DMipmaps, gluPickMatrix and
+ * GLU 1.3's additions but gluBuild3DMipmaps (GL 1.2's 3-D textures are not pGL's).
+ * GLU_VERSION_1_1 to _1_3 are defined. */
 #ifndef __glu_h__
 #define __glu_h__
 
@@ -16,6 +16,7 @@ extern "C" {
 
 #define GLU_VERSION_1_1 1
 #define GLU_VERSION_1_2 1
+#define GLU_VERSION_1_3 1
 
 #define GLU_FALSE 0
 #define GLU_TRUE 1
@@ -69,6 +70,27 @@ GLAPI void GLAPIENTRY gluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, 
 GLAPI void GLAPIENTRY gluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops,
                                      GLdouble start, GLdouble sweep);
 GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
+
+/* GLU 1.1's and 1.3's image, mipmap, picking and projection calls that are libGLU's (its
+ * GL calls reach pGL): gluScaleImage, gluBuild1DMipmaps, the *MipmapLevels forms,
+ * gluPickMatrix, gluCheckExtension, gluUnProject4. */
+#define GLU_INVALID_OPERATION 100904
+#define GLU_INCOMPATIBLE_GL_VERSION 100903
+GLAPI GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei wIn, GLsizei hIn, GLenum typeIn, const void *dataIn,
+                                     GLsizei wOut, GLsizei hOut, GLenum typeOut, GLvoid *dataOut);
+GLAPI GLint GLAPIENTRY gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format,
+                                         GLenum type, const void *data);
+GLAPI GLint GLAPIENTRY gluBuild1DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLenum format,
+                                              GLenum type, GLint level, GLint base, GLint max, const void *data);
+GLAPI GLint GLAPIENTRY gluBuild2DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
+                                              GLenum format, GLenum type, GLint level, GLint base, GLint max,
+                                              const void *data);
+GLAPI void GLAPIENTRY gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY, GLint *viewport);
+GLAPI GLboolean GLAPIENTRY gluCheckExtension(const GLubyte *extName, const GLubyte *extString);
+GLAPI GLint GLAPIENTRY gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW,
+                                     const GLdouble *model, const GLdouble *proj, const GLint *view,
+                                     GLdouble nearVal, GLdouble farVal, GLdouble *objX, GLdouble *objY,
+                                     GLdouble *objZ, GLdouble *objW);
 
 /* The tessellator (libGLU's; GLU 1.2 section 5). */
 #define GLU_TESS_BEGIN 100100
