@@ -86,6 +86,7 @@ class Context {
   GLenum format() const { return format_; }
   int width() const { return width_; }
   int height() const { return height_; }
+  void* buffer() const { return buffer_; }  // OSMesaGetColorBuffer's (null before make_current)
   bool y_up = true;
   int row_length = 0;
 
