@@ -49,8 +49,12 @@ void Context::pop_attrib() {
     color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
     pixels.raster = f.raster_pos;
   }
-  if (m & GL_PIXEL_MODE_BIT)
+  if (m & GL_PIXEL_MODE_BIT) {
+    // (glPixelMap's tables are in no group: the current ones stay.)
+    const auto maps = pixels.transfer.maps;
     pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y, pixels.transfer = f.transfer, read_buffer(f.read_buffer);
+    pixels.transfer.maps = maps;
+  }
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
   if (m & GL_LINE_BIT) {
     r.line_width = s.line_width;

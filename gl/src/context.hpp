@@ -328,6 +328,8 @@ class Context {
   void draw_stencil_pixels(GLsizei w, GLsizei h, const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
   void pixel_transfer(GLenum pname, double value);  // (pixel_transfer.cpp)
+  void pixel_map(GLenum map, const std::vector<float>& values);       // glPixelMap (pixel_transfer.cpp)
+  bool get_pixel_map(GLenum map, std::vector<float>& out, bool* colour);  // glGetPixelMap
   bool get_pixel_transfer(GLenum pname, std::vector<double>& out) const;
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);

@@ -127,7 +127,6 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
-    case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT:

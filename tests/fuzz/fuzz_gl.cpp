@@ -418,6 +418,38 @@ void evaluator2_call(Bytes& in, const std::vector<float>& attrib, float a, float
   }
 }
 
+// glPixelMap: any table name, sizes around the limits (the values read stay inside
+// `attrib`'s 512 floats; NaN and huge values included), read back in the three types,
+// then used by glDrawPixels of colours and stencil indices with the maps on.
+void pixel_map_call(Bytes& in, const std::vector<float>& attrib, GLenum e1) {
+  const GLenum map = in.u8() < 230 ? GL_PIXEL_MAP_I_TO_I + GLenum(in.below(10)) : e1;
+  const GLsizei size = GLsizei(in.below(260)) - 1;
+  switch (in.below(3)) {
+    case 0: glPixelMapfv(map, size, attrib.data()); break;
+    case 1: glPixelMapuiv(map, size, reinterpret_cast<const GLuint*>(attrib.data())); break;
+    default: glPixelMapusv(map, size, reinterpret_cast<const GLushort*>(attrib.data())); break;
+  }
+  static std::vector<GLuint> back(256);
+  glGetPixelMapuiv(map, back.data());
+  glGetPixelMapusv(map, reinterpret_cast<GLushort*>(back.data()));
+  glGetPixelMapfv(map, reinterpret_cast<GLfloat*>(back.data()));
+  glPixelTransferi(GL_MAP_COLOR, in.u8() & 1);
+  glPixelTransferi(GL_MAP_STENCIL, in.u8() & 1);
+  glPixelTransferi(GL_INDEX_OFFSET, int(in.below(600)) - 300);
+  // 16 bytes: read with the default unpack state (the random one may reach past them).
+  const GLubyte pixels[4 * 4] = {0, 64, 128, 255, 1, 2, 3, 4, 250, 7, 9, 200, 13, 17, 19, 23};
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0), glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0), glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glRasterPos2f(0, 0);
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  glDrawPixels(4, 4, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, pixels);
+  glPopClientAttrib();
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -753,6 +785,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         texture_1d_call(in, pixels, names, a, b, e1);
         evaluator_call(in, attrib, a, b, e1);
         evaluator2_call(in, attrib, a, b, e1);
+        pixel_map_call(in, attrib, e1);
         buffer_lod_call(in, a, b, e1);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
