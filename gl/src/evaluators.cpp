@@ -232,32 +232,31 @@ void Context::eval_mesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
   if (i2 < i1 || j2 < j1) return;
   // A mesh of more points than a primitive may have is GL_OUT_OF_MEMORY, as one that
   // long would be in the vertex stage: the loops below stay bounded.
-  const int64_t points = (int64_t(i2) - i1 + 1) * (int64_t(j2) - j1 + 1);
-  if (points > int64_t(kMaxPrimitiveVertices)) return error(GL_OUT_OF_MEMORY);
+  const int64_t ni = int64_t(i2) - i1 + 1, nj = int64_t(j2) - j1 + 1, most = int64_t(kMaxPrimitiveVertices);
+  if (ni > most || nj > most || ni * nj > most) return error(GL_OUT_OF_MEMORY);
+  // (The loops count in 64 bits: an index range ending at INT_MAX must not overflow.)
   const EvalGrid &gu = eval_.grid2u, &gv = eval_.grid2v;
+  auto at = [&](int64_t i, int64_t j) { eval_coord2(grid_point(gu, GLint(i)), grid_point(gv, GLint(j))); };
   if (mode == GL_POINT) {
     begin(GL_POINTS);
-    for (GLint j = j1; j <= j2; ++j)
-      for (GLint i = i1; i <= i2; ++i) eval_coord2(grid_point(gu, i), grid_point(gv, j));
+    for (int64_t j = j1; j <= j2; ++j)
+      for (int64_t i = i1; i <= i2; ++i) at(i, j);
     end();
   } else if (mode == GL_LINE) {
-    for (GLint j = j1; j <= j2; ++j) {
+    for (int64_t j = j1; j <= j2; ++j) {
       begin(GL_LINE_STRIP);
-      for (GLint i = i1; i <= i2; ++i) eval_coord2(grid_point(gu, i), grid_point(gv, j));
+      for (int64_t i = i1; i <= i2; ++i) at(i, j);
       end();
     }
-    for (GLint i = i1; i <= i2; ++i) {
+    for (int64_t i = i1; i <= i2; ++i) {
       begin(GL_LINE_STRIP);
-      for (GLint j = j1; j <= j2; ++j) eval_coord2(grid_point(gu, i), grid_point(gv, j));
+      for (int64_t j = j1; j <= j2; ++j) at(i, j);
       end();
     }
   } else {
-    for (GLint j = j1; j < j2; ++j) {
+    for (int64_t j = j1; j < j2; ++j) {
       begin(GL_TRIANGLE_STRIP);
-      for (GLint i = i1; i <= i2; ++i) {
-        eval_coord2(grid_point(gu, i), grid_point(gv, j));
-        eval_coord2(grid_point(gu, i), grid_point(gv, j + 1));
-      }
+      for (int64_t i = i1; i <= i2; ++i) at(i, j), at(i, j + 1);
       end();
     }
   }
