@@ -122,8 +122,7 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
       out = {1, double(kMaxPointLineSize)}; return true;
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
     // One texture unit; no compressed formats. The features pGL lacks have a limit of 0,
-    // so a program that asks learns that they are missing (docs/gl.md): evaluators,
-    // pixel maps.
+    // so a program that asks learns that they are missing (docs/gl.md).
     case GL_MAX_TEXTURE_UNITS: out = {1}; return true;
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
