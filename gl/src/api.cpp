@@ -5,6 +5,7 @@
 // exception leaves an entry point: out of memory is GL_OUT_OF_MEMORY.
 #include <GL/gl.h>
 #include <GL/osmesa.h>
+#include <dlfcn.h>
 
 #include <array>
 #include <cmath>
@@ -886,6 +887,37 @@ GLboolean OSMesaGetDepthBuffer(OSMesaContext ctx, GLint* width, GLint* height, G
   } catch (const std::exception&) {
     return GL_FALSE;
   }
+}
+
+// The buffer OSMesaMakeCurrent gave the context, as Mesa's: GL_FALSE (and zeros) before.
+GLboolean OSMesaGetColorBuffer(OSMesaContext ctx, GLint* width, GLint* height, GLint* format, void** buffer) {
+  const bool has = ctx && ctx->gl.buffer();
+  if (width) *width = has ? ctx->gl.width() : 0;
+  if (height) *height = has ? ctx->gl.height() : 0;
+  if (format) *format = has ? GLint(ctx->gl.format()) : 0;
+  if (buffer) *buffer = has ? ctx->gl.buffer() : nullptr;
+  return has ? GL_TRUE : GL_FALSE;
+}
+
+// Mesa clamps a float buffer's colours only when asked; pGL's buffers are 8 bits a
+// channel (OSMESA_TYPE GL_UNSIGNED_BYTE), whose colours are clamped either way, as
+// Mesa's are: nothing to change.
+void OSMesaColorClamp(GLboolean enable) { (void)enable; }
+
+// The gl* and OSMesa* functions this library exports, by name (its own dynamic symbol
+// table, so every entry point is found without a second list of them); NULL for
+// any other name, GLU's included.
+OSMESAproc OSMesaGetProcAddress(const char* name) {
+  if (!name) return nullptr;
+  const bool gl = std::strncmp(name, "gl", 2) == 0 && std::strncmp(name, "glu", 3) != 0;
+  if (!gl && std::strncmp(name, "OSMesa", 6) != 0) return nullptr;
+  Dl_info self;
+  if (!dladdr(reinterpret_cast<void*>(&OSMesaGetProcAddress), &self) || !self.dli_fname) return nullptr;
+  void* library = dlopen(self.dli_fname, RTLD_LAZY | RTLD_NOLOAD);
+  if (!library) return nullptr;
+  void* function = dlsym(library, name);
+  dlclose(library);  // (RTLD_NOLOAD took a reference of the loaded library; it stays loaded)
+  return reinterpret_cast<OSMESAproc>(function);
 }
 
 }  // extern "C"

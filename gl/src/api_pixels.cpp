@@ -125,6 +125,50 @@ void glCopyPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { LIST(c.
 void glPixelZoom(GLfloat x, GLfloat y) { LIST(c.pixel_zoom(x, y)); }
 void glPixelTransferf(GLenum pname, GLfloat v) { LIST(c.pixel_transfer(pname, double(v))); }
 void glPixelTransferi(GLenum pname, GLint v) { LIST(c.pixel_transfer(pname, double(v))); }
+
+// glPixelMap: the values converted when called (unsigned ints and shorts of a colour
+// table as fractions of their maximum, of an index table as they are), so a display
+// list keeps them; a size beyond the largest table is refused before anything is read.
+}  // extern "C"
+namespace {
+bool colour_map(GLenum map) { return map >= GL_PIXEL_MAP_I_TO_R && map <= GL_PIXEL_MAP_A_TO_A; }
+
+template <class T>
+void pixel_map(GLenum map, GLsizei size, const T* values, double max) {
+  NOW(if (size < 1 || size > velocity::gl::kMaxPixelMap) {
+        if (!c.in_begin_error()) c.error(GL_INVALID_VALUE);
+        return;
+      } if (!values) return;
+      std::vector<float> v(static_cast<size_t>(size));
+      const double unit = colour_map(map) ? max : 1.0;
+      for (size_t i = 0; i < v.size(); ++i) v[i] = float(double(values[i]) / unit);
+      velocity::gl::entry::compiled([=](Context& x) { x.pixel_map(map, v); }));
+}
+
+template <class T, class Convert>
+void get_pixel_map(GLenum map, T* values, Convert convert) {
+  NOW(std::vector<float> out; bool colour = false; if (!c.get_pixel_map(map, out, &colour) || !values) return;
+      for (size_t i = 0; i < out.size(); ++i) values[i] = convert(out[i], colour));
+}
+}  // namespace
+extern "C" {
+
+void glPixelMapfv(GLenum map, GLsizei size, const GLfloat* values) { pixel_map(map, size, values, 1.0); }
+void glPixelMapuiv(GLenum map, GLsizei size, const GLuint* values) { pixel_map(map, size, values, 4294967295.0); }
+void glPixelMapusv(GLenum map, GLsizei size, const GLushort* values) { pixel_map(map, size, values, 65535.0); }
+void glGetPixelMapfv(GLenum map, GLfloat* values) {
+  get_pixel_map(map, values, [](float v, bool) { return v; });
+}
+void glGetPixelMapuiv(GLenum map, GLuint* values) {
+  get_pixel_map(map, values, [](float v, bool colour) {
+    return colour ? GLuint(std::lround(double(v) * 4294967295.0)) : GLuint(GLint(std::lround(v)));
+  });
+}
+void glGetPixelMapusv(GLenum map, GLushort* values) {
+  get_pixel_map(map, values, [](float v, bool colour) {
+    return colour ? GLushort(std::lround(v * 65535.0f)) : GLushort(GLint(std::lround(v)));
+  });
+}
 void glPixelStoref(GLenum pname, GLfloat v) {
   // A float count is rounded to the nearest integer, halves away from zero as Mesa
   // does (-0.5 is -1: GL_INVALID_VALUE); a boolean is true when non-zero.

@@ -2,6 +2,9 @@
 // state GL 1.5's tables 6.5-6.35 name, saved and restored group by group. A group
 // restores exactly its own fields (GL_ENABLE_BIT the enables, GL_DEPTH_BUFFER_BIT the
 // depth test, function, mask and clear value, ...), whatever else the frame saved.
+#include <algorithm>
+#include <iterator>
+
 #include "context.hpp"
 
 namespace velocity::gl {
@@ -33,6 +36,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.draw_buffer = draw_buffer_, f.read_buffer = read_buffer_;
   f.transfer = pixels.transfer;
   save_color_sum(f);  // (color_sum.cpp)
+  if (mask & (GL_EVAL_BIT | GL_ENABLE_BIT)) f.eval = eval_;
   attrib_stack_.push_back(std::move(f));
   make_live(active_unit_);
 }
@@ -50,8 +54,12 @@ void Context::pop_attrib() {
     color_ = f.color, texcoord_ = f.texcoord, normal_ = f.normal, edge_flag_ = f.edge_flag;
     pixels.raster = f.raster_pos;
   }
-  if (m & GL_PIXEL_MODE_BIT)
+  if (m & GL_PIXEL_MODE_BIT) {
+    // (glPixelMap's tables are in no group: the current ones stay.)
+    const auto maps = pixels.transfer.maps;
     pixels.zoom_x = f.zoom_x, pixels.zoom_y = f.zoom_y, pixels.transfer = f.transfer, read_buffer(f.read_buffer);
+    pixels.transfer.maps = maps;
+  }
   if (m & GL_POINT_BIT) r.point_size = s.point_size;
   if (m & GL_LINE_BIT) {
     r.line_width = s.line_width;
@@ -125,6 +133,14 @@ void Context::pop_attrib() {
   restore_color_sum(f);  // (color_sum.cpp)
   restore_units(f);
   make_live(active_unit_);
+  if (m & (GL_EVAL_BIT | GL_ENABLE_BIT)) {
+    // Both groups hold the maps' enables and GL_AUTO_NORMAL; GL_EVAL_BIT the grids too
+    // (the maps themselves are in no group).
+    std::copy(std::begin(f.eval.enabled), std::end(f.eval.enabled), eval_.enabled);
+    std::copy(std::begin(f.eval.enabled2), std::end(f.eval.enabled2), eval_.enabled2);
+    eval_.auto_normal = f.eval.auto_normal;
+    if (m & GL_EVAL_BIT) eval_.grid1 = f.eval.grid1, eval_.grid2u = f.eval.grid2u, eval_.grid2v = f.eval.grid2v;
+  }
   update_clip_planes();
   transform_.derived_dirty = true;
   if (lighting_.color_material) apply_color_material();

@@ -45,7 +45,7 @@
 //   occlusion.cpp     GL 1.5's occlusion queries (GL_SAMPLES_PASSED)
 //   api_buffers.cpp   their C entry points, glGetPointerv
 //   texture_1d.cpp    1-D textures (height-1 images); api_texture_1d.cpp their C calls
-//   evaluators.cpp    one-dimensional evaluators; api_evaluators.cpp their C calls
+//   evaluators.cpp    evaluators (1-D and 2-D); api_evaluators.cpp their C calls
 //   color_sum.cpp     GL 1.4's secondary colour and fog coordinates, GL 1.2's separate
 //                     specular colour; api_color_sum.cpp their C calls
 //   multitexture.cpp  GL 1.3's texture units; api_multitexture.cpp their C calls
@@ -92,6 +92,7 @@ class Context {
   GLenum format() const { return format_; }
   int width() const { return width_; }
   int height() const { return height_; }
+  void* buffer() const { return buffer_; }  // OSMesaGetColorBuffer's (null before make_current)
   bool y_up = true;
   int row_length = 0;
 
@@ -304,17 +305,23 @@ class Context {
   // glGetQueryObject(u)iv: false with GL's error recorded, else the value in *out.
   bool get_query_object(GLuint id, GLenum pname, uint64_t* out);
 
-  // --- one-dimensional evaluators (evaluators.cpp)
+  // --- evaluators (evaluators.cpp)
   static int map1_components(GLenum target);  // 0: not a GL_MAP1_* target
+  static int map2_components(GLenum target);  // 0: not a GL_MAP2_* target
   void map1(GLenum target, float u1, float u2, GLint stride, GLint order, const std::vector<float>& points);
-  bool enable_map1(GLenum cap, bool on);  // false: not a GL_MAP1_* name
-  bool map1_enabled(GLenum cap, bool* known) const;
+  void map2(GLenum target, const Map2& map, GLint ustride, GLint vstride);  // map.points packed
+  bool enable_evaluator(GLenum cap, bool on);  // false: not a GL_MAP* name or GL_AUTO_NORMAL
+  bool evaluator_enabled(GLenum cap, bool* known) const;
   void eval_coord1(float u);
+  void eval_coord2(float u, float v);
   void map_grid1(GLint n, float u1, float u2);
+  void map_grid2(GLint un, float u1, float u2, GLint vn, float v1, float v2);
   float grid_u(GLint i) const;
+  void eval_point2(GLint i, GLint j);
   void eval_mesh1(GLenum mode, GLint i1, GLint i2);
-  bool get_map1(GLenum target, GLenum query, std::vector<double>& out);  // glGetMap
-  bool get_eval(GLenum pname, std::vector<double>& out) const;          // glGet's
+  void eval_mesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2);
+  bool get_map(GLenum target, GLenum query, std::vector<double>& out);  // glGetMap
+  bool get_eval(GLenum pname, std::vector<double>& out) const;         // glGet's
 
   // --- display lists (lists.cpp)
   GLuint gen_lists(GLsizei range);
@@ -359,6 +366,8 @@ class Context {
                                  const std::vector<uint8_t>& indices);
   void pixel_zoom(float x, float y);
   void pixel_transfer(GLenum pname, double value);  // (pixel_transfer.cpp)
+  void pixel_map(GLenum map, const std::vector<float>& values);       // glPixelMap (pixel_transfer.cpp)
+  bool get_pixel_map(GLenum map, std::vector<float>& out, bool* colour);  // glGetPixelMap
   bool get_pixel_transfer(GLenum pname, std::vector<double>& out) const;
   void pixel_store(GLenum pname, double value);
   bool get_pixel_ops(GLenum pname, std::vector<double>& out, int& kind);
@@ -700,6 +709,7 @@ class Context {
   // Evaluators (evaluators.cpp).
   EvalState eval_;
   Vec4 evaluate1(const Map1& m, int k, float u, Vec4 defaults) const;
+  void evaluate2(const Map2& m, int k, float u, float v, float* out, float* du, float* dv) const;
 
   // GL 1.5's occlusion queries (occlusion.cpp).
   QueryState queries_;

@@ -169,12 +169,12 @@ GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsi
   return 0;
 }
 
-// GLU 1.1's: the version (1.2: the tessellator is Debian's libGLU, linked with pGL;
-// 1.3's calls are not here) and no GLU extensions.
+// GLU 1.1's: the version (1.3: the tessellator, NURBS and 1.3's calls are Debian's
+// libGLU, linked with pGL) and no GLU extensions.
 const GLubyte* gluGetString(GLenum name) {
   const char* s;
   switch (name) {
-    case GLU_VERSION: s = "1.2 Velocity pGL (a subset: docs/gl.md)"; break;
+    case GLU_VERSION: s = "1.3 Velocity pGL (with libGLU: docs/gl.md)"; break;
     case GLU_EXTENSIONS: s = ""; break;
     default: return nullptr;
   }
@@ -194,6 +194,8 @@ const GLubyte* gluErrorString(GLenum error) {
     case GLU_INVALID_ENUM: s = "invalid enumerant"; break;
     case GLU_INVALID_VALUE: s = "invalid value"; break;
     case GLU_OUT_OF_MEMORY: s = "out of memory"; break;
+    case GLU_INCOMPATIBLE_GL_VERSION: s = "incompatible gl version"; break;
+    case GLU_INVALID_OPERATION: s = "invalid operation"; break;
     default: return nullptr;
   }
   return reinterpret_cast<const GLubyte*>(s);

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "velocity/math.hpp"
@@ -37,27 +39,51 @@ constexpr GLint kMaxPixelStoreCount = GLint(1) << 24;
 // glPixelTransfer's state (GL 1.5 section 3.6.3). Colour maps, glPixelMap's tables, do
 // not exist: each is GL's default, one entry of 0, so GL_MAP_COLOR and GL_MAP_STENCIL
 // map every value to 0.
+// glPixelMap's ten tables, GL_PIXEL_MAP_I_TO_I to GL_PIXEL_MAP_A_TO_A in the enums'
+// order (pixel_transfer.cpp); each holds 1 to kMaxPixelMap values (GL's default: one 0).
+constexpr int kPixelMaps = 10;
+constexpr int kMaxPixelMap = 256;  // GL_MAX_PIXEL_MAP_TABLE (as Mesa's)
+struct PixelMaps {
+  std::vector<float> table[kPixelMaps];
+  PixelMaps() {
+    for (auto& t : table) t.assign(1, 0.0f);
+  }
+};
+
 struct PixelTransfer {
   float scale[4] = {1, 1, 1, 1}, bias[4] = {0, 0, 0, 0};  // RGBA
   float depth_scale = 1, depth_bias = 0;
   bool map_color = false, map_stencil = false;
   GLint index_shift = 0, index_offset = 0;
+  std::shared_ptr<const PixelMaps> maps = std::make_shared<const PixelMaps>();  // copied on write
   // Whether colour (or depth, or an index) comes through unchanged.
   bool colour_identity() const {
     return !map_color && scale[0] == 1 && scale[1] == 1 && scale[2] == 1 && scale[3] == 1 && bias[0] == 0 &&
            bias[1] == 0 && bias[2] == 0 && bias[3] == 0;
   }
   // c's RGBA scaled, biased and mapped, before the clamp to [0, 1].
+  // With GL_MAP_COLOR, the value clamped to [0, 1] then looked up in R_TO_R .. A_TO_A
+  // at round(value * (size - 1)), as Mesa.
   void colour(float* c) const {
-    for (int k = 0; k < 4; ++k) c[k] = map_color ? 0.0f : c[k] * scale[k] + bias[k];
+    for (int k = 0; k < 4; ++k) {
+      c[k] = c[k] * scale[k] + bias[k];
+      if (!map_color) continue;
+      const std::vector<float>& t = maps->table[6 + k];
+      const float v = c[k] > 0 ? (c[k] < 1 ? c[k] : 1.0f) : 0.0f;  // (NaN reads 0)
+      c[k] = t[size_t(std::lround(v * float(t.size() - 1)))];
+    }
   }
   float depth(float d) const { return d * depth_scale + depth_bias; }
   // An index shifted and offset (in 64-bit modular arithmetic: only its low bits are kept).
+  // With GL_MAP_STENCIL, then looked up in S_TO_S (its size a power of two) at the
+  // index's low bits, as Mesa.
   int64_t index(int64_t i) const {
-    if (map_stencil) return 0;
     const uint64_t shifted = index_shift >= 0 ? uint64_t(i) << std::min(index_shift, GLint(63))
                                               : uint64_t(i >> std::min(-int64_t(index_shift), int64_t(63)));
-    return int64_t(shifted + uint64_t(int64_t(index_offset)));
+    const int64_t out = int64_t(shifted + uint64_t(int64_t(index_offset)));
+    if (!map_stencil) return out;
+    const std::vector<float>& t = maps->table[1];
+    return int64_t(std::lround(t[size_t(uint64_t(out) & uint64_t(t.size() - 1))]));
   }
 };
 

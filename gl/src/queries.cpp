@@ -128,10 +128,9 @@ bool Context::get(GLenum pname, std::vector<double>& out, int& kind) {
       out = {1, double(kMaxPointLineSize)}; return true;
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: out = {1}; return true;
     // No compressed formats. The features pGL lacks have a limit of 0, so a program
-    // that asks learns that they are missing (docs/gl.md): pixel maps.
+    // that asks learns that they are missing (docs/gl.md).
     case GL_MAX_CLIP_PLANES: out = {double(kMaxClipPlanes)}; return true;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
-    case GL_MAX_PIXEL_MAP_TABLE:
       out = {0}; return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT:
@@ -159,7 +158,7 @@ bool Context::is_enabled(GLenum cap, bool* known) const {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) return user_clip.enabled[cap - GL_CLIP_PLANE0];
   if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return tex_gen_enabled(cap);
-  if (const bool on = map1_enabled(cap, known); *known) return on;  // (evaluators.cpp)
+  if (const bool on = evaluator_enabled(cap, known); *known) return on;  // (evaluators.cpp)
   if (const bool on = color_sum_enabled(cap, known); *known) return on;  // (color_sum.cpp)
   *known = true;
   switch (cap) {

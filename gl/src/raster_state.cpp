@@ -28,7 +28,7 @@ bool is_compare(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
 void Context::enable(GLenum cap, bool on) {
   if (in_begin_error()) return;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return void(lighting_.lights[cap - GL_LIGHT0].enabled = on);
-  if (enable_map1(cap, on)) return;  // (evaluators.cpp)
+  if (enable_evaluator(cap, on)) return;  // (evaluators.cpp)
   if (enable_color_sum(cap, on)) return;  // (color_sum.cpp)
   if (enable_clip_plane(cap, on)) return;  // (clip_planes.cpp)
   if (enable_tex_gen(cap, on)) return;     // (tex_gen.cpp)

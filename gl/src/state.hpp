@@ -257,8 +257,9 @@ struct QueryState {
   QueryObject* active_object = nullptr;
 };
 
-// --- one-dimensional evaluators (evaluators.cpp) ----------------------------------
+// --- evaluators (evaluators.cpp) --------------------------------------------------
 constexpr int kMap1Targets = 9;    // GL_MAP1_COLOR_4 .. GL_MAP1_VERTEX_4
+constexpr int kMap2Targets = 9;    // GL_MAP2_COLOR_4 .. GL_MAP2_VERTEX_4
 constexpr int kMaxEvalOrder = 30;  // GL_MAX_EVAL_ORDER (Mesa's)
 
 struct Map1 {
@@ -267,11 +268,26 @@ struct Map1 {
   std::vector<float> points;  // order control points of the target's components
 };
 
+struct Map2 {
+  float u1 = 0, u2 = 1, v1 = 0, v2 = 1;
+  int uorder = 1, vorder = 1;
+  std::vector<float> points;  // uorder x vorder control points, u-major (as glGetMap gives them)
+};
+
+// One axis of glMapGrid: n segments from a to b.
+struct EvalGrid {
+  GLint n = 1;
+  float a = 0, b = 1;
+};
+
+// The maps (not in any attribute group) and the flags and grids (GL_EVAL_BIT).
 struct EvalState {
   Map1 maps[kMap1Targets];
+  Map2 maps2[kMap2Targets];
   bool enabled[kMap1Targets] = {};
-  GLint grid_n = 1;  // glMapGrid1
-  float grid_u1 = 0, grid_u2 = 1;
+  bool enabled2[kMap2Targets] = {};
+  bool auto_normal = false;
+  EvalGrid grid1, grid2u, grid2v;
   EvalState();
 };
 
@@ -408,6 +424,7 @@ struct AttribFrame {
   TextureUnitState unit1;  // GL_TEXTURE_BIT, GL_ENABLE_BIT (its enables)
   int active_unit = 0;     // GL_TEXTURE_BIT
   Vec4 texcoord1{0, 0, 0, 1}, raster_texcoord1{0, 0, 0, 1};  // GL_CURRENT_BIT
+  EvalState eval;  // GL_EVAL_BIT (its flags and grids), GL_ENABLE_BIT (the enables)
 };
 
 struct ClientAttribFrame {

@@ -536,6 +536,78 @@ void evaluator_call(Bytes& in, const std::vector<float>& attrib, float a, float 
   }
 }
 
+// Two-dimensional evaluators: any target, domains (NaN too), strides and orders (the
+// points read stay inside `attrib`: at most 30 * 4 + 30 * 4 + 4 of its 512 floats),
+// GL_AUTO_NORMAL, evaluated inside and outside glBegin/glEnd, meshes on grids below 40
+// a side in the three modes (and a bad one), in a display list, under glPushAttrib.
+void evaluator2_call(Bytes& in, const std::vector<float>& attrib, float a, float b, GLenum e1) {
+  const GLenum target = in.u8() < 230 ? GL_MAP2_COLOR_4 + GLenum(in.below(9)) : e1;
+  switch (in.below(7)) {
+    case 0:
+      glMap2f(target, a, b, in.below(6) - 1, in.below(33) - 1, b, a + 1, in.below(6) - 1, in.below(33) - 1,
+              attrib.data());
+      break;
+    case 1: (in.u8() & 1 ? glEnable : glDisable)(in.u8() & 1 ? GLenum(GL_AUTO_NORMAL) : target); break;
+    case 2:
+      glBegin(in.u8() & 1 ? GL_TRIANGLE_STRIP : GL_POINTS);
+      for (int i = in.below(20); i >= 0; --i) glEvalCoord2f(a + float(i) * b, b - float(i) * a);
+      glEvalPoint2(in.below(60) - 10, in.below(60) - 10);
+      glEnd();
+      break;
+    case 3: glMapGrid2f(in.below(40) - 1, a, b, in.below(40) - 1, b, a); break;
+    case 4: {
+      const bool listed = in.u8() & 1;
+      if (listed) glNewList(1, GL_COMPILE_AND_EXECUTE);
+      glEvalMesh2(in.u8() < 230 ? GL_POINT + GLenum(in.below(3)) : e1, in.below(40) - 5, in.below(40) - 5,
+                  in.below(40) - 5, in.below(40) - 5);
+      if (listed) glEndList();
+      break;
+    }
+    case 5:
+      glPushAttrib(in.u8() & 1 ? GL_EVAL_BIT : GL_ENABLE_BIT);
+      glEnable(GL_MAP2_VERTEX_3);
+      glPopAttrib();
+      break;
+    default: {
+      static std::vector<GLfloat> v(30 * 30 * 4);
+      glGetMapfv(target, in.u8() < 230 ? GL_COEFF + GLenum(in.below(3)) : e1, v.data());
+      break;
+    }
+  }
+}
+
+// glPixelMap: any table name, sizes around the limits (the values read stay inside
+// `attrib`'s 512 floats; NaN and huge values included), read back in the three types,
+// then used by glDrawPixels of colours and stencil indices with the maps on.
+void pixel_map_call(Bytes& in, const std::vector<float>& attrib, GLenum e1) {
+  const GLenum map = in.u8() < 230 ? GL_PIXEL_MAP_I_TO_I + GLenum(in.below(10)) : e1;
+  const GLsizei size = GLsizei(in.below(260)) - 1;
+  switch (in.below(3)) {
+    case 0: glPixelMapfv(map, size, attrib.data()); break;
+    case 1: glPixelMapuiv(map, size, reinterpret_cast<const GLuint*>(attrib.data())); break;
+    default: glPixelMapusv(map, size, reinterpret_cast<const GLushort*>(attrib.data())); break;
+  }
+  static std::vector<GLuint> back(256);
+  glGetPixelMapuiv(map, back.data());
+  glGetPixelMapusv(map, reinterpret_cast<GLushort*>(back.data()));
+  glGetPixelMapfv(map, reinterpret_cast<GLfloat*>(back.data()));
+  glPixelTransferi(GL_MAP_COLOR, in.u8() & 1);
+  glPixelTransferi(GL_MAP_STENCIL, in.u8() & 1);
+  glPixelTransferi(GL_INDEX_OFFSET, int(in.below(600)) - 300);
+  // 16 bytes: read with the default unpack state (the random one may reach past them).
+  const GLubyte pixels[4 * 4] = {0, 64, 128, 255, 1, 2, 3, 4, 250, 7, 9, 200, 13, 17, 19, 23};
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0), glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0), glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glRasterPos2f(0, 0);
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  glDrawPixels(4, 4, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, pixels);
+  glPopClientAttrib();
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+}
+
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
 // GLUT's shapes with random sizes and counts (below 31, as the quadrics').
 void shape_call(Bytes& in, float a, float b) {
@@ -986,6 +1058,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         texture_3d_call(in, pixels, out, names, a, b, c, e1);
         texture_format_call(in, pixels, e1);
         evaluator_call(in, attrib, a, b, e1);
+        evaluator2_call(in, attrib, a, b, e1);
+        pixel_map_call(in, attrib, e1);
         buffer_lod_call(in, a, b, e1);
         color_sum_call(in, attrib, a, b, c, e1);
         multitexture_call(in, attrib, names, a, b, e1);

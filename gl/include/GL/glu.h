@@ -1,9 +1,10 @@
 /* Velocity's GLU (pGL): the GLU calls libvelocity-gl implements, and GLU 1.2's polygon
  * tessellator (the gluTess* calls, gluBeginPolygon), which is Debian's libGLU: programs
  * that link velocity-gl link it too (CMake's target, pkg-config's velocity-gl), and its
- * GL calls reach libvelocity-gl, loaded before it. GLU_VERSION_1_1 and _1_2 are defined;
- * GLU_VERSION_1_3 is not, as its additions (gluCheckExtension, gluBuild*MipmapLevels,
- * gluUnProject4) do not exist here: a program guarded by it takes its fallback. */
+ * GL calls reach libvelocity-gl, loaded before it. NURBS (gluNurbs*) is libGLU's too, drawing
+ * with pGL's evaluators, and so are gluScaleImage, gluBuild1DMipmaps, gluPickMatrix and
+ * GLU 1.3's additions but gluBuild3DMipmaps (GL 1.2's 3-D textures are not pGL's).
+ * GLU_VERSION_1_1 to _1_3 are defined. */
 #ifndef __glu_h__
 #define __glu_h__
 
@@ -15,6 +16,7 @@ extern "C" {
 
 #define GLU_VERSION_1_1 1
 #define GLU_VERSION_1_2 1
+#define GLU_VERSION_1_3 1
 
 #define GLU_FALSE 0
 #define GLU_TRUE 1
@@ -68,6 +70,27 @@ GLAPI void GLAPIENTRY gluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, 
 GLAPI void GLAPIENTRY gluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops,
                                      GLdouble start, GLdouble sweep);
 GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
+
+/* GLU 1.1's and 1.3's image, mipmap, picking and projection calls that are libGLU's (its
+ * GL calls reach pGL): gluScaleImage, gluBuild1DMipmaps, the *MipmapLevels forms,
+ * gluPickMatrix, gluCheckExtension, gluUnProject4. */
+#define GLU_INVALID_OPERATION 100904
+#define GLU_INCOMPATIBLE_GL_VERSION 100903
+GLAPI GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei wIn, GLsizei hIn, GLenum typeIn, const void *dataIn,
+                                     GLsizei wOut, GLsizei hOut, GLenum typeOut, GLvoid *dataOut);
+GLAPI GLint GLAPIENTRY gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format,
+                                         GLenum type, const void *data);
+GLAPI GLint GLAPIENTRY gluBuild1DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLenum format,
+                                              GLenum type, GLint level, GLint base, GLint max, const void *data);
+GLAPI GLint GLAPIENTRY gluBuild2DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
+                                              GLenum format, GLenum type, GLint level, GLint base, GLint max,
+                                              const void *data);
+GLAPI void GLAPIENTRY gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY, GLint *viewport);
+GLAPI GLboolean GLAPIENTRY gluCheckExtension(const GLubyte *extName, const GLubyte *extString);
+GLAPI GLint GLAPIENTRY gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW,
+                                     const GLdouble *model, const GLdouble *proj, const GLint *view,
+                                     GLdouble nearVal, GLdouble farVal, GLdouble *objX, GLdouble *objY,
+                                     GLdouble *objZ, GLdouble *objW);
 
 /* The tessellator (libGLU's; GLU 1.2 section 5). */
 #define GLU_TESS_BEGIN 100100
@@ -133,6 +156,66 @@ GLAPI void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess);
 GLAPI void GLAPIENTRY gluBeginPolygon(GLUtesselator *tess);
 GLAPI void GLAPIENTRY gluNextContour(GLUtesselator *tess, GLenum type);
 GLAPI void GLAPIENTRY gluEndPolygon(GLUtesselator *tess);
+
+/* NURBS (libGLU's, GLU 1.3 chapter 7: it draws through GL's evaluators, glMap1/glMap2,
+ * glEvalMesh, or in GLU_NURBS_TESSELLATOR mode to the GLU_NURBS_* callbacks). */
+#define GLU_AUTO_LOAD_MATRIX 100200
+#define GLU_CULLING 100201
+#define GLU_PARAMETRIC_TOLERANCE 100202
+#define GLU_SAMPLING_TOLERANCE 100203
+#define GLU_DISPLAY_MODE 100204
+#define GLU_SAMPLING_METHOD 100205
+#define GLU_U_STEP 100206
+#define GLU_V_STEP 100207
+#define GLU_OBJECT_PARAMETRIC_ERROR 100208
+#define GLU_OBJECT_PATH_LENGTH 100209
+#define GLU_PATH_LENGTH 100215
+#define GLU_PARAMETRIC_ERROR 100216
+#define GLU_DOMAIN_DISTANCE 100217
+#define GLU_MAP1_TRIM_2 100210
+#define GLU_MAP1_TRIM_3 100211
+#define GLU_OUTLINE_POLYGON 100240
+#define GLU_OUTLINE_PATCH 100241
+#define GLU_NURBS_ERROR 100103
+#define GLU_NURBS_MODE 100160
+#define GLU_NURBS_TESSELLATOR 100161
+#define GLU_NURBS_RENDERER 100162
+#define GLU_NURBS_BEGIN 100164
+#define GLU_NURBS_VERTEX 100165
+#define GLU_NURBS_NORMAL 100166
+#define GLU_NURBS_COLOR 100167
+#define GLU_NURBS_TEXTURE_COORD 100168
+#define GLU_NURBS_END 100169
+#define GLU_NURBS_BEGIN_DATA 100170
+#define GLU_NURBS_VERTEX_DATA 100171
+#define GLU_NURBS_NORMAL_DATA 100172
+#define GLU_NURBS_COLOR_DATA 100173
+#define GLU_NURBS_TEXTURE_COORD_DATA 100174
+#define GLU_NURBS_END_DATA 100175
+
+typedef struct GLUnurbs GLUnurbs;
+typedef GLUnurbs GLUnurbsObj;
+
+GLAPI GLUnurbs *GLAPIENTRY gluNewNurbsRenderer(void);
+GLAPI void GLAPIENTRY gluDeleteNurbsRenderer(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat value);
+GLAPI void GLAPIENTRY gluGetNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat *data);
+GLAPI void GLAPIENTRY gluNurbsCallback(GLUnurbs *nurb, GLenum which, _GLUfuncptr callback);
+GLAPI void GLAPIENTRY gluNurbsCallbackData(GLUnurbs *nurb, GLvoid *userData);
+GLAPI void GLAPIENTRY gluLoadSamplingMatrices(GLUnurbs *nurb, const GLfloat *model, const GLfloat *perspective,
+                                              const GLint *view);
+GLAPI void GLAPIENTRY gluBeginSurface(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndSurface(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots, GLint tKnotCount,
+                                      GLfloat *tKnots, GLint sStride, GLint tStride, GLfloat *control, GLint sOrder,
+                                      GLint tOrder, GLenum type);
+GLAPI void GLAPIENTRY gluBeginCurve(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndCurve(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride, GLfloat *control,
+                                    GLint order, GLenum type);
+GLAPI void GLAPIENTRY gluBeginTrim(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndTrim(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride, GLenum type);
 
 #ifdef __cplusplus
 }

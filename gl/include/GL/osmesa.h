@@ -47,6 +47,14 @@ GLAPI void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value);
 GLAPI void GLAPIENTRY OSMesaGetIntegerv(GLint pname, GLint *value);
 GLAPI GLboolean GLAPIENTRY OSMesaGetDepthBuffer(OSMesaContext c, GLint *width, GLint *height, GLint *bytesPerValue,
                                                 void **buffer);
+/* The colour buffer of a context made current (GL_FALSE before); OSMesaColorClamp (no
+ * effect: the buffers are 8 bits a channel, clamped anyway); the address of a gl* or
+ * OSMesa* function by name. */
+GLAPI GLboolean GLAPIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint *width, GLint *height, GLint *format,
+                                                void **buffer);
+GLAPI void GLAPIENTRY OSMesaColorClamp(GLboolean enable);
+typedef void (*OSMESAproc)(void);
+GLAPI OSMESAproc GLAPIENTRY OSMesaGetProcAddress(const char *funcName);
 
 #ifdef __cplusplus
 }
