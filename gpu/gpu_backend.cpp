@@ -1183,6 +1183,9 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
     const SamplerState& ss = state.texture.sampler;
     if (state.texture.texture && (ss.lod_bias != 0 || ss.min_lod > -1000 || ss.max_lod < 1000))
       throw Error("the GPU backend does not apply the texture's level-of-detail bias or clamp yet");
+    // GL_CLAMP's half border at the edge has no core-profile sampler mode.
+    if (state.texture.texture && (ss.wrap_s == Wrap::ClampHalfBorder || ss.wrap_t == Wrap::ClampHalfBorder))
+      throw Error("the GPU backend does not sample with GL_CLAMP's border yet");
   }
   stats_.objects++;
   if (primitives == 0) return;

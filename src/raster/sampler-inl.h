@@ -57,10 +57,15 @@ HWY_INLINE Rgba lerp(const Rgba& a, const Rgba& b, VF t) {
 }
 
 // A coordinate made safe for the wrap mode: repeat in [0, 1], mirrored repeat in
-// [0, 2], the clamps in [-1, 2]; NaN becomes 0 (repeats) or -1 (clamps).
+// [0, 2], the clamps in [-1, 2] (GL_CLAMP's in [0, 1]); NaN becomes 0 (repeats) or -1
+// (clamps; 0 for GL_CLAMP).
 HWY_INLINE VF prepare_coord(VF u, Wrap w) {
   const DF d;
   switch (w) {
+    case Wrap::ClampHalfBorder: {
+      const VF c = hn::IfThenElse(hn::Gt(u, hn::Zero(d)), u, hn::Zero(d));
+      return hn::Min(c, hn::Set(d, 1.0f));
+    }
     case Wrap::Repeat: {
       VF f = hn::Sub(u, hn::Floor(u));
       return hn::IfThenElseZero(hn::Ge(f, hn::Zero(d)), f);  // NaN (from NaN or infinity) -> 0
@@ -92,6 +97,7 @@ HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside) {
       return hn::IfThenElse(hn::Lt(i, vn), i, hn::Sub(hn::Sub(n2, hn::Set(di, 1)), i));
     }
     case Wrap::ClampToBorder:
+    case Wrap::ClampHalfBorder:
       outside = hn::Or(outside, hn::Or(hn::Lt(i, zero), hn::Gt(i, last)));
       return hn::Min(hn::Max(i, zero), last);
     default: return hn::Min(hn::Max(i, zero), last);
@@ -144,17 +150,23 @@ HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
   return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index)));
 }
 
+// Whether a wrap mode reads the border colour (the bilinear filter's view of GL_CLAMP).
+HWY_INLINE bool reads_border(Wrap w) { return w == Wrap::ClampToBorder || w == Wrap::ClampHalfBorder; }
+
 template <bool kAlpha>
 HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v) {
   const DF d;
   const DI di;
-  const VF x = hn::Mul(prepare_coord(u, s.wrap_s), hn::Set(d, float(l.width)));
-  const VF y = hn::Mul(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)));
+  // GL_CLAMP's nearest texel is the edge one: the border is never nearest (s = 1 too).
+  const Wrap ws = s.wrap_s == Wrap::ClampHalfBorder ? Wrap::Clamp : s.wrap_s;
+  const Wrap wt = s.wrap_t == Wrap::ClampHalfBorder ? Wrap::Clamp : s.wrap_t;
+  const VF x = hn::Mul(prepare_coord(u, ws), hn::Set(d, float(l.width)));
+  const VF y = hn::Mul(prepare_coord(v, wt), hn::Set(d, float(l.height)));
   MI outside = hn::FirstN(di, 0);
-  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside);
-  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside);
+  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, ws, outside);
+  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, wt, outside);
   Rgba c = fetch<kAlpha>(s, l, ix, iy);
-  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
+  if (ws == Wrap::ClampToBorder || wt == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
   return c;
 }
 
@@ -174,7 +186,7 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1);
   Rgba t00 = fetch<kAlpha>(s, l, x0, y0), t10 = fetch<kAlpha>(s, l, x1, y0);
   Rgba t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch<kAlpha>(s, l, x1, y1);
-  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
+  if (reads_border(s.wrap_s) || reads_border(s.wrap_t)) {
     const float k = texel_unit(s);
     t00 = with_border(t00, hn::Or(out0, outy0), s.border, k), t10 = with_border(t10, hn::Or(out1, outy0), s.border, k);
     t01 = with_border(t01, hn::Or(out0, outy1), s.border, k), t11 = with_border(t11, hn::Or(out1, outy1), s.border, k);
