@@ -1080,6 +1080,10 @@ GLAPI void GLAPIENTRY glGetQueryivARB(GLenum target, GLenum pname, GLint *params
 GLAPI void GLAPIENTRY glGetQueryObjectivARB(GLuint id, GLenum pname, GLint *params);
 GLAPI void GLAPIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *params);
 
+/* GL 1.3's GL_CLAMP_TO_BORDER (ARB_texture_border_clamp) */
+#define GL_CLAMP_TO_BORDER 0x812D
+#define GL_CLAMP_TO_BORDER_ARB 0x812D
+
 #ifdef __cplusplus
 }
 #endif
