@@ -38,6 +38,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   switch (format) {
     case GL_RGBA: case GL_BGRA: comps = 4; break;
     case GL_RGB: case GL_BGR: comps = 3; break;
+    case GL_LUMINANCE_ALPHA: comps = 2; break;
     case GL_ALPHA: case GL_LUMINANCE: case GL_RED: case GL_GREEN:
     case GL_BLUE: case GL_DEPTH_COMPONENT: case GL_STENCIL_INDEX:
       comps = 1;
@@ -97,6 +98,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
           case GL_BGR: c[0] = b, c[1] = g, c[2] = r; break;
           case GL_ALPHA: c[0] = a; break;
           case GL_LUMINANCE: c[0] = std::min(1.0f, r + g + b); break;
+          case GL_LUMINANCE_ALPHA: c[0] = std::min(1.0f, r + g + b), c[1] = a; break;
           case GL_RED: c[0] = r; break;
           case GL_GREEN: c[0] = g; break;
           default: c[0] = b; break;
