@@ -767,7 +767,8 @@ const GLubyte* glGetString(GLenum name) {
       s = "GL_ARB_texture_env_add GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two GL_EXT_bgra "
           "GL_EXT_rescale_normal GL_EXT_texture_edge_clamp GL_EXT_texture_env_add GL_IBM_texture_mirrored_repeat "
           "GL_SGIS_texture_edge_clamp GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract "
-          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query ";  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_EXT_blend_func_separate GL_EXT_multi_draw_arrays GL_ARB_vertex_buffer_object GL_ARB_occlusion_query "  // a space after each, as Mesa's (piglit's glinfo relies on it)
+          "GL_ARB_window_pos GL_ARB_texture_border_clamp ";  // glWindowPos's ARB names (api_pixels.cpp), GL_CLAMP_TO_BORDER
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

@@ -151,7 +151,10 @@ void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, fl
   switch (in.below(10)) {
     case 0: glRasterPos4f(a, b, c, d); break;
     case 1: glRasterPos2i(in.integer(), in.integer()); break;
-    case 2: glWindowPos3f(a, b, c); break;
+    case 2:
+      if (in.u8() & 1) glWindowPos3f(a, b, c);
+      else glWindowPos3dARB(a, b, c);  // GL_ARB_window_pos's name for the same call
+      break;
     case 3: glBitmap(w, h, a, b, c, d, in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr); break;
     case 4: glDrawPixels(w, h, format, type, in.u8() & 1 ? image.data() : nullptr); break;
     case 5: glCopyPixels(in.integer() % 128, in.integer() % 128, w * (1 + in.below(8)), h, in.u8() & 1 ? GL_COLOR : e1); break;

@@ -1084,6 +1084,25 @@ GLAPI void GLAPIENTRY glGetQueryObjectuivARB(GLuint id, GLenum pname, GLuint *pa
 #define GL_CLAMP_TO_BORDER 0x812D
 #define GL_CLAMP_TO_BORDER_ARB 0x812D
 
+/* GL_ARB_window_pos: glWindowPos under its ARB names (GL 1.4 made it core) */
+#define GL_ARB_window_pos 1
+GLAPI void GLAPIENTRY glWindowPos2dARB(GLdouble x, GLdouble y);
+GLAPI void GLAPIENTRY glWindowPos2fARB(GLfloat x, GLfloat y);
+GLAPI void GLAPIENTRY glWindowPos2iARB(GLint x, GLint y);
+GLAPI void GLAPIENTRY glWindowPos2sARB(GLshort x, GLshort y);
+GLAPI void GLAPIENTRY glWindowPos3dARB(GLdouble x, GLdouble y, GLdouble z);
+GLAPI void GLAPIENTRY glWindowPos3fARB(GLfloat x, GLfloat y, GLfloat z);
+GLAPI void GLAPIENTRY glWindowPos3iARB(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glWindowPos3sARB(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glWindowPos2dvARB(const GLdouble *v);
+GLAPI void GLAPIENTRY glWindowPos2fvARB(const GLfloat *v);
+GLAPI void GLAPIENTRY glWindowPos2ivARB(const GLint *v);
+GLAPI void GLAPIENTRY glWindowPos2svARB(const GLshort *v);
+GLAPI void GLAPIENTRY glWindowPos3dvARB(const GLdouble *v);
+GLAPI void GLAPIENTRY glWindowPos3fvARB(const GLfloat *v);
+GLAPI void GLAPIENTRY glWindowPos3ivARB(const GLint *v);
+GLAPI void GLAPIENTRY glWindowPos3svARB(const GLshort *v);
+
 #ifdef __cplusplus
 }
 #endif
