@@ -83,6 +83,12 @@ GLenum check_draw_format(GLenum format, GLenum type);
 std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int height, const PixelStore& store,
                                 const void* data, const PixelTransfer& transfer = {});
 
+// glReadPixels' packed types (GL 1.2's twelve): the bytes of one, 0 for another type;
+// and c's components (the format's order, clamped to [0, 1]) packed into one at dst,
+// byte-swapped if asked.
+int packed_type_bytes(GLenum type);
+void pack_packed(GLenum type, const float* c, uint8_t* dst, bool swap);
+
 // glDrawPixels' stencil indices (GL_STENCIL_INDEX): GL_NO_ERROR for the integer types,
 // GL_FLOAT and GL_BITMAP, GL_INVALID_OPERATION for a packed type, else GL_INVALID_ENUM.
 GLenum check_stencil_type(GLenum type);

@@ -50,8 +50,14 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
     case GL_UNSIGNED_BYTE: case GL_BYTE: tsize = 1; break;
     case GL_UNSIGNED_SHORT: case GL_SHORT: tsize = 2; break;
     case GL_FLOAT: case GL_UNSIGNED_INT: case GL_INT: tsize = 4; break;
-    default: return error(GL_INVALID_ENUM);
+    default:
+      tsize = size_t(packed_type_bytes(type));  // GL 1.2's packed types, one element a pixel
+      if (!tsize) return error(GL_INVALID_ENUM);
+      // Their number of components must be the format's (three: GL_RGB or GL_BGR).
+      if (check_draw_format(format, type) != GL_NO_ERROR) return error(GL_INVALID_OPERATION);
   }
+  const bool packed = packed_type_bytes(type) != 0;
+  const size_t group = packed ? tsize : size_t(comps) * tsize;  // bytes a pixel
   if (in_begin_error()) return;
   if (!renderer_ || !pixels || w == 0 || h == 0) return;
   run_frame();
@@ -72,9 +78,9 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   const PixelStore& pk = this->pixels.pack;
   const size_t align = size_t(std::max(pack_alignment, 1));
   const size_t length = size_t(pk.row_length > 0 ? pk.row_length : w);
-  size_t row_bytes = length * comps * tsize;
+  size_t row_bytes = length * group;
   if (tsize < align) row_bytes = (row_bytes + align - 1) / align * align;
-  uint8_t* out = static_cast<uint8_t*>(pixels) + size_t(pk.skip_rows) * row_bytes + size_t(pk.skip_pixels) * comps * tsize;
+  uint8_t* out = static_cast<uint8_t*>(pixels) + size_t(pk.skip_rows) * row_bytes + size_t(pk.skip_pixels) * group;
   const bool swap = pk.swap_bytes && tsize > 1;
   for (GLsizei j = 0; j < h; ++j) {
     const int64_t wy = int64_t(y) + j;
@@ -104,10 +110,14 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
           default: c[0] = b; break;
         }
       }
-      uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * comps * tsize;
+      uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * group;
       if (stencil) {  // an index: its value in any type, not scaled
         write_index(sbuf[at], type, dst);
         if (swap) std::reverse(dst, dst + tsize);
+        continue;
+      }
+      if (packed) {
+        pack_packed(type, c, dst, swap);
         continue;
       }
       for (int k = 0; k < comps; ++k) {

@@ -675,8 +675,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 59: {
         const int rw = in.below(12) - 1, rh = in.below(12) - 1;
         glPixelStorei(GL_PACK_ALIGNMENT, 1 << in.below(4));
-        glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, e1, in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
-                     out.data());
+        // Bytes, floats, or one of the packed types (at most 4 bytes a pixel, as a float's one component).
+        static const GLenum read_types[5] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_8_8_8_8,
+                                             GL_UNSIGNED_SHORT_5_6_5, GL_UNSIGNED_BYTE_3_3_2};
+        glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, e1, read_types[in.below(5)], out.data());
         break;
       }
       case 60: {

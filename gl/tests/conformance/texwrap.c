@@ -3,7 +3,7 @@
  * 2-D texture (5x3, no two texels alike) with s and t wrapped by different modes, and
  * on a 1-D texture; projective texture coordinates (q != 1) through the same modes;
  * the raster position set by glWindowPos under its ARB names (GL_ARB_window_pos).
- * glReadPixels' GL_LUMINANCE_ALPHA. Values: the extensions named, the errors. Compared with Mesa. */
+ * glReadPixels' GL_LUMINANCE_ALPHA and packed types. Values: the extensions named, the errors. Compared with Mesa. */
 #define GL_GLEXT_PROTOTYPES 1 /* glWindowPos*ARB in the system headers */
 #include <string.h>
 
@@ -139,6 +139,31 @@ int main(int argc, char** argv) {
     conf_value("read_la_l", la[0]);
     conf_value("read_la_a", la[1]);
     conf_value("read_la_l2", la[2]);
+  }
+
+  /* glReadPixels' packed types (triangle-rasterization reads GL_UNSIGNED_INT_8_8_8_8):
+   * the clear colour and a bitmap's orange, each way; a swapped short; the errors. */
+  {
+    GLuint u[2] = {0, 0};
+    GLushort s[2] = {0, 0};
+    GLubyte b[2] = {0, 0};
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, &u[0]);
+    glReadPixels(150, 143, 1, 1, GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, &u[1]);
+    conf_value("read_8888", u[0]);
+    conf_value("read_8888_rev", u[1]);
+    glReadPixels(0, 0, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &s[0]);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    glReadPixels(150, 143, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4_REV, &s[1]);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+    conf_value("read_565", s[0]);
+    conf_value("read_4444_rev_swapped", s[1]);
+    glReadPixels(150, 143, 2, 1, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, b);
+    conf_value("read_332", b[0]);
+    conf_value("read_332_next", b[1]);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, s);
+    conf_value("read_565_rgba", glGetError());
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8, u);
+    conf_value("read_packed_depth", glGetError());
   }
 
   /* Values and errors. */
