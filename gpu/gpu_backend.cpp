@@ -1189,6 +1189,9 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
     if (state.texture.texture && state.texture.texture->volume()) throw Error("the GPU backend does not sample 3-D textures yet");
     if (state.texture.texture && state.texture.texture->levels()[0].border)
       throw Error("the GPU backend does not sample texture borders yet");
+    // GL_CLAMP's half border at the edge has no core-profile sampler mode.
+    if (state.texture.texture && (ss.wrap_s == Wrap::ClampHalfBorder || ss.wrap_t == Wrap::ClampHalfBorder))
+      throw Error("the GPU backend does not sample with GL_CLAMP's border yet");
   }
   stats_.objects++;
   if (primitives == 0) return;

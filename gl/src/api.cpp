@@ -790,7 +790,8 @@ const GLubyte* glGetString(GLenum name) {
           "GL_EXT_framebuffer_object GL_EXT_framebuffer_blit "  // (not ARB: docs/gl.md)
           // (multisample.cpp: the default framebuffer's packed depth and stencil pixels)
           "GL_EXT_packed_depth_stencil "
-          "GL_EXT_texture3D ";
+          "GL_EXT_texture3D "
+          "GL_ARB_window_pos GL_ARB_texture_border_clamp ";  // glWindowPos's ARB names (api_pixels.cpp), GL_CLAMP_TO_BORDER
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

@@ -84,6 +84,24 @@ void glWindowPos3fv(const GLfloat* v) { glWindowPos3f(v[0], v[1], v[2]); }
 void glWindowPos3iv(const GLint* v) { glWindowPos3i(v[0], v[1], v[2]); }
 void glWindowPos3sv(const GLshort* v) { glWindowPos3s(v[0], v[1], v[2]); }
 
+// GL_ARB_window_pos: the same calls under their ARB names.
+void glWindowPos2dARB(GLdouble x, GLdouble y) { glWindowPos2d(x, y); }
+void glWindowPos2fARB(GLfloat x, GLfloat y) { glWindowPos2f(x, y); }
+void glWindowPos2iARB(GLint x, GLint y) { glWindowPos2i(x, y); }
+void glWindowPos2sARB(GLshort x, GLshort y) { glWindowPos2s(x, y); }
+void glWindowPos3dARB(GLdouble x, GLdouble y, GLdouble z) { glWindowPos3d(x, y, z); }
+void glWindowPos3fARB(GLfloat x, GLfloat y, GLfloat z) { glWindowPos3f(x, y, z); }
+void glWindowPos3iARB(GLint x, GLint y, GLint z) { glWindowPos3i(x, y, z); }
+void glWindowPos3sARB(GLshort x, GLshort y, GLshort z) { glWindowPos3s(x, y, z); }
+void glWindowPos2dvARB(const GLdouble* v) { glWindowPos2dv(v); }
+void glWindowPos2fvARB(const GLfloat* v) { glWindowPos2fv(v); }
+void glWindowPos2ivARB(const GLint* v) { glWindowPos2iv(v); }
+void glWindowPos2svARB(const GLshort* v) { glWindowPos2sv(v); }
+void glWindowPos3dvARB(const GLdouble* v) { glWindowPos3dv(v); }
+void glWindowPos3fvARB(const GLfloat* v) { glWindowPos3fv(v); }
+void glWindowPos3ivARB(const GLint* v) { glWindowPos3iv(v); }
+void glWindowPos3svARB(const GLshort* v) { glWindowPos3sv(v); }
+
 void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte* bitmap) {
   NOW(
       if (w < 0 || h < 0) return compiled_error(GL_INVALID_VALUE);

@@ -124,9 +124,13 @@ bool Context::unit_stage(TextureStage& st, const TextureUnitState& u) {
   }
   auto wrap = [](GLenum w) {
     // GL_CLAMP clamps s to [0, 1] and filters with the border: for GL_NEAREST that
-    // is the edge texel; with GL_LINEAR it differs from the edge only in the last
-    // half texel, where GL blends in the border colour (not done here: docs/gl.md).
-    return w == GL_CLAMP || w == GL_CLAMP_TO_EDGE ? Wrap::Clamp : w == GL_MIRRORED_REPEAT ? Wrap::MirroredRepeat : Wrap::Repeat;
+    // is the edge texel; with GL_LINEAR the last half texel blends in the border
+    // colour. GL_CLAMP_TO_BORDER reads the border wherever s is outside the image.
+    return w == GL_CLAMP_TO_EDGE       ? Wrap::Clamp
+           : w == GL_CLAMP             ? Wrap::ClampHalfBorder
+           : w == GL_CLAMP_TO_BORDER   ? Wrap::ClampToBorder
+           : w == GL_MIRRORED_REPEAT   ? Wrap::MirroredRepeat
+                                       : Wrap::Repeat;
   };
   sm.wrap_s = wrap(t->wrap_s), sm.wrap_t = wrap(t->wrap_t);
   if (one_d) sm.wrap_t = Wrap::Repeat;  // a 1-D image is one row: t is not read

@@ -114,6 +114,11 @@ std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int heigh
 // unless a component is as large), for formats and types check_draw_format accepted.
 // 3-D images step by this times their image height (texture_3d.cpp).
 size_t pixel_row_bytes(GLenum format, GLenum type, int width, const PixelStore& store);
+// glReadPixels' packed types (GL 1.2's twelve): the bytes of one, 0 for another type;
+// and c's components (the format's order, clamped to [0, 1]) packed into one at dst,
+// byte-swapped if asked.
+int packed_type_bytes(GLenum type);
+void pack_packed(GLenum type, const float* c, uint8_t* dst, bool swap);
 
 // glDrawPixels' stencil indices (GL_STENCIL_INDEX): GL_NO_ERROR for the integer types,
 // GL_FLOAT and GL_BITMAP, GL_INVALID_OPERATION for a packed type, else GL_INVALID_ENUM.

@@ -179,6 +179,32 @@ std::vector<Vec4> unpack_pixels(GLenum format, GLenum type, int width, int heigh
   return out;
 }
 
+int packed_type_bytes(GLenum type) { return packed(type).bytes; }
+
+void pack_packed(GLenum type, const float* c, uint8_t* dst, bool swap) {
+  const Packed p = packed(type);
+  // Fields from the top bits down (or, _REV, from the bottom up), as unpack_pixels reads them.
+  uint32_t v = 0;
+  int shift = p.rev ? 0 : p.bytes * 8;
+  for (int k = 0; k < p.fields; ++k) {
+    const int b = p.bits[k];
+    if (!p.rev) shift -= b;
+    const float f = c[k] > 0 ? (c[k] < 1 ? c[k] : 1.0f) : 0.0f;
+    v |= uint32_t(std::lround(f * float((1u << b) - 1))) << shift;
+    if (p.rev) shift += b;
+  }
+  uint8_t bytes[4];
+  if (p.bytes == 1) {
+    bytes[0] = uint8_t(v);
+  } else if (p.bytes == 2) {
+    const uint16_t s = uint16_t(v);
+    std::memcpy(bytes, &s, 2);
+  } else {
+    std::memcpy(bytes, &v, 4);
+  }
+  for (int i = 0; i < p.bytes; ++i) dst[i] = bytes[swap ? p.bytes - 1 - i : i];
+}
+
 GLenum check_stencil_type(GLenum type) {
   if (type == GL_BITMAP || type_bytes(type)) return GL_NO_ERROR;
   return packed(type).bytes ? GL_INVALID_OPERATION : GL_INVALID_ENUM;

@@ -36,12 +36,13 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (const GLenum e = check_depth_stencil(format, type)) return error(e);  // (pixel_unpack.cpp)
   // GL_EXT_packed_depth_stencil: one 32-bit word a pixel, its depth and stencil.
-  const bool packed = format == kDepthStencilFormat;
+  const bool depth_stencil = format == kDepthStencilFormat;
   int comps;
   switch (format) {
     case kDepthStencilFormat: comps = 1; break;
     case GL_RGBA: case GL_BGRA: comps = 4; break;
     case GL_RGB: case GL_BGR: comps = 3; break;
+    case GL_LUMINANCE_ALPHA: comps = 2; break;
     case GL_ALPHA: case GL_LUMINANCE: case GL_RED: case GL_GREEN:
     case GL_BLUE: case GL_DEPTH_COMPONENT: case GL_STENCIL_INDEX:
       comps = 1;
@@ -53,8 +54,14 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
     case GL_UNSIGNED_BYTE: case GL_BYTE: tsize = 1; break;
     case GL_UNSIGNED_SHORT: case GL_SHORT: tsize = 2; break;
     case GL_FLOAT: case GL_UNSIGNED_INT: case GL_INT: case kUnsignedInt24_8: tsize = 4; break;
-    default: return error(GL_INVALID_ENUM);
+    default:
+      tsize = size_t(packed_type_bytes(type));  // GL 1.2's packed types, one element a pixel
+      if (!tsize) return error(GL_INVALID_ENUM);
+      // Their number of components must be the format's (three: GL_RGB or GL_BGR).
+      if (check_draw_format(format, type) != GL_NO_ERROR) return error(GL_INVALID_OPERATION);
   }
+  const bool packed = packed_type_bytes(type) != 0;
+  const size_t group = packed ? tsize : size_t(comps) * tsize;  // bytes a pixel
   if (in_begin_error() || read_framebuffer_incomplete()) return;
   if (fb_.read != fb_.in_use) {  // GL_READ_FRAMEBUFFER is another framebuffer (framebuffer_objects.cpp)
     use_read_framebuffer();
@@ -63,7 +70,7 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   }
   if (!renderer_ || !pixels || w == 0 || h == 0) return;
   run_frame();
-  const bool depth = format == GL_DEPTH_COMPONENT || packed, stencil = format == GL_STENCIL_INDEX || packed;
+  const bool depth = format == GL_DEPTH_COMPONENT || depth_stencil, stencil = format == GL_STENCIL_INDEX || depth_stencil;
   if (depth && depth_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (stencil && stencil_bits_ <= 0) return error(GL_INVALID_OPERATION);
   if (!depth && !stencil && no_read_buffer()) return;  // glReadBuffer(GL_NONE)
@@ -80,9 +87,9 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
   const PixelStore& pk = this->pixels.pack;
   const size_t align = size_t(std::max(pack_alignment, 1));
   const size_t length = size_t(pk.row_length > 0 ? pk.row_length : w);
-  size_t row_bytes = length * comps * tsize;
+  size_t row_bytes = length * group;
   if (tsize < align) row_bytes = (row_bytes + align - 1) / align * align;
-  uint8_t* out = static_cast<uint8_t*>(pixels) + size_t(pk.skip_rows) * row_bytes + size_t(pk.skip_pixels) * comps * tsize;
+  uint8_t* out = static_cast<uint8_t*>(pixels) + size_t(pk.skip_rows) * row_bytes + size_t(pk.skip_pixels) * group;
   const bool swap = pk.swap_bytes && tsize > 1;
   for (GLsizei j = 0; j < h; ++j) {
     const int64_t wy = int64_t(y) + j;
@@ -106,13 +113,14 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
           case GL_BGR: c[0] = b, c[1] = g, c[2] = r; break;
           case GL_ALPHA: c[0] = a; break;
           case GL_LUMINANCE: c[0] = std::min(1.0f, r + g + b); break;
+          case GL_LUMINANCE_ALPHA: c[0] = std::min(1.0f, r + g + b), c[1] = a; break;
           case GL_RED: c[0] = r; break;
           case GL_GREEN: c[0] = g; break;
           default: c[0] = b; break;
         }
       }
-      uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * comps * tsize;
-      if (packed) {  // 24 bits of depth above 8 of stencil
+      uint8_t* dst = out + size_t(j) * row_bytes + size_t(i) * group;
+      if (depth_stencil) {  // 24 bits of depth above 8 of stencil
         const double d = std::clamp(double(zbuf[at]), 0.0, 1.0);
         const uint32_t word = uint32_t(std::lround(d * 16777215.0)) << 8 | sbuf[at];
         uint8_t bytes[4];
@@ -123,6 +131,10 @@ void Context::read_pixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format,
       if (stencil) {  // an index: its value in any type, not scaled
         write_index(sbuf[at], type, dst);
         if (swap) std::reverse(dst, dst + tsize);
+        continue;
+      }
+      if (packed) {
+        pack_packed(type, c, dst, swap);
         continue;
       }
       for (int k = 0; k < comps; ++k) {

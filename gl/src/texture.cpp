@@ -183,7 +183,8 @@ void Context::tex_parameter(GLenum target, GLenum pname, const float* v) {
       break;
     case GL_TEXTURE_WRAP_S:
     case GL_TEXTURE_WRAP_T:
-      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT)
+      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_MIRRORED_REPEAT &&
+          e != GL_CLAMP_TO_BORDER)  // (GL 1.3)
         return error(GL_INVALID_ENUM);
       (pname == GL_TEXTURE_WRAP_S ? t.wrap_s : t.wrap_t) = e;
       break;

@@ -22,8 +22,12 @@ std::optional<Filter> parse_filter(std::string_view name);  // "nearest", "bilin
 enum class Wrap {
   Repeat,          // u and v wrap around: 1.25 samples like 0.25
   Clamp,           // u and v are clamped to the edge texels (GL_CLAMP_TO_EDGE)
-  ClampToBorder,   // texels outside the image read a border colour (GL_CLAMP, GL_CLAMP_TO_BORDER)
+  ClampToBorder,   // texels outside the image read a border colour (GL_CLAMP_TO_BORDER)
   MirroredRepeat,  // every other repeat is mirrored (GL_MIRRORED_REPEAT)
+  // OpenGL's GL_CLAMP: u and v clamped to [0, 1], then filtered with the border colour
+  // outside the image: the edge texel for the nearest filter, half border at the edge
+  // for the bilinear one.
+  ClampHalfBorder,
 };
 
 class Texture {

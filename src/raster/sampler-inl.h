@@ -57,10 +57,15 @@ HWY_INLINE Rgba lerp(const Rgba& a, const Rgba& b, VF t) {
 }
 
 // A coordinate made safe for the wrap mode: repeat in [0, 1], mirrored repeat in
-// [0, 2], the clamps in [-1, 2]; NaN becomes 0 (repeats) or -1 (clamps).
+// [0, 2], the clamps in [-1, 2] (GL_CLAMP's in [0, 1]); NaN becomes 0 (repeats) or -1
+// (clamps; 0 for GL_CLAMP).
 HWY_INLINE VF prepare_coord(VF u, Wrap w) {
   const DF d;
   switch (w) {
+    case Wrap::ClampHalfBorder: {
+      const VF c = hn::IfThenElse(hn::Gt(u, hn::Zero(d)), u, hn::Zero(d));
+      return hn::Min(c, hn::Set(d, 1.0f));
+    }
     case Wrap::Repeat: {
       VF f = hn::Sub(u, hn::Floor(u));
       return hn::IfThenElseZero(hn::Ge(f, hn::Zero(d)), f);  // NaN (from NaN or infinity) -> 0
@@ -93,6 +98,7 @@ HWY_INLINE VI wrap_index(VI i, int32_t n, Wrap w, MI& outside, bool bordered) {
       return hn::IfThenElse(hn::Lt(i, vn), i, hn::Sub(hn::Sub(n2, hn::Set(di, 1)), i));
     }
     case Wrap::ClampToBorder:
+    case Wrap::ClampHalfBorder:
       if (bordered) return hn::Min(hn::Max(i, hn::Set(di, -1)), vn);
       outside = hn::Or(outside, hn::Or(hn::Lt(i, zero), hn::Gt(i, last)));
       return hn::Min(hn::Max(i, zero), last);
@@ -146,17 +152,23 @@ HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
   return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index)));
 }
 
+// Whether a wrap mode reads the border colour (the bilinear filter's view of GL_CLAMP).
+HWY_INLINE bool reads_border(Wrap w) { return w == Wrap::ClampToBorder || w == Wrap::ClampHalfBorder; }
+
 template <bool kAlpha>
 HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v) {
   const DF d;
   const DI di;
-  const VF x = hn::Mul(prepare_coord(u, s.wrap_s), hn::Set(d, float(l.width)));
-  const VF y = hn::Mul(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)));
+  // GL_CLAMP's nearest texel is the edge one: the border is never nearest (s = 1 too).
+  const Wrap ws = s.wrap_s == Wrap::ClampHalfBorder ? Wrap::Clamp : s.wrap_s;
+  const Wrap wt = s.wrap_t == Wrap::ClampHalfBorder ? Wrap::Clamp : s.wrap_t;
+  const VF x = hn::Mul(prepare_coord(u, ws), hn::Set(d, float(l.width)));
+  const VF y = hn::Mul(prepare_coord(v, wt), hn::Set(d, float(l.height)));
   MI outside = hn::FirstN(di, 0);
-  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, s.wrap_s, outside, l.bordered);
-  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, s.wrap_t, outside, l.bordered);
+  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, ws, outside, l.bordered);
+  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, wt, outside, l.bordered);
   Rgba c = fetch<kAlpha>(s, l, ix, iy);
-  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
+  if (ws == Wrap::ClampToBorder || wt == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
   return c;
 }
 
@@ -177,7 +189,7 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0, rb), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1, rb);
   Rgba t00 = fetch<kAlpha>(s, l, x0, y0), t10 = fetch<kAlpha>(s, l, x1, y0);
   Rgba t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch<kAlpha>(s, l, x1, y1);
-  if (s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder) {
+  if (reads_border(s.wrap_s) || reads_border(s.wrap_t)) {
     const float k = texel_unit(s);
     t00 = with_border(t00, hn::Or(out0, outy0), s.border, k), t10 = with_border(t10, hn::Or(out1, outy0), s.border, k);
     t01 = with_border(t01, hn::Or(out0, outy1), s.border, k), t11 = with_border(t11, hn::Or(out1, outy1), s.border, k);
@@ -206,6 +218,7 @@ HWY_INLINE Rgba nearest3(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const DI di;
   MI outside = hn::FirstN(di, 0);
   auto index = [&](VF c, Wrap wrap, int32_t n) {
+    if (wrap == Wrap::ClampHalfBorder) wrap = Wrap::Clamp;  // (GL_CLAMP's nearest texel: the edge one)
     const VF x = hn::Mul(prepare_coord(c, wrap), hn::Set(d, float(n)));
     return wrap_index(hn::ConvertTo(di, hn::Floor(x)), n, wrap, outside, l.bordered);
   };
@@ -234,7 +247,7 @@ HWY_INLINE Rgba linear3(const SamplerView& s, const SamplerLevel& l, VF u, VF v,
     return a;
   };
   const Axis ax = axis(u, s.wrap_s, l.width), ay = axis(v, s.wrap_t, l.height), az = axis(w, s.wrap_r, l.depth);
-  const bool border = s.wrap_s == Wrap::ClampToBorder || s.wrap_t == Wrap::ClampToBorder || s.wrap_r == Wrap::ClampToBorder;
+  const bool border = reads_border(s.wrap_s) || reads_border(s.wrap_t) || reads_border(s.wrap_r);
   const float k = texel_unit(s);
   auto tap = [&](bool x1, bool y1, bool z1) {
     Rgba t = fetch3<kAlpha>(s, l, x1 ? ax.i1 : ax.i0, y1 ? ay.i1 : ay.i0, z1 ? az.i1 : az.i0);

@@ -37,6 +37,15 @@ inline void fill_header(RecordHeader& r, RecordKind kind, const RecordInfo& info
   r.sort_key = 0;
 }
 
+// OpenGL's polygon offset: factor * the largest depth slope + units * r, r the smallest
+// resolvable difference. r is 2^-23, as llvmpipe's: vertex coordinates are floats, so
+// near the near plane two surfaces closer than that in window z cannot be told apart
+// (piglit's gl-1.4-polygon-offset measures 2^-23 there), whatever the depth buffer keeps.
+float polygon_offset(const Plane& depth, const geometry::SetupParams& p) {
+  const float slope = std::max(std::fabs(depth.dx), std::fabs(depth.dy));
+  return p.offset_factor * slope + p.offset_units * (1.0f / 8388608.0f);
+}
+
 // The depth, 1/w and varying planes of a triangle wound positively (area2 > 0),
 // anchored at the centre of the record's first box pixel; from the snapped positions,
 // so that they agree with coverage.
@@ -51,12 +60,7 @@ void write_planes(RecordHeader& r, const ScreenVertex* const v[3], const float* 
   const float ay = float(int64_t(r.min_y) * kSubpixelOne + kSubpixelHalf - Y[0]) * (1.0f / kSubpixelOne);
   float vals[3] = {v[0]->z, v[1]->z, v[2]->z};
   r.depth = make_plane(x, y, vals, inv_area, ax, ay);
-  if (p.offset) {
-    // OpenGL's polygon offset: factor * the largest depth slope + units * the smallest
-    // resolvable difference (2^-24 for a 24-bit depth buffer, as llvmpipe's).
-    const float slope = std::max(std::fabs(r.depth.dx), std::fabs(r.depth.dy));
-    r.depth.c += p.offset_factor * slope + p.offset_units * (1.0f / 16777216.0f);
-  }
+  if (p.offset) r.depth.c += polygon_offset(r.depth, p);
   float iw[3] = {v[0]->inv_w, v[1]->inv_w, v[2]->inv_w};
   if (p.affine) iw[0] = iw[1] = iw[2] = 1.0f;
   r.inv_w = make_plane(x, y, iw, inv_area, ax, ay);
@@ -212,6 +216,8 @@ RecordHeader* setup_line(WorkerBins& bins, const ScreenVertex& a, const ScreenVe
     return Plane{from + d * t0, d * gx, d * gy};
   };
   r->depth = along(a.z, b.z);
+  // A polygon drawn as lines (GL_POLYGON_OFFSET_LINE): the slope is the edge's own.
+  if (p.offset) r->depth.c += polygon_offset(r->depth, p);
   const float wa = p.affine ? 1.0f : a.inv_w, wb = p.affine ? 1.0f : b.inv_w;
   r->inv_w = along(wa, wb);
   Plane* planes = varyings(*r);
@@ -232,6 +238,7 @@ RecordHeader* setup_point(WorkerBins& bins, const ScreenVertex& pt, const float*
   if (!r) return nullptr;
   fill_header(*r, RecordKind::Rect, info, nvar, x0, y0, x1, y1);
   r->depth = {pt.z, 0, 0};
+  if (p.offset) r->depth.c += polygon_offset(r->depth, p);  // (GL_POLYGON_OFFSET_POINT: no slope)
   const float w = p.affine ? 1.0f : pt.inv_w;
   r->inv_w = {w, 0, 0};
   Plane* planes = varyings(*r);

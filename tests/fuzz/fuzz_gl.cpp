@@ -156,7 +156,10 @@ void pixel_call(Bytes& in, const std::vector<float>& image, float a, float b, fl
   switch (in.below(10)) {
     case 0: glRasterPos4f(a, b, c, d); break;
     case 1: glRasterPos2i(in.integer(), in.integer()); break;
-    case 2: glWindowPos3f(a, b, c); break;
+    case 2:
+      if (in.u8() & 1) glWindowPos3f(a, b, c);
+      else glWindowPos3dARB(a, b, c);  // GL_ARB_window_pos's name for the same call
+      break;
     case 3: glBitmap(w, h, a, b, c, d, in.u8() & 1 ? reinterpret_cast<const GLubyte*>(image.data()) : nullptr); break;
     case 4: glDrawPixels(w, h, format, type, in.u8() & 1 ? image.data() : nullptr); break;
     case 5: glCopyPixels(in.integer() % 128, in.integer() % 128, w * (1 + in.below(8)), h, in.u8() & 1 ? GL_COLOR : e1); break;
@@ -1014,8 +1017,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 59: {
         const int rw = in.below(12) - 1, rh = in.below(12) - 1;
         glPixelStorei(GL_PACK_ALIGNMENT, 1 << in.below(4));
-        glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, e1, in.u8() & 1 ? GL_UNSIGNED_BYTE : GL_FLOAT,
-                     out.data());
+        // Bytes, floats, or one of the packed types (at most 4 bytes a pixel, as a float's one component).
+        static const GLenum read_types[5] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_INT_8_8_8_8,
+                                             GL_UNSIGNED_SHORT_5_6_5, GL_UNSIGNED_BYTE_3_3_2};
+        glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, e1, read_types[in.below(5)], out.data());
         // GL_EXT_packed_depth_stencil: 4 bytes a pixel, as GL_FLOAT's.
         if (in.u8() < 32) glReadPixels(in.integer() % 128, in.integer() % 128, rw, rh, 0x84F9, 0x84FA, out.data());
         break;

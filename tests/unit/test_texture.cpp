@@ -433,4 +433,40 @@ TEST(TextureBorder, ClampToBorderReadsTheRingTheOtherModesDoNot) {
   Texture::Level two = l;
   two.border = 2;
   EXPECT_THROW(Texture({two}), Error);
+// OpenGL's GL_CLAMP (Wrap::ClampHalfBorder): coordinates clamped to [0, 1]; the nearest
+// texel is always an edge one, the bilinear filter blends half the border colour in at
+// the edge and never more; GL_CLAMP_TO_BORDER reads the whole border past it.
+TEST(Texture, GlClampHalfBorder) {
+  const Texture t(make_image(4, 2, [](int x, int) { return 40 + 60 * x; }, [](int, int y) { return 100 * y; }));
+  SamplerState st;
+  st.mip = SamplerState::Mip::None;
+  st.border_color = {1.0f, 0.5f, 0.25f, 0.0f};
+  auto at = [&](SamplerState::Texel f, Wrap w, float u, float v) {
+    st.mag = st.min = f, st.wrap_s = st.wrap_t = w;
+    float c[4];
+    raster::sample_for_test(SamplerView(t, st), u, v, 0, c);
+    return Rgba{c[0], c[1], c[2], c[3]};
+  };
+  using T = SamplerState::Texel;
+  for (float u : {1.0f, 1.4f, 7.0f}) {  // nearest: the last texel, never the border
+    const Rgba c = at(T::Nearest, Wrap::ClampHalfBorder, u, 0.25f);
+    EXPECT_NEAR(c.r, 220 / 255.0f, 1e-5f) << "u " << u;
+    EXPECT_NEAR(c.a, 1.0f, 1e-5f) << "u " << u;
+  }
+  EXPECT_NEAR(at(T::Nearest, Wrap::ClampHalfBorder, -3.0f, 0.25f).r, 40 / 255.0f, 1e-5f);
+  // Bilinear at and past the right edge (row 0's centre in v): half texel 3, half border.
+  for (float u : {1.0f, 1.3f}) {
+    const Rgba c = at(T::Linear, Wrap::ClampHalfBorder, u, 0.25f);
+    EXPECT_NEAR(c.r, 0.5f * (220 / 255.0f) + 0.5f * 1.0f, 1e-4f) << "u " << u;
+    EXPECT_NEAR(c.a, 0.5f, 1e-4f) << "u " << u;
+  }
+  // A texel centre inside reads the texel alone; GL_CLAMP_TO_BORDER past the edge reads the border.
+  EXPECT_NEAR(at(T::Linear, Wrap::ClampHalfBorder, 0.375f, 0.25f).r, 100 / 255.0f, 1e-4f);
+  const Rgba b = at(T::Linear, Wrap::ClampToBorder, 1.3f, 0.25f);
+  EXPECT_NEAR(b.r, 1.0f, 1e-5f);
+  EXPECT_NEAR(b.g, 0.5f, 1e-5f);
+  EXPECT_NEAR(b.a, 0.0f, 1e-5f);
+  // NaN clamps to 0: the first column's half border, not a read outside the image.
+  const Rgba n = at(T::Linear, Wrap::ClampHalfBorder, std::nanf(""), 0.25f);
+  EXPECT_NEAR(n.r, 0.5f * (40 / 255.0f) + 0.5f, 1e-4f);
 }

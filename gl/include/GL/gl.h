@@ -1837,6 +1837,28 @@ GLAPI void GLAPIENTRY glGetRenderbufferParameterivEXT(GLenum target, GLenum pnam
 GLAPI void GLAPIENTRY glGenerateMipmapEXT(GLenum target);
 GLAPI void GLAPIENTRY glBlitFramebufferEXT(GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
 GLAPI void GLAPIENTRY glRenderbufferStorageMultisampleEXT(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height);
+/* GL 1.3's GL_CLAMP_TO_BORDER (ARB_texture_border_clamp) */
+#define GL_CLAMP_TO_BORDER 0x812D
+#define GL_CLAMP_TO_BORDER_ARB 0x812D
+
+/* GL_ARB_window_pos: glWindowPos under its ARB names (GL 1.4 made it core) */
+#define GL_ARB_window_pos 1
+GLAPI void GLAPIENTRY glWindowPos2dARB(GLdouble x, GLdouble y);
+GLAPI void GLAPIENTRY glWindowPos2fARB(GLfloat x, GLfloat y);
+GLAPI void GLAPIENTRY glWindowPos2iARB(GLint x, GLint y);
+GLAPI void GLAPIENTRY glWindowPos2sARB(GLshort x, GLshort y);
+GLAPI void GLAPIENTRY glWindowPos3dARB(GLdouble x, GLdouble y, GLdouble z);
+GLAPI void GLAPIENTRY glWindowPos3fARB(GLfloat x, GLfloat y, GLfloat z);
+GLAPI void GLAPIENTRY glWindowPos3iARB(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glWindowPos3sARB(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glWindowPos2dvARB(const GLdouble *v);
+GLAPI void GLAPIENTRY glWindowPos2fvARB(const GLfloat *v);
+GLAPI void GLAPIENTRY glWindowPos2ivARB(const GLint *v);
+GLAPI void GLAPIENTRY glWindowPos2svARB(const GLshort *v);
+GLAPI void GLAPIENTRY glWindowPos3dvARB(const GLdouble *v);
+GLAPI void GLAPIENTRY glWindowPos3fvARB(const GLfloat *v);
+GLAPI void GLAPIENTRY glWindowPos3ivARB(const GLint *v);
+GLAPI void GLAPIENTRY glWindowPos3svARB(const GLshort *v);
 
 #ifdef __cplusplus
 }
