@@ -1162,9 +1162,14 @@ GLenum gl_blend_op(BlendOp op) {
   return table[size_t(op)];
 }
 
+// GL_CLAMP (Wrap::ClampHalfBorder) has no core-profile sampler mode: clamped to the
+// edge, exact for GL_NEAREST; with GL_LINEAR the last half texel does not blend in the
+// border colour as the CPU backend's does (docs/gpu.md).
 GLint gl_wrap(Wrap w) {
-  return w == Wrap::Repeat ? GL_REPEAT : w == Wrap::Clamp ? GL_CLAMP_TO_EDGE : w == Wrap::MirroredRepeat ? GL_MIRRORED_REPEAT
-                                                                                                    : GL_CLAMP_TO_BORDER;
+  return w == Wrap::Repeat                                 ? GL_REPEAT
+         : w == Wrap::Clamp || w == Wrap::ClampHalfBorder ? GL_CLAMP_TO_EDGE
+         : w == Wrap::MirroredRepeat                       ? GL_MIRRORED_REPEAT
+                                                           : GL_CLAMP_TO_BORDER;
 }
 
 }  // namespace
@@ -1191,9 +1196,6 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
     if (state.texture.texture && state.texture.texture->volume()) throw Error("the GPU backend does not sample 3-D textures yet");
     if (state.texture.texture && state.texture.texture->levels()[0].border)
       throw Error("the GPU backend does not sample texture borders yet");
-    // GL_CLAMP's half border at the edge has no core-profile sampler mode.
-    if (state.texture.texture && (ss.wrap_s == Wrap::ClampHalfBorder || ss.wrap_t == Wrap::ClampHalfBorder))
-      throw Error("the GPU backend does not sample with GL_CLAMP's border yet");
   }
   stats_.objects++;
   if (primitives == 0) return;

@@ -130,7 +130,8 @@ void Context::blit_framebuffer(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint
         q.color = q.depth = q.stencil = false;
         q.scissor = true;
         q.color_mask = channel_mask_;
-        q.x0 = x_lo + i, q.x1 = x_lo + e, q.y0 = y, q.y1 = y + 1;
+        // (In samples: a multisample framebuffer's every sample of the pixels, multisample.cpp.)
+        q.x0 = to_samples(x_lo + i), q.x1 = to_samples(x_lo + e), q.y0 = to_samples(y), q.y1 = to_samples(y + 1);
         set(q, i);
         renderer_->clear(q);
         if (mirror_) mirror_->clear(q);

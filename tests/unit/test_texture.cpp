@@ -433,6 +433,8 @@ TEST(TextureBorder, ClampToBorderReadsTheRingTheOtherModesDoNot) {
   Texture::Level two = l;
   two.border = 2;
   EXPECT_THROW(Texture({two}), Error);
+}
+
 // OpenGL's GL_CLAMP (Wrap::ClampHalfBorder): coordinates clamped to [0, 1]; the nearest
 // texel is always an edge one, the bilinear filter blends half the border colour in at
 // the edge and never more; GL_CLAMP_TO_BORDER reads the whole border past it.
