@@ -161,8 +161,8 @@ inline HWY_NOINLINE Rgba texture_combine(const TextureStage& st, const Rgba& f, 
 
 // The texture environment of one unit (OpenGL 1.x's table of texture functions). `f`
 // is the fragment's colour (the previous unit's result), `t` the texel as the Texture
-// stores it for its format, `primary` the fragment's interpolated colour (for Combine).
-HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const Rgba& t, const Rgba& primary) {
+// stores it for its format. (TexEnvMode::Combine: texture_combine.)
+HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const Rgba& t) {
   const DF d;
   const VF one = hn::Set(d, 1.0f);
   const bool color = st.format != TexFormat::Alpha;  // does the texture bring a colour?
@@ -199,7 +199,7 @@ HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const
       if (st.format == TexFormat::Intensity) o.a = hn::Min(hn::Add(f.a, t.a), one);
       else if (alpha) o.a = hn::Mul(f.a, t.a);
       break;
-    case TexEnvMode::Combine: return texture_combine(st, f, t, primary);
+    case TexEnvMode::Combine: break;  // (texture_combine, which needs the primary colour)
   }
   return o;
 }
@@ -311,14 +311,21 @@ struct FixedShader {
     in.at_vector(v);
     constexpr int c0 = varying::kFixedColor;
     Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
-    const Rgba primary = c;  // GL_COMBINE's GL_PRIMARY_COLOR
     for (int u = 0; u < kUnits; ++u) {  // the units in order, each on the last one's colour
       const int st = tex_at(u);
       const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + (volume(u) ? 3 : 2), v));
       Rgba t;
       if (volume(u)) t = sample3(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq), hn::Mul(in(st + 2, v), iq));
       else t = sample(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
-      c = texture_environment(stage(u), c, t, primary);
+      // GL_COMBINE's primary colour is interpolated again, not kept alive through the
+      // units, so the other environments hold no more registers.
+      const TextureStage& stg = stage(u);
+      if (stg.env == TexEnvMode::Combine) {
+        const Rgba primary{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
+        c = texture_combine(stg, c, t, primary);
+      } else {
+        c = texture_environment(stg, c, t);
+      }
     }
     if constexpr (kSpec) {  // the colour sum: the secondary colour after texturing
       const VF one = hn::Set(d, 1.0f);
