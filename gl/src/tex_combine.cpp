@@ -5,6 +5,8 @@
 // glGetTexParameter, with their C entry points.
 #include <GL/gl.h>
 
+#include <cmath>
+
 #include "api_entry.hpp"
 #include "context.hpp"
 
@@ -140,10 +142,15 @@ namespace {
 using velocity::gl::Context;
 
 // glGet*iv's conversions: enums and counts as they are, colours (and the priority)
-// from [0, 1] to [0, 2^31 - 1], other reals rounded to the nearest integer.
+// from [0, 1] to [0, 2^31 - 1], other reals rounded to the nearest integer, clamped to
+// GLint's range (a level-of-detail may be any float; NaN gives 0).
+GLint to_int(double v) {
+  if (std::isnan(v)) return 0;
+  const double r = v >= 0 ? v + 0.5 : v - 0.5;
+  return r >= 2147483647.0 ? 2147483647 : r <= -2147483648.0 ? -2147483647 - 1 : GLint(r);
+}
 void to_ints(const float* v, int n, bool normalized, GLint* out) {
-  for (int i = 0; i < n; ++i)
-    out[i] = normalized ? GLint(double(v[i]) * 2147483647.0) : GLint(v[i] >= 0 ? double(v[i]) + 0.5 : double(v[i]) - 0.5);
+  for (int i = 0; i < n; ++i) out[i] = normalized ? GLint(double(v[i]) * 2147483647.0) : to_int(double(v[i]));
 }
 
 }  // namespace

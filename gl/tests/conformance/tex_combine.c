@@ -345,7 +345,8 @@ int main(int argc, char** argv) {
   glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
   parameter_values(GL_TEXTURE_1D, "param_1d");
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_MIRRORED_REPEAT);
-  glTexParameterf(GL_TEXTURE_3D, GL_TEXTURE_MAX_LOD, 2);
+  glTexParameterf(GL_TEXTURE_3D, GL_TEXTURE_MAX_LOD, 2.6f); /* rounded by glGetTexParameteriv */
+  glTexParameterf(GL_TEXTURE_3D, GL_TEXTURE_MIN_LOD, -1.7f);
   parameter_values(GL_TEXTURE_3D, "param_3d_default");
   glGetTexParameterfv(GL_TEXTURE_ENV, GL_TEXTURE_MIN_FILTER, f);
   error("get_tex_parameter_bad_target");
