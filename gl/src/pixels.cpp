@@ -12,6 +12,7 @@ int format_components(GLenum format) {
     case GL_RGB: case GL_BGR: return 3;
     case GL_LUMINANCE_ALPHA: return 2;
     case GL_LUMINANCE: case GL_ALPHA: case GL_RED: return 1;
+    case GL_GREEN: case GL_BLUE: return 1;  // (GL 1.0's, as glDrawPixels takes them)
     default: return 0;
   }
 }
@@ -66,6 +67,8 @@ std::vector<uint32_t> transferred(GLenum format, GLenum type, int width, int hei
         case GL_LUMINANCE_ALPHA: v[0] = v[1] = v[2] = c[0], v[3] = c[1]; break;
         case GL_LUMINANCE: v[0] = v[1] = v[2] = c[0]; break;
         case GL_ALPHA: v[3] = c[0]; break;
+        case GL_GREEN: v[1] = c[0]; break;
+        case GL_BLUE: v[2] = c[0]; break;
         default: v[0] = c[0]; break;  // GL_RED
       }
       transfer.colour(v);
@@ -134,6 +137,8 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
         case GL_LUMINANCE_ALPHA: r = g = b = c[0], a = c[1]; break;
         case GL_LUMINANCE: r = g = b = c[0]; break;
         case GL_ALPHA: a = c[0]; break;
+        case GL_GREEN: g = c[0]; break;
+        case GL_BLUE: b = c[0]; break;
         default: r = c[0]; break;  // GL_RED
       }
       out[size_t(y) * width + x] = r | g << 8 | b << 16 | a << 24;

@@ -239,6 +239,32 @@ int main(int argc, char** argv) {
   conf_frame("formats");
   texture(GL_RGBA);
 
+  /* GL_GREEN and GL_BLUE as the source format of glTexImage2D and glTexSubImage2D
+   * (piglit's texsubimage-unpack draws them with GL_COMBINE), unsigned bytes and floats,
+   * the second under a red scale (the pixel transfer's path). */
+  glClear(GL_COLOR_BUFFER_BIT);
+  combine(GL_REPLACE, GL_REPLACE, GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT, GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA);
+  for (i = 0; i < 4; ++i) {
+    static GLubyte bytes[8 * 8];
+    static GLfloat floats[3 * 2];
+    const GLenum src = i & 1 ? GL_BLUE : GL_GREEN;
+    int k;
+    for (k = 0; k < 64; ++k) bytes[k] = (GLubyte)(k * 37 + i * 50);
+    for (k = 0; k < 6; ++k) floats[k] = 0.15f * (float)k + 0.1f;
+    texture(GL_RGBA);
+    if (i >= 2) glPixelTransferf(GL_GREEN_SCALE, 0.5f);
+    if (i == 3) glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 0, src, GL_UNSIGNED_BYTE, bytes);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 3, 5, 4, src, GL_UNSIGNED_BYTE, bytes);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 3, 2, src, GL_FLOAT, floats);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelTransferf(GL_GREEN_SCALE, 1);
+    error(i & 1 ? "blue_source_error" : "green_source_error");
+    cell(i);
+  }
+  conf_frame("source_formats");
+  texture(GL_RGBA);
+
   /* Two units: unit 1 combines unit 0's result (PREVIOUS) with PRIMARY_COLOR. */
   glClear(GL_COLOR_BUFFER_BIT);
   combine(GL_MODULATE, GL_MODULATE, GL_TEXTURE, GL_CONSTANT, GL_PREVIOUS, GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA);
