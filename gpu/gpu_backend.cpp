@@ -1187,6 +1187,8 @@ void GpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
   if (state.color_sum) throw Error("the GPU backend does not add a secondary colour (GL_COLOR_SUM) yet");
   if (state.texture.texture && state.texture1.texture)
     throw Error("the GPU backend does not apply a second texture unit yet");
+  if (state.texture.texture && state.texture.env == TexEnvMode::Combine)
+    throw Error("the GPU backend does not apply the GL_COMBINE texture environment yet");
   {
     const SamplerState& ss = state.texture.sampler;
     if (state.texture.texture && (ss.lod_bias != 0 || ss.min_lod > -1000 || ss.max_lod < 1000))

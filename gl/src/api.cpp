@@ -791,7 +791,9 @@ const GLubyte* glGetString(GLenum name) {
           // (multisample.cpp: the default framebuffer's packed depth and stencil pixels)
           "GL_EXT_packed_depth_stencil "
           "GL_EXT_texture3D "
-          "GL_ARB_window_pos GL_ARB_texture_border_clamp ";  // glWindowPos's ARB names (api_pixels.cpp), GL_CLAMP_TO_BORDER
+          "GL_ARB_window_pos GL_ARB_texture_border_clamp "  // glWindowPos's ARB names (api_pixels.cpp), GL_CLAMP_TO_BORDER
+          // GL 1.3's GL_COMBINE environment (tex_combine.cpp): EXT's names are the same
+          "GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 GL_EXT_texture_env_combine ";
       break;
     default: c->error(GL_INVALID_ENUM); return nullptr;
   }

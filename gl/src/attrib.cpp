@@ -27,6 +27,7 @@ void Context::push_attrib(GLbitfield mask) {
   f.texture_enabled_1d = texture_.enabled_1d, f.texture_bound_1d = texture_.bound_1d;
   f.texture_enabled_3d = texture_.enabled_3d, f.texture_bound_3d = texture_.bound_3d;
   f.env_mode = texture_.env_mode, f.env_color = texture_.env_color;
+  f.combine = texture_.combine;
   f.color = color_, f.texcoord = texcoord_, f.normal = normal_, f.edge_flag = edge_flag_;
   f.list_base = lists_.base;
   f.raster_pos = pixels.raster;
@@ -127,6 +128,7 @@ void Context::pop_attrib() {
     texture_.enabled_3d = f.texture_enabled_3d;
     texture_.bound_3d = f.texture_bound_3d == 0 || texture_.objects.count(f.texture_bound_3d) ? f.texture_bound_3d : 0;
     texture_.env_mode = f.env_mode, texture_.env_color = f.env_color;
+    texture_.combine = f.combine;
     tex_gen_ = f.tex_gen;
   }
   if (m & GL_LIST_BIT) lists_.base = f.list_base;

@@ -49,6 +49,8 @@
 //   color_sum.cpp     GL 1.4's secondary colour and fog coordinates, GL 1.2's separate
 //                     specular colour; api_color_sum.cpp their C calls
 //   multitexture.cpp  GL 1.3's texture units; api_multitexture.cpp their C calls
+//   tex_combine.cpp   GL 1.3's GL_COMBINE environment, glGetTexEnv, glGetTexParameter
+//                     (and their C calls)
 //   framebuffer_objects.cpp  framebuffer objects and renderbuffers; api_framebuffer.cpp
 //                     their C calls (and glBlitFramebuffer's, blit.cpp)
 #pragma once
@@ -449,6 +451,14 @@ class Context {
   void restore_units(const AttribFrame& f);
   void save_client_units(ClientAttribFrame& f);
   void restore_client_units(const ClientAttribFrame& f);
+  // --- GL 1.3's GL_COMBINE environment, glGetTexEnv, glGetTexParameter (tex_combine.cpp)
+  // false: not one of GL_COMBINE's parameters; else set (or GL's error recorded).
+  bool tex_env_combine(GLenum pname, const float* v);
+  // glGetTexEnv and glGetTexParameter: the number of values put in `out` (4 for a
+  // colour, else 1; 0 after an error); `normalized`: glGet*iv maps them from [0, 1] to
+  // [0, 2^31 - 1] (colours, the priority).
+  int get_tex_env(GLenum target, GLenum pname, float* out, bool* normalized);
+  int get_tex_parameter(GLenum target, GLenum pname, float* out, bool* normalized);
   // --- framebuffer objects (framebuffer_objects.cpp)
   void gen_framebuffers(GLsizei n, GLuint* out);
   void delete_framebuffers(GLsizei n, const GLuint* ids);

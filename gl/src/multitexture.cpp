@@ -24,6 +24,7 @@ void Context::swap_units() {
   std::swap(p.enabled_3d, texture_.enabled_3d), std::swap(p.bound_3d, texture_.bound_3d);
   std::swap(p.env_mode, texture_.env_mode), std::swap(p.env_color, texture_.env_color);
   std::swap(p.lod_bias, texture_.lod_bias);
+  std::swap(p.combine, texture_.combine);
   std::swap(p.matrix, transform_.texture), std::swap(p.matrix_identity, transform_.texture_identity);
   std::swap(p.tex_gen, tex_gen_);
   live_unit_ = 1 - live_unit_;
@@ -108,8 +109,10 @@ bool Context::unit_stage(TextureStage& st, const TextureUnitState& u) {
            : u.env_mode == GL_DECAL ? TexEnvMode::Decal
            : u.env_mode == GL_BLEND ? TexEnvMode::Blend
            : u.env_mode == GL_ADD   ? TexEnvMode::Add
+           : u.env_mode == GL_COMBINE ? TexEnvMode::Combine
                                     : TexEnvMode::Modulate;
   st.env_color = u.env_color;
+  st.combine = u.combine;
   using T = SamplerState::Texel;
   using Mp = SamplerState::Mip;
   SamplerState& sm = st.sampler;
@@ -156,6 +159,7 @@ bool Context::texture_stages(PixelState& s) {
       live_state.enabled = l.enabled, live_state.enabled_1d = l.enabled_1d, live_state.enabled_3d = l.enabled_3d;
       live_state.bound = l.bound, live_state.bound_1d = l.bound_1d, live_state.bound_3d = l.bound_3d;
       live_state.env_mode = l.env_mode, live_state.env_color = l.env_color, live_state.lod_bias = l.lod_bias;
+      live_state.combine = l.combine;
     }
     on[u] = unit_stage(stage[u], live ? live_state : p);
   }

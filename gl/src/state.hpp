@@ -200,6 +200,7 @@ struct TextureState {
   GLuint next_name = 1;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color{0, 0, 0, 0};
+  TexCombine combine;  // GL_COMBINE's parameters (tex_combine.cpp)
   // 1-D textures (texture_1d.cpp): height-1 images in the same objects and sampler.
   bool enabled_1d = false;  // GL_TEXTURE_1D (GL_TEXTURE_2D takes precedence)
   GLuint bound_1d = 0;
@@ -339,6 +340,7 @@ struct TextureUnitState {
   GLuint bound = 0, bound_1d = 0, bound_3d = 0;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color{0, 0, 0, 0};
+  TexCombine combine;
   float lod_bias = 0;
   std::vector<Mat4> matrix{Mat4{}};
   bool matrix_identity = true;
@@ -405,6 +407,7 @@ struct AttribFrame {
   GLuint texture_bound_3d = 0;
   GLenum env_mode = GL_MODULATE;
   Vec4 env_color;
+  TexCombine combine;  // GL_TEXTURE_BIT
   Vec4 color, texcoord;
   Vec3 normal;
   bool edge_flag = true;

@@ -224,12 +224,13 @@ void Context::tex_env(GLenum target, GLenum pname, const float* v) {
   if (target != GL_TEXTURE_ENV) return error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_MODE) {
     const GLenum m = to_enum(v[0]);
-    if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != GL_ADD)
+    if (m != GL_MODULATE && m != GL_REPLACE && m != GL_DECAL && m != GL_BLEND && m != GL_ADD &&
+        m != GL_COMBINE)  // (GL 1.3: tex_combine.cpp)
       return error(GL_INVALID_ENUM);
     texture_.env_mode = m;
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
     texture_.env_color = {unit(v[0]), unit(v[1]), unit(v[2]), unit(v[3])};
-  } else {
+  } else if (!tex_env_combine(pname, v)) {
     return error(GL_INVALID_ENUM);
   }
   changed();

@@ -74,7 +74,36 @@ enum class LogicOp : uint8_t {
 };
 
 // glTexEnv's GL_TEXTURE_ENV_MODE.
-enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add };
+enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add, Combine };
+
+// OpenGL 1.3's GL_COMBINE environment (TexEnvMode::Combine): the RGB and the alpha of
+// the result are each one function (GL_COMBINE_RGB, GL_COMBINE_ALPHA) of up to three
+// arguments, each argument a source's colour or alpha (GL_SOURCEi_*, GL_OPERANDi_*),
+// the result times a scale (GL_RGB_SCALE, GL_ALPHA_SCALE), clamped to [0, 1].
+// The defaults are OpenGL's initial state.
+enum class CombineOp : uint8_t {
+  Replace,      // a0
+  Modulate,     // a0 a1
+  Add,          // a0 + a1
+  AddSigned,    // a0 + a1 - 0.5
+  Interpolate,  // a0 a2 + a1 (1 - a2)
+  Subtract,     // a0 - a1
+  Dot3Rgb,      // 4 ((r0 - .5)(r1 - .5) + (g0 - .5)(g1 - .5) + (b0 - .5)(b1 - .5)) in R, G, B
+  Dot3Rgba,     // the same in alpha too (the alpha function is then not used)
+};
+// Texture: this unit's texel; Constant: the unit's GL_TEXTURE_ENV_COLOR; Primary: the
+// fragment's interpolated colour; Previous: the last unit's result (Primary on unit 0).
+enum class CombineSource : uint8_t { Texture, Constant, Primary, Previous };
+enum class CombineOperand : uint8_t { SrcColor, OneMinusSrcColor, SrcAlpha, OneMinusSrcAlpha };
+struct TexCombine {
+  CombineOp rgb = CombineOp::Modulate, alpha = CombineOp::Modulate;
+  CombineSource source_rgb[3] = {CombineSource::Texture, CombineSource::Previous, CombineSource::Constant};
+  CombineSource source_alpha[3] = {CombineSource::Texture, CombineSource::Previous, CombineSource::Constant};
+  // The alpha arguments take SrcAlpha or OneMinusSrcAlpha only.
+  CombineOperand operand_rgb[3] = {CombineOperand::SrcColor, CombineOperand::SrcColor, CombineOperand::SrcAlpha};
+  CombineOperand operand_alpha[3] = {CombineOperand::SrcAlpha, CombineOperand::SrcAlpha, CombineOperand::SrcAlpha};
+  float rgb_scale = 1, alpha_scale = 1;  // 1, 2 or 4
+};
 
 // What a texture's texels mean (glTexImage2D's base internal format). The Texture
 // stores RGBA8 in any case; the format decides which of its channels the environment
@@ -112,7 +141,8 @@ struct TextureStage {
   const Texture* texture = nullptr;  // null: no texturing
   TexFormat format = TexFormat::Rgba;
   TexEnvMode env = TexEnvMode::Modulate;
-  Vec4 env_color{0, 0, 0, 0};  // GL_TEXTURE_ENV_COLOR, for TexEnvMode::Blend
+  Vec4 env_color{0, 0, 0, 0};  // GL_TEXTURE_ENV_COLOR, for TexEnvMode::Blend and Combine
+  TexCombine combine;          // for TexEnvMode::Combine
   SamplerState sampler;
 };
 

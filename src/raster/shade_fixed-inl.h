@@ -99,10 +99,70 @@ HWY_INLINE MF stencil_and_depth(const PixelState& p, MF m, MF depth, uint8_t* sp
   return both;
 }
 
+// GL_COMBINE's argument i of the RGB (`rgb`) or alpha function: its source's colour
+// channel `ch` (0-2) or alpha, or one minus it, as the operand says. The texel as the
+// Texture stores it is already the spec's source colour for its format (Alpha: RGB 0;
+// Luminance, Rgb: alpha 1; Intensity: all four I).
+HWY_INLINE VF combine_arg(const TexCombine& k, bool rgb, int i, int ch, const Rgba* src[4]) {
+  const DF d;
+  const Rgba& s = *src[int(rgb ? k.source_rgb[i] : k.source_alpha[i])];
+  const CombineOperand op = rgb ? k.operand_rgb[i] : k.operand_alpha[i];
+  const bool use_alpha = op == CombineOperand::SrcAlpha || op == CombineOperand::OneMinusSrcAlpha;
+  const VF v = use_alpha ? s.a : ch == 0 ? s.r : ch == 1 ? s.g : s.b;
+  return op == CombineOperand::OneMinusSrcColor || op == CombineOperand::OneMinusSrcAlpha ? hn::Sub(hn::Set(d, 1.0f), v) : v;
+}
+
+// One channel of GL_COMBINE's function `op` (not the dot products), before its scale.
+HWY_INLINE VF combine_channel(const TexCombine& k, CombineOp op, bool rgb, int ch, const Rgba* src[4]) {
+  const DF d;
+  const VF a0 = combine_arg(k, rgb, 0, ch, src);
+  if (op == CombineOp::Replace) return a0;
+  const VF a1 = combine_arg(k, rgb, 1, ch, src);
+  switch (op) {
+    case CombineOp::Modulate: return hn::Mul(a0, a1);
+    case CombineOp::Add: return hn::Add(a0, a1);
+    case CombineOp::AddSigned: return hn::Sub(hn::Add(a0, a1), hn::Set(d, 0.5f));
+    case CombineOp::Subtract: return hn::Sub(a0, a1);
+    default: {  // Interpolate: a0 a2 + a1 (1 - a2) = (a0 - a1) a2 + a1
+      const VF a2 = combine_arg(k, rgb, 2, ch, src);
+      return hn::MulAdd(hn::Sub(a0, a1), a2, a1);
+    }
+  }
+}
+
+// OpenGL 1.3's GL_COMBINE environment (TexCombine): `f` the previous unit's result, `t`
+// the texel, `primary` the fragment's interpolated colour.
+inline HWY_NOINLINE Rgba texture_combine(const TextureStage& st, const Rgba& f, const Rgba& t, const Rgba& primary) {
+  const DF d;
+  const TexCombine& k = st.combine;
+  const Rgba constant{hn::Set(d, st.env_color.x), hn::Set(d, st.env_color.y), hn::Set(d, st.env_color.z),
+                      hn::Set(d, st.env_color.w)};
+  const Rgba* src[4] = {&t, &constant, &primary, &f};  // in CombineSource's order
+  const VF rgb_scale = hn::Set(d, k.rgb_scale);
+  Rgba o;
+  if (k.rgb == CombineOp::Dot3Rgb || k.rgb == CombineOp::Dot3Rgba) {
+    const VF half = hn::Set(d, 0.5f);
+    VF dot = hn::Zero(d);
+    for (int ch = 0; ch < 3; ++ch)
+      dot = hn::MulAdd(hn::Sub(combine_arg(k, true, 0, ch, src), half), hn::Sub(combine_arg(k, true, 1, ch, src), half), dot);
+    o.r = o.g = o.b = saturate(hn::Mul(hn::Mul(dot, hn::Set(d, 4.0f)), rgb_scale));
+    if (k.rgb == CombineOp::Dot3Rgba) {
+      o.a = o.r;
+      return o;
+    }
+  } else {
+    o.r = saturate(hn::Mul(combine_channel(k, k.rgb, true, 0, src), rgb_scale));
+    o.g = saturate(hn::Mul(combine_channel(k, k.rgb, true, 1, src), rgb_scale));
+    o.b = saturate(hn::Mul(combine_channel(k, k.rgb, true, 2, src), rgb_scale));
+  }
+  o.a = saturate(hn::Mul(combine_channel(k, k.alpha, false, 3, src), hn::Set(d, k.alpha_scale)));
+  return o;
+}
+
 // The texture environment of one unit (OpenGL 1.x's table of texture functions). `f`
 // is the fragment's colour (the previous unit's result), `t` the texel as the Texture
-// stores it for its format.
-HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const Rgba& t) {
+// stores it for its format, `primary` the fragment's interpolated colour (for Combine).
+HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const Rgba& t, const Rgba& primary) {
   const DF d;
   const VF one = hn::Set(d, 1.0f);
   const bool color = st.format != TexFormat::Alpha;  // does the texture bring a colour?
@@ -139,6 +199,7 @@ HWY_INLINE Rgba texture_environment(const TextureStage& st, const Rgba& f, const
       if (st.format == TexFormat::Intensity) o.a = hn::Min(hn::Add(f.a, t.a), one);
       else if (alpha) o.a = hn::Mul(f.a, t.a);
       break;
+    case TexEnvMode::Combine: return texture_combine(st, f, t, primary);
   }
   return o;
 }
@@ -250,13 +311,14 @@ struct FixedShader {
     in.at_vector(v);
     constexpr int c0 = varying::kFixedColor;
     Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
+    const Rgba primary = c;  // GL_COMBINE's GL_PRIMARY_COLOR
     for (int u = 0; u < kUnits; ++u) {  // the units in order, each on the last one's colour
       const int st = tex_at(u);
       const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + (volume(u) ? 3 : 2), v));
       Rgba t;
       if (volume(u)) t = sample3(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq), hn::Mul(in(st + 2, v), iq));
       else t = sample(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
-      c = texture_environment(stage(u), c, t);
+      c = texture_environment(stage(u), c, t, primary);
     }
     if constexpr (kSpec) {  // the colour sum: the secondary colour after texturing
       const VF one = hn::Set(d, 1.0f);

@@ -5,7 +5,8 @@
 // without depth and stencil), then up to 512 calls among ~190 GL, GLU and OSMesa entry
 // points (GL 1.5's buffer objects and occlusion queries, 1-D textures and
 // evaluators, GL 1.4's secondary colour and fog coordinates, GL 1.3's multitexture
-// among them; framebuffer objects, renderbuffers and glBlitFramebuffer),
+// among them; framebuffer objects, renderbuffers and glBlitFramebuffer; GL 1.3's
+// GL_COMBINE environment, glGetTexEnv and glGetTexParameter),
 // with enums drawn from valid and invalid values and numbers that are often NaN,
 // infinite, huge or negative; glBegin/glEnd nesting, display lists
 // compiled, nested and called inside themselves, textures of odd sizes, vertex arrays
@@ -745,6 +746,63 @@ void multitexture_call(Bytes& in, const std::vector<float>& attrib, GLuint* name
   }
 }
 
+// GL 1.3's GL_COMBINE environment and the texture queries (gl/src/tex_combine.cpp):
+// every combine parameter with its values, neighbours' and any; glGetTexEnv and
+// glGetTexParameter with any target and name into a buffer of the largest answer's
+// size (4); a draw through the combined units.
+void tex_combine_call(Bytes& in, float a, float b, GLenum e1) {
+  static const GLenum pnames[] = {GL_COMBINE_RGB,     GL_COMBINE_ALPHA,  GL_SOURCE0_RGB,    GL_SOURCE1_RGB,
+                                  GL_SOURCE2_RGB,     GL_SOURCE0_ALPHA,  GL_SOURCE1_ALPHA,  GL_SOURCE2_ALPHA,
+                                  GL_OPERAND0_RGB,    GL_OPERAND1_RGB,   GL_OPERAND2_RGB,   GL_OPERAND0_ALPHA,
+                                  GL_OPERAND1_ALPHA,  GL_OPERAND2_ALPHA, GL_RGB_SCALE,      GL_ALPHA_SCALE,
+                                  GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_TEXTURE_MIN_FILTER, GL_TEXTURE_WRAP_R,
+                                  GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT, GL_TEXTURE_MIN_LOD,
+                                  GL_GENERATE_MIPMAP, GL_TEXTURE_LOD_BIAS};
+  static const GLenum values[] = {GL_COMBINE,    GL_REPLACE,       GL_MODULATE,      GL_ADD,
+                                  GL_ADD_SIGNED, GL_INTERPOLATE,   GL_SUBTRACT,      GL_DOT3_RGB,
+                                  GL_DOT3_RGBA,  GL_TEXTURE,       GL_CONSTANT,      GL_PRIMARY_COLOR,
+                                  GL_PREVIOUS,   GL_SRC_COLOR,     GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA,
+                                  GL_ONE_MINUS_SRC_ALPHA, GL_TEXTURE1, GL_ZERO, GL_ONE};
+  static const GLenum targets[] = {GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_1D, GL_TEXTURE_2D,
+                                   GL_TEXTURE_3D, GL_PROXY_TEXTURE_2D};
+  const GLenum pname = in.u8() < 240 ? pnames[in.below(26)] : e1;
+  const GLenum target = in.u8() < 240 ? targets[in.below(6)] : e1;
+  switch (in.below(5)) {
+    case 0: glTexEnvi(GL_TEXTURE_ENV, pname, GLint(in.u8() < 200 ? values[in.below(20)] : GLenum(in.integer()))); break;
+    case 1: {
+      const GLfloat v[4] = {a, b, float(in.below(6)), 0.5f};
+      if (in.u8() & 1) glTexEnvfv(target, pname, v);
+      else glTexEnviv(target, pname, reinterpret_cast<const GLint*>(values));
+      break;
+    }
+    case 2: {
+      GLfloat f[4] = {};
+      GLint v[4] = {};
+      (in.u8() & 1 ? glGetTexEnvfv : glGetTexParameterfv)(target, pname, f);
+      (in.u8() & 1 ? glGetTexEnviv : glGetTexParameteriv)(target, pname, v);
+      break;
+    }
+    case 3: {  // inside glBegin/glEnd: GL_INVALID_OPERATION, no change
+      GLfloat f[4] = {};
+      glBegin(GL_POINTS);
+      glTexEnvi(GL_TEXTURE_ENV, pname, GL_ADD);
+      glGetTexEnvfv(GL_TEXTURE_ENV, pname, f);
+      glGetTexParameterfv(target, pname, f);
+      glEnd();
+      break;
+    }
+    default:
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+      glEnable(GL_TEXTURE_2D);
+      glBegin(GL_TRIANGLES);
+      glColor4f(a, b, 0.5f, a), glTexCoord2f(a, b), glVertex2f(a, b);
+      glColor4f(b, 0.2f, a, 1), glTexCoord2f(b, 0), glVertex2f(b, -a);
+      glColor4f(1, a, b, 0), glTexCoord2f(0, a), glVertex2f(-b, a);
+      glEnd();
+      break;
+  }
+}
+
 void buffer_lod_call(Bytes& in, float a, float b, GLenum e1) {
   static const GLenum names[] = {GL_NONE, GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT, GL_FRONT,
                                  GL_BACK, GL_LEFT, GL_RIGHT, GL_FRONT_AND_BACK, GL_AUX0, GL_AUX3};
@@ -1068,6 +1126,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         buffer_lod_call(in, a, b, e1);
         color_sum_call(in, attrib, a, b, c, e1);
         multitexture_call(in, attrib, names, a, b, e1);
+        tex_combine_call(in, a, b, e1);
         framebuffer_call(in, pixels, names, framebuffer_names, renderbuffer_names, a, b, e1, e2);
 #ifdef VELOCITY_FUZZ_GLUT_SHAPES
         shape_call(in, a, b);
