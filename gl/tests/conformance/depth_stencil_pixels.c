@@ -38,22 +38,6 @@ static void words(const char* name) {
     }
 }
 
-/* The stencil shown as colours where its low bits equal v. */
-static void show(const char* name) {
-  int v;
-  glPushAttrib(GL_ENABLE_BIT | GL_STENCIL_BUFFER_BIT | GL_CURRENT_BIT);
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_STENCIL_TEST);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  for (v = 0; v < 8; ++v) {
-    glStencilFunc(GL_EQUAL, v, 0x07);
-    glColor3f((v & 1) ? 1.0f : 0.2f, (v & 2) ? 1.0f : 0.2f, (v & 4) ? 1.0f : 0.2f);
-    glRectf(0, 0, 64, 48);
-  }
-  glPopAttrib();
-  conf_frame(name);
-}
-
 int main(int argc, char** argv) {
   static GLuint image[13 * 9], small[2];
   GLuint back[6];
@@ -136,6 +120,6 @@ int main(int argc, char** argv) {
   error("read_wrong_format");
   glDrawPixels(-1, 1, GL_DEPTH_STENCIL_EXT, GL_UNSIGNED_INT_24_8_EXT, small);
   error("draw_negative");
-  show("stencil_shown");
+  conf_show_stencil("stencil_shown", 64, 48);
   return conf_end();
 }

@@ -96,6 +96,24 @@ static void conf_quad(float x0, float y0, float x1, float y1, float z) {
   glEnd();
 }
 
+/* The stencil buffer shown as a frame: where a value's low three bits are v, a colour
+ * made of v's bits, over the rectangle (0, 0) - (w, h). */
+static void conf_show_stencil(const char* name, float w, float h) __attribute__((unused));
+static void conf_show_stencil(const char* name, float w, float h) {
+  int v;
+  glPushAttrib(GL_ENABLE_BIT | GL_STENCIL_BUFFER_BIT | GL_CURRENT_BIT);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  for (v = 0; v < 8; ++v) {
+    glStencilFunc(GL_EQUAL, v, 0x07);
+    glColor3f((v & 1) ? 1.0f : 0.2f, (v & 2) ? 1.0f : 0.2f, (v & 4) ? 1.0f : 0.2f);
+    glRectf(0, 0, w, h);
+  }
+  glPopAttrib();
+  conf_frame(name);
+}
+
 static int conf_end(void) {
   OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
   OSMesaDestroyContext(conf_ctx);

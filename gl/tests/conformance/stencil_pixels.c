@@ -26,22 +26,6 @@ static void stencil_values(const char* name) {
     }
 }
 
-/* The stencil shown: each value's low bits as a colour, where the test passes. */
-static void show(const char* name) {
-  int v;
-  glPushAttrib(GL_ENABLE_BIT | GL_STENCIL_BUFFER_BIT | GL_CURRENT_BIT);
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_STENCIL_TEST);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  for (v = 0; v < 8; ++v) {
-    glStencilFunc(GL_EQUAL, v, 0x07);
-    glColor3f((v & 1) ? 1.0f : 0.2f, (v & 2) ? 1.0f : 0.2f, (v & 4) ? 1.0f : 0.2f);
-    glRectf(0, 0, 80, 60);
-  }
-  glPopAttrib();
-  conf_frame(name);
-}
-
 int main(int argc, char** argv) {
   GLubyte ub[12 * 10];
   GLbyte sb[6 * 4];
@@ -133,7 +117,7 @@ int main(int argc, char** argv) {
   glDisable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   stencil_values("drawn");
-  show("shown");
+  conf_show_stencil("shown", 80, 60);
 
   /* Errors: a packed type, an unknown type, GL_BITMAP with a colour format, between
    * glBegin and glEnd. */
