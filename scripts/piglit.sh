@@ -66,15 +66,32 @@ fifo="$(mktemp -u)"
 mkfifo "$fifo"
 Xvfb -displayfd 3 -screen 0 1024x768x24 -noreset -nolisten tcp 3>"$fifo" &
 xvfb=$!
-trap 'kill $xvfb 2>/dev/null; rm -f "$fifo"' EXIT
+runner=""
+# Stopped (SIGTERM, Ctrl-C) or done: the run and the X server go too. Xvfb is killed
+# outright if it has not gone after 2 s (one was seen spinning after SIGTERM, its
+# clients gone). The run is waited for in the background so that a signal is handled
+# at once, not after piglit ends.
+cleanup() {
+  # (piglit starts each test in a session of its own: they go as the runner's children.)
+  [[ -n "$runner" ]] && { pkill -TERM -P "$runner" 2>/dev/null; kill "$runner" 2>/dev/null; }
+  kill "$xvfb" 2>/dev/null
+  for _ in $(seq 20); do kill -0 "$xvfb" 2>/dev/null || break; sleep 0.1; done
+  kill -9 "$xvfb" 2>/dev/null
+  rm -f "$fifo"
+}
+trap cleanup EXIT
+trap 'exit 143' TERM
+trap 'exit 130' INT
 read -r display <"$fifo"
 
 rm -rf "$results"
 start=$SECONDS
 env DISPLAY=":$display" PIGLIT_PLATFORM=glx "${env_vendor[@]}" VELOCITY_THREADS=1 LP_NUM_THREADS=1 \
   ${libdir:+LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"} \
-  "$piglit" run -p glx -j 2 --timeout 300 -t "$tests" -x "$exclude" quick_gl "$results" >"$results.log" 2>&1 || {
-  tail -20 "$results.log"; echo "piglit: the run failed" >&2; exit 1; }
+  "$piglit" run -p glx -j 2 --timeout 300 -t "$tests" -x "$exclude" quick_gl "$results" >"$results.log" 2>&1 &
+runner=$!
+wait "$runner" || { tail -20 "$results.log"; echo "piglit: the run failed" >&2; exit 1; }
+runner=""
 echo "piglit: $((SECONDS - start)) s on $vendor's GLX vendor"
 if [[ "$vendor" == velocity ]]; then
   python3 "$root/tests/piglit/compare.py" "$results/results.json.bz2" "$root/tests/piglit/expectations.txt"
