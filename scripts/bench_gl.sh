@@ -4,6 +4,10 @@
 #
 #   scripts/bench_gl.sh [WxH] [FRAMES] [ROUNDS]     default 1920x1080, 30 frames, 3 rounds
 #
+# THREADS=N sets both renderers' threads (default 2). VELOCITY_BUILD names a build folder
+# other than build/ (scripts/bundle.sh gl packs the two programs into one, to run this on
+# another machine: there it is not rebuilt).
+#
 # Each round runs both programs one after the other (median frame time: clear, draw,
 # glFinish); the table gives each one's best round, so that a burst of other load on a
 # shared machine does not decide the ratio, and the ratio llvmpipe / Velocity (> 1:
@@ -13,8 +17,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 size="${1:-1920x1080}"
 frames="${2:-30}"
 rounds="${3:-3}"
-build="$root/build"
-cmake --build "$build" --target gl_bench gl_bench_mesa >/dev/null
+build="${VELOCITY_BUILD:-$root/build}"
+threads="${THREADS:-2}"
+[[ -f "$build/CMakeCache.txt" ]] && cmake --build "$build" --target gl_bench gl_bench_mesa >/dev/null
 ms() { sed -n 's/.*median_ms=\([0-9.]*\).*/\1/p'; }
 best() { printf '%s\n' "$@" | sort -g | head -1; }
 declare -A vel
@@ -22,8 +27,8 @@ printf '| scene | size | llvmpipe ms | Velocity ms | ratio |\n|---|---|---|---|-
 for scene in gears mesh-immediate mesh-arrays; do
   m=() v=()
   for ((r = 0; r < rounds; ++r)); do
-    m+=("$(LP_NUM_THREADS=2 "$build/gl/bench/gl_bench_mesa" "$scene" "$size" "$frames" | ms)")
-    v+=("$(VELOCITY_THREADS=2 "$build/gl/bench/gl_bench" "$scene" "$size" "$frames" | ms)")
+    m+=("$(LP_NUM_THREADS=$threads "$build/gl/bench/gl_bench_mesa" "$scene" "$size" "$frames" | ms)")
+    v+=("$(VELOCITY_THREADS=$threads "$build/gl/bench/gl_bench" "$scene" "$size" "$frames" | ms)")
   done
   bm=$(best "${m[@]}") bv=$(best "${v[@]}")
   vel[$scene]=$bv

@@ -6,6 +6,8 @@
 #   render  the built `velocity` and Mesa's llvmpipe with ../shared's glref
 #   python  the built `velocity`, Debian's Python 3.11 with numpy and Dask, the Velocity
 #           package, and the batch benchmark's models from Debian's assimp-testmodels
+#   gl      the built `velocity`, pGL's benchmark on Velocity and on Mesa's llvmpipe
+#           (gl/bench: gl_bench, gl_bench_mesa) for scripts/bench_gl.sh
 #   gpu     the built `velocity`, libvelocity-gpu with libepoxy and libglvnd's EGL and
 #           OpenGL dispatch, and scripts/bench_gpu.sh; the GPU's own EGL vendor (NVIDIA's
 #           libEGL_nvidia, Mesa's) must be that machine's: bench_gpu.sh says if it is not
@@ -17,10 +19,11 @@
 #   scripts/scaling.sh --threads "1 2 4 8 16"       (VELOCITY and GLREF point into the bundle)
 #   python3.11 python/bench/bench_batch.py --build "$VELOCITY_BUILD" --workers 1,2,4,8   (python)
 #   bench_gpu.sh                                     (gpu: the CPU and GPU backends' table)
+#   THREADS=16 scripts/bench_gl.sh                   (gl: VELOCITY_BUILD points into the bundle)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 part="${1:-}"
-[[ "$part" == render || "$part" == python || "$part" == gpu ]] || { echo "usage: scripts/bundle.sh render|python|gpu [OUT.tar.xz]" >&2; exit 2; }
+[[ "$part" == render || "$part" == python || "$part" == gpu || "$part" == gl ]] || { echo "usage: scripts/bundle.sh render|python|gpu|gl [OUT.tar.xz]" >&2; exit 2; }
 out="${2:-$root/.bundle/velocity-$part.tar.xz}"
 stage="$(mktemp -d)"
 trap 'rm -rf "$stage"' EXIT
@@ -28,6 +31,8 @@ trap 'rm -rf "$stage"' EXIT
 # Binaries and the Python package, from the build tree.
 if [[ $part == gpu ]]; then
   cmake --build "$root/build" --target velocity_cli velocity-gpu >/dev/null
+elif [[ $part == gl ]]; then
+  cmake --build "$root/build" --target velocity_cli gl_bench gl_bench_mesa >/dev/null
 else
   cmake --build "$root/build" --target velocity_cli velocity_python >/dev/null
 fi
@@ -38,6 +43,9 @@ if [[ $part == render ]]; then
   # shellcheck source=lib/against_llvmpipe.sh
   source "$root/scripts/lib/against_llvmpipe.sh"  # builds glref if it is not there
   cp "$glref" "$stage/bin/"
+elif [[ $part == gl ]]; then
+  mkdir -p "$stage/build/gl/bench"
+  cp "$root/build/gl/bench/gl_bench" "$root/build/gl/bench/gl_bench_mesa" "$stage/build/gl/bench/"
 elif [[ $part == gpu ]]; then
   cp "$root/build/gpu/libvelocity-gpu.so" "$stage/lib/"
   cp "$root/scripts/bench_gpu.sh" "$stage/bin/"
