@@ -454,6 +454,7 @@ GLboolean glIsTexture(GLuint texture) {
 void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLint border, GLenum format,
                   GLenum type, const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       // GL_PROXY_TEXTURE_2D asks whether such an image would fit: the size is checked,
       // nothing is read or kept but the answer, and the call is never compiled.
       const bool proxy = target == GL_PROXY_TEXTURE_2D;
@@ -481,6 +482,7 @@ void glTexImage2D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
 void glTexSubImage2D(GLenum target, GLint level, GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
                      const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       if (target != GL_TEXTURE_2D) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 ||
           w > velocity::gl::kMaxTextureSize + 2 || h > velocity::gl::kMaxTextureSize + 2)

@@ -38,7 +38,9 @@ extern "C" {
 
 void glPolygonStipple(const GLubyte* mask) {
   if (!mask) return;  // (no pattern to read: nothing changes, as in Mesa)
-  NOW(const auto rows = velocity::gl::stipple_rows(c.pixels.unpack, mask); compiled([=](Context& k) { k.polygon_stipple(rows); }));
+  NOW(if (c.refuses_in_begin()) return;
+      const auto rows = velocity::gl::stipple_rows(c.pixels.unpack, mask);
+      compiled([=](Context& k) { k.polygon_stipple(rows); }));
 }
 void glGetPolygonStipple(GLubyte* mask) { NOW(if (c.in_begin_error()) return; c.get_polygon_stipple(mask)); }
 
@@ -104,6 +106,7 @@ void glWindowPos3svARB(const GLshort* v) { glWindowPos3sv(v); }
 
 void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte* bitmap) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       if (w < 0 || h < 0) return compiled_error(GL_INVALID_VALUE);
       if (int64_t(w) * h > kMaxPixelRectangle) return compiled_error(GL_OUT_OF_MEMORY);
       std::shared_ptr<const std::vector<uint8_t>> bits;
@@ -113,6 +116,7 @@ void glBitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove,
 
 void glDrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       if (w < 0 || h < 0) return compiled_error(GL_INVALID_VALUE);
       // (Colour index mode is not implemented: docs/gl.md.)
       const bool stencil = format == GL_STENCIL_INDEX;

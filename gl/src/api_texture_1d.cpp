@@ -18,6 +18,7 @@ extern "C" {
 void glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint border, GLenum format, GLenum type,
                   const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       if (target != GL_TEXTURE_1D) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || border < 0 || border > 1 ||
           w - 2 * border > (velocity::gl::kMaxTextureSize >> level) || !Context::base_format(internal))
@@ -32,6 +33,7 @@ void glTexImage1D(GLenum target, GLint level, GLint internal, GLsizei w, GLint b
 
 void glTexSubImage1D(GLenum target, GLint level, GLint x, GLsizei w, GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       if (target != GL_TEXTURE_1D) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || w > velocity::gl::kMaxTextureSize + 2)
           return c.error(GL_INVALID_VALUE);

@@ -18,6 +18,7 @@ extern "C" {
 void glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei h, GLsizei d, GLint border,
                   GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       const bool proxy = target == GL_PROXY_TEXTURE_3D;
       if (target != GL_TEXTURE_3D && !proxy) return c.error(GL_INVALID_ENUM);
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || d < 0 || border < 0 || border > 1 ||
@@ -42,6 +43,7 @@ void glTexImage3D(GLenum target, GLint level, GLint internal, GLsizei w, GLsizei
 void glTexSubImage3D(GLenum target, GLint level, GLint x, GLint y, GLint z, GLsizei w, GLsizei h, GLsizei d,
                      GLenum format, GLenum type, const GLvoid* pixels) {
   NOW(
+      if (c.refuses_in_begin()) return;  // (before the caller's memory is read)
       if (target != GL_TEXTURE_3D) return c.error(GL_INVALID_ENUM);
       const int max = velocity::gl::kMax3DTextureSize + 2;
       if (level < 0 || level >= velocity::gl::kMaxTextureLevels || w < 0 || h < 0 || d < 0 || w > max || h > max ||

@@ -114,6 +114,11 @@ class Context {
     return true;
   }
   bool in_begin() const { return in_begin_; }
+  // A command that reads the caller's memory (an image, a bitmap, a stipple) and runs now
+  // between glBegin and glEnd: GL_INVALID_OPERATION, and true, so that nothing is read
+  // (the unpack state may not describe the memory: glPixelStore is refused there too).
+  // While a list is compiled the memory is read for the list, as GL says.
+  bool refuses_in_begin() { return !compiling() && in_begin_error(); }
 
   // --- primitives (vertex.cpp)
   void begin(GLenum mode);

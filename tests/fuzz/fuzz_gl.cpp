@@ -599,7 +599,10 @@ void pixel_map_call(Bytes& in, const std::vector<float>& attrib, GLenum e1) {
   glPixelTransferi(GL_MAP_STENCIL, in.u8() & 1);
   glPixelTransferi(GL_INDEX_OFFSET, int(in.below(600)) - 300);
   // 16 bytes: read with the default unpack state (the random one may reach past them).
+  // Outside glBegin/glEnd, where glPixelStore works (inside, a list compiled with
+  // GL_COMPILE_AND_EXECUTE would read the pixels under the random state).
   const GLubyte pixels[4 * 4] = {0, 64, 128, 255, 1, 2, 3, 4, 250, 7, 9, 200, 13, 17, 19, 23};
+  glEnd();
   glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0), glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
   glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0), glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
