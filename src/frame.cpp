@@ -492,12 +492,14 @@ const FrameStats& CpuBackend::end_frame_into(uint8_t* rgba, size_t row_bytes, in
 
 const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   CpuBackend& r = *this;
+  // The streamed draws first (they come before any other job), and before pool_for,
+  // which may make a new pool.
+  r.close_stream();
   ThreadPool& pool = r.pool_for(r.plan.options.threads);
 
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   const Clock::time_point ts = Clock::now();
-  r.close_stream();  // (the streamed draws come first, before any other job)
   if (r.shadows_ && !r.casters_.empty()) r.render_shadows();
   const Clock::time_point t0 = Clock::now();
   geometry::finish_color_plan(r.plan, r.draw_states);
