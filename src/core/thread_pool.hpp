@@ -58,8 +58,9 @@ class ThreadPool {
   // done, and rethrows the first exception an item threw. The workers take items one at
   // a time in increasing order, as run() does, and call job(i, worker) with worker >= 1;
   // until close_stream the calling thread runs none. `job` is called through a
-  // reference: it must live until close_stream returns. One stream at a time; with no
-  // workers (size() == 1, or orphaned) close_stream runs every item.
+  // reference: it must live until close_stream returns (a pool destroyed with its
+  // stream open closes it first). One stream at a time; with no workers (size() == 1,
+  // or orphaned) close_stream runs every item.
   void open_stream(const std::function<void(int, int)>& job);
   void stream_to(int count);
   void close_stream();
