@@ -13,11 +13,21 @@
 //
 // Jobs are numbered in submission order and tiles merge the workers' lists by job, so
 // the image is the same for any number of threads.
+//
+// Streaming: a frame's first draws, while they are primitive batches and clears of
+// moderate size, do not wait for end_frame. Each goes to the pool's workers as it is
+// drawn (ThreadPool's stream): its vertices projected into arrays of its own, its
+// triangle-stage jobs run and binned under their frame numbers, while the calling
+// thread records the next draw (pGL's vertex work, which is serial). end_frame runs
+// what is left of the stream with the calling thread too, then the other draws as
+// above, numbered after the streamed ones: the bins, and so the image, are the same.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <functional>
+#include <mutex>
 #include <new>
 
 #include "core/srgb.hpp"
@@ -28,6 +38,7 @@
 #include "geometry/normals.hpp"
 #include "geometry/object_cull.hpp"
 #include "geometry/tangents.hpp"
+#include "geometry/vertex_stage.hpp"
 #include "geometry/vertex_jobs.hpp"
 #include "raster/bins.hpp"
 #include "raster/rasterize.hpp"
@@ -52,6 +63,8 @@ class CpuBackend final : public Backend {
   CpuBackend(int width, int height) { resize(width, height, 1); }
   // A shadow map's depth pass: draws on `owner`'s threads.
   CpuBackend(int size, CpuBackend* owner) : owner_(owner) { resize(size, size, 1); }
+  // The workers may be inside a stream's draws, which live here.
+  ~CpuBackend() override { drop_stream(); }
 
   void resize(int w, int h) override { resize(w, h, ssaa); }
   int width() const override { return width_; }
@@ -116,6 +129,30 @@ class CpuBackend final : public Backend {
 
   geometry::VertexStage vertex_stage;      // its chunks, reused across frames
   triangle::TriangleStage triangle_stage;  // its workers' scratch, reused across frames
+
+  // The stream (see the top of this file): the draws handed to the workers before
+  // end_frame, in order, each with its own copy of its plan and its vertex outputs
+  // (kept across frames, like the arrays of the vertex stage).
+  struct Streamed {
+    triangle::Job::Kind kind = triangle::Job::Kind::Batch;
+    geometry::BatchDrawPlan batch;
+    geometry::ClearPlan clear{};
+    uint32_t primitives = 0;
+    uint32_t first_job = 0;  // its first job's number in the frame
+    std::vector<geometry::ProjectedVertex> projected;
+    std::vector<uint32_t> codes;
+  };
+  // A batch of more primitives than this is drawn at end_frame, on every core (one
+  // streamed draw runs on one worker), and so is everything after it.
+  static constexpr uint32_t kMaxStreamedPrimitives = 4 * kTrianglesPerJob;
+  std::deque<Streamed> streamed_;
+  size_t streamed_used_ = 0;
+  std::mutex streamed_mutex_;      // the deque's index (which moves as it grows), between caller and workers
+  uint32_t streamed_jobs_ = 0;     // the jobs numbered before jobs[0]
+  bool stream_open_ = false;       // the pool runs this frame's stream
+  bool may_stream_ = false;        // the frame may still hand draws to the stream
+  bool stage_started_ = false;     // the triangle stage's start() was called for this frame
+  const std::function<void(int, int)> stream_job_ = [this](int item, int worker) { run_streamed(item, worker); };
 
   // Shadows (RenderOptions::shadows): the frame's lights and mesh draws, which all cast;
   // the lights given a map and one depth pass per map (reused across frames).
@@ -185,6 +222,7 @@ class CpuBackend final : public Backend {
                   std::to_string(k) + " super-sampling needs a sample buffer over " +
                   std::to_string(kMaxFramebufferSide) + " a side");
     if (w == width_ && h == height_ && k == ssaa && framebuffer.width == w * k) return;
+    drop_stream();  // (a frame never ended: its workers use the bins)
     // Bins first, then the framebuffer, which reuses its buffers when they are large
     // enough (a program switching sizes or super-sampling factors allocates nothing)
     // and otherwise allocates new ones before it lets go of the old: when memory runs
@@ -209,6 +247,12 @@ class CpuBackend final : public Backend {
     int channels;
   };
   const FrameStats& run_frame(bool painter, const ColorOut* out = nullptr);
+  // The stream: a draw handed to it (false: not streamed; the draw goes to jobs), a
+  // streamed draw run by a worker, and the stream's end.
+  bool stream(const geometry::BatchDrawPlan* batch, const geometry::ClearPlan* clear, uint32_t primitives);
+  void run_streamed(int item, int worker);
+  void close_stream();
+  void drop_stream() noexcept;
   void order_blended_draws();
   void render_shadows();
 };
@@ -247,6 +291,11 @@ void CpuBackend::begin_frame(const Camera& camera, const std::vector<Light>& lig
 void CpuBackend::begin(const Mat4& view, const Mat4& projection, bool orthographic, const std::vector<Light>& lights,
                        const FrameStart& start, const RenderOptions& options) {
   CpuBackend& r = *this;
+  drop_stream();  // a frame begun again before it ended
+  r.streamed_used_ = 0, r.streamed_jobs_ = 0;
+  r.stage_started_ = false;
+  // Shadow passes and painter's mode (its records are sorted at the end) do not stream.
+  r.may_stream_ = !r.owner_ && options.depth_mode != DepthMode::Painter;
   r.framebuffer.keep_ids(options.object_ids);
   const int w = r.framebuffer.width, h = r.framebuffer.height;
   geometry::DrawList& p = r.plan;
@@ -396,6 +445,7 @@ void CpuBackend::draw(const PrimitiveBatch& batch, const PixelState& state, uint
   if (primitives == 0) return;
   geometry::DrawList& p = r.plan;
   const geometry::BatchDrawPlan d = geometry::plan_batch_draw(p, r.draw_states, batch, state, primitives);
+  if (r.stream(&d, nullptr, primitives)) return;
   const uint32_t index = uint32_t(p.batches.size());
   p.batches.push_back(d);
   for (uint32_t b = 0; b < primitives; b += kTrianglesPerJob)
@@ -411,6 +461,7 @@ void CpuBackend::clear(const ClearRequest& request) {
     c.x0 = std::max(c.x0, request.x0), c.y0 = std::max(c.y0, request.y0);
     c.x1 = std::min(c.x1, request.x1 - 1), c.y1 = std::min(c.y1, request.y1 - 1);
   }
+  if (r.stream(nullptr, &c, 1)) return;
   const uint32_t index = uint32_t(r.plan.clears.size());
   r.plan.clears.push_back(c);
   r.jobs.push_back({triangle::Job::Kind::Clear, index, 0, 1});
@@ -441,6 +492,9 @@ const FrameStats& CpuBackend::end_frame_into(uint8_t* rgba, size_t row_bytes, in
 
 const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   CpuBackend& r = *this;
+  // The streamed draws first (they come before any other job), and before pool_for,
+  // which may make a new pool.
+  r.close_stream();
   ThreadPool& pool = r.pool_for(r.plan.options.threads);
 
   using Clock = std::chrono::steady_clock;
@@ -452,7 +506,9 @@ const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   r.order_blended_draws();
   r.vertex_stage.run(pool, r.plan);
   const Clock::time_point t1 = Clock::now();
-  r.triangle_stage.run(pool, r.bins, r.plan, r.jobs, r.framebuffer.width, r.framebuffer.height, painter);
+  if (!r.stage_started_) r.triangle_stage.start(r.bins, pool.size(), painter);
+  r.stage_started_ = false;
+  r.triangle_stage.run(pool, r.bins, r.plan, r.jobs, r.streamed_jobs_, r.framebuffer.width, r.framebuffer.height);
   if (painter) r.bins.bin_deferred();
   const Clock::time_point t2 = Clock::now();
 
@@ -506,6 +562,78 @@ const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   r.triangle_stage.add_stats(r.stats_);
   if (!r.owner_) r.triangle_stage.warn_nonfinite(r.plan, r.jobs);
   return r.stats_;
+}
+
+bool CpuBackend::stream(const geometry::BatchDrawPlan* batch, const geometry::ClearPlan* clear, uint32_t primitives) {
+  CpuBackend& r = *this;
+  // Only a prefix of the frame's jobs streams: once a draw went to jobs, all do.
+  if (!r.may_stream_ || !r.jobs.empty() || primitives > kMaxStreamedPrimitives) return r.may_stream_ = false;
+  if (!r.stream_open_) {
+    ThreadPool& pool = r.pool_for(r.plan.options.threads);
+    if (pool.size() < 2) return r.may_stream_ = false;  // nothing to overlap with
+    r.triangle_stage.start(r.bins, pool.size(), false);
+    r.stage_started_ = true;
+    pool.open_stream(r.stream_job_);
+    r.stream_open_ = true;
+  }
+  Streamed* s;
+  {
+    std::lock_guard lock(r.streamed_mutex_);
+    if (r.streamed_used_ == r.streamed_.size()) r.streamed_.emplace_back();
+    s = &r.streamed_[r.streamed_used_];
+  }
+  s->kind = batch ? triangle::Job::Kind::Batch : triangle::Job::Kind::Clear;
+  if (batch) s->batch = *batch;
+  if (clear) s->clear = *clear;
+  s->primitives = primitives;
+  s->first_job = r.streamed_jobs_;
+  r.streamed_jobs_ += (primitives + kTrianglesPerJob - 1) / kTrianglesPerJob;
+  r.pool->stream_to(int(++r.streamed_used_));
+  return true;
+}
+
+// On a worker: one streamed draw, its vertices then its jobs, as the vertex and triangle
+// stages would run them at end_frame.
+void CpuBackend::run_streamed(int item, int worker) {
+  CpuBackend& r = *this;
+  Streamed* s;
+  {
+    std::lock_guard lock(r.streamed_mutex_);
+    s = &r.streamed_[size_t(item)];
+  }
+  const int w = r.framebuffer.width, h = r.framebuffer.height;
+  if (s->kind == triangle::Job::Kind::Clear) {
+    r.triangle_stage.run_job(r.bins, {triangle::Job::Kind::Clear, 0, 0, 1}, nullptr, &s->clear, s->first_job, worker, w, h);
+    return;
+  }
+  geometry::BatchDrawPlan& d = s->batch;
+  const size_t n = d.batch.vertex_count;
+  if (s->projected.size() < n) s->projected.resize(n), s->codes.resize(n);
+  geometry::ClipVertexJob v;
+  v.positions = d.batch.position, v.begin = 0, v.end = n, v.viewport = d.viewport;
+  v.out.projected = s->projected.data(), v.out.codes = s->codes.data();
+  geometry::project_clip_vertices(v);
+  d.projected = s->projected.data(), d.codes = s->codes.data();
+  uint32_t number = s->first_job;
+  for (uint32_t b = 0; b < s->primitives; b += kTrianglesPerJob)
+    r.triangle_stage.run_job(r.bins, {triangle::Job::Kind::Batch, 0, b, std::min(b + kTrianglesPerJob, s->primitives)},
+                             &d, nullptr, number++, worker, w, h);
+}
+
+// The rest of the stream, on the calling thread too; rethrows what a streamed draw threw.
+void CpuBackend::close_stream() {
+  may_stream_ = false;
+  if (!stream_open_) return;
+  stream_open_ = false;
+  pool->close_stream();
+}
+
+// A stream whose frame will not be drawn: ended, whatever its draws threw.
+void CpuBackend::drop_stream() noexcept {
+  try {
+    close_stream();
+  } catch (...) {
+  }
 }
 
 // The shadow maps of the frame's shadow-casting lights: each view's depth, drawn by a

@@ -57,7 +57,10 @@ constexpr size_t kMaxVerticesPerFrame = size_t(1) << 22;  // more: the frame is 
 // Texel bytes a frame may keep alive (textures replaced or deleted while the frame that
 // draws with them is pending): more, and the frame is run, as for vertices.
 constexpr size_t kMaxTextureBytesPerFrame = size_t(256) << 20;
-constexpr size_t kMaxBatchVertices = size_t(1) << 20;     // more: the batch goes to the renderer
+// A batch goes to the renderer at the first primitive past this many vertices (one job
+// of the renderer's triangle stage, 4,096 triangles): the renderer's workers set up and
+// bin it while this thread records the next (src/frame.cpp, "Streaming").
+constexpr size_t kStreamBatchVertices = 3 * 4096;
 // A strip, fan, loop or polygon longer than this (GL_OUT_OF_MEMORY; the rest is dropped).
 constexpr size_t kMaxPrimitiveVertices = size_t(1) << 22;
 // Commands one outermost glCallList may run, nested lists included: lists that call each

@@ -16,7 +16,9 @@
 //   renderer.draw(b, state);          // inside begin_frame / end_frame
 //
 // Everything the batch points to (arrays, textures) must stay alive and unchanged
-// until end_frame() returns: the work is done there, on every core.
+// until end_frame() returns: the work is done by then, on every core. (The CPU
+// backend may start a batch's vertex and triangle work on its worker threads as soon
+// as it is drawn, while the caller records the next; src/frame.cpp, "Streaming".)
 #pragma once
 
 #include <atomic>

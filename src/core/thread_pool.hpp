@@ -4,6 +4,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <type_traits>
 #include <mutex>
@@ -39,6 +40,7 @@ class ThreadPool {
   // themselves. If items throw, the rest still run and the first exception is
   // rethrown here once all are done. `job` is called through a reference to it (no
   // copy, no allocation per run): job(i, worker) or job(i).
+  // While a stream (below) is open, run() does every item on the calling thread.
   template <class F>
   void run(int count, F&& job) {
     if constexpr (std::is_invocable_v<F&, int, int>) {
@@ -47,6 +49,22 @@ class ThreadPool {
       run_items(count, Job{&job, [](void* f, int i, int) { (*static_cast<std::remove_reference_t<F>*>(f))(i); }});
     }
   }
+
+  // A run whose items are handed over while it runs, so that the workers start on them
+  // while the calling thread is still busy making the next ones (the renderer's triangle
+  // stage while pGL records the rest of a frame). open_stream(job) starts it with no
+  // items; stream_to(count) lets items [0, count) run (count only grows); close_stream()
+  // runs what is left on the calling thread too, returns once every item handed over is
+  // done, and rethrows the first exception an item threw. The workers take items one at
+  // a time in increasing order, as run() does, and call job(i, worker) with worker >= 1;
+  // until close_stream the calling thread runs none. `job` is called through a
+  // reference: it must live until close_stream returns (a pool destroyed with its
+  // stream open closes it first). One stream at a time; with no workers (size() == 1,
+  // or orphaned) close_stream runs every item.
+  void open_stream(const std::function<void(int, int)>& job);
+  void stream_to(int count);
+  void close_stream();
+  bool streaming() const { return streaming_; }
 
  private:
   // A callable by reference: what run() hands the workers.
@@ -58,6 +76,9 @@ class ThreadPool {
   void run_items(int count, Job job);
   void work(int worker);
   void drain(int worker);
+  void drain_stream(int worker);
+  void start_generation();
+  void wait_workers();
 
   std::vector<std::thread> workers_;
   // Workers and the caller wait by spinning a little (a frame runs its stages back to
@@ -81,6 +102,13 @@ class ThreadPool {
   std::atomic<int> busy_{0};   // workers still inside the current generation
   std::atomic<unsigned> generation_{0};  // bumped for each run()
   std::atomic<bool> stop_{false};
+  // The stream (open_stream): items [0, stream_count_) may run; once stream_closed_,
+  // none will be added. Both written under mutex_ (the workers sleep on wake_ for them).
+  bool streaming_ = false;  // the calling thread's view: a stream is open
+  std::atomic<bool> stream_run_{false};  // the generation the workers see is a stream
+  const std::function<void(int, int)>* stream_job_ = nullptr;
+  std::atomic<int> stream_count_{0};
+  std::atomic<bool> stream_closed_{false};
   unsigned forks_ = fork_count();  // fork_count() when the workers were started
 };
 

@@ -75,6 +75,10 @@ struct BatchDrawPlan {
   ViewportMap viewport{};
   SetupParams setup;
   size_t vertex_base = 0;
+  // Its vertices' vertex-stage outputs (in DrawList::vertices at vertex_base, or the
+  // renderer's own arrays for a batch it ran before end_frame).
+  const ProjectedVertex* projected = nullptr;
+  const uint32_t* codes = nullptr;
 };
 
 struct ClearPlan {

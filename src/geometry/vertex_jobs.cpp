@@ -54,6 +54,8 @@ void VertexStage::run(ThreadPool& pool, DrawList& plan) {
     for (size_t b = 0, n = plan.batches[i].batch.vertex_count; b < n; b += kVerticesPerJob)
       work.push_back({true, i, b, std::min<size_t>(b + kVerticesPerJob, n)});
   VertexArrays& va = plan.vertices;
+  for (BatchDrawPlan& b : plan.batches)
+    b.projected = va.projected.data() + b.vertex_base, b.codes = va.codes.data() + b.vertex_base;
   pool.run(int(work.size()), [&](int i) {
     const Chunk& w = work[size_t(i)];
     if (w.batch) {

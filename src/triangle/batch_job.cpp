@@ -16,10 +16,10 @@ using raster::RecordHeader;
 
 class BatchPrimitives {
  public:
-  BatchPrimitives(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, StageContext& cx)
-      : plan_(plan), d_(draw), b_(draw.batch), cx_(cx), stats_(cx.stats) {
-    projected_ = plan.vertices.projected.data() + draw.vertex_base;
-    codes_ = plan.vertices.codes.data() + draw.vertex_base;
+  BatchPrimitives(const geometry::BatchDrawPlan& draw, StageContext& cx)
+      : d_(draw), b_(draw.batch), cx_(cx), stats_(cx.stats) {
+    projected_ = draw.projected;
+    codes_ = draw.codes;
     info_ = {draw.kernel, draw.draw_state, 0};
     extras_ = draw.units > 1 || draw.color_sum;
   }
@@ -196,7 +196,6 @@ class BatchPrimitives {
     stats_.points++;
   }
 
-  const geometry::DrawList& plan_;
   const geometry::BatchDrawPlan& d_;
   const PrimitiveBatch& b_;
   StageContext& cx_;
@@ -209,9 +208,8 @@ class BatchPrimitives {
 
 }  // namespace
 
-void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end,
-                   StageContext& cx) {
-  BatchPrimitives(plan, draw, cx).run(begin, end);
+void run_batch_job(const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx) {
+  BatchPrimitives(draw, cx).run(begin, end);
 }
 
 void run_clear_job(const geometry::ClearPlan& c, int width, int height, StageContext& cx) {

@@ -7,14 +7,26 @@
 
 namespace velocity::triangle {
 
-void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs,
-                        int width, int height, bool painter) {
+void TriangleStage::start(raster::Bins& bins, int workers, bool painter) {
   bins.clear(painter);
-  const int workers = pool.size();
   worker_stats_.assign(size_t(workers), FrameStats{});
   survivors_.resize(size_t(workers));
   for (auto& s : survivors_) s.resize(3 * kTrianglesPerJob);
   marks_.resize(size_t(workers));
+}
+
+void TriangleStage::run_job(raster::Bins& bins, const Job& job, const geometry::BatchDrawPlan* batch,
+                            const geometry::ClearPlan* clear, uint32_t number, int worker, int width, int height) {
+  StageContext cx{bins.worker(worker), worker_stats_[size_t(worker)]};
+  cx.job = number;
+  cx.direct = survivors_[size_t(worker)].data();
+  cx.info = cx.direct + kTrianglesPerJob, cx.clipped = cx.info + kTrianglesPerJob;
+  if (job.kind == Job::Kind::Batch) run_batch_job(*batch, job.begin, job.end, cx);
+  else if (job.kind == Job::Kind::Clear) run_clear_job(*clear, width, height, cx);
+}
+
+void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs,
+                        uint32_t first_number, int width, int height) {
   // Points mark the vertices they drew: room for the largest such mesh on every worker,
   // whichever worker its jobs fall on.
   size_t most = 0;
@@ -25,13 +37,13 @@ void TriangleStage::run(ThreadPool& pool, raster::Bins& bins, const geometry::Dr
   pool.run(int(jobs.size()), [&](int i, int worker) {
     Job& job = jobs[size_t(i)];
     StageContext cx{bins.worker(worker), worker_stats_[size_t(worker)]};
-    cx.job = uint32_t(i);
+    cx.job = first_number + uint32_t(i);
     cx.direct = survivors_[size_t(worker)].data();
     cx.info = cx.direct + kTrianglesPerJob, cx.clipped = cx.info + kTrianglesPerJob;
     cx.marks = &marks_[size_t(worker)];
     switch (job.kind) {
       case Job::Kind::Mesh: run_mesh_job(plan, plan.meshes[job.draw], job.begin, job.end, cx); break;
-      case Job::Kind::Batch: run_batch_job(plan, plan.batches[job.draw], job.begin, job.end, cx); break;
+      case Job::Kind::Batch: run_batch_job(plan.batches[job.draw], job.begin, job.end, cx); break;
       case Job::Kind::Clear: run_clear_job(plan.clears[job.draw], width, height, cx); break;
     }
     job.nonfinite = cx.nonfinite;

@@ -46,19 +46,26 @@ struct StageContext {
 // The triangle stage for one job: assemble, reject, cull, clip, set up and bin.
 void run_mesh_job(const geometry::DrawList& plan, const geometry::MeshDrawPlan& draw, uint32_t begin, uint32_t end,
                   StageContext& cx);
-void run_batch_job(const geometry::DrawList& plan, const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end,
-                   StageContext& cx);
+// (A batch's vertices are read from draw.projected and draw.codes.)
+void run_batch_job(const geometry::BatchDrawPlan& draw, uint32_t begin, uint32_t end, StageContext& cx);
 void run_clear_job(const geometry::ClearPlan& clear, int width, int height, StageContext& cx);
 
 // The whole stage for a frame, on every core: each worker runs jobs in increasing order
 // and sets up and bins into its own bins. Holds the workers' scratch across frames.
 class TriangleStage {
  public:
-  // Runs `jobs` (their nonfinite counts filled in) into `bins`, which are cleared first,
-  // for a width x height framebuffer; `painter`: the records are deferred for
-  // Bins::bin_deferred.
-  void run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs, int width,
-           int height, bool painter);
+  // A frame's stage: start() clears `bins` (`painter`: the records are deferred for
+  // Bins::bin_deferred) and the workers' counts for `workers` threads; then run_job
+  // runs single jobs as their draws come (CpuBackend's stream), and run() the rest.
+  void start(raster::Bins& bins, int workers, bool painter);
+  // Job `job`, numbered `number` in the frame, on worker `worker` (a batch's or a
+  // clear's, whose plans live outside the DrawList until the frame ends).
+  void run_job(raster::Bins& bins, const Job& job, const geometry::BatchDrawPlan* batch,
+               const geometry::ClearPlan* clear, uint32_t number, int worker, int width, int height);
+  // Runs `jobs` (their nonfinite counts filled in), numbered from `first_number` on, into
+  // `bins`, for a width x height framebuffer, on every core. After start().
+  void run(ThreadPool& pool, raster::Bins& bins, const geometry::DrawList& plan, std::vector<Job>& jobs,
+           uint32_t first_number, int width, int height);
   // Adds the workers' counts of the last run to `stats`.
   void add_stats(FrameStats& stats) const;
   // One warning per mesh with non-finite vertices (not one per frame, nor per
