@@ -98,7 +98,7 @@ HWY_INLINE void depth_only_triangle(const RecordHeader& r, const TileBox& box, c
       const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
       const VF old = hn::Load(d, zp + v * kLanes);
       // A plain store of the blend: no other thread writes the tile, and a masked store
-      // is far slower on AMD's cores (vmaskmovps was most of the flat kernel's time).
+      // is far slower on AMD's cores (about half the flat kernel's samples sat after them).
       hn::Store(hn::IfThenElse(hn::And(lane_mask(mask, v), hn::Lt(z, old)), z, old), d, zp + v * kLanes);
     }
   };
