@@ -349,10 +349,11 @@ struct TileInputs {
   // cleared, written or read; the kernels' colour goes to a scratch tile.
   bool depth_only = false;
   // With depth_only, a shadow map: the tile's depth is drawn in a scratch tile and stored
-  // here (same tiled layout) as 16-bit codes, shading/shadow.hpp's, for a map whose
-  // projection is perspective or not, between planes near and far (clip w).
+  // here as 16-bit codes, in shading/shadow.hpp's layout (rows with a border) for a map
+  // `shadow_size` texels a side whose projection is perspective or not, between planes
+  // near and far (clip w).
   uint16_t* shadow_codes = nullptr;
-  uint16_t* shadow_nearest = nullptr;  // and each texel's nearest of four (ShadowMap::nearest)
+  int shadow_size = 0;
   bool shadow_perspective = false;
   float shadow_near = 0, shadow_far = 1;
   uint32_t color = 0;           // the clear values

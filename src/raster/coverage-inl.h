@@ -80,8 +80,9 @@ HWY_INLINE bool tiny_triangle(const TriangleEdges& e) {
 // classification below pays off on larger triangles, not on the dozen pixels of a
 // dense mesh's (where it was most of the coverage's time). The same test, the same
 // pixels; `step` is triangle_blocks' per-edge a * i + b * j of a block's pixels.
-HWY_INLINE int tiny_triangle_blocks(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
-                                    const TileBox& box, Block* out) {
+template <class Emit>
+HWY_INLINE void tiny_triangle_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
+                                    const TileBox& box, Emit& emit) {
   const DI di;
   const VI minus1 = hn::Set(di, -1);
   const int bx0 = box.x0 & ~3, by0 = box.y0 & ~3;
@@ -89,7 +90,6 @@ HWY_INLINE int tiny_triangle_blocks(const TriangleEdges& e, const VI (&step)[3][
   const int64_t py = int64_t(ty + by0) * kSubpixelOne + kSubpixelHalf;
   int32_t q0[3];  // floor(E / 256) at the first block's first pixel centre
   for (int k = 0; k < 3; ++k) q0[k] = int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits);
-  int n = 0;
   for (int by = by0; by <= box.y1; by += 4)
     for (int bx = bx0; bx <= box.x1; bx += 4) {
       VI q[3];
@@ -101,24 +101,25 @@ HWY_INLINE int tiny_triangle_blocks(const TriangleEdges& e, const VI (&step)[3][
         inside |= mask_bits(hn::RebindMask(DF(), m), v);
       }
       const uint32_t mask = inside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
-      if (mask) out[n++] = {uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), uint16_t(mask)};
+      if (mask) emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
     }
-  return n;
 }
 
-// A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels.
-inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
+// A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels. Each covered
+// 4x4 block goes to emit(index, mask) as it is found (triangle_blocks lists them; a
+// depth-only draw writes their depth at once, tile-inl.h).
+template <class Emit>
+HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const TileBox& box, Emit& emit) {
   const TriangleEdges& e = shape<TriangleEdges>(r);
   const DI di;
   const VI minus1 = hn::Set(di, -1);  // E >= 0 is E > -1 (integer compares are Gt, Lt, Eq)
-  int n = 0;
   // Per edge, a * i + b * j for each pixel (i, j) of a 4x4 block, lane by lane.
   VI step[3][kVectorsPerBlock];
   for (int k = 0; k < 3; ++k)
     for (int v = 0; v < kVectorsPerBlock; ++v)
       step[k][v] = hn::Add(hn::Mul(hn::Set(di, e.a[k]), hn::Load(di, kBlockXi + v * kLanes)),
                            hn::Mul(hn::Set(di, e.b[k]), hn::Load(di, kBlockYi + v * kLanes)));
-  if (tiny_triangle(e)) return tiny_triangle_blocks(e, step, tx, ty, box, out);
+  if (tiny_triangle(e)) return tiny_triangle_cover(e, step, tx, ty, box, emit);
 
   for (int my = box.y0 >> 4; my <= box.y1 >> 4; ++my)
     for (int mx = box.x0 >> 4; mx <= box.x1 >> 4; ++mx) {
@@ -166,15 +167,17 @@ inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, c
         }
       const int bx0 = std::max(box.x0, mx * 16) & ~3, bx1 = std::min(box.x1, mx * 16 + 15);
       const int by0 = std::max(box.y0, my * 16) & ~3, by1 = std::min(box.y1, my * 16 + 15);
+      // A 16x16 block inside the box (most of a large triangle's) needs no box masks.
+      const bool in_box = box.x0 <= mx * 16 && mx * 16 + 15 <= box.x1 && box.y0 <= my * 16 && my * 16 + 15 <= box.y1;
       for (int by = by0; by <= by1; by += 4)
         for (int bx = bx0; bx <= bx1; bx += 4) {
-          uint32_t mask = box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
+          uint32_t mask = in_box ? 0xffffu : box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
           if (partial && mask) {
             const int i = bx - mx * 16, j = by - my * 16;  // this 4x4 block in the 16x16 one
             const int k = (j >> 2) * 4 + (i >> 2);
             if (out_blocks >> k & 1) continue;
             if (!(in_blocks >> k & 1)) {
-              int32_t qb[3];
+              int32_t qb[3] = {};  // (all set: partial > 0; the compiler cannot tell once inlined)
               for (int p = 0; p < partial; ++p) qb[p] = q[p] + e.a[edge[p]] * i + e.b[edge[p]] * j;
               uint32_t inside = 0;
               for (int v = 0; v < kVectorsPerBlock; ++v) {
@@ -185,9 +188,16 @@ inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, c
               mask &= inside;
             }
           }
-          if (mask) out[n++] = {uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), uint16_t(mask)};
+          if (mask) emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
         }
     }
+}
+
+// A triangle's covered 4x4 blocks, listed in `out`; their number.
+inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
+  int n = 0;
+  auto list = [&](uint16_t index, uint32_t mask) { out[n++] = {index, uint16_t(mask)}; };
+  triangle_cover(r, tx, ty, box, list);
   return n;
 }
 

@@ -59,15 +59,17 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
 }
 
 // A shadow map's tile: window depths to the map's 16-bit codes (shading/shadow.hpp),
-// rounded up. Perspective: the clip w of depth z, w = n f / (f - z (f - n)) (glFrustum's
-// depth), as a fraction of (n, f): kShadowFar n z / (f - z (f - n)).
-void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* codes, uint16_t* nearest) {
+// rounded up, stored in the map's rows; the tiles at the map's edges also fill its border
+// (the edge texels repeated). Perspective: the clip w of depth z, w = n f / (f - z (f - n))
+// (glFrustum's depth), as a fraction of (n, f): kShadowFar n z / (f - z (f - n)).
+void store_shadow_codes(const TileInputs& frame, const float* depth, int tx, int ty) {
   const DF d;
   const DI di;
   const hn::Rebind<uint16_t, DI> d16;
   const VF far = hn::Set(d, shading::kShadowFar);
   const VF scale = hn::Set(d, frame.shadow_perspective ? shading::kShadowFar * frame.shadow_near : shading::kShadowFar);
   const VF f = hn::Set(d, frame.shadow_far), f_minus_n = hn::Set(d, frame.shadow_far - frame.shadow_near);
+  alignas(64) uint16_t codes[Framebuffer::kTilePixels];  // the tile's layout: 4x4 blocks
   for (int i = 0; i < Framebuffer::kTilePixels; i += int(kLanes)) {
     const VF z = hn::Load(d, depth + i);
     VF code = hn::Mul(scale, z);
@@ -75,28 +77,26 @@ void store_shadow_codes(const TileInputs& frame, const float* depth, uint16_t* c
     code = hn::Min(hn::Max(hn::Ceil(code), hn::Zero(d)), far);  // (a NaN's Max gives 0)
     hn::Store(hn::DemoteTo(d16, hn::ConvertTo(di, code)), d16, codes + i);
   }
-  // Each texel's nearest of four (ShadowMap::nearest), worked out row by row: the codes
-  // copied into rows (a block's row of four is 8 bytes), with a column and a row of 0s
-  // past the tile's edge, where the neighbours lie in other tiles.
-  constexpr int kRow = kTileSize + 8, kBlocks = kBlocksPerTileSide * kBlocksPerTileSide;
-  alignas(64) uint16_t rows[(kTileSize + 1) * kRow];
-  alignas(64) uint16_t out[kTileSize * kTileSize];
-  auto row_of = [](int block, int r) { return ((block >> 4) * 4 + r) * kRow + (block & 15) * 4; };
-  for (int b = 0; b < kBlocks; ++b)
-    for (int r = 0; r < 4; ++r) std::memcpy(rows + row_of(b, r), codes + b * 16 + r * 4, 8);
-  for (int y = 0; y < kTileSize; ++y) std::fill_n(rows + y * kRow + kTileSize, kRow - kTileSize, uint16_t(0));
-  std::fill_n(rows + kTileSize * kRow, kRow, uint16_t(0));
-  const hn::ScalableTag<uint16_t> du;
-  for (int y = 0; y < kTileSize; ++y)
-    for (int x = 0; x < kTileSize; x += int(hn::Lanes(du))) {
-      const uint16_t* p = rows + y * kRow + x;
-      const auto top = hn::Min(hn::LoadU(du, p), hn::LoadU(du, p + 1));
-      const auto bottom = hn::Min(hn::LoadU(du, p + kRow), hn::LoadU(du, p + kRow + 1));
-      hn::StoreU(hn::Min(top, bottom), du, out + y * kTileSize + x);
+  // Row by row into the map (a block's row of four codes is 8 bytes), as far as the
+  // map's edge, which need not be a tile's.
+  const int size = frame.shadow_size;
+  const size_t stride = size_t(size) + 2;
+  const int w = std::min(kTileSize, size - tx), h = std::min(kTileSize, size - ty);
+  auto row = [&](int y) { return frame.shadow_codes + size_t(ty + y + 1) * stride + size_t(tx + 1); };
+  for (int y = 0; y < h; ++y) {
+    const uint16_t* in = codes + (y >> 2) * kBlocksPerTileSide * 16 + (y & 3) * 4;
+    uint16_t* out = row(y);
+    if (w == kTileSize) {
+      for (int b = 0; b < kBlocksPerTileSide; ++b) std::memcpy(out + b * 4, in + b * 16, 8);
+    } else {
+      for (int x = 0; x < w; ++x) out[x] = in[(x >> 2) * 16 + (x & 3)];
     }
-  for (int b = 0; b < kBlocks; ++b)
-    for (int r = 0; r < 4; ++r)
-      std::memcpy(nearest + b * 16 + r * 4, out + ((b >> 4) * 4 + r) * kTileSize + (b & 15) * 4, 8);
+    if (tx == 0) out[-1] = out[0];
+    if (tx + w == size) out[w] = out[w - 1];
+  }
+  const int x0 = tx == 0 ? -1 : 0, x1 = tx + w == size ? w : w - 1;  // this tile's part of a border row
+  if (ty == 0) std::memcpy(row(-1) + x0, row(0) + x0, size_t(x1 - x0 + 1) * 2);
+  if (ty + h == size) std::memcpy(row(h) + x0, row(h - 1) + x0, size_t(x1 - x0 + 1) * 2);
 }
 
 bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
@@ -131,6 +131,8 @@ bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (!tile_box(r, tx, ty, kTileSize, kTileSize, box)) return;
     if (batchable(r)) return fragments.add(r, (*frame.draws)[r.draw], r.min_x - tx, r.min_y - ty, box, flush);
     if (!fragments.empty()) flush();
+    if (frame.depth_only && frame.depth_test && r.kind == RecordKind::Triangle && r.kernel == uint8_t(KernelId::Flat))
+      return depth_only_triangle(r, box, target);
     int n = 0;
     switch (r.kind) {
       case RecordKind::Triangle: n = triangle_blocks(r, tx, ty, box, blocks); break;
@@ -142,7 +144,7 @@ bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (n) kernel(r.kernel)(r, blocks, n, target);
   });
   flush();
-  if (codes) store_shadow_codes(frame, target.depth, frame.shadow_codes + base, frame.shadow_nearest + base);
+  if (codes) store_shadow_codes(frame, target.depth, tx, ty);
   return true;
 }
 

@@ -82,6 +82,29 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
   }
 }
 
+// A depth-only draw's triangle (a shadow map's opaque caster: TileInputs::depth_only with
+// the flat kernel, whose colour goes nowhere): mesh_kernel's depth test and write, with
+// the same depths, done for each 4x4 block as the coverage finds it, with no list of
+// blocks, no shader and no colour.
+HWY_INLINE void depth_only_triangle(const RecordHeader& r, const TileBox& box, const TileTarget& t) {
+  const DF d;
+  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  auto write = [&](uint16_t index, uint32_t mask) {
+    float fx, fy;
+    block_origin(r, t, index, fx, fy);
+    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    float* zp = t.depth + size_t(index) * 16;
+    for (int v = 0; v < kVectorsPerBlock; ++v) {
+      const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
+      const VF old = hn::Load(d, zp + v * kLanes);
+      // A plain store of the blend: no other thread writes the tile, and a masked store
+      // is far slower on AMD's cores (about half the flat kernel's samples sat after them).
+      hn::Store(hn::IfThenElse(hn::And(lane_mask(mask, v), hn::Lt(z, old)), z, old), d, zp + v * kLanes);
+    }
+  };
+  triangle_cover(r, t.x0, t.y0, box, write);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace velocity::raster
 HWY_AFTER_NAMESPACE();

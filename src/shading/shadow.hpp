@@ -33,24 +33,25 @@ inline constexpr float kNormalOffset = 2.0f;  // texels, along the surface norma
 inline constexpr float kLightOffset = 1.0f;   // texels, towards the light
 inline constexpr int kShadowLights = 4;       // lights with a shadow map, at most (the first that cast)
 
-// One depth image seen from a light, stored tile by tile as framebuffer.hpp lays a
-// framebuffer out, as 16-bit codes (half the bytes a lookup waits on): 0 the near plane,
-// kShadowFar the far one (and nothing drawn). Orthographic, the code is the window depth
-// the rasterizer wrote (LESS) times kShadowFar; perspective, it is linear in the distance
-// along the light's axis (clip w) from near to far, since a perspective window depth
-// crowds the far half of the range into a few codes. Each code is rounded up (the
-// caster a fraction of a code farther): one code is 1/65535 of the depth range, a small
-// fraction of a texel but very near a spot or point light (docs/appearance.md, "Limits").
+// One depth image seen from a light, as 16-bit codes (half the bytes a lookup waits on):
+// 0 the near plane, kShadowFar the far one (and nothing drawn). Orthographic, the code is
+// the window depth the rasterizer wrote (LESS) times kShadowFar; perspective, it is
+// linear in the distance along the light's axis (clip w) from near to far, since a
+// perspective window depth crowds the far half of the range into a few codes. Each code
+// is rounded up (the caster a fraction of a code farther): one code is 1/65535 of the
+// depth range, a small fraction of a texel but very near a spot or point light
+// (docs/appearance.md, "Limits").
 inline constexpr float kShadowFar = 65535.0f;
 
+// The codes are stored row by row (not in the framebuffer's tiles, which the depth pass
+// draws in), with a border of one texel on every side that repeats the texel at the edge
+// (clamp to edge): the filter's four texels around any point inside the map are then two
+// 32-bit loads, each a texel and its right neighbour, at an index that is one multiply
+// and add from the point's texel with nothing clamped (shadow-inl.h).
 struct ShadowMap {
-  const uint16_t* depth = nullptr;
-  // Per texel, the nearest of the four codes the filter reads from it (the texel and its
-  // right, lower and lower-right neighbours; 0 where one of them lies in the next 64x64
-  // tile), same layout: a point nearer than it is lit with one load (shadow-inl.h).
-  const uint16_t* nearest = nullptr;
+  const uint16_t* depth = nullptr;  // texel (x, y), -1 <= x, y <= size, at shadow_texel(x, y)
   int size = 0;     // texels a side
-  int tiles_x = 0;  // 64x64 tiles a row
+  int stride = 0;   // codes a stored row: size + 2
   Mat4 eye_to_clip; // the camera's eye space to the light's clip space
   bool perspective = false;
   // The world size of one texel: orthographic, the texel itself; perspective, per unit
@@ -71,11 +72,8 @@ struct LightShadow {
   Vec3 position;  // cube: the light, eye space
 };
 
-// Where texel (x, y) of a map is stored (framebuffer.hpp's index).
-inline size_t shadow_texel(const ShadowMap& m, int x, int y) {
-  return (size_t(y >> 6) * size_t(m.tiles_x) + size_t(x >> 6)) * 4096 + size_t(((y >> 2) & 15) * 16 + ((x >> 2) & 15)) * 16 +
-         size_t((y & 3) * 4 + (x & 3));
-}
+// Where texel (x, y) of a map is stored (-1 and size: the border).
+inline size_t shadow_texel(const ShadowMap& m, int x, int y) { return size_t(y + 1) * size_t(m.stride) + size_t(x + 1); }
 
 // The cube face a direction from the light falls in (its major axis).
 inline int cube_face(Vec3 v) {
