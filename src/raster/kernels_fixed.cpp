@@ -106,7 +106,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
         if (hn::AllFalse(d, m)) continue;
       }
       if (p.samples_passed) passed += hn::CountTrue(d, m);
-      if (writes_depth) hn::BlendedStore(z, m, d, zp);
+      if (writes_depth) store_masked(z, m, d, zp);
       const VU dst = hn::Load(du, cp);
       if (p.blend && !p.logic_op) {
         const Rgba dc = unpack(dst);
@@ -116,8 +116,8 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       if (p.logic_op) out = logic_op(p.logic, out, dst);
       if (keep) out = hn::Or(hn::AndNot(hn::Set(du, keep), out), hn::And(dst, hn::Set(du, keep)));
       const auto mu = hn::RebindMask(du, m);
-      hn::BlendedStore(out, mu, du, cp);
-      if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
+      store_masked(out, mu, du, cp);
+      if (t.ids) store_masked(id, mu, du, t.ids + at + v * kLanes);
     }
   }
   if (passed) p.samples_passed->fetch_add(passed, std::memory_order_relaxed);

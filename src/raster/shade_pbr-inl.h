@@ -360,12 +360,12 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
                          hn::Mul(mix(channel<2>(src), channel<2>(dst)), k),
                          hn::MulAdd(hn::Mul(channel<3>(dst), k), hn::Sub(hn::Set(d, 1.0f), a), a));
       } else {
-        if (depth_test) hn::BlendedStore(z, m, d, zp);
+        if (depth_test) store_masked(z, m, d, zp);
         px = finish(output, c.r, c.g, c.b);
       }
       const auto mu = hn::RebindMask(du, m);
-      hn::BlendedStore(px, mu, du, cp);
-      if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
+      store_masked(px, mu, du, cp);
+      if (t.ids) store_masked(id, mu, du, t.ids + at + v * kLanes);
     }
   }
 }

@@ -69,15 +69,15 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
         const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
         m = hn::And(m, hn::Lt(z, hn::Load(d, zp)));
         if (hn::AllFalse(d, m)) continue;
-        hn::BlendedStore(z, m, d, zp);
+        store_masked(z, m, d, zp);
       }
       const auto mu = hn::RebindMask(du, m);
       // A shader that can skip work for the lanes not written (shadow lookups) is told them.
       if constexpr (requires { shader.shade(v, m); })
-        hn::BlendedStore(shader.shade(v, m), mu, du, t.color + at + v * kLanes);
+        store_masked(shader.shade(v, m), mu, du, t.color + at + v * kLanes);
       else
-        hn::BlendedStore(shader.shade(v), mu, du, t.color + at + v * kLanes);
-      if (t.ids) hn::BlendedStore(id, mu, du, t.ids + at + v * kLanes);
+        store_masked(shader.shade(v), mu, du, t.color + at + v * kLanes);
+      if (t.ids) store_masked(id, mu, du, t.ids + at + v * kLanes);
     }
   }
 }

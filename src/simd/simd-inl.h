@@ -73,6 +73,21 @@ HWY_INLINE uint32_t lane_bits(D d, hn::Mask<D> m) {
 // The bits of `m` as a 16-bit mask in lane order (for vector v of a block).
 HWY_INLINE uint32_t mask_bits(MF m, int v) { return lane_bits(DF(), m) << (v * int(kLanes)); }
 
+// Stores the lanes of `v` that `m` selects at `p`, leaving the others as they are, in
+// memory no other thread writes meanwhile (a tile's colour, depth and ids). AVX2's
+// masked stores (vpmaskmovd, vmaskmovps: Highway's BlendedStore there) are microcoded
+// on AMD's Zen cores and cost the kernels about half their time in a depth pass
+// (docs/appearance.md); a load, a blend and a whole store are three plain instructions.
+// AVX-512's masked stores are native: kept there.
+template <class D>
+HWY_INLINE void store_masked(hn::Vec<D> v, hn::Mask<D> m, D d, hn::TFromD<D>* HWY_RESTRICT p) {
+#if HWY_TARGET <= HWY_AVX3
+  hn::BlendedStore(v, m, d, p);
+#else
+  hn::StoreU(hn::IfThenElse(m, v, hn::LoadU(d, p)), d, p);
+#endif
+}
+
 // Three vectors as one: N 3D points or directions, a lane each.
 struct V3 {
   VF x, y, z;
