@@ -128,14 +128,19 @@ TEST(Threads, PoolStreamRunsEachItemOnceInOrderAfterItIsHandedOver) {
       handed = kItems;
       pool.stream_to(kItems);
       closing = true;
-      if (round % 2) EXPECT_THROW(pool.close_stream(), std::runtime_error);
-      else EXPECT_NO_THROW(pool.close_stream());
+      if (round % 2) {
+        EXPECT_THROW(pool.close_stream(), std::runtime_error);
+      } else {
+        EXPECT_NO_THROW(pool.close_stream());
+      }
       EXPECT_FALSE(pool.streaming());
       for (int i = 0; i < kItems; ++i) ASSERT_EQ(hits[size_t(i)].load(), 1) << threads << " threads, item " << i;
       EXPECT_EQ(early.load(), 0);
       EXPECT_EQ(on_caller_before_close.load(), 0);
       EXPECT_EQ(out_of_order.load(), 0);
-      if (threads == 1) EXPECT_EQ(*std::max_element(who.begin(), who.end()), 0);
+      if (threads == 1) {
+        EXPECT_EQ(*std::max_element(who.begin(), who.end()), 0);
+      }
       std::vector<std::atomic<int>> after(31);
       pool.run(31, [&](int i) { after[size_t(i)]++; });
       for (auto& h : after) ASSERT_EQ(h.load(), 1);
