@@ -71,12 +71,18 @@ runner=""
 # outright if it has not gone after 2 s (one was seen spinning after SIGTERM, its
 # clients gone). The run is waited for in the background so that a signal is handled
 # at once, not after piglit ends.
+# Every kill may find its process gone (bash reaps an exited child at once): under set -e
+# a failed kill in this trap would end the script with status 1 after a passing run, so
+# each is allowed to fail.
 cleanup() {
   # (piglit starts each test in a session of its own: they go as the runner's children.)
-  [[ -n "$runner" ]] && { pkill -TERM -P "$runner" 2>/dev/null; kill "$runner" 2>/dev/null; }
-  kill "$xvfb" 2>/dev/null
+  if [[ -n "$runner" ]]; then
+    pkill -TERM -P "$runner" 2>/dev/null || true
+    kill "$runner" 2>/dev/null || true
+  fi
+  kill "$xvfb" 2>/dev/null || true
   for _ in $(seq 20); do kill -0 "$xvfb" 2>/dev/null || break; sleep 0.1; done
-  kill -9 "$xvfb" 2>/dev/null
+  kill -9 "$xvfb" 2>/dev/null || true
   rm -f "$fifo"
 }
 trap cleanup EXIT
