@@ -20,13 +20,16 @@
 # does not support a fork after threads have started; the spawn-started ones run).
 # Optimised with debug lines (-O2 -g1) and assertions on (no NDEBUG); libstdc++'s own
 # assertions too (_GLIBCXX_ASSERTIONS, as Fedora's and Arch's package builds have them).
-# One check is off, in one file: GCC's ASan use-after-scope in the PBR kernels
-# (src/raster/kernels_pbr.cpp, see src/CMakeLists.txt). Its marks keep every inlined
-# Highway vector addressable there, and that file alone took most of the stage to
-# compile (about 950 s in a full ASan build, where each other kernel file took 60-120 s;
-# 108 s of CPU without the marks). The coverage, tile, sampler and output code it shares
-# with those files keeps the check there; its own (src/raster/shade_pbr-inl.h) has no
-# local arrays, and its lambdas are called only inside the blocks that declare them.
+# One check is off, in two files: GCC's ASan use-after-scope in the PBR and the
+# fixed-function kernels (src/raster/kernels_pbr.cpp, kernels_fixed.cpp; see
+# src/CMakeLists.txt). Its marks keep every inlined Highway vector addressable there, and
+# each file alone took most of the stage to compile (the PBR one about 950 s in a full
+# ASan build, where each other kernel file took 60-120 s; 108 s of CPU without the marks;
+# the fixed one over 33 minutes of CPU once its masked stores became load, blend and
+# store). The coverage, tile, sampler and output code they share with the other files
+# keeps the check there; their own (src/raster/shade_pbr-inl.h, shade_fixed-inl.h) have
+# one local array (four pointers used in the block that declares them), and their
+# lambdas are called only inside the blocks that declare them.
 # Heap, stack and global bounds, use after free, leaks and every UBSan check stay on.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -88,8 +88,9 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       uint32_t* cp = t.color + at + v * kLanes;
       // Window depth is clamped to [0, 1] (a polygon offset may push it out).
       const VF z = saturate(hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0)));
-      VF zb;
-      if (p.depth_test) zb = hn::Load(d, zp);
+      // (Zero when unused: GCC's -Wmaybe-uninitialized cannot see that every read below is
+      // under p.depth_test, and fails the ASan build's -Werror.)
+      const VF zb = p.depth_test ? hn::Load(d, zp) : hn::Zero(d);
       if (p.depth_test && early_z) {
         m = hn::And(m, compare(p.depth_func, z, zb));
         if (hn::AllFalse(d, m)) continue;
