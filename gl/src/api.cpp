@@ -159,7 +159,11 @@ void glVertex3f(GLfloat x, GLfloat y, GLfloat z) { glVertex4f(x, y, z, 1); }
 void glVertex3i(GLint x, GLint y, GLint z) { glVertex4f(float(x), float(y), float(z), 1); }
 void glVertex3s(GLshort x, GLshort y, GLshort z) { glVertex4f(x, y, z, 1); }
 void glVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { glVertex4f(float(x), float(y), float(z), float(w)); }
-void glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { LIST(c.vertex({x, y, z, w})); }
+void glVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) {
+  // The quick path (context.hpp) first: no list is compiled there, so nothing is recorded.
+  if (velocity::gl::Context* q = velocity::gl::current(); q && q->quick_vertex(x, y, z, w)) return;
+  LIST(c.vertex({x, y, z, w}));
+}
 void glVertex4i(GLint x, GLint y, GLint z, GLint w) { glVertex4f(float(x), float(y), float(z), float(w)); }
 void glVertex4s(GLshort x, GLshort y, GLshort z, GLshort w) { glVertex4f(x, y, z, w); }
 void glVertex2dv(const GLdouble* v) { glVertex2d(v[0], v[1]); }
