@@ -134,7 +134,7 @@ class Context {
     Vec4& p = quick_position_[quick_count_];
     p.x = x, p.y = y, p.z = z, p.w = w;
     quick_normal_[quick_count_] = normal_;
-    if (++quick_count_ == kQuickRun) quick_flush();
+    if (++quick_count_ == kQuickRun) quick_flush_checked();
     return true;
   }
   void set_color(Vec4 c);  // (lighting.cpp: it feeds GL_COLOR_MATERIAL)
@@ -627,6 +627,7 @@ class Context {
   std::vector<Vec4> quick_position_, quick_clip_, quick_color_;
   std::vector<Vec3> quick_normal_;
   void quick_flush();  // light the run, assemble its whole triangles
+  void quick_flush_checked();  // quick_flush, out of memory as GL_OUT_OF_MEMORY (no exception leaves a GL call)
   // Triangles (clip[t[0]], clip[t[1]], clip[t[2]]) for each three of `order` (null:
   // 0, 1, 2, ...) into the pending batch. `shared`: a vertex already in the batch is
   // referenced again (emitted_, by the vertex's index in clip), as glDrawElements's are.

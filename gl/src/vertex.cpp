@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 
 #include "context.hpp"
 #include "shading/gl_vertices.hpp"
@@ -135,17 +136,22 @@ void Context::flush_vertices() {
 // whole triangles assembled at once (glMaterial, which flushes the run, changes
 // nothing assembly reads, so a triangle may be assembled before glEnd as after it).
 void Context::quick_flush() {
-  if (quick_count_) {
-    light_vertices(quick_position_.data(), quick_normal_.data(), quick_count_, quick_clip_.data() + quick_lit_,
-                   quick_color_.data() + quick_lit_);
-    quick_lit_ += quick_count_;
-    quick_count_ = 0;
-  }
-  const uint32_t whole = quick_lit_ / 3;
+  light_vertices(quick_position_.data(), quick_normal_.data(), quick_count_, quick_clip_.data() + quick_lit_,
+                 quick_color_.data() + quick_lit_);
+  const uint32_t lit = quick_lit_ + quick_count_, whole = lit / 3;
+  quick_count_ = quick_lit_ = 0;  // (if the batch cannot grow, the run is dropped: GL_OUT_OF_MEMORY)
   quick_triangles<false>(quick_clip_.data(), quick_color_.data(), nullptr, whole);
-  for (uint32_t k = 3 * whole; k < quick_lit_; ++k)
+  for (uint32_t k = 3 * whole; k < lit; ++k)
     quick_clip_[k - 3 * whole] = quick_clip_[k], quick_color_[k - 3 * whole] = quick_color_[k];
-  quick_lit_ -= 3 * whole;
+  quick_lit_ = lit - 3 * whole;
+}
+
+void Context::quick_flush_checked() {
+  try {
+    quick_flush();
+  } catch (const std::exception&) {
+    error(GL_OUT_OF_MEMORY);
+  }
 }
 
 // Which side of a triangle faces the viewer, from its clip positions: the signed area
