@@ -5,7 +5,8 @@
  * path (no quick path while a list is compiled), into the same framebuffer. The scenes:
  * smooth and flat shading; back, front, both and no faces culled, either front face;
  * triangles crossing the eye plane (facing from the clip-space determinant); a
- * glMaterial between a triangle's vertices; more vertices than one run (3072) and a
+ * glMaterial between a triangle's vertices (leaving one or two lit vertices for the next
+ * run, after a first glDrawElements of 3073 indices); more vertices than one run (3072) and a
  * count that is not a multiple of 3; glDrawElements with vertices shared inside and
  * across runs, a stride, a disabled normal array and an index past the arrays' cache.
  * Mesa is not needed: the two paths must agree exactly, which a wrong facing, culling,
@@ -50,10 +51,12 @@ static void make_mesh(void) {
 /* Immediate mode: every triangle of the mesh, a glMaterial between the first and second
  * vertex of triangle 1500 (past the first run), and one vertex left over. */
 static void immediate(int material_inside) {
-  static const GLfloat red[4] = {0.9f, 0.2f, 0.1f, 1};
+  static const GLfloat red[4] = {0.9f, 0.2f, 0.1f, 1}, blue[4] = {0.2f, 0.3f, 0.9f, 1};
   int k;
   glBegin(GL_TRIANGLES);
   for (k = 0; k < ROWS * COLS * 6; ++k) {
+    /* (After a triangle's second vertex: two lit vertices wait for the next run.) */
+    if (material_inside && k == 2) glMaterialfv(GL_FRONT, GL_DIFFUSE, blue);
     if (material_inside && k == 3 * 1500 + 1) glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
     glNormal3fv(&mesh[mesh_index[k]][4]);
     glVertex3fv(mesh[mesh_index[k]]);
@@ -63,13 +66,13 @@ static void immediate(int material_inside) {
   glEnd();
 }
 
-static void elements(int normals) {
+static void elements(int normals, int count) {
   glVertexPointer(3, GL_FLOAT, sizeof mesh[0], mesh);
   glNormalPointer(GL_FLOAT, sizeof mesh[0], &mesh[0][4]);
   glEnableClientState(GL_VERTEX_ARRAY);
   if (normals) glEnableClientState(GL_NORMAL_ARRAY);
   glNormal3f(0.3f, 0.4f, 0.866f);
-  glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, mesh_index);
+  glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, mesh_index);
   glDisableClientState(GL_VERTEX_ARRAY);
   glDisableClientState(GL_NORMAL_ARRAY);
 }
@@ -103,7 +106,8 @@ static int check(const char* what, int s, unsigned char* buffer, unsigned char* 
     if (pass == 1) glNewList(1, GL_COMPILE_AND_EXECUTE);
     if (s == 0) immediate(0);
     else if (s == 1) immediate(1);
-    else elements(s == 2);
+    else if (s == 4) elements(1, 3073), immediate(1); /* (the context's first quick draws) */
+    else elements(s == 2, index_count);
     if (pass == 1) glEndList();
     glFinish();
     if (glGetError() != GL_NO_ERROR) {
@@ -146,6 +150,8 @@ int main(void) {
   glLoadIdentity();
   glFrustum(-0.1, 0.1, -0.075, 0.075, 0.1, 20);
   glMatrixMode(GL_MODELVIEW);
+  glTranslatef(0, 0, -5);
+  check("first draws: 3073 elements, then a run after two lit vertices", 4, buffer, first, 0);
   for (near = 0; near < 2; ++near)
     for (shade = 0; shade < 2; ++shade)
       for (c = 0; c < 4; ++c)
