@@ -156,6 +156,68 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   restore_current(kept);
 }
 
+// glDrawElements(GL_TRIANGLES) on the quick path (context.hpp): the vertices the
+// general path would make, in the same order (each element's first reference), with
+// the same triangles, but read from the arrays and lit in runs, and no Vertex records.
+// Only the positions and normals matter under the quick path's lighting: colours,
+// texture coordinates, edge flags and the GL 1.3/1.4 extras are not read (the general
+// path's current values would be put back after the draw). The triangles go to the
+// batch every kQuickRun references, so that the renderer's workers set up the first
+// batches while the rest are fetched.
+template <class IndexAt>
+void Context::quick_elements(GLsizei count, const IndexAt& index_at, size_t cache_size) {
+  const ClientArray& va = arrays.vertex;
+  const ClientArray& na = arrays.normal;
+  const bool normals = na.enabled && na.usable();
+  // Plain float arrays in the caller's memory are read directly; others through fetch.
+  const bool plain_v = !va.buffer && va.type == GL_FLOAT && (va.size == 3 || va.size == 4);
+  const bool plain_n = normals && !na.buffer && na.type == GL_FLOAT && na.size == 3;
+  const auto* vbase = static_cast<const unsigned char*>(va.pointer);
+  const auto* nbase = static_cast<const unsigned char*>(na.pointer);
+  const size_t vstride = va.stride ? size_t(va.stride) : size_t(va.size) * 4, nstride = na.stride ? size_t(na.stride) : 12;
+  if (quick_position_.size() < size_t(count)) {  // kept from draw to draw (and at least begin()'s sizes)
+    quick_position_.resize(size_t(count)), quick_normal_.resize(size_t(count));
+    quick_clip_.resize(size_t(count) + 2), quick_color_.resize(size_t(count) + 2);
+  }
+  quick_order_.clear();
+  uint32_t fetched = 0, lit = 0;  // vertices made, and lit
+  auto assemble_run = [&] {
+    light_vertices(quick_position_.data() + lit, quick_normal_.data() + lit, fetched - lit, quick_clip_.data() + lit,
+                   quick_color_.data() + lit);
+    lit = fetched;
+    emitted_.resize(fetched);  // (new vertices are in no batch)
+    const size_t whole = quick_order_.size() / 3;
+    quick_triangles<true>(quick_clip_.data(), quick_color_.data(), quick_order_.data(), whole);
+    quick_order_.erase(quick_order_.begin(), quick_order_.begin() + ptrdiff_t(3 * whole));
+  };
+  for (GLsizei k = 0; k < count; ++k) {
+    const uint32_t i = index_at(k);
+    if (i > 0x7fffffffu) continue;
+    if (i < cache_size && element_cache_[i]) {
+      quick_order_.push_back(element_cache_[i] - 1);
+    } else {
+      Vec4& p = quick_position_[fetched];
+      if (plain_v) {
+        float f[4] = {0, 0, 0, 1};
+        std::memcpy(f, vbase + size_t(i) * vstride, size_t(va.size) * 4);
+        p.x = f[0], p.y = f[1], p.z = f[2], p.w = f[3];
+      } else {
+        p = va.fetch(GLint(i), {0, 0, 0, 1});
+      }
+      Vec3& n = quick_normal_[fetched];
+      if (plain_n) {
+        std::memcpy(&n, nbase + size_t(i) * nstride, sizeof(Vec3));
+      } else {
+        n = normals ? na.fetch_normalized(GLint(i), {}, 3).xyz() : normal_;
+      }
+      if (i < cache_size) element_cache_[i] = fetched + 1;
+      quick_order_.push_back(fetched++);
+    }
+    if (quick_order_.size() >= kQuickRun) assemble_run();
+  }
+  assemble_run();  // (one or two references left over are dropped)
+}
+
 void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
   if (mode > GL_POLYGON) return error(GL_INVALID_ENUM);
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
@@ -183,6 +245,12 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   element_cache_.assign(cache_size, 0);
   const KeptCurrent kept = keep_current();
   begin(mode);
+  if (quick_ && size_t(count) <= kMaxPrimitiveVertices) {
+    quick_elements(count, index_at, cache_size);
+    end();
+    return restore_current(kept);
+  }
+  quick_ = false;  // (prim_ and the element cache below, vertex by vertex)
   note_array_extras();
   caching_ = true;
   for (GLsizei k = 0; k < count; ++k) {

@@ -124,6 +124,19 @@ class Context {
   void begin(GLenum mode);
   void end();
   void vertex(Vec4 v);
+  // glVertex's common case, inline in the entry points: inside a glBegin(GL_TRIANGLES)
+  // that takes the quick path (quick_, vertex.cpp), only the position and the current
+  // normal are kept. False: not taken (vertex() does the rest).
+  bool quick_vertex(float x, float y, float z, float w) {
+    if (!quick_) return false;
+    // (Component by component: stored whole from the stack, the vector would be read
+    // back whole from two halves, a store-forwarding stall.)
+    Vec4& p = quick_position_[quick_count_];
+    p.x = x, p.y = y, p.z = z, p.w = w;
+    quick_normal_[quick_count_] = normal_;
+    if (++quick_count_ == kQuickRun) quick_flush_checked();
+    return true;
+  }
   void set_color(Vec4 c);  // (lighting.cpp: it feeds GL_COLOR_MATERIAL)
   void set_normal(Vec3 n) { normal_ = n; }
   void set_texcoord(Vec4 t) { texcoord_ = t; }
@@ -597,6 +610,33 @@ class Context {
   std::vector<Vec4> run_position_, run_clip_, run_color_;
   std::vector<Vec3> run_normal_;
   void flush_vertices();
+  // The clip positions and lit colours of n vertices under the run's lighting.
+  void light_vertices(const Vec4* position, const Vec3* normal, size_t n, Vec4* clip, Vec4* color) const;
+
+  // The quick path: independent triangles, filled on both sides, under the run's
+  // lighting (run_vertices_; so no texture, fog, user clip plane, colour sum or
+  // feedback), not selecting and not compiling a list. A vertex is its position and
+  // normal (quick_vertex) till a run of them is transformed and lit, and a triangle
+  // goes from those arrays to the pending batch (facing, culling, flat colour as
+  // polygon() does) without a Vertex record, prim_ or order_. The batches are the same,
+  // vertex for vertex, as the general path's.
+  static constexpr uint32_t kQuickRun = 3072;  // vertices lit at once (a multiple of 3)
+  bool quick_ = false;
+  uint32_t quick_count_ = 0;  // vertices in quick_position_ / quick_normal_
+  uint32_t quick_lit_ = 0;    // lit vertices in quick_clip_ / quick_color_ not yet in a triangle (< 3 between runs)
+  std::vector<Vec4> quick_position_, quick_clip_, quick_color_;
+  std::vector<Vec3> quick_normal_;
+  void quick_flush();  // light the run, assemble its whole triangles
+  void quick_flush_checked();  // quick_flush, out of memory as GL_OUT_OF_MEMORY (no exception leaves a GL call)
+  // Triangles (clip[t[0]], clip[t[1]], clip[t[2]]) for each three of `order` (null:
+  // 0, 1, 2, ...) into the pending batch. `shared`: a vertex already in the batch is
+  // referenced again (emitted_, by the vertex's index in clip), as glDrawElements's are.
+  template <bool kShared>
+  void quick_triangles(const Vec4* clip, const Vec4* color, const uint32_t* order, size_t triangles);
+  // glDrawElements(GL_TRIANGLES) on the quick path: each element fetched and lit once.
+  template <class IndexAt>
+  void quick_elements(GLsizei count, const IndexAt& index_at, size_t cache_size);
+  std::vector<uint32_t> quick_order_;
 
   void update_derived();  // transform.cpp
   std::vector<Mat4>& stack();  // the one glMatrixMode selects

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 
 #include "context.hpp"
 #include "shading/gl_vertices.hpp"
@@ -56,12 +57,24 @@ void Context::begin(GLenum mode) {
   vertex_extras_ = unit1_on_ || (color_sum_on_ && !separate_on_) || color_sum_.fog_coord_src == GL_FOG_COORD;
   // Runs light the primary colour alone, with no eye position and no GL 1.3/1.4 extras.
   if (vertex_extras_ || separate_on_ || need_eye_) run_vertices_ = false;
+  // The quick path (context.hpp): what polygon() would do with such triangles is
+  // facing, culling and the batch, nothing else (no selection, feedback or polygon mode).
+  quick_ = run_vertices_ && mode == GL_TRIANGLES && !compiling() && !selecting() &&
+           raster_.polygon_mode[0] == GL_FILL && raster_.polygon_mode[1] == GL_FILL;
+  if (quick_) {
+    quick_count_ = quick_lit_ = 0;
+    if (quick_position_.size() < kQuickRun) {  // once per context
+      quick_position_.resize(kQuickRun), quick_normal_.resize(kQuickRun);
+      quick_clip_.resize(kQuickRun + 2), quick_color_.resize(kQuickRun + 2);
+    }
+  }
 }
 
 void Context::end() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   flush_vertices();
-  assemble(true);
+  if (!quick_) assemble(true);
+  quick_ = false;  // (a triangle's one or two vertices left over are dropped)
   in_begin_ = false;
   prim_.clear(), order_.clear(), emitted_.clear(), prim_secondary_.clear(), prim_tex1_.clear();
   make_live(active_unit_);
@@ -96,23 +109,95 @@ void Context::prepare_lighting() {
                   std::none_of(light_use_, light_use_ + lights_used_, [](const shading::GlLight& u) { return u.spot; });
 }
 
-void Context::flush_vertices() {
-  const size_t n = run_position_.size();
-  if (n == 0) return;
-  run_clip_.resize(n), run_color_.resize(n);
+void Context::light_vertices(const Vec4* position, const Vec3* normal, size_t n, Vec4* clip, Vec4* color) const {
   shading::GlVertexRun r;
-  r.position = run_position_.data(), r.normal = run_normal_.data(), r.count = n;
+  r.position = position, r.normal = normal, r.count = n;
   r.mvp = transform_.mvp, r.normal_matrix = transform_.normal_matrix;
   r.normalize = transform_.normalize || transform_.rescale_normal;
   r.lights = light_use_, r.light_count = lights_used_;
   r.model_ambient = lighting_.model_ambient.xyz();
   r.material = lighting_.materials[0];
-  r.clip = run_clip_.data(), r.color = run_color_.data();
+  r.clip = clip, r.color = color;
   shading::gl_vertices(r);
+}
+
+void Context::flush_vertices() {
+  if (quick_) return quick_flush();
+  const size_t n = run_position_.size();
+  if (n == 0) return;
+  run_clip_.resize(n), run_color_.resize(n);
+  light_vertices(run_position_.data(), run_normal_.data(), n, run_clip_.data(), run_color_.data());
   Vertex* out = prim_.data() + (prim_.size() - n);  // the last n vertices are the run's
   for (size_t i = 0; i < n; ++i) out[i].clip = run_clip_[i], out[i].front = out[i].back = run_color_[i];
   run_position_.clear(), run_normal_.clear();
 }
+
+// The quick path's run: lit after the one or two vertices left over from the last, its
+// whole triangles assembled at once (glMaterial, which flushes the run, changes
+// nothing assembly reads, so a triangle may be assembled before glEnd as after it).
+void Context::quick_flush() {
+  light_vertices(quick_position_.data(), quick_normal_.data(), quick_count_, quick_clip_.data() + quick_lit_,
+                 quick_color_.data() + quick_lit_);
+  const uint32_t lit = quick_lit_ + quick_count_, whole = lit / 3;
+  quick_count_ = quick_lit_ = 0;  // (if the batch cannot grow, the run is dropped: GL_OUT_OF_MEMORY)
+  quick_triangles<false>(quick_clip_.data(), quick_color_.data(), nullptr, whole);
+  for (uint32_t k = 3 * whole; k < lit; ++k)
+    quick_clip_[k - 3 * whole] = quick_clip_[k], quick_color_[k - 3 * whole] = quick_color_[k];
+  quick_lit_ = lit - 3 * whole;
+}
+
+void Context::quick_flush_checked() {
+  try {
+    quick_flush();
+  } catch (const std::exception&) {
+    error(GL_OUT_OF_MEMORY);
+  }
+}
+
+// Which side of a triangle faces the viewer, from its clip positions: the signed area
+// in window space (the viewport keeps its sign) has the sign of this homogeneous
+// determinant when all w > 0, and it decides a triangle with a vertex behind the eye.
+// (polygon() and the quick path: one expression, so that both round alike.)
+[[gnu::always_inline]] static inline double facing_determinant(const Vec4& a, const Vec4& b, const Vec4& c) {
+  return double(a.x) * (double(b.y) * c.w - double(c.y) * b.w) - double(b.x) * (double(a.y) * c.w - double(c.y) * a.w) +
+         double(c.x) * (double(a.y) * b.w - double(b.y) * a.w);
+}
+
+template <bool kShared>
+void Context::quick_triangles(const Vec4* clip, const Vec4* color, const uint32_t* order, size_t triangles) {
+  const bool flat = lighting_.shade_model == GL_FLAT, shared = kShared && !flat;
+  const bool ccw = raster_.front_face == GL_CCW, cull = raster_.cull;
+  const GLenum cull_mode = raster_.cull_mode;
+  const bool offset = raster_.offset_fill;
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t v[3] = {order ? order[3 * t] : uint32_t(3 * t), order ? order[3 * t + 1] : uint32_t(3 * t + 1),
+                           order ? order[3 * t + 2] : uint32_t(3 * t + 2)};
+    // (As polygon(): clip-space y is negated for the renderer, GL's counter-clockwise
+    // is clockwise here.)
+    const bool front = (facing_determinant(clip[v[0]], clip[v[1]], clip[v[2]]) <= 0) == ccw;
+    if (cull && (cull_mode == GL_FRONT_AND_BACK || (cull_mode == GL_FRONT) == front)) continue;
+    // target()'s test, inline: a new batch where it would open one.
+    Pending& p = pending_;
+    if (!have_pending_ || pixel_dirty_ || p.kind != PrimitiveKind::Triangles || p.offset != offset || !p.stippled ||
+        p.index.size() >= kStreamBatchVertices)
+      target(PrimitiveKind::Triangles, offset, true);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t i = v[k];
+      if (shared) {
+        const Emitted e = emitted_[i];
+        if (e.gen == pending_gen_) {
+          p.index.push_back(e.index);
+          continue;
+        }
+        emitted_[i] = {pending_gen_, uint32_t(p.position.size())};
+      }
+      p.index.push_back(uint32_t(p.position.size()));
+      p.position.push_back(clip[i]);
+      p.color.push_back(color[flat ? v[2] : i]);  // (flat: the last vertex provokes)
+    }
+  }
+}
+template void Context::quick_triangles<true>(const Vec4*, const Vec4*, const uint32_t*, size_t);
 
 // OpenGL's lighting equation (shading::light_gl) for one vertex and one side.
 [[gnu::always_inline]] inline Vec4 Context::lit_unclamped(const Vec4& eye4, Vec3 n, bool back, Vec3* specular) const {
@@ -175,6 +260,7 @@ void Context::vertex_separate_specular(Vertex& out, const Vec4& eye, Vec3 n, con
 }
 
 void Context::vertex(Vec4 v) {
+  if (quick_vertex(v.x, v.y, v.z, v.w)) return;
   if (!in_begin_) return;  // outside glBegin/glEnd a vertex draws nothing (GL leaves it undefined)
   if (run_vertices_) {  // transformed and lit with its run (flush_vertices)
     Vertex* out = new_vertex();
@@ -330,9 +416,7 @@ void Context::polygon(const uint32_t* idx, int n, int provoking) {
       area += double(a.x) / a.w * (double(b.y) / b.w) - double(b.x) / b.w * (double(a.y) / a.w);
     }
   } else {
-    const Vec4 &a = prim_[idx[0]].clip, &b = prim_[idx[1]].clip, &c = prim_[idx[2]].clip;
-    area = double(a.x) * (double(b.y) * c.w - double(c.y) * b.w) - double(b.x) * (double(a.y) * c.w - double(c.y) * a.w) +
-           double(c.x) * (double(a.y) * b.w - double(b.y) * a.w);
+    area = facing_determinant(prim_[idx[0]].clip, prim_[idx[1]].clip, prim_[idx[2]].clip);
   }
   // (Clip-space y is negated for the renderer: GL's counter-clockwise is clockwise here.)
   const bool front = (area <= 0) == (raster_.front_face == GL_CCW);
