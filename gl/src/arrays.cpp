@@ -175,10 +175,7 @@ void Context::quick_elements(GLsizei count, const IndexAt& index_at, size_t cach
   const auto* vbase = static_cast<const unsigned char*>(va.pointer);
   const auto* nbase = static_cast<const unsigned char*>(na.pointer);
   const size_t vstride = va.stride ? size_t(va.stride) : size_t(va.size) * 4, nstride = na.stride ? size_t(na.stride) : 12;
-  if (quick_position_.size() < size_t(count)) {  // kept from draw to draw (and at least begin()'s sizes)
-    quick_position_.resize(size_t(count)), quick_normal_.resize(size_t(count));
-    quick_clip_.resize(size_t(count) + 2), quick_color_.resize(size_t(count) + 2);
-  }
+  grow_quick_arrays(size_t(count));
   quick_order_.clear();
   uint32_t fetched = 0, lit = 0;  // vertices made, and lit
   auto assemble_run = [&] {

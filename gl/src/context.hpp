@@ -626,6 +626,7 @@ class Context {
   uint32_t quick_lit_ = 0;    // lit vertices in quick_clip_ / quick_color_ not yet in a triangle (< 3 between runs)
   std::vector<Vec4> quick_position_, quick_clip_, quick_color_;
   std::vector<Vec3> quick_normal_;
+  void grow_quick_arrays(size_t n);
   void quick_flush();  // light the run, assemble its whole triangles
   void quick_flush_checked();  // quick_flush, out of memory as GL_OUT_OF_MEMORY (no exception leaves a GL call)
   // Triangles (clip[t[0]], clip[t[1]], clip[t[2]]) for each three of `order` (null:

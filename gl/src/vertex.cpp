@@ -63,10 +63,7 @@ void Context::begin(GLenum mode) {
            raster_.polygon_mode[0] == GL_FILL && raster_.polygon_mode[1] == GL_FILL;
   if (quick_) {
     quick_count_ = quick_lit_ = 0;
-    if (quick_position_.size() < kQuickRun) {  // once per context
-      quick_position_.resize(kQuickRun), quick_normal_.resize(kQuickRun);
-      quick_clip_.resize(kQuickRun + 2), quick_color_.resize(kQuickRun + 2);
-    }
+    grow_quick_arrays(kQuickRun);  // (once per context)
   }
 }
 
@@ -144,6 +141,14 @@ void Context::quick_flush() {
   for (uint32_t k = 3 * whole; k < lit; ++k)
     quick_clip_[k - 3 * whole] = quick_clip_[k], quick_color_[k - 3 * whole] = quick_color_[k];
   quick_lit_ = lit - 3 * whole;
+}
+
+// The quick path's arrays hold at least n vertices (the lit ones two more: the one or two
+// left over from the last run come first). They only grow, kept from draw to draw.
+void Context::grow_quick_arrays(size_t n) {
+  if (quick_position_.size() >= n) return;
+  quick_position_.resize(n), quick_normal_.resize(n);
+  quick_clip_.resize(n + 2), quick_color_.resize(n + 2);
 }
 
 void Context::quick_flush_checked() {
