@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (tests/fuzz) with clang in build-fuzz and runs each for
 # SECONDS (default 30), FUZZ_JOBS targets at a time (default: the processor count).
+# The build is for this processor (VELOCITY_NATIVE): the kernels for its best
+# instruction set alone, the code the engine runs here.
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx script race
 #
@@ -41,7 +43,7 @@ done
 build="$root/build-fuzz"
 jobs="${FUZZ_BUILD_JOBS:-2}"
 # C too (GLUT's font tool is C): the fuzzing flags are clang's.
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON \
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON -DVELOCITY_NATIVE=ON \
   -DVELOCITY_WERROR=OFF >/dev/null
 build_targets=("${targets[@]/#/velocity_fuzz_}")
 [[ " ${targets[*]} " == *" assimp "* ]] && build_targets+=(velocity_fuzz_glb_seed)

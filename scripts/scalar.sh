@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Builds the plain C++ kernels alone (VELOCITY_SIMD=OFF: Highway's scalar target, one
 # lane per vector) and runs the tests (CTest) whose result can change with the kernels
-# (scripts/lib/kernel_tests.sh) in build-scalar. CI runs it: the SIMD kernels are written
-# once, and this is the build that shows the code is right with no vector instructions
-# at all (what a processor without SSE4 runs). Everything is built, so that every part
-# is shown to compile without SIMD; the tests left out run in ./test.sh.
+# (scripts/lib/kernel_tests.sh) in build-scalar: the build for a processor Highway has
+# no SIMD target for, with no vector instructions at all. Everything is built, so that
+# every part is shown to compile without SIMD; the tests left out run in ./test.sh.
+# CI does not run it: the normal build carries the same plain C++ kernels as its SCALAR
+# target (with GCC 12, Highway's fallback is HWY_SCALAR, the one-lane code built here),
+# and scripts/simd_targets.sh runs these tests on it; this script costs a whole build.
 #
 #   scripts/scalar.sh [CTEST ARGS...]
 set -euo pipefail

@@ -7,8 +7,8 @@
 # which are left out (those that do not depend on the target: Python, the GPU backend,
 # the real-time programs' windows and input, packaging). VELOCITY_SIMD_TARGET picks the
 # target (src/simd/targets.hpp); each run first checks that the engine reports that
-# target. scripts/scalar.sh covers the plain C++ build (VELOCITY_SIMD=OFF). CI runs this
-# after ./test.sh, on its build.
+# target. SCALAR is the plain C++ code that a VELOCITY_SIMD=OFF build has alone
+# (scripts/scalar.sh). CI runs this after ./test.sh, on its build.
 #
 #   scripts/simd_targets.sh [CTEST ARGS...]
 set -euo pipefail
