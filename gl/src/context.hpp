@@ -579,6 +579,12 @@ class Context {
   void emit_vertex(uint32_t i, const Vec4& color, bool shared, const Vec4* secondary = nullptr);
   // `stippled`: the draws of filled polygons, which the polygon stipple applies to.
   Pending& target(PrimitiveKind kind, bool offset, bool stippled = false);
+  // Whether the pending batch takes one more primitive of this kind as it is (target()
+  // opens a new one otherwise; the quick path asks first, inline).
+  bool pending_takes(PrimitiveKind kind, bool offset, bool stippled) const {
+    return have_pending_ && !pixel_dirty_ && pending_.kind == kind && pending_.offset == offset &&
+           pending_.stippled == stippled && pending_.index.size() < kStreamBatchVertices;
+  }
   void changed() { pixel_dirty_ = true; }
 
   // --- the vertex stage (vertex.cpp)

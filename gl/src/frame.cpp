@@ -237,9 +237,7 @@ PixelState Context::pixel_state(bool offset, bool stippled) {
 }
 
 Context::Pending& Context::target(PrimitiveKind kind, bool offset, bool stippled) {
-  if (have_pending_ && (pixel_dirty_ || pending_.kind != kind || pending_.offset != offset || pending_.stippled != stippled ||
-                        pending_.index.size() >= kStreamBatchVertices))
-    submit_pending();
+  if (have_pending_ && !pending_takes(kind, offset, stippled)) submit_pending();
   if (!have_pending_) {
     pending_.clear();
     pending_.kind = kind;

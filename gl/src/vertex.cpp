@@ -181,11 +181,8 @@ void Context::quick_triangles(const Vec4* clip, const Vec4* color, const uint32_
     // is clockwise here.)
     const bool front = (facing_determinant(clip[v[0]], clip[v[1]], clip[v[2]]) <= 0) == ccw;
     if (cull && (cull_mode == GL_FRONT_AND_BACK || (cull_mode == GL_FRONT) == front)) continue;
-    // target()'s test, inline: a new batch where it would open one.
+    if (!pending_takes(PrimitiveKind::Triangles, offset, true)) target(PrimitiveKind::Triangles, offset, true);
     Pending& p = pending_;
-    if (!have_pending_ || pixel_dirty_ || p.kind != PrimitiveKind::Triangles || p.offset != offset || !p.stippled ||
-        p.index.size() >= kStreamBatchVertices)
-      target(PrimitiveKind::Triangles, offset, true);
     for (int k = 0; k < 3; ++k) {
       const uint32_t i = v[k];
       if (shared) {
