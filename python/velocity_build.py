@@ -2,13 +2,16 @@
 module (`velocity_python`, the engine linked in) in a fresh folder, and the package
 folder it makes (build/python/velocity) becomes the wheel, with the `velocity-batch`
 command. Standard library only: pip's isolated build environment needs nothing
-downloaded. Tools it runs: cmake, and ninja and ccache when they are there."""
+downloaded. Tools it runs: cmake, and ninja and ccache when they are there. CMAKE_ARGS
+in the environment (space-separated, as scikit-build and conda read it) adds CMake
+settings, e.g. CMAKE_ARGS="-DVELOCITY_NATIVE=ON" for a module for this processor only."""
 from __future__ import annotations
 
 import base64
 import hashlib
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -47,6 +50,7 @@ def _build(folder: str) -> str:
         configure += ["-G", "Ninja"]
     if shutil.which("ccache"):
         configure += ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DCMAKE_C_COMPILER_LAUNCHER=ccache"]
+    configure += shlex.split(os.environ.get("CMAKE_ARGS", ""))
     jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 1))
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONNOUSERSITE", "PYTHONHOME")}
     for cmd in (configure, ["cmake", "--build", folder, "--target", "velocity_python", "velocity_python_files",

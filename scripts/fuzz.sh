@@ -41,7 +41,8 @@ done
 "$root/scripts/deps.sh" clang libclang-rt-14-dev
 
 build="$root/build-fuzz"
-jobs="${FUZZ_BUILD_JOBS:-2}"
+source "$root/scripts/lib/jobs.sh"
+jobs="${FUZZ_BUILD_JOBS:-$(machine_jobs)}"  # one per processor, memory allowing
 # C too (GLUT's font tool is C): the fuzzing flags are clang's.
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVELOCITY_FUZZ=ON -DVELOCITY_NATIVE=ON \
   -DVELOCITY_WERROR=OFF >/dev/null

@@ -2,10 +2,12 @@
 # Builds everything with sanitizers and runs the tests (CTest).
 #
 #   scripts/sanitize.sh asan [CTEST ARGS...]   AddressSanitizer + UndefinedBehaviorSanitizer
-#                                              + LeakSanitizer, all of ctest, in build-asan
-#   scripts/sanitize.sh tsan [CTEST ARGS...]   ThreadSanitizer, in build-tsan: the unit and
-#                                              golden tests, the fuzz corpora and the
-#                                              multi-threaded renders (tiles on the pool)
+#                                              + LeakSanitizer, in build-asan
+#   scripts/sanitize.sh tsan [CTEST ARGS...]   ThreadSanitizer, in build-tsan
+#
+# Each runs every test with Velocity's code in it (scripts/lib/kernel_tests.sh's
+# no_engine_tests are left out; TSan also leaves out the GPU backend's and the
+# downstream build).
 #
 # Any report fails the test that caused it: UB is fatal (-fno-sanitize-recover=all), leaks
 # are checked at every process exit (detect_leaks=1), and a report in the output of a
@@ -42,6 +44,10 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mode="${1:-}"
 [[ $# -gt 0 ]] && shift
 supp="$root/tests/sanitizers"
+# Neither stage runs the tests with none of Velocity's code in them (Chromium's three.js
+# renders, the docs' checks): $no_engine_tests.
+source "$root/scripts/lib/kernel_tests.sh"
+source "$root/scripts/lib/jobs.sh"  # machine_jobs: SANITIZE_BUILD_JOBS, SANITIZE_TEST_JOBS by default
 case "$mode" in
   asan)
     build="$root/build-asan"
@@ -49,7 +55,7 @@ case "$mode" in
     export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:strict_init_order=1:check_initialization_order=1:suppressions=$supp/asan.supp"
     export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
     export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan.supp"
-    ctest_args=()
+    ctest_args=(-E "^($no_engine_tests)\$")
     ;;
   tsan)
     build="$root/build-tsan"
@@ -57,8 +63,10 @@ case "$mode" in
     export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp"
     # What runs on several threads, and what feeds it: the unit tests (the renderer on
     # 1..8 threads among them), the golden tests, the fuzz corpora, the CLI and the soak
-    # on 4 threads. The install-and-build-downstream test has no threads of ours.
-    ctest_args=(-E '^downstream_find_package$')
+    # on 4 threads. The install-and-build-downstream test has no threads of ours, nor
+    # has the GPU backend (label gpu: Mesa's threads, not instrumented, and CPU renders
+    # the golden tests make too; ASan runs them): 200 of TSan's 580 s of tests here.
+    ctest_args=(-LE '^gpu$' -E "^(downstream_find_package|$no_engine_tests)\$")
     ;;
   *)
     echo "usage: scripts/sanitize.sh asan|tsan [ctest arguments...]" >&2
@@ -72,11 +80,11 @@ werror=OFF
 start=$SECONDS
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
   -DVELOCITY_SANITIZE="$sanitize" -DVELOCITY_NATIVE=ON -DVELOCITY_ASSERTIONS=ON -DVELOCITY_WERROR=$werror >/dev/null
-cmake --build "$build" -j"${SANITIZE_BUILD_JOBS:-2}"
+cmake --build "$build" -j"${SANITIZE_BUILD_JOBS:-$(machine_jobs)}"
 built=$SECONDS
 cd "$build"
 set +e
-ctest --output-on-failure -j"${SANITIZE_TEST_JOBS:-2}" --timeout 1200 "${ctest_args[@]}" "$@"
+ctest --output-on-failure -j"${SANITIZE_TEST_JOBS:-$(machine_jobs)}" --timeout 1200 "${ctest_args[@]}" "$@"
 rc=$?
 set -e
 echo "sanitize.sh $mode: build $((built - start)) s, tests $((SECONDS - built)) s, ctest exit $rc"

@@ -12,7 +12,10 @@
 #   three.js's own checks against the glTF spec and its renders of models (no Velocity in
 #   them), the docs' and layout's checks, and the packaging tests (pkg-config, CMake's
 #   find_package from a downstream project, pip install).
+# The tests that run none of Velocity's code (three.js's own checks, the docs' and the
+# layout's); scripts/sanitize.sh leaves them out too.
+no_engine_tests='docs_references|layout_includes|threejs_(texcoords|srgb|lambert|lights|shadows|assimp_models|failures)'
 kernel_tests=(
   -LE '^(python|gpu|realtime)$'
-  -E '^(rt_.*|docs_references|layout_includes|downstream_find_package|gl_pkg_config|python_pip_install|threejs_(texcoords|srgb|lambert|lights|shadows|assimp_models|failures))$'
+  -E "^(rt_.*|downstream_find_package|gl_pkg_config|python_pip_install|$no_engine_tests)\$"
 )
