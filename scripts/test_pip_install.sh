@@ -12,8 +12,9 @@ trap 'rm -rf "$work"' EXIT
 # What this checks is the install (the backend, the wheel, the command), not the kernels,
 # which ./test.sh's own build compiles for every instruction set: the module is built
 # for this processor alone (VELOCITY_NATIVE, through the backend's CMAKE_ARGS), a
-# quarter of the kernels to compile (the whole build was 8 of ./test.sh's 8.4 minutes of
-# tests on a 2-core Zen 3). VELOCITY_PIP_CMAKE_ARGS overrides it (empty: portable).
+# quarter of the kernels to compile (this test took 488 s with every instruction set,
+# by far ./test.sh's longest, and 201 s so, on a 2-core Zen 3). VELOCITY_PIP_CMAKE_ARGS
+# overrides it (set and empty: the portable build).
 CMAKE_ARGS=${VELOCITY_PIP_CMAKE_ARGS--DVELOCITY_NATIVE=ON} PIP_NO_INPUT=1 \
   "$work/venv/bin/pip" install --no-index --disable-pip-version-check "$src"
 cd "$work"  # not the source tree: the installed package must be the one imported
