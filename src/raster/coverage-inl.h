@@ -101,13 +101,15 @@ HWY_INLINE void tiny_triangle_cover(const TriangleEdges& e, const VI (&step)[3][
         inside |= mask_bits(hn::RebindMask(DF(), m), v);
       }
       const uint32_t mask = inside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
-      if (mask) emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
+      emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
     }
 }
 
-// A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels. Each covered
-// 4x4 block goes to emit(index, mask) as it is found (triangle_blocks lists them; a
-// depth-only draw writes their depth at once, tile-inl.h).
+// A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels. Each 4x4
+// block whose pixels were tested goes to emit(index, mask) as it is found, mask 0 when
+// none is covered: whether a small triangle covers a block is a coin toss to the branch
+// predictor, and triangle_blocks lists them without a branch (a depth-only draw writes
+// their depth at once, tile-inl.h).
 template <class Emit>
 HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const TileBox& box, Emit& emit) {
   const TriangleEdges& e = shape<TriangleEdges>(r);
@@ -188,7 +190,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
               mask &= inside;
             }
           }
-          if (mask) emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
+          emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
         }
     }
 }
@@ -196,7 +198,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
 // A triangle's covered 4x4 blocks, listed in `out`; their number.
 inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
   int n = 0;
-  auto list = [&](uint16_t index, uint32_t mask) { out[n++] = {index, uint16_t(mask)}; };
+  auto list = [&](uint16_t index, uint32_t mask) { out[n] = {index, uint16_t(mask)}; n += mask != 0; };
   triangle_cover(r, tx, ty, box, list);
   return n;
 }

@@ -90,6 +90,7 @@ HWY_INLINE void depth_only_triangle(const RecordHeader& r, const TileBox& box, c
   const DF d;
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   auto write = [&](uint16_t index, uint32_t mask) {
+    if (!mask) return;
     float fx, fy;
     block_origin(r, t, index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
