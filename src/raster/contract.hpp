@@ -59,11 +59,18 @@ struct Plane {
 
 enum class RecordKind : uint8_t { Triangle, Small, Line, Rect, Clear };
 
+// RecordHeader::flags.
+enum RecordFlags : uint8_t {
+  // Every varying has the same value at the three vertices (a flat-shaded or unlit
+  // face): the fixed-function kernel without textures shades it once, not per pixel.
+  kConstantVaryings = 1,
+};
+
 struct RecordHeader {
   RecordKind kind;
   uint8_t kernel;        // shading kernel (KernelId below), chosen once per draw
   uint8_t num_varyings;  // planes after the shape
-  uint8_t pad = 0;
+  uint8_t flags = 0;     // RecordFlags
   uint32_t draw;         // index of the DrawState it came from
   // Inclusive pixel bounding box, clipped to the framebuffer and the draw's scissor.
   int16_t min_x, min_y, max_x, max_y;

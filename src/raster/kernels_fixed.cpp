@@ -57,6 +57,11 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
   const DrawState& draw = (*t.frame.draws)[r.draw];
   const PixelState& p = draw.pixel;
   FixedShader<kUnits, kFog, kSpec, kVolumes> shader(r, draw);
+  // A flat-shaded face without textures: one colour for every pixel.
+  const bool constant = kUnits == 0 && (r.flags & kConstantVaryings);
+  Rgba flat{};
+  if constexpr (kUnits == 0)
+    if (constant) flat = shader.constant_color(r);
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
   // With no alpha or stencil test, the depth test can come first and spare the shading.
@@ -79,7 +84,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-    shader.begin_block(fx, fy);
+    if (!constant) shader.begin_block(fx, fy);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
       MF m = lane_mask(blk.mask, v);
@@ -95,7 +100,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
         m = hn::And(m, compare(p.depth_func, z, zb));
         if (hn::AllFalse(d, m)) continue;
       }
-      Rgba c = shader.shade(v);
+      Rgba c = constant ? flat : shader.shade(v);
       if (p.alpha_test) m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
       if (stencil) {
         if (hn::AllFalse(d, m)) continue;

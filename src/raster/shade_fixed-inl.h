@@ -307,21 +307,37 @@ struct FixedShader {
   }
 
   HWY_INLINE Rgba shade(int v) {
-    const DF d;
     in.at_vector(v);
+    return shade_from([&](int k) { return in(k, v); });
+  }
+
+  // The colour of a record whose varyings are the same at every pixel (kConstantVaryings:
+  // constant planes, 1 / w = 1) when no texture varies it: every pixel's.
+  Rgba constant_color(const RecordHeader& r) const {
+    static_assert(kUnits == 0);
+    const DF d;
+    const Plane* var = varyings(r);
+    return shade_from([&](int k) { return hn::Set(d, var[k].c); });
+  }
+
+ private:
+  // The fixed-function colour from the interpolated varyings, at(k) varying k of vector v.
+  template <class At>
+  HWY_INLINE Rgba shade_from(const At& at) const {
+    const DF d;
     constexpr int c0 = varying::kFixedColor;
-    Rgba c{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
+    Rgba c{saturate(at(c0)), saturate(at(c0 + 1)), saturate(at(c0 + 2)), saturate(at(c0 + 3))};
     for (int u = 0; u < kUnits; ++u) {  // the units in order, each on the last one's colour
       const int st = tex_at(u);
-      const VF iq = hn::Div(hn::Set(d, 1.0f), in(st + (volume(u) ? 3 : 2), v));
+      const VF iq = hn::Div(hn::Set(d, 1.0f), at(st + (volume(u) ? 3 : 2)));
       Rgba t;
-      if (volume(u)) t = sample3(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq), hn::Mul(in(st + 2, v), iq));
-      else t = sample(view(u), level[u], hn::Mul(in(st, v), iq), hn::Mul(in(st + 1, v), iq));
+      if (volume(u)) t = sample3(view(u), level[u], hn::Mul(at(st), iq), hn::Mul(at(st + 1), iq), hn::Mul(at(st + 2), iq));
+      else t = sample(view(u), level[u], hn::Mul(at(st), iq), hn::Mul(at(st + 1), iq));
       // GL_COMBINE's primary colour is interpolated again, not kept alive through the
       // units, so the other environments hold no more registers.
       const TextureStage& stg = stage(u);
       if (stg.env == TexEnvMode::Combine) {
-        const Rgba primary{saturate(in(c0, v)), saturate(in(c0 + 1, v)), saturate(in(c0 + 2, v)), saturate(in(c0 + 3, v))};
+        const Rgba primary{saturate(at(c0)), saturate(at(c0 + 1)), saturate(at(c0 + 2)), saturate(at(c0 + 3))};
         c = texture_combine(stg, c, t, primary);
       } else {
         c = texture_environment(stg, c, t);
@@ -329,13 +345,13 @@ struct FixedShader {
     }
     if constexpr (kSpec) {  // the colour sum: the secondary colour after texturing
       const VF one = hn::Set(d, 1.0f);
-      c.r = hn::Min(hn::Add(c.r, saturate(in(kSpecAt, v))), one);
-      c.g = hn::Min(hn::Add(c.g, saturate(in(kSpecAt + 1, v))), one);
-      c.b = hn::Min(hn::Add(c.b, saturate(in(kSpecAt + 2, v))), one);
+      c.r = hn::Min(hn::Add(c.r, saturate(at(kSpecAt))), one);
+      c.g = hn::Min(hn::Add(c.g, saturate(at(kSpecAt + 1))), one);
+      c.b = hn::Min(hn::Add(c.b, saturate(at(kSpecAt + 2))), one);
     }
     if constexpr (kFog) {
       const PixelState& p = draw.pixel;
-      const VF f = fog_factor(p, in(kFogAt, v));
+      const VF f = fog_factor(p, at(kFogAt));
       c.r = hn::MulAdd(hn::Sub(c.r, hn::Set(d, p.fog_color.x)), f, hn::Set(d, p.fog_color.x));
       c.g = hn::MulAdd(hn::Sub(c.g, hn::Set(d, p.fog_color.y)), f, hn::Set(d, p.fog_color.y));
       c.b = hn::MulAdd(hn::Sub(c.b, hn::Set(d, p.fog_color.z)), f, hn::Set(d, p.fog_color.z));

@@ -30,7 +30,7 @@ inline void fill_header(RecordHeader& r, RecordKind kind, const RecordInfo& info
   r.kind = kind;
   r.kernel = info.kernel;
   r.num_varyings = uint8_t(nvar);
-  r.pad = 0;
+  r.flags = 0;
   r.draw = info.draw;
   r.min_x = int16_t(x0), r.min_y = int16_t(y0), r.max_x = int16_t(x1), r.max_y = int16_t(y1);
   r.flat_color = info.flat_color;
@@ -61,10 +61,20 @@ void write_planes(RecordHeader& r, const ScreenVertex* const v[3], const float* 
   float vals[3] = {v[0]->z, v[1]->z, v[2]->z};
   r.depth = make_plane(x, y, vals, inv_area, ax, ay);
   if (p.offset) r.depth.c += polygon_offset(r.depth, p);
+  Plane* planes = varyings(r);
+  // Varyings the same at the three vertices (a flat-shaded face) are the same at every
+  // pixel: constant planes, exact, and no perspective to correct.
+  bool constant = true;
+  for (int k = 0; k < nvar && constant; ++k) constant = var[0][k] == var[1][k] && var[1][k] == var[2][k];
+  if (constant) {
+    r.flags |= kConstantVaryings;
+    r.inv_w = {1.0f, 0.0f, 0.0f};
+    for (int k = 0; k < nvar; ++k) planes[k] = {var[0][k], 0.0f, 0.0f};
+    return;
+  }
   float iw[3] = {v[0]->inv_w, v[1]->inv_w, v[2]->inv_w};
   if (p.affine) iw[0] = iw[1] = iw[2] = 1.0f;
   r.inv_w = make_plane(x, y, iw, inv_area, ax, ay);
-  Plane* planes = varyings(r);
   for (int k = 0; k < nvar; ++k) {
     for (int i = 0; i < 3; ++i) vals[i] = var[i][k] * iw[i];
     planes[k] = make_plane(x, y, vals, inv_area, ax, ay);
