@@ -109,12 +109,15 @@ class BatchPrimitives {
     const uint32_t u0 = user_code(i0), u1 = user_code(i1), u2 = user_code(i2);
     if (u0 & u1 & u2) return void(stats_.triangles_rejected++);
     const uint32_t user = u0 | u1 | u2;
+    if (!(any & geometry::kMustClipPlanes) && !user) {  // the usual case: no clip vertices made
+      float var[3][raster::kMaxVaryings];
+      varyings(i0, var[0]), varyings(i1, var[1]), varyings(i2, var[2]);
+      return emit(screen(i0), screen(i1), screen(i2), var[0], var[1], var[2]);
+    }
     const int nvar = d_.num_varyings;
     ClipVertex poly[kMaxClippedVertices];
     const uint32_t corners[3] = {i0, i1, i2};
     for (int k = 0; k < 3; ++k) poly[k].src = k, varyings(corners[k], poly[k].var);
-    if (!(any & geometry::kMustClipPlanes) && !user)
-      return emit(screen(i0), screen(i1), screen(i2), poly[0].var, poly[1].var, poly[2].var);
     stats_.triangles_clipped++;
     for (int k = 0; k < 3; ++k) poly[k].pos = b_.position[corners[k]];
     int n = 3;
