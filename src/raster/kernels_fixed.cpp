@@ -84,7 +84,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-    if (!constant) shader.begin_block(fx, fy);
+    shader.begin_block(fx, fy);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
       MF m = lane_mask(blk.mask, v);

@@ -26,7 +26,7 @@ namespace lit = velocity::shading::HWY_NAMESPACE;
 // N planes evaluated at a block: value = base + dx * column + dy * row.
 template <int N>
 struct Planes {
-  float dx[N], dy[N], c[N], base[N] = {};
+  float dx[N], dy[N], c[N], base[N];
   void load(int i, const Plane& p) { c[i] = p.c, dx[i] = p.dx, dy[i] = p.dy; }
   void begin(float fx, float fy) {
     for (int i = 0; i < N; ++i) base[i] = c[i] + dx[i] * fx + dy[i] * fy;
