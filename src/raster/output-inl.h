@@ -70,7 +70,6 @@ HWY_INLINE V3 tone_map_neutral(V3 c) {
 // (a gather per channel) or pow's log and exp.
 HWY_INLINE VU encode_srgb(VF x) {
   const DF d;
-  const DI di;
   x = saturate(x);
   const VF s = sqrt_fast(x);
   VF p = hn::Set(d, -0.904863438f);
@@ -81,7 +80,7 @@ HWY_INLINE VU encode_srgb(VF x) {
   p = hn::MulAdd(p, s, hn::Set(d, 1.56393955f));
   p = hn::MulAdd(p, s, hn::Set(d, -0.0416483619f));
   const VF e = hn::IfThenElse(hn::Le(x, hn::Set(d, 0.0031308f)), hn::Mul(x, hn::Set(d, 12.92f)), p);
-  return hn::BitCast(DU(), hn::ConvertTo(di, hn::MulAdd(e, hn::Set(d, 255.0f), hn::Set(d, 0.5f))));
+  return hn::BitCast(DU(), truncate_in_range(hn::MulAdd(e, hn::Set(d, 255.0f), hn::Set(d, 0.5f))));
 }
 
 // Light (or display values) to RGBA8, as the frame's OutputTransform says.
@@ -95,7 +94,7 @@ HWY_INLINE VU finish(const OutputTransform& o, VF r, VF g, VF b, VF a) {
   }
   if (o.tone_map == ToneMap::Aces) c = tone_map_aces(c);
   else if (o.tone_map == ToneMap::KhronosNeutral) c = tone_map_neutral(c);
-  const VU alpha = hn::BitCast(DU(), hn::ConvertTo(DI(), hn::MulAdd(saturate(a), hn::Set(d, 255.0f), hn::Set(d, 0.5f))));
+  const VU alpha = hn::BitCast(DU(), truncate_in_range(hn::MulAdd(saturate(a), hn::Set(d, 255.0f), hn::Set(d, 0.5f))));
   return hn::Or(hn::Or(encode_srgb(c.x), hn::ShiftLeft<8>(encode_srgb(c.y))),
                 hn::Or(hn::ShiftLeft<16>(encode_srgb(c.z)), hn::ShiftLeft<24>(alpha)));
 }

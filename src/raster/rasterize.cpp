@@ -64,7 +64,6 @@ HWY_INLINE KernelFn kernel(uint8_t id) {
 // (glFrustum's depth), as a fraction of (n, f): kShadowFar n z / (f - z (f - n)).
 void store_shadow_codes(const TileInputs& frame, const float* depth, int tx, int ty) {
   const DF d;
-  const DI di;
   const hn::Rebind<uint16_t, DI> d16;
   const VF far = hn::Set(d, shading::kShadowFar);
   const VF scale = hn::Set(d, frame.shadow_perspective ? shading::kShadowFar * frame.shadow_near : shading::kShadowFar);
@@ -75,7 +74,7 @@ void store_shadow_codes(const TileInputs& frame, const float* depth, int tx, int
     VF code = hn::Mul(scale, z);
     if (frame.shadow_perspective) code = hn::Div(code, hn::NegMulAdd(z, f_minus_n, f));
     code = hn::Min(hn::Max(hn::Ceil(code), hn::Zero(d)), far);  // (a NaN's Max gives 0)
-    hn::Store(hn::DemoteTo(d16, hn::ConvertTo(di, code)), d16, codes + i);
+    hn::Store(hn::DemoteTo(d16, truncate_in_range(code)), d16, codes + i);
   }
   // Row by row into the map (a block's row of four codes is 8 bytes), as far as the
   // map's edge, which need not be a tile's.
