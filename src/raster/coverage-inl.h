@@ -67,6 +67,17 @@ HWY_INLINE int rect_blocks(const TileBox& b, Block* out) {
   return n;
 }
 
+// The pixels of vector v of a block that lie outside an edge: lane bits (as mask_bits
+// places them) where E = q[k] + step[k][v] < 0 for any of the three edges. A pixel is
+// inside when all three are >= 0, that is when the sign bit of their OR is clear: one
+// compare with zero for the three. (Three compares E > -1 cost twice as much: GCC turns
+// each into x >= 0, which AVX2 does as a min and an equality.)
+HWY_INLINE uint32_t negative_bits(const VI (&q)[3], const VI (&step)[3][kVectorsPerBlock], int v) {
+  const DI di;
+  const VI any = hn::Or(hn::Or(hn::Add(q[0], step[0][v]), hn::Add(q[1], step[1][v])), hn::Add(q[2], step[2][v]));
+  return mask_bits(hn::RebindMask(DF(), hn::Lt(any, hn::Zero(di))), v);
+}
+
 // A triangle less than 16 pixels wide and tall: every |a| and |b| below 16 pixels (in
 // 24.8). Anywhere within a few blocks of its box |E| < 2^26, so floor(E / 256) and the
 // steps a * i + b * j across the box fit int32 with room to spare.
@@ -84,25 +95,27 @@ template <class Emit>
 HWY_INLINE void tiny_triangle_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
                                     const TileBox& box, Emit& emit) {
   const DI di;
-  const VI minus1 = hn::Set(di, -1);
   const int bx0 = box.x0 & ~3, by0 = box.y0 & ~3;
   const int64_t px = int64_t(tx + bx0) * kSubpixelOne + kSubpixelHalf;
   const int64_t py = int64_t(ty + by0) * kSubpixelOne + kSubpixelHalf;
-  int32_t q0[3];  // floor(E / 256) at the first block's first pixel centre
-  for (int k = 0; k < 3; ++k) q0[k] = int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits);
-  for (int by = by0; by <= box.y1; by += 4)
+  // Per edge, floor(E / 256) at the first pixel centre of the row's first block, and its
+  // steps to the next block across and down.
+  VI row[3], across[3], down[3];
+  for (int k = 0; k < 3; ++k) {
+    row[k] = hn::Set(di, int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits));
+    across[k] = hn::Set(di, 4 * e.a[k]), down[k] = hn::Set(di, 4 * e.b[k]);
+  }
+  for (int by = by0; by <= box.y1; by += 4) {
+    VI q[3] = {row[0], row[1], row[2]};
     for (int bx = bx0; bx <= box.x1; bx += 4) {
-      VI q[3];
-      for (int k = 0; k < 3; ++k) q[k] = hn::Set(di, q0[k] + e.a[k] * (bx - bx0) + e.b[k] * (by - by0));
-      uint32_t inside = 0;
-      for (int v = 0; v < kVectorsPerBlock; ++v) {
-        const MI m = hn::And(hn::And(hn::Gt(hn::Add(q[0], step[0][v]), minus1), hn::Gt(hn::Add(q[1], step[1][v]), minus1)),
-                             hn::Gt(hn::Add(q[2], step[2][v]), minus1));
-        inside |= mask_bits(hn::RebindMask(DF(), m), v);
-      }
-      const uint32_t mask = inside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
+      uint32_t outside = 0;
+      for (int v = 0; v < kVectorsPerBlock; ++v) outside |= negative_bits(q, step, v);
+      const uint32_t mask = ~outside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
       emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
+      for (int k = 0; k < 3; ++k) q[k] = hn::Add(q[k], across[k]);
     }
+    for (int k = 0; k < 3; ++k) row[k] = hn::Add(row[k], down[k]);
+  }
 }
 
 // A triangle, hierarchically: 16x16 blocks, then 4x4 blocks, then pixels. Each 4x4
@@ -114,7 +127,6 @@ template <class Emit>
 HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const TileBox& box, Emit& emit) {
   const TriangleEdges& e = shape<TriangleEdges>(r);
   const DI di;
-  const VI minus1 = hn::Set(di, -1);  // E >= 0 is E > -1 (integer compares are Gt, Lt, Eq)
   // Per edge, a * i + b * j for each pixel (i, j) of a 4x4 block, lane by lane.
   VI step[3][kVectorsPerBlock];
   for (int k = 0; k < 3; ++k)
@@ -159,14 +171,17 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
             return hn::Add(qb, hn::Set(di, largest ? std::max(0, 3 * a) + std::max(0, 3 * b)
                                                    : std::min(0, 3 * a) + std::min(0, 3 * b)));
           };
-          MI out_any = hn::Lt(extreme(0, true), hn::Zero(di)), in_all = hn::Gt(extreme(0, false), minus1);
+          // Some edge's largest value negative: outside; some edge's smallest negative: not
+          // wholly inside (the sign bit of the values' OR, as negative_bits tests).
+          VI largest = extreme(0, true), smallest = extreme(0, false);
           for (int p = 1; p < partial; ++p) {
-            out_any = hn::Or(out_any, hn::Lt(extreme(p, true), hn::Zero(di)));
-            in_all = hn::And(in_all, hn::Gt(extreme(p, false), minus1));
+            largest = hn::Or(largest, extreme(p, true));
+            smallest = hn::Or(smallest, extreme(p, false));
           }
-          out_blocks |= mask_bits(hn::RebindMask(DF(), out_any), v);
-          in_blocks |= mask_bits(hn::RebindMask(DF(), in_all), v);
+          out_blocks |= mask_bits(hn::RebindMask(DF(), hn::Lt(largest, hn::Zero(di))), v);
+          in_blocks |= mask_bits(hn::RebindMask(DF(), hn::Lt(smallest, hn::Zero(di))), v);
         }
+      in_blocks = ~in_blocks;  // (the blocks some edge's smallest value left out, until here)
       const int bx0 = std::max(box.x0, mx * 16) & ~3, bx1 = std::min(box.x1, mx * 16 + 15);
       const int by0 = std::max(box.y0, my * 16) & ~3, by1 = std::min(box.y1, my * 16 + 15);
       // A 16x16 block inside the box (most of a large triangle's) needs no box masks.
@@ -181,13 +196,13 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
             if (!(in_blocks >> k & 1)) {
               int32_t qb[3] = {};  // (all set: partial > 0; the compiler cannot tell once inlined)
               for (int p = 0; p < partial; ++p) qb[p] = q[p] + e.a[edge[p]] * i + e.b[edge[p]] * j;
-              uint32_t inside = 0;
+              uint32_t missed = 0;  // pixels outside a partial edge
               for (int v = 0; v < kVectorsPerBlock; ++v) {
-                MI m = hn::Gt(hn::Add(hn::Set(di, qb[0]), step[edge[0]][v]), minus1);
-                for (int p = 1; p < partial; ++p) m = hn::And(m, hn::Gt(hn::Add(hn::Set(di, qb[p]), step[edge[p]][v]), minus1));
-                inside |= mask_bits(hn::RebindMask(DF(), m), v);
+                VI any = hn::Add(hn::Set(di, qb[0]), step[edge[0]][v]);
+                for (int p = 1; p < partial; ++p) any = hn::Or(any, hn::Add(hn::Set(di, qb[p]), step[edge[p]][v]));
+                missed |= mask_bits(hn::RebindMask(DF(), hn::Lt(any, hn::Zero(di))), v);
               }
-              mask &= inside;
+              mask &= ~missed;
             }
           }
           emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
