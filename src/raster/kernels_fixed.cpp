@@ -87,8 +87,8 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
     shader.begin_block(fx, fy);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
+      if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;
       MF m = lane_mask(blk.mask, v);
-      if (kVectorsPerBlock > 1 && hn::AllFalse(d, m)) continue;
       float* zp = t.depth + at + v * kLanes;
       uint32_t* cp = t.color + at + v * kLanes;
       // Window depth is clamped to [0, 1] (a polygon offset may push it out).

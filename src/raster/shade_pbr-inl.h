@@ -335,8 +335,8 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
     shader.begin_block(fx, fy);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
+      if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;
       MF m = lane_mask(blk.mask, v);
-      if (kVectorsPerBlock > 1 && hn::AllFalse(d, m)) continue;
       float* zp = t.depth + at + v * kLanes;
       const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
       if (depth_test) {
