@@ -165,8 +165,8 @@ HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v)
   const VF x = hn::Mul(prepare_coord(u, ws), hn::Set(d, float(l.width)));
   const VF y = hn::Mul(prepare_coord(v, wt), hn::Set(d, float(l.height)));
   MI outside = hn::FirstN(di, 0);
-  const VI ix = wrap_index(hn::ConvertTo(di, hn::Floor(x)), l.width, ws, outside, l.bordered);
-  const VI iy = wrap_index(hn::ConvertTo(di, hn::Floor(y)), l.height, wt, outside, l.bordered);
+  const VI ix = wrap_index(truncate_in_range(hn::Floor(x)), l.width, ws, outside, l.bordered);
+  const VI iy = wrap_index(truncate_in_range(hn::Floor(y)), l.height, wt, outside, l.bordered);
   Rgba c = fetch<kAlpha>(s, l, ix, iy);
   if (ws == Wrap::ClampToBorder || wt == Wrap::ClampToBorder) c = with_border(c, outside, s.border, texel_unit(s));
   return c;
@@ -181,7 +181,7 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const VF y = hn::MulSub(prepare_coord(v, s.wrap_t), hn::Set(d, float(l.height)), hn::Set(d, 0.5f));
   const VF fx = hn::Floor(x), fy = hn::Floor(y);
   const VF a = hn::Sub(x, fx), b = hn::Sub(y, fy);
-  const VI x0i = hn::ConvertTo(di, fx), y0i = hn::ConvertTo(di, fy);
+  const VI x0i = truncate_in_range(fx), y0i = truncate_in_range(fy);
   const VI one = hn::Set(di, 1);
   MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
   const bool rb = l.bordered;
@@ -220,7 +220,7 @@ HWY_INLINE Rgba nearest3(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   auto index = [&](VF c, Wrap wrap, int32_t n) {
     if (wrap == Wrap::ClampHalfBorder) wrap = Wrap::Clamp;  // (GL_CLAMP's nearest texel: the edge one)
     const VF x = hn::Mul(prepare_coord(c, wrap), hn::Set(d, float(n)));
-    return wrap_index(hn::ConvertTo(di, hn::Floor(x)), n, wrap, outside, l.bordered);
+    return wrap_index(truncate_in_range(hn::Floor(x)), n, wrap, outside, l.bordered);
   };
   const VI ix = index(u, s.wrap_s, l.width), iy = index(v, s.wrap_t, l.height), iz = index(w, s.wrap_r, l.depth);
   Rgba c = fetch3<kAlpha>(s, l, ix, iy, iz);
@@ -241,7 +241,7 @@ HWY_INLINE Rgba linear3(const SamplerView& s, const SamplerLevel& l, VF u, VF v,
   auto axis = [&](VF c, Wrap wrap, int32_t n) {
     const VF x = hn::MulSub(prepare_coord(c, wrap), hn::Set(d, float(n)), hn::Set(d, 0.5f));
     const VF fx = hn::Floor(x);
-    const VI i = hn::ConvertTo(di, fx);
+    const VI i = truncate_in_range(fx);
     Axis a{i, i, hn::FirstN(di, 0), hn::FirstN(di, 0), hn::Sub(x, fx)};
     a.i0 = wrap_index(i, n, wrap, a.out0, l.bordered), a.i1 = wrap_index(hn::Add(i, hn::Set(di, 1)), n, wrap, a.out1, l.bordered);
     return a;
