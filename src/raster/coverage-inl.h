@@ -67,15 +67,19 @@ HWY_INLINE int rect_blocks(const TileBox& b, Block* out) {
   return n;
 }
 
-// The pixels of vector v of a block that lie outside an edge: lane bits (as mask_bits
-// places them) where E = q[k] + step[k][v] < 0 for any of the three edges. A pixel is
-// inside when all three are >= 0, that is when the sign bit of their OR is clear: one
-// compare with zero for the three. (Three compares E > -1 cost twice as much: GCC turns
-// each into x >= 0, which AVX2 does as a min and an equality.)
+// The lanes of vector v of a block (bits as mask_bits places them) where x < 0. With x
+// the OR of edge values, the pixels (or blocks) outside some edge: all of them are >= 0
+// exactly when the sign bit of their OR is clear, one compare with zero for them all.
+// (A compare E > -1 per edge costs twice as much: GCC turns it into E >= 0, which AVX2
+// does as a min and an equality.)
+HWY_INLINE uint32_t negative_lanes(VI x, int v) {
+  return mask_bits(hn::RebindMask(DF(), hn::Lt(x, hn::Zero(DI()))), v);
+}
+
+// The pixels of vector v of a block outside one of the three edges, E = q[k] + step[k][v].
 HWY_INLINE uint32_t negative_bits(const VI (&q)[3], const VI (&step)[3][kVectorsPerBlock], int v) {
-  const DI di;
   const VI any = hn::Or(hn::Or(hn::Add(q[0], step[0][v]), hn::Add(q[1], step[1][v])), hn::Add(q[2], step[2][v]));
-  return mask_bits(hn::RebindMask(DF(), hn::Lt(any, hn::Zero(di))), v);
+  return negative_lanes(any, v);
 }
 
 // A triangle less than 16 pixels wide and tall: every |a| and |b| below 16 pixels (in
@@ -159,7 +163,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
       // Its sixteen 4x4 blocks against each partial edge, exactly, before any pixel
       // test, a lane per block (bit v * 4 + u for block column u, row v): wholly outside
       // one edge rejects a block; wholly inside all needs no pixel test.
-      uint32_t out_blocks = 0, in_blocks = 0;
+      uint32_t out_blocks = 0, not_in_blocks = 0;
       if (partial)
         for (int v = 0; v < kVectorsPerBlock; ++v) {
           const VI u4 = hn::ShiftLeft<2>(hn::Load(di, kBlockXi + v * kLanes));
@@ -172,16 +176,16 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
                                                    : std::min(0, 3 * a) + std::min(0, 3 * b)));
           };
           // Some edge's largest value negative: outside; some edge's smallest negative: not
-          // wholly inside (the sign bit of the values' OR, as negative_bits tests).
+          // wholly inside.
           VI largest = extreme(0, true), smallest = extreme(0, false);
           for (int p = 1; p < partial; ++p) {
             largest = hn::Or(largest, extreme(p, true));
             smallest = hn::Or(smallest, extreme(p, false));
           }
-          out_blocks |= mask_bits(hn::RebindMask(DF(), hn::Lt(largest, hn::Zero(di))), v);
-          in_blocks |= mask_bits(hn::RebindMask(DF(), hn::Lt(smallest, hn::Zero(di))), v);
+          out_blocks |= negative_lanes(largest, v);
+          not_in_blocks |= negative_lanes(smallest, v);
         }
-      in_blocks = ~in_blocks;  // (the blocks some edge's smallest value left out, until here)
+      const uint32_t in_blocks = ~not_in_blocks;
       const int bx0 = std::max(box.x0, mx * 16) & ~3, bx1 = std::min(box.x1, mx * 16 + 15);
       const int by0 = std::max(box.y0, my * 16) & ~3, by1 = std::min(box.y1, my * 16 + 15);
       // A 16x16 block inside the box (most of a large triangle's) needs no box masks.
@@ -200,7 +204,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
               for (int v = 0; v < kVectorsPerBlock; ++v) {
                 VI any = hn::Add(hn::Set(di, qb[0]), step[edge[0]][v]);
                 for (int p = 1; p < partial; ++p) any = hn::Or(any, hn::Add(hn::Set(di, qb[p]), step[edge[p]][v]));
-                missed |= mask_bits(hn::RebindMask(DF(), hn::Lt(any, hn::Zero(di))), v);
+                missed |= negative_lanes(any, v);
               }
               mask &= ~missed;
             }

@@ -63,8 +63,6 @@ HWY_INLINE bool vector_empty(uint32_t mask16, int v) {
   return ((mask16 >> (v * int(kLanes))) & ((uint32_t(1) << kLanes) - 1)) == 0;
 }
 
-// The bits of `m` as a 16-bit mask in lane order (for vector v of a block).
-
 // The lanes of any mask as bits, lane i in bit i. (To walk the set lanes with a scalar
 // loop: Highway 1.0's Compress on AVX2 copies a 1 KiB table onto the stack at every
 // call, which cost more than the rest of the triangle cull pass together.)
