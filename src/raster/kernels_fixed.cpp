@@ -2,6 +2,8 @@
 // Compiled once per instruction set; see raster/tile-inl.h.
 #include "raster/rasterize.hpp"
 
+#include <type_traits>
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/kernels_fixed.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -75,57 +77,86 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
                           ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
   if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids && !p.samples_passed) return;  // nothing would be written
   uint64_t passed = 0;  // fragments past the depth and stencil tests, for an occlusion query
-  for (int b = 0; b < n; ++b) {
-    Block blk = blocks[b];
-    if (p.polygon_stipple) {
-      blk.mask &= stipple_mask(p, t.x0 + (blk.index & 15) * 4, t.y0 + (blk.index >> 4) * 4);
-      if (!blk.mask) continue;
+  // The loop, compiled for any state (kDepth 0) and, for an untextured draw, once more for
+  // each of the usual states (kDepth: CompareFunc::Less or LessEqual): a depth test with
+  // that function and nothing else per fragment (no stipple, alpha or stencil test,
+  // blending, logic op, colour mask, object ids or query). Those tests are then known
+  // where they are compiled, not asked of every vector (a quarter of pGL's mesh frames
+  // is this loop).
+  auto run = [&](auto depth_tag) {
+    constexpr int kDepth = decltype(depth_tag)::value;
+    constexpr bool kPlain = kDepth != 0;
+    const bool stipple = !kPlain && p.polygon_stipple, depth_test = kPlain || p.depth_test;
+    const bool alpha_test = !kPlain && p.alpha_test, test_stencil = !kPlain && stencil, early = kPlain || early_z;
+    const bool query = !kPlain && p.samples_passed, blend = !kPlain && p.blend && !p.logic_op, logic = !kPlain && p.logic_op;
+    const uint32_t kept = kPlain ? 0 : keep;
+    uint32_t* const ids = kPlain ? nullptr : t.ids;
+    auto depth_passes = [&](VF z, VF zb) {
+      if constexpr (kDepth == int(CompareFunc::Less)) return hn::Lt(z, zb);
+      else if constexpr (kDepth == int(CompareFunc::LessEqual)) return hn::Le(z, zb);
+      else return compare(p.depth_func, z, zb);
+    };
+    for (int b = 0; b < n; ++b) {
+      Block blk = blocks[b];
+      if (stipple) {
+        blk.mask &= stipple_mask(p, t.x0 + (blk.index & 15) * 4, t.y0 + (blk.index >> 4) * 4);
+        if (!blk.mask) continue;
+      }
+      float fx, fy;
+      block_origin(r, t, blk.index, fx, fy);
+      const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+      shader.begin_block(fx, fy);
+      const size_t at = size_t(blk.index) * 16;
+      for (int v = 0; v < kVectorsPerBlock; ++v) {
+        if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;
+        MF m = lane_mask(blk.mask, v);
+        float* zp = t.depth + at + v * kLanes;
+        uint32_t* cp = t.color + at + v * kLanes;
+        // Window depth is clamped to [0, 1] (a polygon offset may push it out).
+        const VF z = saturate(hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0)));
+        // (Zero when unused: GCC's -Wmaybe-uninitialized cannot see that every read below is
+        // under depth_test, and fails the ASan build's -Werror.)
+        const VF zb = depth_test ? hn::Load(d, zp) : hn::Zero(d);
+        if (depth_test && early) {
+          m = hn::And(m, depth_passes(z, zb));
+          if (hn::AllFalse(d, m)) continue;
+        }
+        Rgba c = constant ? flat : shader.shade(v);
+        if (alpha_test) m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
+        if (test_stencil) {
+          if (hn::AllFalse(d, m)) continue;
+          const MF depth = depth_test ? depth_passes(z, zb) : hn::FirstN(d, kLanes);
+          m = stencil_and_depth(p, m, depth, t.stencil + at + v * kLanes);
+          if (hn::AllFalse(d, m)) continue;
+        } else if (!early) {
+          if (depth_test) m = hn::And(m, depth_passes(z, zb));
+          if (hn::AllFalse(d, m)) continue;
+        }
+        if (query) passed += hn::CountTrue(d, m);
+        if (writes_depth) store_masked(z, m, d, zp);
+        const VU dst = hn::Load(du, cp);
+        if (blend) {
+          const Rgba dc = unpack(dst);
+          c = {blend_channel(p, 0, c, dc), blend_channel(p, 1, c, dc), blend_channel(p, 2, c, dc), blend_channel(p, 3, c, dc)};
+        }
+        VU out = pack_colors(c.r, c.g, c.b, c.a);
+        if (logic) out = logic_op(p.logic, out, dst);
+        if (kept) out = hn::Or(hn::AndNot(hn::Set(du, kept), out), hn::And(dst, hn::Set(du, kept)));
+        const auto mu = hn::RebindMask(du, m);
+        store_masked(out, mu, du, cp);
+        if (ids) store_masked(id, mu, du, ids + at + v * kLanes);
+      }
     }
-    float fx, fy;
-    block_origin(r, t, blk.index, fx, fy);
-    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-    shader.begin_block(fx, fy);
-    const size_t at = size_t(blk.index) * 16;
-    for (int v = 0; v < kVectorsPerBlock; ++v) {
-      if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;
-      MF m = lane_mask(blk.mask, v);
-      float* zp = t.depth + at + v * kLanes;
-      uint32_t* cp = t.color + at + v * kLanes;
-      // Window depth is clamped to [0, 1] (a polygon offset may push it out).
-      const VF z = saturate(hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0)));
-      // (Zero when unused: GCC's -Wmaybe-uninitialized cannot see that every read below is
-      // under p.depth_test, and fails the ASan build's -Werror.)
-      const VF zb = p.depth_test ? hn::Load(d, zp) : hn::Zero(d);
-      if (p.depth_test && early_z) {
-        m = hn::And(m, compare(p.depth_func, z, zb));
-        if (hn::AllFalse(d, m)) continue;
-      }
-      Rgba c = constant ? flat : shader.shade(v);
-      if (p.alpha_test) m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
-      if (stencil) {
-        if (hn::AllFalse(d, m)) continue;
-        const MF depth = p.depth_test ? compare(p.depth_func, z, zb) : hn::FirstN(d, kLanes);
-        m = stencil_and_depth(p, m, depth, t.stencil + at + v * kLanes);
-        if (hn::AllFalse(d, m)) continue;
-      } else if (!early_z) {
-        if (p.depth_test) m = hn::And(m, compare(p.depth_func, z, zb));
-        if (hn::AllFalse(d, m)) continue;
-      }
-      if (p.samples_passed) passed += hn::CountTrue(d, m);
-      if (writes_depth) store_masked(z, m, d, zp);
-      const VU dst = hn::Load(du, cp);
-      if (p.blend && !p.logic_op) {
-        const Rgba dc = unpack(dst);
-        c = {blend_channel(p, 0, c, dc), blend_channel(p, 1, c, dc), blend_channel(p, 2, c, dc), blend_channel(p, 3, c, dc)};
-      }
-      VU out = pack_colors(c.r, c.g, c.b, c.a);
-      if (p.logic_op) out = logic_op(p.logic, out, dst);
-      if (keep) out = hn::Or(hn::AndNot(hn::Set(du, keep), out), hn::And(dst, hn::Set(du, keep)));
-      const auto mu = hn::RebindMask(du, m);
-      store_masked(out, mu, du, cp);
-      if (t.ids) store_masked(id, mu, du, t.ids + at + v * kLanes);
-    }
+  };
+  using Generic = std::integral_constant<int, 0>;
+  if constexpr (kUnits == 0 && !kFog && !kSpec && kVolumes == 0) {
+    const bool plain = p.depth_test && !p.polygon_stipple && !p.alpha_test && !stencil && !p.blend && !p.logic_op &&
+                       keep == 0 && !t.ids && !p.samples_passed;
+    if (plain && p.depth_func == CompareFunc::Less) return run(std::integral_constant<int, int(CompareFunc::Less)>());
+    if (plain && p.depth_func == CompareFunc::LessEqual)
+      return run(std::integral_constant<int, int(CompareFunc::LessEqual)>());
   }
+  run(Generic());
   if (passed) p.samples_passed->fetch_add(passed, std::memory_order_relaxed);
 }
 
