@@ -195,8 +195,11 @@ void Context::quick_elements(GLsizei count, const IndexAt& index_at, size_t cach
     } else {
       Vec4& p = quick_position_[fetched];
       if (plain_v) {
+        // (A copy of a size known here: one of a size known at run time is a call.)
         float f[4] = {0, 0, 0, 1};
-        std::memcpy(f, vbase + size_t(i) * vstride, size_t(va.size) * 4);
+        const unsigned char* from = vbase + size_t(i) * vstride;
+        if (va.size == 3) std::memcpy(f, from, 12);
+        else std::memcpy(f, from, 16);
         p.x = f[0], p.y = f[1], p.z = f[2], p.w = f[3];
       } else {
         p = va.fetch(GLint(i), {0, 0, 0, 1});
