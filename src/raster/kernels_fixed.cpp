@@ -66,9 +66,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
     if (constant) flat = shader.constant_color(r);
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
-  // With no alpha or stencil test, the depth test can come first and spare the shading.
   const bool stencil = p.stencil_test;
-  const bool early_z = !p.alpha_test && !stencil;
   const bool writes_depth = p.depth_test && p.depth_write;
   const bool writes_stencil = stencil && p.stencil_write_mask &&
                               (p.stencil_fail != StencilOp::Keep || p.stencil_depth_fail != StencilOp::Keep ||
@@ -77,20 +75,26 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
                           ((p.color_mask & 4) ? 0xff0000u : 0) | ((p.color_mask & 8) ? 0xff000000u : 0));
   if (keep == 0xffffffffu && !writes_depth && !writes_stencil && !t.ids && !p.samples_passed) return;  // nothing would be written
   uint64_t passed = 0;  // fragments past the depth and stencil tests, for an occlusion query
+  // What each fragment does besides the depth test; all zero: a plain draw.
+  struct Extras {
+    bool stipple = false, alpha_test = false, stencil = false, query = false, blend = false, logic = false;
+    uint32_t kept = 0;         // colour channels the mask keeps
+    uint32_t* ids = nullptr;   // object ids written
+    bool none() const { return !stipple && !alpha_test && !stencil && !query && !blend && !logic && !kept && !ids; }
+  };
+  const Extras extras{p.polygon_stipple, p.alpha_test, stencil, p.samples_passed != nullptr, p.blend && !p.logic_op,
+                      p.logic_op, keep, t.ids};
   // The loop, compiled for any state (kDepth 0) and, for an untextured draw, once more for
   // each of the usual states (kDepth: CompareFunc::Less or LessEqual): a depth test with
-  // that function and nothing else per fragment (no stipple, alpha or stencil test,
-  // blending, logic op, colour mask, object ids or query). Those tests are then known
-  // where they are compiled, not asked of every vector (a quarter of pGL's mesh frames
-  // is this loop).
+  // that function and no Extras. Those are then known where the loop is compiled, not
+  // asked of every vector (a quarter of pGL's mesh frames is this loop).
   auto run = [&](auto depth_tag) {
     constexpr int kDepth = decltype(depth_tag)::value;
     constexpr bool kPlain = kDepth != 0;
-    const bool stipple = !kPlain && p.polygon_stipple, depth_test = kPlain || p.depth_test;
-    const bool alpha_test = !kPlain && p.alpha_test, test_stencil = !kPlain && stencil, early = kPlain || early_z;
-    const bool query = !kPlain && p.samples_passed, blend = !kPlain && p.blend && !p.logic_op, logic = !kPlain && p.logic_op;
-    const uint32_t kept = kPlain ? 0 : keep;
-    uint32_t* const ids = kPlain ? nullptr : t.ids;
+    const Extras x = kPlain ? Extras{} : extras;
+    const bool depth_test = kPlain || p.depth_test;
+    // With no alpha or stencil test, the depth test can come first and spare the shading.
+    const bool early = !x.alpha_test && !x.stencil;
     auto depth_passes = [&](VF z, VF zb) {
       if constexpr (kDepth == int(CompareFunc::Less)) return hn::Lt(z, zb);
       else if constexpr (kDepth == int(CompareFunc::LessEqual)) return hn::Le(z, zb);
@@ -98,7 +102,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
     };
     for (int b = 0; b < n; ++b) {
       Block blk = blocks[b];
-      if (stipple) {
+      if (x.stipple) {
         blk.mask &= stipple_mask(p, t.x0 + (blk.index & 15) * 4, t.y0 + (blk.index >> 4) * 4);
         if (!blk.mask) continue;
       }
@@ -122,8 +126,8 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
           if (hn::AllFalse(d, m)) continue;
         }
         Rgba c = constant ? flat : shader.shade(v);
-        if (alpha_test) m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
-        if (test_stencil) {
+        if (x.alpha_test) m = hn::And(m, compare(p.alpha_func, c.a, hn::Set(d, p.alpha_ref)));
+        if (x.stencil) {
           if (hn::AllFalse(d, m)) continue;
           const MF depth = depth_test ? depth_passes(z, zb) : hn::FirstN(d, kLanes);
           m = stencil_and_depth(p, m, depth, t.stencil + at + v * kLanes);
@@ -132,26 +136,25 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
           if (depth_test) m = hn::And(m, depth_passes(z, zb));
           if (hn::AllFalse(d, m)) continue;
         }
-        if (query) passed += hn::CountTrue(d, m);
+        if (x.query) passed += hn::CountTrue(d, m);
         if (writes_depth) store_masked(z, m, d, zp);
         const VU dst = hn::Load(du, cp);
-        if (blend) {
+        if (x.blend) {
           const Rgba dc = unpack(dst);
           c = {blend_channel(p, 0, c, dc), blend_channel(p, 1, c, dc), blend_channel(p, 2, c, dc), blend_channel(p, 3, c, dc)};
         }
         VU out = pack_colors(c.r, c.g, c.b, c.a);
-        if (logic) out = logic_op(p.logic, out, dst);
-        if (kept) out = hn::Or(hn::AndNot(hn::Set(du, kept), out), hn::And(dst, hn::Set(du, kept)));
+        if (x.logic) out = logic_op(p.logic, out, dst);
+        if (x.kept) out = hn::Or(hn::AndNot(hn::Set(du, x.kept), out), hn::And(dst, hn::Set(du, x.kept)));
         const auto mu = hn::RebindMask(du, m);
         store_masked(out, mu, du, cp);
-        if (ids) store_masked(id, mu, du, ids + at + v * kLanes);
+        if (x.ids) store_masked(id, mu, du, x.ids + at + v * kLanes);
       }
     }
   };
   using Generic = std::integral_constant<int, 0>;
   if constexpr (kUnits == 0 && !kFog && !kSpec && kVolumes == 0) {
-    const bool plain = p.depth_test && !p.polygon_stipple && !p.alpha_test && !stencil && !p.blend && !p.logic_op &&
-                       keep == 0 && !t.ids && !p.samples_passed;
+    const bool plain = p.depth_test && extras.none();
     if (plain && p.depth_func == CompareFunc::Less) return run(std::integral_constant<int, int(CompareFunc::Less)>());
     if (plain && p.depth_func == CompareFunc::LessEqual)
       return run(std::integral_constant<int, int(CompareFunc::LessEqual)>());
