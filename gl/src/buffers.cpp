@@ -185,6 +185,47 @@ void Context::start_mirror() {
   mirror_ = std::move(m);
 }
 
+// The inverse of run_frame's copy out: the caller's buffer, in its format and row order,
+// becomes the renderer's colour (the back buffer's, where there is one).
+void Context::load_buffer_colour() {
+  if (fbo_) return with_window([&] { load_buffer_colour(); });  // (the window's buffers)
+  if (in_frame_) run_frame();
+  if (!renderer_ || !buffer_) return;
+  const int stride_px = row_length > 0 ? row_length : width_;
+  const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
+  const uint8_t* in = static_cast<const uint8_t*>(buffer_);
+  std::vector<uint8_t> rows(size_t(width_) * size_t(height_) * 4);
+  for (int y = 0; y < height_; ++y) {
+    const uint8_t* src = in + size_t(y_up ? y : height_ - 1 - y) * stride_px * bpp;
+    uint8_t* dst = rows.data() + size_t(y) * width_ * 4;
+    switch (format_) {
+      case GL_RGBA: std::memcpy(dst, src, size_t(width_) * 4); break;
+      case GL_RGB:
+        for (int x = 0; x < width_; ++x) dst[4 * x] = src[3 * x], dst[4 * x + 1] = src[3 * x + 1], dst[4 * x + 2] = src[3 * x + 2], dst[4 * x + 3] = 255;
+        break;
+      case 0x4:  // OSMESA_BGR
+        for (int x = 0; x < width_; ++x) dst[4 * x] = src[3 * x + 2], dst[4 * x + 1] = src[3 * x + 1], dst[4 * x + 2] = src[3 * x], dst[4 * x + 3] = 255;
+        break;
+      case 0x1:  // OSMESA_BGRA
+        for (int x = 0; x < width_; ++x)
+          dst[4 * x] = src[4 * x + 2], dst[4 * x + 1] = src[4 * x + 1], dst[4 * x + 2] = src[4 * x], dst[4 * x + 3] = src[4 * x + 3];
+        break;
+      default:  // OSMESA_ARGB
+        for (int x = 0; x < width_; ++x)
+          dst[4 * x] = src[4 * x + 1], dst[4 * x + 1] = src[4 * x + 2], dst[4 * x + 2] = src[4 * x + 3], dst[4 * x + 3] = src[4 * x];
+        break;
+    }
+  }
+  if (double_buffered_ && held_ == kFront) {  // the back buffer is the parked one
+    park_colour();
+    parked_ = std::move(rows);
+    return;
+  }
+  write_surface_rows(*renderer_, width_, height_, ssaa_, rows.data(), nullptr, nullptr, first_frame_);
+  first_frame_ = false;
+  colour_ = std::move(rows);
+}
+
 void Context::swap_buffers() {
   if (fbo_) return with_window([&] { swap_buffers(); });
   if (!double_buffered_ || !renderer_) return;

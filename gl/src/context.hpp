@@ -400,6 +400,11 @@ class Context {
   void draw_buffer(GLenum mode);
   void read_buffer(GLenum mode);
   void swap_buffers();  // glXSwapBuffers: the back buffer's colour copied to the front
+  // The buffer made current, as it is, becomes the colour buffer (the back one where there
+  // are two): for the EGL vendor, whose pbuffers own their pixels while their context
+  // draws elsewhere. (OSMesa alone does not: Mesa's keeps the colour of the context, not
+  // of the buffer, across OSMesaMakeCurrent, and so does pGL's.)
+  void load_buffer_colour();
   // The front buffer's colour (RGBA, bottom row first) of a double-buffered context,
   // after the frame ran; null otherwise.
   const uint8_t* front_rows();
