@@ -4,7 +4,7 @@
 # The build is for this processor (VELOCITY_NATIVE): the kernels for its best
 # instruction set alone, the code the engine runs here.
 #
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx script race
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx egl script race
 #
 # Seeds: tests/fuzz/corpus/<target>, tests/fuzz/regressions/<target>, the project's own
 # test files for the format, and the real files under ../shared/data read in place when
@@ -30,7 +30,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-30}"
 [[ $# -gt 0 ]] && shift
-all_targets=(asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx script race)
+all_targets=(asc plg pcx obj image raster assimp embedded pyconvert pngencode gl glx egl script race)
 targets=("$@")
 ((${#targets[@]})) || targets=("${all_targets[@]}")
 for t in "${targets[@]}"; do
