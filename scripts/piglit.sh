@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # piglit's OpenGL 1.0-1.5 tests on Velocity's GLX vendor library (gl/glx), unmodified,
 # compared with tests/piglit/expectations.txt (tests/piglit/compare.py): any crash,
-# timeout or result other than the expected one fails the script.
+# timeout or result other than the expected one fails the script. Then the few EGL tests
+# that apply to the EGL vendor library (gl/egl), each against its expected result (end).
 #
 #   scripts/piglit.sh [BUILD_DIR]          default: build (libGLX_velocity.so.0 in BUILD_DIR/gl/glx)
 #
@@ -35,6 +36,7 @@ exclude='spec@!opengl 1\.1@max-texture-size$'
 piglit=""
 [[ -n "${PIGLIT_FROM_PACKAGE:-}" ]] || piglit="$(command -v piglit || true)"
 libdir=""
+bindir=/usr/lib/x86_64-linux-gnu/piglit/bin  # the test programs, run alone for EGL (below)
 if [[ -z "$piglit" ]]; then
   cache="${PIGLIT_CACHE:-$HOME/.cache/velocity/piglit}"
   pl=usr/lib/x86_64-linux-gnu/piglit
@@ -52,6 +54,7 @@ if [[ -z "$piglit" ]]; then
   fi
   piglit="$cache/usr/bin/piglit"
   libdir="$cache/$pl/lib"  # the tests' RUNPATH is the installed location
+  bindir="$cache/$pl/bin"
 fi
 command -v Xvfb >/dev/null || { echo "piglit: Xvfb is needed (Debian's xvfb)" >&2; exit 2; }
 
@@ -103,4 +106,35 @@ if [[ "$vendor" == velocity ]]; then
   python3 "$root/tests/piglit/compare.py" "$results/results.json.bz2" "$root/tests/piglit/expectations.txt"
 else
   python3 "$root/tests/piglit/compare.py" --summary "$results/results.json.bz2"
+fi
+
+# piglit's EGL tests that a headless vendor answers (the others open an X display:
+# EGL's X11 platform, which the EGL vendor does not serve), run alone on its JSON file
+# (gl/egl), each with the result expected; any other fails the script.
+#   egl-surfaceless-context-viewport: fail. It asks eglChooseConfig for EGL's defaults,
+#   a window and OpenGL ES, which no configuration of a headless desktop-GL vendor has
+#   (nor any of Mesa's on its surfaceless platform); the display it then needs is X11's.
+json="$build/gl/egl/60_velocity.json"
+if [[ "$vendor" == velocity && -f "$json" ]]; then
+  egl_failed=0
+  while read -r expected name args; do
+    out="$(env __EGL_VENDOR_LIBRARY_FILENAMES="$json" VELOCITY_THREADS=1 \
+      ${libdir:+LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"} \
+      timeout 60 "$bindir/$name" $args -auto 2>&1 || true)"
+    result="$(sed -n 's/.*"result": "\([a-z]*\)".*/\1/p' <<<"$out" | tail -1)"
+    if [[ "$result" == "$expected" ]]; then
+      echo "piglit EGL: $name $args: $result, as expected"
+    else
+      echo "piglit EGL: $name $args: ${result:-no result} (expected $expected)"$'\n'"$out"
+      egl_failed=1
+    fi
+  done <<'TESTS'
+pass egl_mesa_platform_surfaceless
+pass egl_khr_get_all_proc_addresses
+pass egl_ext_client_extensions 1
+pass egl_ext_client_extensions 2
+pass egl_ext_client_extensions 3
+fail egl-surfaceless-context-viewport
+TESTS
+  ((egl_failed == 0)) || { echo "piglit: an EGL test gave another result" >&2; exit 1; }
 fi
