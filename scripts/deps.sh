@@ -34,8 +34,11 @@
 #   gir1.2-gtk-3.0                   xdotool moves the mouse, a GTK window is the drag source
 #   libx11-dev, libxext-dev          the GLX vendor library (gl/glx/): Xlib, and MIT-SHM to show frames
 #   libglvnd-dev                     its interface to libglvnd (glvnd/libglxabi.h) and the system's
-#                                    libGL its tests link, as any GLX program does
-#   mesa-utils                       glxgears, run unmodified on the GLX vendor (gl/glx/tests)
+#                                    libGL its tests link, as any GLX program does; the EGL vendor
+#                                    library's (gl/egl/: glvnd/libeglabi.h), and the libEGL and
+#                                    libOpenGL its check program links (libegl-dev, libopengl-dev)
+#   mesa-utils                       glxgears and eglinfo, run unmodified on the vendors (gl/glx/tests,
+#                                    gl/egl/tests)
 #   freeglut3-dev                    freeglut: its font data become GLUT's fonts (gl/glut/font_tables.c);
 #                                    GLUT's shapes and fonts are compared with its (gl/glut/tests/shapes_test.py)
 #   libwaffle-1-0, python3-mako,     what piglit's GL 1.x tests need to run (scripts/piglit.sh unpacks
