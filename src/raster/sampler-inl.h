@@ -118,18 +118,28 @@ HWY_INLINE Rgba with_border(const Rgba& c, MI outside, const float* border, floa
           hn::IfThenElse(m, hn::Set(d, unit * border[2]), c.b), hn::IfThenElse(m, hn::Set(d, unit * border[3]), c.a)};
 }
 
+// RGBA16 texels' red-green and blue-alpha halves (16 bits each) to [0, 65535] floats.
+template <bool kAlpha>
+HWY_INLINE Rgba linear_channels(VU rg, VU ba) {
+  const DF d;
+  const DI di;
+  const VU low16 = hn::Set(DU(), 0xffffu);
+  auto to_float = [&](VU v) { return hn::ConvertTo(d, hn::BitCast(di, v)); };
+  return {to_float(hn::And(rg, low16)), to_float(hn::ShiftRight<16>(rg)), to_float(hn::And(ba, low16)),
+          kAlpha ? to_float(hn::ShiftRight<16>(ba)) : hn::Set(d, 65535.0f)};
+}
+
 // RGBA16 texels (an sRGB view's linear ones, Texture::linear_levels) to [0, 65535]
 // floats: gathered 8 bytes a lane, half a vector at a time, then split into the
 // red-green and blue-alpha halves of every lane.
 template <bool kAlpha>
 HWY_INLINE Rgba unpack_linear(const uint64_t* texels, VI index) {
-  const DF d;
-  const DI di;
   const DU du;
 #if HWY_TARGET == HWY_SCALAR
   const uint64_t t = texels[hn::GetLane(index)];
   const VU rg = hn::Set(du, uint32_t(t)), ba = hn::Set(du, uint32_t(t >> 32));
 #else
+  const DF d;
   const hn::Half<DI> dh;
   const hn::Repartition<uint64_t, DF> d64;
   const hn::RebindToSigned<decltype(d64)> di64;
@@ -137,19 +147,33 @@ HWY_INLINE Rgba unpack_linear(const uint64_t* texels, VI index) {
   const VU hi = hn::BitCast(du, hn::GatherIndex(d64, texels, hn::PromoteTo(di64, hn::UpperHalf(dh, index))));
   const VU rg = hn::ConcatEven(du, hi, lo), ba = hn::ConcatOdd(du, hi, lo);
 #endif
-  const VU low16 = hn::Set(du, 0xffffu);
-  auto to_float = [&](VU v) { return hn::ConvertTo(d, hn::BitCast(di, v)); };
-  return {to_float(hn::And(rg, low16)), to_float(hn::ShiftRight<16>(rg)), to_float(hn::And(ba, low16)),
-          kAlpha ? to_float(hn::ShiftRight<16>(ba)) : hn::Set(d, 65535.0f)};
+  return linear_channels<kAlpha>(rg, ba);
 }
+
+// The texels at `index` (y * stride + x) in the sampler's unit (texel_unit).
+template <bool kAlpha>
+HWY_INLINE Rgba fetch_at(const SamplerView& s, const SamplerLevel& l, VI index) {
+  if (s.srgb) return unpack_linear<kAlpha>(l.linear, index);
+  return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(DI(), reinterpret_cast<const int32_t*>(l.texels), index)));
+}
+
+// One texel, at `index`, for every lane.
+template <bool kAlpha>
+HWY_INLINE Rgba fetch_one(const SamplerView& s, const SamplerLevel& l, int32_t index) {
+  const DU du;
+  if (s.srgb) {
+    const uint64_t t = l.linear[index];
+    return linear_channels<kAlpha>(hn::Set(du, uint32_t(t)), hn::Set(du, uint32_t(t >> 32)));
+  }
+  return unpack255<kAlpha>(hn::Set(du, l.texels[index]));
+}
+
+HWY_INLINE VI texel_index(const SamplerLevel& l, VI x, VI y) { return hn::Add(hn::Mul(y, hn::Set(DI(), l.stride)), x); }
 
 // The texels at (x, y) in the sampler's unit (texel_unit).
 template <bool kAlpha>
 HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
-  const DI di;
-  const VI index = hn::Add(hn::Mul(y, hn::Set(di, l.stride)), x);
-  if (s.srgb) return unpack_linear<kAlpha>(l.linear, index);
-  return unpack255<kAlpha>(hn::BitCast(DU(), hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.texels), index)));
+  return fetch_at<kAlpha>(s, l, texel_index(l, x, y));
 }
 
 // Whether a wrap mode reads the border colour (the bilinear filter's view of GL_CLAMP).
@@ -187,8 +211,21 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const bool rb = l.bordered;
   const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0, rb), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1, rb);
   const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0, rb), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1, rb);
-  Rgba t00 = fetch<kAlpha>(s, l, x0, y0), t10 = fetch<kAlpha>(s, l, x1, y0);
-  Rgba t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch<kAlpha>(s, l, x1, y1);
+  const VI i00 = texel_index(l, x0, y0), i11 = texel_index(l, x1, y1);
+  Rgba t00, t10, t01, t11;
+  // Magnified, every lane of a vector often lies between the same four texel centres
+  // (an index names one texel: x and y are within a row's stride): then the four are
+  // read once and broadcast instead of gathered, the same texels and weights.
+  const int32_t a00 = hn::GetLane(i00), a11 = hn::GetLane(i11);
+  if (hn::AllTrue(di, hn::And(hn::Eq(i00, hn::Set(di, a00)), hn::Eq(i11, hn::Set(di, a11))))) {
+    const int32_t y0s = hn::GetLane(y0), y1s = hn::GetLane(y1);
+    t00 = fetch_one<kAlpha>(s, l, a00), t11 = fetch_one<kAlpha>(s, l, a11);
+    t10 = fetch_one<kAlpha>(s, l, a11 - (y1s - y0s) * l.stride);  // (x1, y0)
+    t01 = fetch_one<kAlpha>(s, l, a00 + (y1s - y0s) * l.stride);  // (x0, y1)
+  } else {
+    t00 = fetch_at<kAlpha>(s, l, i00), t10 = fetch<kAlpha>(s, l, x1, y0);
+    t01 = fetch<kAlpha>(s, l, x0, y1), t11 = fetch_at<kAlpha>(s, l, i11);
+  }
   if (reads_border(s.wrap_s) || reads_border(s.wrap_t)) {
     const float k = texel_unit(s);
     t00 = with_border(t00, hn::Or(out0, outy0), s.border, k), t10 = with_border(t10, hn::Or(out1, outy0), s.border, k);
