@@ -157,7 +157,12 @@ bool bind(Context* c, Surface* s) {
   // A surface owns its colour buffer: one drawn since by another context, or a context
   // that drew elsewhere since, starts from the surface's pixels.
   if (s && (s->drawn_by != c->serial || c->drew_into != s->serial)) gl->load_buffer_colour();
-  if (s) s->drawn_by = c->serial, c->drew_into = s->serial;
+  // (Without a surface the context draws into a 1x1 buffer, its renderer resized: what
+  // it held of its last surface is gone.)
+  if (s)
+    s->drawn_by = c->serial, c->drew_into = s->serial;
+  else
+    c->drew_into = 0;
   // EGL_KHR_surfaceless_context: first made current without a surface, the viewport
   // and scissor box are empty.
   if (!s && !c->bound_before) glViewport(0, 0, 0, 0), glScissor(0, 0, 0, 0);

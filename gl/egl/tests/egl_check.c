@@ -291,6 +291,10 @@ int main(void) {
   CHECK(pixel(2, 2) == 0xff0000 && pixel(2, 45) == 0x0000ff, "another context reads %06x %06x", pixel(2, 2),
         pixel(2, 45));
   CHECK(eglMakeCurrent(dpy, second, second, ctx) && eglDestroyContext(dpy, other), "back");
+  /* Made current without a surface in between, the context finds the pbuffer's pixels. */
+  CHECK(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx) && eglMakeCurrent(dpy, second, second, ctx),
+        "second, via no surface");
+  CHECK(pixel(30, 30) == 0x00ff00, "the second pbuffer after no surface: %06x", pixel(30, 30));
   /* Destroyed while drawn into: it stays until the context lets go. */
   CHECK(eglDestroySurface(dpy, second), "destroy current");
   CHECK_ERROR(!eglQuerySurface(dpy, second, EGL_WIDTH, &v), EGL_BAD_SURFACE);
