@@ -139,7 +139,6 @@ HWY_INLINE Rgba unpack_linear(const uint64_t* texels, VI index) {
   const uint64_t t = texels[hn::GetLane(index)];
   const VU rg = hn::Set(du, uint32_t(t)), ba = hn::Set(du, uint32_t(t >> 32));
 #else
-  const DF d;
   const hn::Half<DI> dh;
   const hn::Repartition<uint64_t, DF> d64;
   const hn::RebindToSigned<decltype(d64)> di64;
