@@ -191,30 +191,25 @@ void Context::load_buffer_colour() {
   if (fbo_) return with_window([&] { load_buffer_colour(); });  // (the window's buffers)
   if (in_frame_) run_frame();
   if (!renderer_ || !buffer_) return;
+  // Where red, green, blue and alpha sit in one of the buffer's pixels (-1: no alpha,
+  // opaque), by OSMesa format.
+  struct Layout {
+    int bytes;
+    int at[4];
+  };
+  const Layout layout = format_ == GL_RGB ? Layout{3, {0, 1, 2, -1}}
+                        : format_ == 0x4 /* OSMESA_BGR */ ? Layout{3, {2, 1, 0, -1}}
+                        : format_ == 0x1 /* OSMESA_BGRA */ ? Layout{4, {2, 1, 0, 3}}
+                        : format_ == GL_RGBA ? Layout{4, {0, 1, 2, 3}}
+                                             : Layout{4, {1, 2, 3, 0}};  // OSMESA_ARGB
   const int stride_px = row_length > 0 ? row_length : width_;
-  const int bpp = format_ == GL_RGB || format_ == 0x4 /* OSMESA_BGR */ ? 3 : 4;
   const uint8_t* in = static_cast<const uint8_t*>(buffer_);
   std::vector<uint8_t> rows(size_t(width_) * size_t(height_) * 4);
   for (int y = 0; y < height_; ++y) {
-    const uint8_t* src = in + size_t(y_up ? y : height_ - 1 - y) * stride_px * bpp;
+    const uint8_t* src = in + size_t(y_up ? y : height_ - 1 - y) * stride_px * layout.bytes;
     uint8_t* dst = rows.data() + size_t(y) * width_ * 4;
-    switch (format_) {
-      case GL_RGBA: std::memcpy(dst, src, size_t(width_) * 4); break;
-      case GL_RGB:
-        for (int x = 0; x < width_; ++x) dst[4 * x] = src[3 * x], dst[4 * x + 1] = src[3 * x + 1], dst[4 * x + 2] = src[3 * x + 2], dst[4 * x + 3] = 255;
-        break;
-      case 0x4:  // OSMESA_BGR
-        for (int x = 0; x < width_; ++x) dst[4 * x] = src[3 * x + 2], dst[4 * x + 1] = src[3 * x + 1], dst[4 * x + 2] = src[3 * x], dst[4 * x + 3] = 255;
-        break;
-      case 0x1:  // OSMESA_BGRA
-        for (int x = 0; x < width_; ++x)
-          dst[4 * x] = src[4 * x + 2], dst[4 * x + 1] = src[4 * x + 1], dst[4 * x + 2] = src[4 * x], dst[4 * x + 3] = src[4 * x + 3];
-        break;
-      default:  // OSMESA_ARGB
-        for (int x = 0; x < width_; ++x)
-          dst[4 * x] = src[4 * x + 1], dst[4 * x + 1] = src[4 * x + 2], dst[4 * x + 2] = src[4 * x + 3], dst[4 * x + 3] = src[4 * x];
-        break;
-    }
+    for (int x = 0; x < width_; ++x, src += layout.bytes, dst += 4)
+      for (int c = 0; c < 4; ++c) dst[c] = layout.at[c] < 0 ? 255 : src[layout.at[c]];
   }
   if (double_buffered_ && held_ == kFront) {  // the back buffer is the parked one
     park_colour();
