@@ -165,6 +165,22 @@ void SampleForTest(const SamplerView& view, float u, float v, float lod, float r
   rgba[0] = hn::GetLane(c.r), rgba[1] = hn::GetLane(c.g), rgba[2] = hn::GetLane(c.b), rgba[3] = hn::GetLane(c.a);
 }
 
+void SamplePointsForTest(const SamplerView& view, const float* u, const float* v, int n, float lod, float* rgba) {
+  const DF d;
+  const LevelChoice level = choose_levels(view, lod);
+  for (int first = 0; first < n; first += int(kLanes)) {
+    alignas(64) float us[kLanes], vs[kLanes], out[4][kLanes];
+    for (size_t l = 0; l < kLanes; ++l) {
+      const int i = std::min(first + int(l), n - 1);
+      us[l] = u[i], vs[l] = v[i];
+    }
+    const Rgba c = sample(view, level, hn::Load(d, us), hn::Load(d, vs));
+    hn::Store(c.r, d, out[0]), hn::Store(c.g, d, out[1]), hn::Store(c.b, d, out[2]), hn::Store(c.a, d, out[3]);
+    for (int l = 0; l < int(kLanes) && first + l < n; ++l)
+      for (int k = 0; k < 4; ++k) rgba[4 * (first + l) + k] = out[k][l];
+  }
+}
+
 void Sample3ForTest(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]) {
   const DF d;
   const Rgba c = sample3(view, choose_levels(view, lod), hn::Set(d, u), hn::Set(d, v), hn::Set(d, w));
@@ -190,9 +206,13 @@ HWY_EXPORT(TargetName);
 HWY_EXPORT(SampleForTest);
 HWY_EXPORT(LevelOfDetailForTest);
 HWY_EXPORT(Sample3ForTest);
+HWY_EXPORT(SamplePointsForTest);
 
 void sample_for_test(const SamplerView& view, float u, float v, float lod, float rgba[4]) {
   HWY_DYNAMIC_DISPATCH(SampleForTest)(view, u, v, lod, rgba);
+}
+void sample_points_for_test(const SamplerView& view, const float* u, const float* v, int n, float lod, float* rgba) {
+  HWY_DYNAMIC_DISPATCH(SamplePointsForTest)(view, u, v, n, lod, rgba);
 }
 void sample3_for_test(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]) {
   HWY_DYNAMIC_DISPATCH(Sample3ForTest)(view, u, v, w, lod, rgba);

@@ -33,6 +33,9 @@ void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int
 // For tests: the kernels' sampler at (u, v) with level of detail `lod`, RGBA in [0, 1];
 // and their level of detail for the given screen-space derivatives of (u, v).
 void sample_for_test(const SamplerView& view, float u, float v, float lod, float rgba[4]);
+// The same at n <= 16 points, a vector of them at a time (lane i at (u[i], v[i]), the
+// lanes past n at point n - 1): RGBA of point i at rgba[4 * i].
+void sample_points_for_test(const SamplerView& view, const float* u, const float* v, int n, float lod, float* rgba);
 float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, float dudy, float dvdy);
 // A 3-D texture's sample at (u, v, w) (the view of a Texture::volume texture).
 void sample3_for_test(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]);

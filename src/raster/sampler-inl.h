@@ -178,6 +178,87 @@ HWY_INLINE Rgba fetch(const SamplerView& s, const SamplerLevel& l, VI x, VI y) {
 // Whether a wrap mode reads the border colour (the bilinear filter's view of GL_CLAMP).
 HWY_INLINE bool reads_border(Wrap w) { return w == Wrap::ClampToBorder || w == Wrap::ClampHalfBorder; }
 
+// The bilinear filter's four texels when a vector's lanes lie close together, as they
+// do magnified: if every lane's texels fall in the 4x4 window of texels whose second
+// row and column hold lane 0's first texel (x0, y0: floor(x - 1/2), floor(y - 1/2)
+// before wrapping), and the window lies inside the level (so that no lane wraps,
+// clamps or reads a border), its four rows are loaded and each lane's texels picked
+// from them by lane permutes instead of gathered. Vectors of 16 lanes hold the window
+// in one table (two for an sRGB view's red-green and blue-alpha halves), 8 lanes in
+// two. False when the lanes are farther apart: the caller gathers.
+template <bool kAlpha>
+HWY_INLINE bool window_texels(const SamplerView& s, const SamplerLevel& l, VI x0, VI y0, Rgba& t00, Rgba& t10,
+                              Rgba& t01, Rgba& t11) {
+#if HWY_TARGET == HWY_SCALAR
+  (void)s, (void)l, (void)x0, (void)y0, (void)t00, (void)t10, (void)t01, (void)t11;
+  return false;
+#else
+  if constexpr (kLanes != 8 && kLanes != 16) {
+    return false;
+  } else {
+    const DI di;
+    const DU du;
+    const int32_t ax = hn::GetLane(x0) - 1, ay = hn::GetLane(y0) - 1;
+    if (ax < 0 || ay < 0 || ax > l.width - 4 || ay > l.height - 4) return false;
+    const VI dx = hn::Sub(x0, hn::Set(di, ax)), dy = hn::Sub(y0, hn::Set(di, ay));
+    const MI near = hn::And(hn::Gt(hn::Min(dx, dy), hn::Set(di, -1)), hn::Lt(hn::Max(dx, dy), hn::Set(di, 3)));
+    if (!hn::AllTrue(di, near)) return false;
+    const VI at = hn::Add(hn::ShiftLeft<2>(dy), dx);  // (x0, y0) in the window, row by row
+    const size_t stride = size_t(l.stride), first = size_t(ay) * stride + size_t(ax);
+    // A table of the window's sixteen 32-bit values (8 lanes: rows 0-1 in lo, 2-3 in
+    // hi), looked up at window index i.
+    struct Table {
+      VU lo, hi;
+      HWY_INLINE VU operator()(VI i) const {
+        const DU du;
+        if constexpr (kLanes == 16) {
+          return hn::TableLookupLanes(lo, hn::IndicesFromVec(du, hn::BitCast(du, i)));
+        } else {
+          const DI di;
+          const auto k = hn::IndicesFromVec(du, hn::BitCast(du, hn::And(i, hn::Set(di, 7))));
+          const auto upper = hn::RebindMask(du, hn::Gt(i, hn::Set(di, 7)));
+          return hn::IfThenElse(upper, hn::TableLookupLanes(hi, k), hn::TableLookupLanes(lo, k));
+        }
+      }
+    };
+    const VI one = hn::Set(di, 1), four = hn::Set(di, 4), five = hn::Set(di, 5);
+    if (s.srgb) {
+      // Each row is four RGBA16 texels: eight 32-bit halves, red-green then blue-alpha.
+      const uint32_t* p = reinterpret_cast<const uint32_t*>(l.linear + first);
+      Table rg, ba;
+      if constexpr (kLanes == 16) {
+        const hn::Half<DU> dh;
+        const VU rows01 = hn::Combine(du, hn::LoadU(dh, p + 2 * stride), hn::LoadU(dh, p));
+        const VU rows23 = hn::Combine(du, hn::LoadU(dh, p + 6 * stride), hn::LoadU(dh, p + 4 * stride));
+        rg.lo = hn::ConcatEven(du, rows23, rows01), ba.lo = hn::ConcatOdd(du, rows23, rows01);
+      } else {
+        const VU r0 = hn::LoadU(du, p), r1 = hn::LoadU(du, p + 2 * stride);
+        const VU r2 = hn::LoadU(du, p + 4 * stride), r3 = hn::LoadU(du, p + 6 * stride);
+        rg.lo = hn::ConcatEven(du, r1, r0), rg.hi = hn::ConcatEven(du, r3, r2);
+        ba.lo = hn::ConcatOdd(du, r1, r0), ba.hi = hn::ConcatOdd(du, r3, r2);
+      }
+      auto texel = [&](VI i) { return linear_channels<kAlpha>(rg(i), ba(i)); };
+      t00 = texel(at), t10 = texel(hn::Add(at, one)), t01 = texel(hn::Add(at, four)), t11 = texel(hn::Add(at, five));
+    } else {
+      const uint32_t* p = l.texels + first;
+      Table rgba;
+      const hn::Half<DU> dh;
+      if constexpr (kLanes == 16) {
+        const hn::Half<decltype(dh)> dq;
+        rgba.lo = hn::Combine(du, hn::Combine(dh, hn::LoadU(dq, p + 3 * stride), hn::LoadU(dq, p + 2 * stride)),
+                              hn::Combine(dh, hn::LoadU(dq, p + stride), hn::LoadU(dq, p)));
+      } else {
+        rgba.lo = hn::Combine(du, hn::LoadU(dh, p + stride), hn::LoadU(dh, p));
+        rgba.hi = hn::Combine(du, hn::LoadU(dh, p + 3 * stride), hn::LoadU(dh, p + 2 * stride));
+      }
+      auto texel = [&](VI i) { return unpack255<kAlpha>(rgba(i)); };
+      t00 = texel(at), t10 = texel(hn::Add(at, one)), t01 = texel(hn::Add(at, four)), t11 = texel(hn::Add(at, five));
+    }
+    return true;
+  }
+#endif
+}
+
 template <bool kAlpha>
 HWY_INLINE Rgba nearest(const SamplerView& s, const SamplerLevel& l, VF u, VF v) {
   const DF d;
@@ -205,18 +286,19 @@ HWY_INLINE Rgba bilinear(const SamplerView& s, const SamplerLevel& l, VF u, VF v
   const VF fx = hn::Floor(x), fy = hn::Floor(y);
   const VF a = hn::Sub(x, fx), b = hn::Sub(y, fy);
   const VI x0i = truncate_in_range(fx), y0i = truncate_in_range(fy);
+  Rgba t00, t10, t01, t11;
+  if (window_texels<kAlpha>(s, l, x0i, y0i, t00, t10, t01, t11)) return lerp(lerp(t00, t10, a), lerp(t01, t11, a), b);
   const VI one = hn::Set(di, 1);
   MI out0 = hn::FirstN(di, 0), out1 = out0, outy0 = out0, outy1 = out0;
   const bool rb = l.bordered;
   const VI x0 = wrap_index(x0i, l.width, s.wrap_s, out0, rb), x1 = wrap_index(hn::Add(x0i, one), l.width, s.wrap_s, out1, rb);
   const VI y0 = wrap_index(y0i, l.height, s.wrap_t, outy0, rb), y1 = wrap_index(hn::Add(y0i, one), l.height, s.wrap_t, outy1, rb);
   const VI i00 = texel_index(l, x0, y0), i11 = texel_index(l, x1, y1);
-  Rgba t00, t10, t01, t11;
-  // Magnified, every lane of a vector often lies between the same four texel centres
-  // (an index names one texel: x and y are within a row's stride): then the four are
-  // read once and broadcast instead of gathered, the same texels and weights.
+  // Narrower vectors (no window above): magnified, every lane often lies between the
+  // same four texel centres (an index names one texel: x and y are within a row's
+  // stride); then the four are read once and broadcast instead of gathered.
   const int32_t a00 = hn::GetLane(i00), a11 = hn::GetLane(i11);
-  if (hn::AllTrue(di, hn::And(hn::Eq(i00, hn::Set(di, a00)), hn::Eq(i11, hn::Set(di, a11))))) {
+  if (kLanes < 8 && hn::AllTrue(di, hn::And(hn::Eq(i00, hn::Set(di, a00)), hn::Eq(i11, hn::Set(di, a11))))) {
     const int32_t y0s = hn::GetLane(y0), y1s = hn::GetLane(y1);
     t00 = fetch_one<kAlpha>(s, l, a00), t11 = fetch_one<kAlpha>(s, l, a11);
     t10 = fetch_one<kAlpha>(s, l, a11 - (y1s - y0s) * l.stride);  // (x1, y0)

@@ -1,6 +1,7 @@
 // Texture sampling, mip-mapping, perspective-correct vs affine mapping, super-sampling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <thread>
@@ -292,6 +293,80 @@ TEST(Texture, LinearLevelsDecodeEverySrgbValueOnce) {
 
 // The first use decodes once however many threads ask at the same time (a frame's
 // draws are planned on one thread, but two renderers may share a texture).
+// The bilinear filter at 16 points at once (a 4x4 block's pixels, as the kernels
+// sample), against the filter written out point by point from the texels: magnified
+// blocks, whose lanes the sampler serves from a window of texels loaded once, and
+// minified ones, which it gathers; near and across the edges in every wrap mode, for
+// RGBA8 and sRGB (RGBA16 linear) texels. An asymmetric 13x9 image, no texel like another.
+TEST(Texture, BilinearAtABlocksPointsMatchesTheFilterPointByPoint) {
+  const int w = 13, h = 9;
+  const Texture t(make_image(w, h, [](int x, int y) { return (x * 37 + y * 101) % 251; },
+                             [](int x, int y) { return (x * x * 7 + y * 59 + 13) % 253; }));
+  const auto& linear = t.linear_levels()[0];
+  const std::vector<uint32_t>& texels = t.levels()[0].texels;
+  const float border[4] = {0.2f, 0.4f, 0.6f, 0.8f};
+  std::uint32_t seed = 12345;
+  auto random = [&](float lo, float hi) {
+    seed = seed * 1664525u + 1013904223u;
+    return lo + (hi - lo) * float(seed >> 8) / float(1 << 24);
+  };
+  for (bool srgb : {false, true})
+    for (Wrap wrap : {Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Clamp, Wrap::ClampToBorder}) {
+      SamplerState st;
+      st.mag = st.min = SamplerState::Texel::Linear, st.mip = SamplerState::Mip::None;
+      st.wrap_s = st.wrap_t = wrap, st.border_color = {border[0], border[1], border[2], border[3]};
+      SamplerView view(t, st);
+      view.read_as_srgb(srgb);
+      // Texel i of an axis n long in this wrap mode; -1: the border.
+      auto wrapped = [&](int i, int n) {
+        switch (wrap) {
+          case Wrap::Repeat: return ((i % n) + n) % n;
+          case Wrap::MirroredRepeat: {
+            const int m = ((i % (2 * n)) + 2 * n) % (2 * n);
+            return m < n ? m : 2 * n - 1 - m;
+          }
+          case Wrap::Clamp: return std::clamp(i, 0, n - 1);
+          default: return i >= 0 && i < n ? i : -1;
+        }
+      };
+      auto channel = [&](int x, int y, int k) {
+        if (x < 0 || y < 0) return double(border[k]);
+        const size_t at = size_t(y) * size_t(w) + size_t(x);
+        if (srgb) return double((linear[at] >> (16 * k)) & 0xffff) / 65535.0;
+        return double((texels[at] >> (8 * k)) & 0xff) / 255.0;
+      };
+      auto expected = [&](float u, float v, int k) {
+        // GL's repeat and mirrored repeat wrap the coordinate first (as the sampler does).
+        double s = u, r = v;
+        if (wrap == Wrap::Repeat) s -= std::floor(s), r -= std::floor(r);
+        if (wrap == Wrap::MirroredRepeat) s -= 2 * std::floor(s / 2), r -= 2 * std::floor(r / 2);
+        const double x = s * w - 0.5, y = r * h - 0.5;
+        const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+        const double a = x - x0, b = y - y0;
+        const int xa = wrapped(x0, w), xb = wrapped(x0 + 1, w), ya = wrapped(y0, h), yb = wrapped(y0 + 1, h);
+        const double top = channel(xa, ya, k) * (1 - a) + channel(xb, ya, k) * a;
+        const double bottom = channel(xa, yb, k) * (1 - a) + channel(xb, yb, k) * a;
+        return top * (1 - b) + bottom * b;
+      };
+      for (int block = 0; block < 600; ++block) {
+        // A block's uv: a point anywhere from past one edge to past the other, and steps
+        // per pixel of up to 0.45 texels (magnified) or, for one block in four, 2.
+        const float reach = block % 4 == 3 ? 2.0f : 0.45f;
+        const float u0 = random(-0.4f, 1.4f), v0 = random(-0.4f, 1.4f);
+        const float ux = random(-reach, reach) / w, uy = random(-reach, reach) / w;
+        const float vx = random(-reach, reach) / h, vy = random(-reach, reach) / h;
+        float u[16], v[16], got[64];
+        for (int i = 0; i < 16; ++i) u[i] = u0 + ux * float(i & 3) + uy * float(i >> 2), v[i] = v0 + vx * float(i & 3) + vy * float(i >> 2);
+        raster::sample_points_for_test(view, u, v, 16, 0, got);
+        for (int i = 0; i < 16; ++i)
+          for (int k = 0; k < 4; ++k)
+            ASSERT_NEAR(got[4 * i + k], expected(u[i], v[i], k), 2e-5)
+                << (srgb ? "sRGB" : "RGBA8") << " wrap " << int(wrap) << " block " << block << " point " << i << " ("
+                << u[i] << ", " << v[i] << ") channel " << k;
+      }
+    }
+}
+
 TEST(Texture, LinearLevelsAreMadeOnceAcrossThreads) {
   const Texture t(make_image(64, 32, [](int x, int) { return x * 4; }, [](int, int y) { return y * 8; }));
   const uint64_t* seen[4] = {};
