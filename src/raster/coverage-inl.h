@@ -82,22 +82,25 @@ HWY_INLINE uint32_t negative_bits(const VI (&q)[3], const VI (&step)[3][kVectors
   return negative_lanes(any, v);
 }
 
-// A triangle less than 16 pixels wide and tall: every |a| and |b| below 16 pixels (in
-// 24.8). Anywhere within a few blocks of its box |E| < 2^26, so floor(E / 256) and the
-// steps a * i + b * j across the box fit int32 with room to spare.
-HWY_INLINE bool tiny_triangle(const TriangleEdges& e) {
-  bool tiny = true;
-  for (int k = 0; k < 3; ++k) tiny = tiny && std::abs(e.a[k]) < 16 * kSubpixelOne && std::abs(e.b[k]) < 16 * kSubpixelOne;
-  return tiny;
+// A triangle less than 128 pixels wide and tall: every |a| and |b| below 128 pixels
+// (in 24.8). Anywhere within a few blocks of its box |E| < 2^32, so floor(E / 256) <
+// 2^24 and the steps a * i + b * j across the box fit int32 with room to spare.
+HWY_INLINE bool covered_by_rows(const TriangleEdges& e) {
+  bool rows = true;
+  for (int k = 0; k < 3; ++k) rows = rows && std::abs(e.a[k]) < 128 * kSubpixelOne && std::abs(e.b[k]) < 128 * kSubpixelOne;
+  return rows;
 }
 
-// Its 4x4 blocks test their pixels directly, row by row of the box: the 16x16 and 4x4
-// classification below pays off on larger triangles, not on the dozen pixels of a
-// dense mesh's (where it was most of the coverage's time). The same test, the same
-// pixels; `step` is triangle_blocks' per-edge a * i + b * j of a block's pixels.
+// Its 4x4 blocks test their pixels directly, row by row of the box, three vector adds
+// from one block to the next. The 16x16 and 4x4 classification below pays off on
+// larger triangles only: on the dozen pixels of a dense mesh's it was most of the
+// coverage's time, and up to 128 pixels a side rows are still faster (velocity bench
+// sphere:64 gouraud, triangles of about 35 pixels a side, and a 2048² shadow map's depth
+// pass: docs/performance.md, stop 29). The same test, the same pixels; `step` is
+// triangle_blocks' per-edge a * i + b * j of a block's pixels.
 template <class Emit>
-HWY_INLINE void tiny_triangle_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
-                                    const TileBox& box, Emit& emit) {
+HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
+                          const TileBox& box, Emit& emit) {
   const DI di;
   const int bx0 = box.x0 & ~3, by0 = box.y0 & ~3;
   const int64_t px = int64_t(tx + bx0) * kSubpixelOne + kSubpixelHalf;
@@ -137,7 +140,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
     for (int v = 0; v < kVectorsPerBlock; ++v)
       step[k][v] = hn::Add(hn::Mul(hn::Set(di, e.a[k]), hn::Load(di, kBlockXi + v * kLanes)),
                            hn::Mul(hn::Set(di, e.b[k]), hn::Load(di, kBlockYi + v * kLanes)));
-  if (tiny_triangle(e)) return tiny_triangle_cover(e, step, tx, ty, box, emit);
+  if (covered_by_rows(e)) return row_cover(e, step, tx, ty, box, emit);
 
   for (int my = box.y0 >> 4; my <= box.y1 >> 4; ++my)
     for (int mx = box.x0 >> 4; mx <= box.x1 >> 4; ++mx) {

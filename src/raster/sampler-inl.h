@@ -4,8 +4,10 @@
 // Addressing follows OpenGL: texel i covers [i, i+1) / size in u, so the sample point
 // u * size - 0.5 sits between the four nearest texel centres (bilinear); nearest takes
 // floor(u * size). Texel addresses and bilinear weights are computed for the whole
-// vector, the texels fetched with gathers. No division: coordinates are wrapped in
-// float (u - floor(u)) first, after which an index is at most one size out of range.
+// vector, the texels fetched with gathers — or, where a magnified texture puts every
+// lane within a texel or two of the first, picked from a 4x4 window of texels loaded
+// once (window_texels). No division: coordinates are wrapped in float (u - floor(u))
+// first, after which an index is at most one size out of range.
 // Any input is safe: NaN and infinite coordinates read texel 0 or the edge, never
 // outside the texture.
 //

@@ -148,9 +148,10 @@ TEST(FillRule, CoverageMatchesPerPixelEdgeFunctions) {
   TestBins bins;
   int drawn = 0;
   for (int n = 0; n < 8000; ++n) {
-    // Large, mid-sized (some under 16 pixels a side: tested pixel by pixel without the
-    // block classification), under 16 but past the 8x8 of the small ones, and small.
-    const float size = n % 4 == 0 ? 300.0f : n % 4 == 1 ? 12.0f : n % 4 == 2 ? 7.0f : 2.5f;
+    // Large (the 16x16 and 4x4 block classification), under 128 pixels a side (covered
+    // row by row without it), under 16, under 16 but past the 8x8 of the small ones,
+    // and small.
+    const float size = n % 5 == 0 ? 300.0f : n % 5 == 1 ? 50.0f : n % 5 == 2 ? 12.0f : n % 5 == 3 ? 7.0f : 2.5f;
     std::uniform_real_distribution<float> centre(-20.0f, 220.0f), off(-size, size);
     const float cx = centre(rng), cy = centre(rng);
     const ScreenVertex a = sv(cx + off(rng), cy + off(rng)), b = sv(cx + off(rng), cy + off(rng)), c = sv(cx + off(rng), cy + off(rng));
