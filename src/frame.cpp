@@ -524,7 +524,7 @@ const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   tiles.depth_test = !painter;
   tiles.depth_only = r.owner_ != nullptr;
   if (r.owner_) {
-    tiles.shadow_codes = r.shadow_codes_.data(), tiles.shadow_size = r.framebuffer.width;
+    tiles.shadow_codes = r.shadow_codes_.data() + shading::kShadowLead, tiles.shadow_size = r.framebuffer.width;
     tiles.shadow_perspective = r.shadow_map_->perspective;
     tiles.shadow_near = r.shadow_map_->near, tiles.shadow_far = r.shadow_map_->far;
   }
@@ -673,14 +673,14 @@ void CpuBackend::render_shadows() {
       if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
       CpuBackend& b = *r.shadow_passes_[pass];
       if (keep) {
-        s.shadow.face[f].depth = b.shadow_codes_.data();
+        s.shadow.face[f].depth = b.shadow_codes_.data() + shading::kShadowLead;
         continue;
       }
       b.resize(size, size, 1);
       // Never touched: the tiles draw depth in a scratch tile and store it as codes.
       BlockVector<uint32_t>().swap(b.framebuffer.color);
       BlockVector<float>().swap(b.framebuffer.depth);
-      const size_t texels = size_t(size + 2) * size_t(size + 2);  // with the border (shading/shadow.hpp)
+      const size_t texels = shading::shadow_codes_for(size);  // with the border and lines (shading/shadow.hpp)
       if (b.shadow_codes_.size() != texels) {
         b.shadow_codes_.assign(texels, uint16_t(shading::kShadowFar));
         std::fill(b.framebuffer.tile_clean.begin(), b.framebuffer.tile_clean.end(), 0);
@@ -690,7 +690,7 @@ void CpuBackend::render_shadows() {
       for (const Caster& c : r.casters_)
         b.draw(*c.mesh, c.world, c.cut_out ? c.material : c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
       b.run_frame(false);
-      s.shadow.face[f].depth = b.shadow_codes_.data();
+      s.shadow.face[f].depth = b.shadow_codes_.data() + shading::kShadowLead;
     }
   std::swap(r.shadow_key_, key);
   r.plan.lights.shadows = !r.shadow_lights_.empty();

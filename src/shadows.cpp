@@ -89,7 +89,7 @@ void plan_shadows(const std::vector<Light>& lights, const Mat4& camera_view, Sph
       s.faces = 6;
     }
     sh.faces = s.faces;
-    for (int f = 0; f < s.faces; ++f) sh.face[f].size = size, sh.face[f].stride = size + 2;
+    for (int f = 0; f < s.faces; ++f) sh.face[f].size = size, sh.face[f].stride = shading::shadow_stride(size);
     out.push_back(s);
   }
 }

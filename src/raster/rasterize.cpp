@@ -79,7 +79,7 @@ void store_shadow_codes(const TileInputs& frame, const float* depth, int tx, int
   // Row by row into the map (a block's row of four codes is 8 bytes), as far as the
   // map's edge, which need not be a tile's.
   const int size = frame.shadow_size;
-  const size_t stride = size_t(size) + 2;
+  const size_t stride = size_t(shading::shadow_stride(size));
   const int w = std::min(kTileSize, size - tx), h = std::min(kTileSize, size - ty);
   auto row = [&](int y) { return frame.shadow_codes + size_t(ty + y + 1) * stride + size_t(tx + 1); };
   for (int y = 0; y < h; ++y) {
