@@ -192,6 +192,8 @@ class CpuBackend final : public Backend {
   // keeps no colour or depth) and the map's projection.
   BlockVector<uint16_t> shadow_codes_;
   const shading::ShadowMap* shadow_map_ = nullptr;
+  // Texel (-1, -1) of the map in shadow_codes_ (shading/shadow.hpp's layout).
+  uint16_t* shadow_texels() { return shadow_codes_.data() + shading::kShadowLead; }
   Material depth_material_, depth_two_sided_;
 
   ThreadPool& pool_for(int threads) {
@@ -524,7 +526,7 @@ const FrameStats& CpuBackend::run_frame(bool painter, const ColorOut* out) {
   tiles.depth_test = !painter;
   tiles.depth_only = r.owner_ != nullptr;
   if (r.owner_) {
-    tiles.shadow_codes = r.shadow_codes_.data() + shading::kShadowLead, tiles.shadow_size = r.framebuffer.width;
+    tiles.shadow_codes = r.shadow_texels(), tiles.shadow_size = r.framebuffer.width;
     tiles.shadow_perspective = r.shadow_map_->perspective;
     tiles.shadow_near = r.shadow_map_->near, tiles.shadow_far = r.shadow_map_->far;
   }
@@ -673,7 +675,7 @@ void CpuBackend::render_shadows() {
       if (pass == r.shadow_passes_.size()) r.shadow_passes_.push_back(std::make_unique<CpuBackend>(size, this));
       CpuBackend& b = *r.shadow_passes_[pass];
       if (keep) {
-        s.shadow.face[f].depth = b.shadow_codes_.data() + shading::kShadowLead;
+        s.shadow.face[f].depth = b.shadow_texels();
         continue;
       }
       b.resize(size, size, 1);
@@ -690,7 +692,7 @@ void CpuBackend::render_shadows() {
       for (const Caster& c : r.casters_)
         b.draw(*c.mesh, c.world, c.cut_out ? c.material : c.two_sided ? &r.depth_two_sided_ : &r.depth_material_, 0);
       b.run_frame(false);
-      s.shadow.face[f].depth = b.shadow_codes_.data() + shading::kShadowLead;
+      s.shadow.face[f].depth = b.shadow_texels();
     }
   std::swap(r.shadow_key_, key);
   r.plan.lights.shadows = !r.shadow_lights_.empty();

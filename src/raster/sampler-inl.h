@@ -223,7 +223,11 @@ HWY_INLINE bool window_texels(const SamplerView& s, const SamplerLevel& l, VI x0
         }
       }
     };
-    const VI one = hn::Set(di, 1), four = hn::Set(di, 4), five = hn::Set(di, 5);
+    // The four texels of every lane: (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1, y0 + 1).
+    auto taps = [&](auto texel) {
+      t00 = texel(at), t10 = texel(hn::Add(at, hn::Set(di, 1)));
+      t01 = texel(hn::Add(at, hn::Set(di, 4))), t11 = texel(hn::Add(at, hn::Set(di, 5)));
+    };
     if (s.srgb) {
       // Each row is four RGBA16 texels: eight 32-bit halves, red-green then blue-alpha.
       const uint32_t* p = reinterpret_cast<const uint32_t*>(l.linear + first);
@@ -239,8 +243,7 @@ HWY_INLINE bool window_texels(const SamplerView& s, const SamplerLevel& l, VI x0
         rg.lo = hn::ConcatEven(du, r1, r0), rg.hi = hn::ConcatEven(du, r3, r2);
         ba.lo = hn::ConcatOdd(du, r1, r0), ba.hi = hn::ConcatOdd(du, r3, r2);
       }
-      auto texel = [&](VI i) { return linear_channels<kAlpha>(rg(i), ba(i)); };
-      t00 = texel(at), t10 = texel(hn::Add(at, one)), t01 = texel(hn::Add(at, four)), t11 = texel(hn::Add(at, five));
+      taps([&](VI i) { return linear_channels<kAlpha>(rg(i), ba(i)); });
     } else {
       const uint32_t* p = l.texels + first;
       Table rgba;
@@ -253,8 +256,7 @@ HWY_INLINE bool window_texels(const SamplerView& s, const SamplerLevel& l, VI x0
         rgba.lo = hn::Combine(du, hn::LoadU(dh, p + stride), hn::LoadU(dh, p));
         rgba.hi = hn::Combine(du, hn::LoadU(dh, p + 3 * stride), hn::LoadU(dh, p + 2 * stride));
       }
-      auto texel = [&](VI i) { return unpack255<kAlpha>(rgba(i)); };
-      t00 = texel(at), t10 = texel(hn::Add(at, one)), t01 = texel(hn::Add(at, four)), t11 = texel(hn::Add(at, five));
+      taps([&](VI i) { return unpack255<kAlpha>(rgba(i)); });
     }
     return true;
   }

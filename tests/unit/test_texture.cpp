@@ -291,8 +291,6 @@ TEST(Texture, LinearLevelsDecodeEverySrgbValueOnce) {
   EXPECT_NEAR(c[3], 1.0f, 1e-6f);
 }
 
-// The first use decodes once however many threads ask at the same time (a frame's
-// draws are planned on one thread, but two renderers may share a texture).
 // The bilinear filter at 16 points at once (a 4x4 block's pixels, as the kernels
 // sample), against the filter written out point by point from the texels: magnified
 // blocks, whose lanes the sampler serves from a window of texels loaded once, and
@@ -367,6 +365,8 @@ TEST(Texture, BilinearAtABlocksPointsMatchesTheFilterPointByPoint) {
     }
 }
 
+// The first use decodes once however many threads ask at the same time (a frame's
+// draws are planned on one thread, but two renderers may share a texture).
 TEST(Texture, LinearLevelsAreMadeOnceAcrossThreads) {
   const Texture t(make_image(64, 32, [](int x, int) { return x * 4; }, [](int, int y) { return y * 8; }));
   const uint64_t* seen[4] = {};
