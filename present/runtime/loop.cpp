@@ -1,6 +1,7 @@
 #include "runtime/loop.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -20,10 +21,15 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-volatile std::sig_atomic_t g_stop_signal = 0;
+// Set by the handler, read by the loop. The kernel may run the handler on any
+// thread (the render thread too), so a volatile sig_atomic_t, which is only
+// safe within one thread, will not do; a lock-free atomic is safe in a signal
+// handler (C++17 [support.signal]) and between threads.
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void on_stop_signal(int sig) {
-  g_stop_signal = sig;
+  g_stop_signal.store(sig);
   std::signal(sig, SIG_DFL);  // a second one ends the program at once
 }
 
@@ -130,12 +136,12 @@ Rendered render_windowed(Renderer& renderer, RenderJob job, bool read_back, Imag
 }  // namespace
 
 void install_stop_signals() {
-  g_stop_signal = 0;
+  g_stop_signal.store(0);
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
 }
 
-int stop_signal() { return int(g_stop_signal); }
+int stop_signal() { return g_stop_signal.load(); }
 
 int stats_band_height(int frame_height) {
   int scale = std::max(1, frame_height / 300);
@@ -301,7 +307,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
       }
     }
     asked_mode = program.screen_mode();
-    if (program.finished() || g_stop_signal) quit = true;
+    if (program.finished() || g_stop_signal.load() != 0) quit = true;
     if (quit) break;
     program.set_gamepad(presenter ? presenter->gamepad() : GamepadState{});
 
@@ -369,7 +375,7 @@ LoopResult run_loop(Program& program, Presenter* presenter, const LoopOptions& o
   // Keep the last frame on screen a while (tests take the window's picture then).
   if (presenter && o.linger > 0) {
     auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.linger));
-    while (Clock::now() < until && !g_stop_signal) {
+    while (Clock::now() < until && g_stop_signal.load() == 0) {
       events.clear();
       presenter->poll(events);
       if (std::any_of(events.begin(), events.end(), [](const InputEvent& e) {
