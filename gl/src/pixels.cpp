@@ -95,7 +95,7 @@ std::optional<std::vector<uint32_t>> unpack_rgba(GLenum format, GLenum type, int
     default: return unpack_rgba_any(format, type, width, height, store, data, transfer);
   }
   std::vector<uint32_t> out(size_t(width) * size_t(height), 0xff000000u);
-  if (!data) return out;
+  if (!data || out.empty()) return out;  // (zero width or height: out.data() may be null)
   // GL 1.5 section 3.6.4: rows of GL_UNPACK_ROW_LENGTH pixels (or width), padded to the
   // alignment unless a component is as large; skipped rows and pixels first.
   const size_t align = size_t(std::max(store.alignment, 1));
