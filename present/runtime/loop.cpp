@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -29,8 +30,10 @@ std::atomic<int> g_stop_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void on_stop_signal(int sig) {
+  const int saved_errno = errno;  // the interrupted code's
   g_stop_signal.store(sig);
   std::signal(sig, SIG_DFL);  // a second one ends the program at once
+  errno = saved_errno;
 }
 
 // The whole file or none: PNGs are written next to their name and renamed.

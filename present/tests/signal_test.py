@@ -3,10 +3,14 @@
 folder; once a few are written it gets the signal, and must exit within 2 s with the
 shell's status for that signal (128 + N), print its statistics, and leave only whole
 PNGs (every chunk's CRC right, the image data the size the header says) and no
-half-written ".part" file.
+half-written ".part" file. The kernel may run the handler on any of the program's
+threads: one run sends the signal to a thread other than the main one (tgkill), where
+stop 29's volatile flag was a data race (ThreadSanitizer).
 
     signal_test.py VELOCITY WORKDIR
 """
+import ctypes
+import errno
 import glob
 import os
 import shutil
@@ -40,7 +44,26 @@ def check_png(path):
     assert len(zlib.decompress(idat)) == size, f"{path}: image data of the wrong size"
 
 
-def run(velocity, work, name, args, sig, env=None):
+def signal_other_thread(proc, sig):
+    """Sends `sig` to one of proc's threads other than its main one that is running at
+    that moment (ThreadSanitizer holds a signal back while its thread sleeps); False if
+    none is (or each ended before it could be sent)."""
+    libc = ctypes.CDLL(None, use_errno=True)
+    for tid in sorted(int(t) for t in os.listdir(f"/proc/{proc.pid}/task")):
+        try:
+            with open(f"/proc/{proc.pid}/task/{tid}/stat") as f:
+                state = f.read().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if tid == proc.pid or state != "R":
+            continue
+        if libc.tgkill(proc.pid, tid, int(sig)) == 0:
+            return True
+        assert ctypes.get_errno() == errno.ESRCH, f"tgkill: {os.strerror(ctypes.get_errno())}"
+    return False
+
+
+def run(velocity, work, name, args, sig, env=None, other_thread=False):
     out = os.path.join(work, name)
     shutil.rmtree(out, ignore_errors=True)
     cmd = [velocity] + args + ["--frames", "1000000", "--size", "160x120", "--mute", "--record", out]
@@ -52,7 +75,12 @@ def run(velocity, work, name, args, sig, env=None):
         assert time.monotonic() < deadline, f"{name}: no frames recorded"
         time.sleep(0.02)
     sent = time.monotonic()
-    proc.send_signal(sig)
+    if other_thread:
+        while not signal_other_thread(proc, sig):
+            assert proc.poll() is None and time.monotonic() < deadline, f"{name}: no thread but the main one"
+            time.sleep(0.001)
+    else:
+        proc.send_signal(sig)
     try:
         output, _ = proc.communicate(timeout=2)
     except subprocess.TimeoutExpired:
@@ -66,7 +94,7 @@ def run(velocity, work, name, args, sig, env=None):
     assert not leftovers, f"{name}: left {leftovers}"
     for p in pngs:
         check_png(p)
-    print(f"{name}: {sig.name} -> exit {proc.returncode} in {took:.2f} s, {len(pngs)} whole PNGs")
+    print(f"{name}: {sig.name}{' to another thread' if other_thread else ''} -> exit {proc.returncode} in {took:.2f} s, {len(pngs)} whole PNGs")
 
 
 def main():
@@ -74,6 +102,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     run(velocity, work, "drive_term", ["drive", "--headless", "--skip-menu"], signal.SIGTERM)
     run(velocity, work, "fly_int", ["fly", "--headless"], signal.SIGINT)
+    run(velocity, work, "fly_int_other_thread", ["fly", "--headless"], signal.SIGINT, other_thread=True)
     # The window code too, on SDL's dummy video driver (SDL must not take the signal).
     run(velocity, work, "view_dummy_term", ["view"], signal.SIGTERM, {"SDL_VIDEODRIVER": "dummy"})
     print("ok")
