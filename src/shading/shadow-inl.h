@@ -59,8 +59,12 @@ HWY_INLINE VF map_visibility(const ShadowMap& m, const V3& p, const V3& n, const
   const VF gx = hn::Sub(hn::IfThenElseZero(inside, x), half), gy = hn::Sub(hn::IfThenElseZero(inside, y), half);
   const VF fx0 = hn::Floor(gx), fy0 = hn::Floor(gy);
   const VF fx = hn::Sub(gx, fx0), fy = hn::Sub(gy, fy0);
-  const VI index = hn::Add(hn::Mul(truncate_in_range(fy0), hn::Set(di, m.stride)),
-                           hn::Add(truncate_in_range(fx0), hn::Set(di, m.stride + 1)));  // shadow_texel(ix, iy)
+  // shadow_texel(ix, iy), in float while that is exact (every index below 2^24: maps up
+  // to 4093 texels a side): one conversion, and no integer multiply's latency.
+  const VI index = shadow_texel_exact_in_float(m.size)
+                       ? truncate_in_range(hn::MulAdd(fy0, hn::Set(d, float(m.stride)), hn::Add(fx0, hn::Set(d, float(m.stride + 1)))))
+                       : hn::Add(hn::Mul(truncate_in_range(fy0), hn::Set(di, m.stride)),
+                                 hn::Add(truncate_in_range(fx0), hn::Set(di, m.stride + 1)));
   // Both pairs of every lane with two gathers (lanes outside the map read texel (-1, -1),
   // and give 1 below). Measured on this project's 2-core AMD EPYC (Zen 3, AVX2), the
   // bench's Phong frame with the map: the two gathers cost the kernel about what the one

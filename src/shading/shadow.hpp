@@ -82,6 +82,10 @@ inline int shadow_stride(int size) { return (size + 2 + 31) / 32 * 32; }
 inline constexpr size_t kShadowLead = 31;
 inline size_t shadow_codes_for(int size) { return kShadowLead + size_t(size + 2) * size_t(shadow_stride(size)); }
 
+// Whether every stored index of a map of `size` texels a side is below 2^24, so that
+// float arithmetic computes it exactly.
+inline bool shadow_texel_exact_in_float(int size) { return shadow_codes_for(size) <= (size_t(1) << 24); }
+
 // Where texel (x, y) of a map is stored (-1 and size: the border).
 inline size_t shadow_texel(const ShadowMap& m, int x, int y) { return size_t(y + 1) * size_t(m.stride) + size_t(x + 1); }
 
