@@ -462,6 +462,34 @@ inline float level_of_detail(const SamplerView& s, float dudx, float dvdx, float
   return rho2 > 1e-30f && rho2 < 1e30f ? 0.5f * fast_log2(rho2) : (rho2 > 0 ? (rho2 < 1 ? -100.0f : 50.0f) : -100.0f);
 }
 
+// fast_log2 and level_of_detail for N blocks at a time (a lane per block), with the
+// same arithmetic: a kernel finds the levels of all its blocks before it shades any
+// (uv_block_lods, shade_mesh-inl.h), so that no block's texture reads wait on a scalar
+// divide and logarithm of its own.
+HWY_INLINE VF fast_log2(VF x) {
+  const DF d;
+  const DI di;
+  const VI bits = hn::BitCast(di, x);
+  const VF e = hn::ConvertTo(d, hn::Sub(hn::And(hn::ShiftRight<23>(bits), hn::Set(di, 0xff)), hn::Set(di, 127)));
+  const VF m = hn::BitCast(d, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000)));  // [1, 2)
+  const VF cubic = hn::MulAdd(hn::MulAdd(hn::MulAdd(hn::Set(d, 0.153914771f), m, hn::Set(d, -1.02950006f)), m, hn::Set(d, 3.01074372f)),
+                              m, hn::Set(d, -2.13515843f));
+  return hn::Add(e, cubic);
+}
+HWY_INLINE VF level_of_detail(const SamplerView& s, VF dudx, VF dvdx, VF dudy, VF dvdy) {
+  const DF d;
+  const VF w = hn::Set(d, float(s.levels[0].width)), h = hn::Set(d, float(s.levels[0].height));
+  auto rho2_of = [&](VF du, VF dv) {
+    const VF a = hn::Mul(du, w), b = hn::Mul(dv, h);
+    return hn::MulAdd(b, b, hn::Mul(a, a));
+  };
+  const VF rho2 = hn::Max(rho2_of(dudx, dvdx), rho2_of(dudy, dvdy));
+  const MF normal = hn::And(hn::Gt(rho2, hn::Set(d, 1e-30f)), hn::Lt(rho2, hn::Set(d, 1e30f)));
+  // Out of that range, as the scalar form: huge (or infinite) 50, else (tiny, zero, NaN) -100.
+  const VF edge = hn::IfThenElse(hn::Ge(rho2, hn::Set(d, 1.0f)), hn::Set(d, 50.0f), hn::Set(d, -100.0f));
+  return hn::IfThenElse(normal, hn::Mul(hn::Set(d, 0.5f), fast_log2(rho2)), edge);
+}
+
 // A 3-D texture's level of detail: rho from the derivatives of (u, v, w) (GL 1.5,
 // equation 3.17, the larger of the two screen axes).
 inline float level_of_detail3(const SamplerView& s, float dudx, float dvdx, float dwdx, float dudy, float dvdy,

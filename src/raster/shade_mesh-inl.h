@@ -1,7 +1,9 @@
 // The mesh shaders: what a kernel computes for a vector of pixels of a 4x4 block, from
-// the record's interpolation planes. Each has begin_block(fx, fy) at a block's first
-// pixel (offsets from the record's anchor pixel) and shade(v) for vector v of the
-// block, returning packed RGBA8. Chosen per draw, as template arguments of the kernel.
+// the record's interpolation planes. Each has begin_block(fx, fy, b) at block b of the
+// kernel's list, (fx, fy) its first pixel's offsets from the record's anchor pixel, and
+// shade(v) for vector v of the block, returning packed RGBA8; a textured one also
+// plan_levels, called with the whole list before the first block. Chosen per draw, as
+// template arguments of the kernel.
 #if defined(VELOCITY_RASTER_SHADE_MESH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef VELOCITY_RASTER_SHADE_MESH_INL_H_
 #undef VELOCITY_RASTER_SHADE_MESH_INL_H_
@@ -9,6 +11,9 @@
 #define VELOCITY_RASTER_SHADE_MESH_INL_H_
 #endif
 
+#include <algorithm>
+
+#include "raster/coverage-inl.h"
 #include "raster/output-inl.h"
 #include "raster/rasterize.hpp"
 #include "raster/sampler-inl.h"
@@ -63,12 +68,54 @@ struct Perspective {
   }
 };
 
+// The derivatives of varyings iu and iu + 1 (a texture's u and v) at the centres of
+// blocks [0, n) of a kernel's list, kLanes blocks at a time (a lane per block), as
+// Perspective::derivatives computes them for one: each(b, dudx, dvdx, dudy, dvdy) for
+// blocks b to b + kLanes - 1 (past n: copies of the last block). (x0, y0): the tile's first pixel.
+template <int N, class Each>
+HWY_INLINE void uv_derivatives(const Perspective<N>& in, int iu, const RecordHeader& r, int x0, int y0,
+                               const Block* blocks, int n, Each&& each) {
+  const DF d;
+  const Planes<N + 1>& p = in.p;
+  alignas(64) float ox[kLanes], oy[kLanes];
+  const VF centre = hn::Set(d, 1.5f);
+  for (int b = 0; b < n; b += int(kLanes)) {
+    for (size_t k = 0; k < kLanes; ++k) {
+      const uint16_t index = blocks[std::min(b + int(k), n - 1)].index;  // block_origin's offsets
+      ox[k] = float(x0 + (index & 15) * 4 - r.min_x), oy[k] = float(y0 + (index >> 4) * 4 - r.min_y);
+    }
+    const VF fx = hn::Load(d, ox), fy = hn::Load(d, oy);
+    auto at_centre = [&](int i) {
+      const VF base = hn::MulAdd(hn::Set(d, p.dy[i]), fy, hn::MulAdd(hn::Set(d, p.dx[i]), fx, hn::Set(d, p.c[i])));
+      return hn::MulAdd(hn::Set(d, p.dy[i]), centre, hn::MulAdd(hn::Set(d, p.dx[i]), centre, base));
+    };
+    const VF q = at_centre(0);
+    const VF iq = hn::IfThenElseZero(hn::Ne(q, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), q));
+    auto along = [&](int i, VF& ddx, VF& ddy) {
+      const VF value = hn::Mul(at_centre(i + 1), iq);
+      ddx = hn::Mul(hn::NegMulAdd(value, hn::Set(d, p.dx[0]), hn::Set(d, p.dx[i + 1])), iq);
+      ddy = hn::Mul(hn::NegMulAdd(value, hn::Set(d, p.dy[0]), hn::Set(d, p.dy[i + 1])), iq);
+    };
+    VF ux, uy, vx, vy;
+    along(iu, ux, uy);
+    along(iu + 1, vx, vy);
+    each(b, ux, vx, uy, vy);
+  }
+}
+
+// Each block's level of detail for one texture, found for a kernel's whole list of
+// blocks before it shades any (plan_levels): the scalar divide and logarithm of
+// level_of_detail per block held up the block's texture reads, a tenth of the textured
+// PBR kernel's time (docs/performance.md).
+struct BlockLods {
+  alignas(64) float lod[kMaxBlocks];  // uv_derivatives stores whole vectors: kMaxBlocks % kLanes == 0
+};
 
 struct FlatShader {
   static constexpr bool kConstant = true;
   uint32_t color;
   FlatShader(const RecordHeader& r, const DrawState&, const TileInputs&) : color(r.flat_color) {}
-  void begin_block(float, float) {}
+  void begin_block(float, float, int) {}
   HWY_INLINE VU shade(int) const { return hn::Set(DU(), color); }
 };
 
@@ -77,30 +124,30 @@ struct SmoothShader {
   Perspective<kSmoothVaryings> in;
   const OutputTransform& out;
   SmoothShader(const RecordHeader& r, const DrawState&, const TileInputs& f) : out(f.output) { in.load(r); }
-  void begin_block(float fx, float fy) { in.begin(fx, fy); }
+  void begin_block(float fx, float fy, int) { in.begin(fx, fy); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
     return finish(out, in(varying::kColor, v), in(varying::kColor + 1, v), in(varying::kColor + 2, v));
   }
 };
 
-// A texture addressed by two varyings, its level chosen per block.
+// A texture addressed by two varyings, its level chosen per block (the levels of detail
+// of all the kernel's blocks found first, plan).
 template <int N>
 struct UvTexture {
   const SamplerView& tex;
   int iu;
   LevelChoice level{};
   bool one_level = single_level(tex);  // then no derivatives, no log2 per block
-  void begin(const Perspective<N>& in) {
-    if (one_level) {
-      level = {tex.mag, 0, 0, 0};
-      return;
-    }
-    float u, dudx, dudy, v, dvdx, dvdy;
-    in.derivatives(iu, u, dudx, dudy);
-    in.derivatives(iu + 1, v, dvdx, dvdy);
-    level = choose_levels(tex, level_of_detail(tex, dudx, dvdx, dudy, dvdy));
+  BlockLods lods;  // (written by plan before it is read: not initialised)
+  UvTexture(const SamplerView& t, int first_varying) : tex(t), iu(first_varying) {}
+  void plan(const Perspective<N>& in, const RecordHeader& r, const Block* blocks, int n, int x0, int y0) {
+    if (one_level) return;
+    uv_derivatives(in, iu, r, x0, y0, blocks, n, [&](int b, VF ux, VF vx, VF uy, VF vy) {
+      hn::Store(level_of_detail(tex, ux, vx, uy, vy), DF(), lods.lod + b);
+    });
   }
+  void begin(int b) { level = one_level ? LevelChoice{tex.mag, 0, 0, 0} : choose_levels(tex, lods.lod[b]); }
   HWY_INLINE Rgba operator()(const Perspective<N>& in, int v) const {
     return sample<false>(tex, level, in(iu, v), in(iu + 1, v));
   }
@@ -119,7 +166,8 @@ struct FlatTexShader {
     r = float(rec.flat_color & 0xff) / 255.0f, g = float((rec.flat_color >> 8) & 0xff) / 255.0f;
     b = float((rec.flat_color >> 16) & 0xff) / 255.0f;
   }
-  void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
+  void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) { tex.plan(in, r, blocks, n, x0, y0); }
+  void begin_block(float fx, float fy, int b) { in.begin(fx, fy), tex.begin(b); }
   HWY_INLINE VU shade(int v) {
     const DF d;
     in.at_vector(v);
@@ -138,7 +186,8 @@ struct SmoothTexShader {
       : tex{d.texture ? d.texture : d.env_map, varying::kSmoothUv}, out(f.output) {
     in.load(rec);
   }
-  void begin_block(float fx, float fy) { in.begin(fx, fy), tex.begin(in); }
+  void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) { tex.plan(in, r, blocks, n, x0, y0); }
+  void begin_block(float fx, float fy, int b) { in.begin(fx, fy), tex.begin(b); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
     Rgba t = tex(in, v);
@@ -173,9 +222,12 @@ struct PhongShader {
     u = 0.5f + 0.5f * n.x, v = 0.5f - 0.5f * n.y;
   }
 
-  void begin_block(float fx, float fy) {
+  void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) {
+    if constexpr (kTex) tex.plan(in, r, blocks, n, x0, y0);
+  }
+  void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
-    if constexpr (kTex) tex.begin(in);
+    if constexpr (kTex) tex.begin(b);
     if constexpr (kEnv) {
       if (single_level(draw.env_map)) {
         env_level = {draw.env_map.mag, 0, 0, 0};

@@ -129,10 +129,12 @@ struct PbrTexture {
   UvAffine uv;
   LevelChoice level{};
   explicit operator bool() const { return view != nullptr; }
-  void begin(float u, float dudx, float dudy, float v, float dvdx, float dvdy) {
-    (void)u, (void)v;
-    level = choose_levels(*view, level_of_detail(*view, uv.a * dudx + uv.b * dvdx, uv.d * dudx + uv.e * dvdx,
-                                                 uv.a * dudy + uv.b * dvdy, uv.d * dudy + uv.e * dvdy));
+  // The level of detail at N blocks from the derivatives of the material's uv set.
+  HWY_INLINE VF level_of_detail(VF dudx, VF dvdx, VF dudy, VF dvdy) const {
+    const DF d;
+    auto map = [&](float a, float b, VF du, VF dv) { return hn::MulAdd(hn::Set(d, b), dv, hn::Mul(hn::Set(d, a), du)); };
+    return raster::HWY_NAMESPACE::level_of_detail(*view, map(uv.a, uv.b, dudx, dvdx), map(uv.d, uv.e, dudx, dvdx),
+                                                  map(uv.a, uv.b, dudy, dvdy), map(uv.d, uv.e, dudy, dvdy));
   }
   template <bool kAlpha>
   HWY_INLINE Rgba operator()(VF u, VF v) const {
@@ -154,6 +156,9 @@ struct PbrShader {
   const float* albedo = shading::ggx_albedo_table();
   PbrTexture base, mr, normal, occlusion, emissive;
   std::optional<LostEnergyRow> lost_row;  // the roughness is the factor's everywhere
+  PbrTexture* textures[5];  // the ones the material has (plan_levels), and their levels of detail
+  int texture_count = 0;
+  BlockLods lods[5];
 
   PbrShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
       : m(d.pbr), lights(*f.lights), ortho(f.orthographic) {
@@ -171,14 +176,20 @@ struct PbrShader {
     }
   }
 
-  void begin_block(float fx, float fy) {
-    in.begin(fx, fy);
-    if (!base && !mr && !normal && !occlusion && !emissive) return;
-    float u, ux, uy, v, vx, vy;
-    in.derivatives(varying::kPbrUv, u, ux, uy);
-    in.derivatives(varying::kPbrUv + 1, v, vx, vy);
+  // The levels of detail of every texture at every block of the kernel's list, before
+  // the first is shaded (BlockLods, shade_mesh-inl.h).
+  void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) {
+    texture_count = 0;
     for (PbrTexture* t : {&base, &mr, &normal, &occlusion, &emissive})
-      if (*t) t->begin(u, ux, uy, v, vx, vy);
+      if (*t) textures[texture_count++] = t;
+    if (!texture_count) return;
+    uv_derivatives(in, varying::kPbrUv, r, x0, y0, blocks, n, [&](int b, VF ux, VF vx, VF uy, VF vy) {
+      for (int k = 0; k < texture_count; ++k) hn::Store(textures[k]->level_of_detail(ux, vx, uy, vy), DF(), lods[k].lod + b);
+    });
+  }
+  void begin_block(float fx, float fy, int b) {
+    in.begin(fx, fy);
+    for (int k = 0; k < texture_count; ++k) textures[k]->level = choose_levels(*textures[k]->view, lods[k].lod[b]);
   }
 
   HWY_INLINE V3 unit(V3 a) const {
@@ -327,12 +338,13 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
   const OutputTransform& output = t.frame.output;
+  shader.plan_levels(r, blocks, n, t.x0, t.y0);
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-    shader.begin_block(fx, fy);
+    shader.begin_block(fx, fy, b);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
       if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;

@@ -54,12 +54,13 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
   const bool depth_test = t.frame.depth_test;
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
+  if constexpr (requires { shader.plan_levels(r, blocks, n, t.x0, t.y0); }) shader.plan_levels(r, blocks, n, t.x0, t.y0);
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
     const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-    shader.begin_block(fx, fy);
+    shader.begin_block(fx, fy, b);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
       if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;
