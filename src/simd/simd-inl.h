@@ -108,15 +108,19 @@ HWY_INLINE VF saturate(VF x) {
 
 // Float to int32 by truncation, for lanes known to be finite and within int32's range
 // (clamped colours, texel indices, depth codes). Highway's ConvertTo also mends lanes out
-// of range (x86's conversion gives INT_MIN for them): on AVX2 and SSE4 four more
-// instructions a vector, a third of packing a colour. Here the conversion alone.
+// of range (x86's conversion gives INT_MIN for them): four more instructions a vector on
+// every x86 target (AVX-512's too: and-not, shift, shift, ternary logic), a third of
+// packing a colour. Here the conversion alone.
 HWY_INLINE VI truncate_in_range(VF v) {
-#if HWY_TARGET == HWY_AVX2
+#if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
+  static_assert(kLanes == 16, "a whole 512-bit vector");
+  return VI{_mm512_cvttps_epi32(v.raw)};
+#elif HWY_TARGET == HWY_AVX2
   return VI{_mm256_cvttps_epi32(v.raw)};
 #elif HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3
   return VI{_mm_cvttps_epi32(v.raw)};
 #else
-  return hn::ConvertTo(DI(), v);  // AVX-512 mends with a mask; the plain C++ fallback clamps
+  return hn::ConvertTo(DI(), v);  // the plain C++ fallback clamps
 #endif
 }
 
