@@ -71,7 +71,7 @@ HWY_INLINE VF ggx_albedo(const float* table, VF roughness, VF nv) {
     const VF x = hn::Min(hn::Max(hn::MulSub(v, hn::Set(d, float(n)), hn::Set(d, 0.5f)), hn::Zero(d)), hn::Set(d, n - 1.0f));
     const VF lo = hn::Min(hn::Floor(x), hn::Set(d, n - 2.0f));
     f = hn::Sub(x, lo);
-    i0 = hn::Min(hn::Max(hn::ConvertTo(di, lo), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
+    i0 = hn::Min(hn::Max(truncate_in_range(lo), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
   };
   VI i, j;
   VF fx, fy;
@@ -117,7 +117,7 @@ struct LostEnergyRow {
     const DI di;
     const VF x = hn::Min(hn::Max(hn::MulSub(nv, hn::Set(d, float(n)), hn::Set(d, 0.5f)), hn::Zero(d)), hn::Set(d, n - 1.0f));
     const VF lo_x = hn::Min(hn::Floor(x), hn::Set(d, n - 2.0f));
-    const VI j = hn::Min(hn::Max(hn::ConvertTo(di, lo_x), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
+    const VI j = hn::Min(hn::Max(truncate_in_range(lo_x), hn::Zero(di)), hn::Set(di, n - 2));  // NaN-proof index
     const VF a = at(j), b = at(hn::Add(j, hn::Set(di, 1)));
     return hn::MulAdd(hn::Sub(b, a), hn::Sub(x, lo_x), a);
   }
