@@ -464,8 +464,8 @@ inline float level_of_detail(const SamplerView& s, float dudx, float dvdx, float
 
 // fast_log2 and level_of_detail for N blocks at a time (a lane per block), with the
 // same arithmetic: a kernel finds the levels of all its blocks before it shades any
-// (uv_block_lods, shade_mesh-inl.h), so that no block's texture reads wait on a scalar
-// divide and logarithm of its own.
+// (uv_derivatives and BlockLods, shade_mesh-inl.h), so that no block's texture reads
+// wait on a scalar divide and logarithm of its own.
 HWY_INLINE VF fast_log2(VF x) {
   const DF d;
   const DI di;
