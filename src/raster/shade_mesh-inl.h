@@ -68,27 +68,41 @@ struct Perspective {
   }
 };
 
+// Blocks [0, n) of a kernel's list, kLanes at a time (a lane per block): each(b, fx, fy)
+// for blocks b to b + kLanes - 1 (past n: copies of the last block), (fx, fy) their first
+// pixels' offsets from the record's anchor (block_origin's). (x0, y0): the tile's first pixel.
+template <class Each>
+HWY_INLINE void for_block_vectors(const RecordHeader& r, int x0, int y0, const Block* blocks, int n, Each&& each) {
+  const DF d;
+  alignas(64) float ox[kLanes], oy[kLanes];
+  for (int b = 0; b < n; b += int(kLanes)) {
+    for (size_t k = 0; k < kLanes; ++k) {
+      const uint16_t index = blocks[std::min(b + int(k), n - 1)].index;
+      ox[k] = float(x0 + (index & 15) * 4 - r.min_x), oy[k] = float(y0 + (index >> 4) * 4 - r.min_y);
+    }
+    each(b, hn::Load(d, ox), hn::Load(d, oy));
+  }
+}
+
+// Plane i of `p` at offset (x, y) from the first pixels (fx, fy) of N blocks: Planes::begin
+// then Planes::value, a lane per block.
+template <int M>
+HWY_INLINE VF plane_at(const Planes<M>& p, int i, VF fx, VF fy, float x, float y) {
+  const DF d;
+  const VF base = hn::MulAdd(hn::Set(d, p.dy[i]), fy, hn::MulAdd(hn::Set(d, p.dx[i]), fx, hn::Set(d, p.c[i])));
+  return hn::MulAdd(hn::Set(d, p.dy[i]), hn::Set(d, y), hn::MulAdd(hn::Set(d, p.dx[i]), hn::Set(d, x), base));
+}
+
 // The derivatives of varyings iu and iu + 1 (a texture's u and v) at the centres of
-// blocks [0, n) of a kernel's list, kLanes blocks at a time (a lane per block), as
-// Perspective::derivatives computes them for one: each(b, dudx, dvdx, dudy, dvdy) for
-// blocks b to b + kLanes - 1 (past n: copies of the last block). (x0, y0): the tile's first pixel.
+// blocks [0, n) of a kernel's list, kLanes blocks at a time, as Perspective::derivatives
+// computes them for one: each(b, dudx, dvdx, dudy, dvdy) (for_block_vectors' blocks).
 template <int N, class Each>
 HWY_INLINE void uv_derivatives(const Perspective<N>& in, int iu, const RecordHeader& r, int x0, int y0,
                                const Block* blocks, int n, Each&& each) {
   const DF d;
   const Planes<N + 1>& p = in.p;
-  alignas(64) float ox[kLanes], oy[kLanes];
-  const VF centre = hn::Set(d, 1.5f);
-  for (int b = 0; b < n; b += int(kLanes)) {
-    for (size_t k = 0; k < kLanes; ++k) {
-      const uint16_t index = blocks[std::min(b + int(k), n - 1)].index;  // block_origin's offsets
-      ox[k] = float(x0 + (index & 15) * 4 - r.min_x), oy[k] = float(y0 + (index >> 4) * 4 - r.min_y);
-    }
-    const VF fx = hn::Load(d, ox), fy = hn::Load(d, oy);
-    auto at_centre = [&](int i) {
-      const VF base = hn::MulAdd(hn::Set(d, p.dy[i]), fy, hn::MulAdd(hn::Set(d, p.dx[i]), fx, hn::Set(d, p.c[i])));
-      return hn::MulAdd(hn::Set(d, p.dy[i]), centre, hn::MulAdd(hn::Set(d, p.dx[i]), centre, base));
-    };
+  for_block_vectors(r, x0, y0, blocks, n, [&](int b, VF fx, VF fy) {
+    auto at_centre = [&](int i) { return plane_at(p, i, fx, fy, 1.5f, 1.5f); };
     const VF q = at_centre(0);
     const VF iq = hn::IfThenElseZero(hn::Ne(q, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), q));
     auto along = [&](int i, VF& ddx, VF& ddy) {
@@ -100,7 +114,7 @@ HWY_INLINE void uv_derivatives(const Perspective<N>& in, int iu, const RecordHea
     along(iu, ux, uy);
     along(iu + 1, vx, vy);
     each(b, ux, vx, uy, vy);
-  }
+  });
 }
 
 // Each block's level of detail for one texture, found for a kernel's whole list of
@@ -208,6 +222,7 @@ struct PhongShader {
   const shading::EyeLights& lights;
   UvTexture<N> tex;
   LevelChoice env_level{};
+  BlockLods env_lods;  // (written by plan_levels before it is read: not initialised)
   const OutputTransform& out;
 
   PhongShader(const RecordHeader& r, const DrawState& d, const TileInputs& f)
@@ -215,29 +230,38 @@ struct PhongShader {
     in.load(r);
   }
 
-  // The environment map's uv at an offset from the block's first pixel (scalar).
-  void env_uv(float x, float y, float& u, float& v) const {
-    constexpr int n0 = varying::kNormal + 1;  // planes: 1/w first
-    Vec3 n = normalize({in.p.value(n0, x, y), in.p.value(n0 + 1, x, y), in.p.value(n0 + 2, x, y)});
-    u = 0.5f + 0.5f * n.x, v = 0.5f - 0.5f * n.y;
+  // The environment map's uv at offset (x, y) from the first pixels (fx, fy) of N blocks:
+  // the normal there (its planes: normal / w, 1/w first), normalised as
+  // velocity::normalize does (zero stays zero).
+  HWY_INLINE void env_uv(VF fx, VF fy, float x, float y, VF& u, VF& v) const {
+    const DF d;
+    constexpr int n0 = varying::kNormal + 1;
+    const V3 n{plane_at(in.p, n0, fx, fy, x, y), plane_at(in.p, n0 + 1, fx, fy, x, y), plane_at(in.p, n0 + 2, fx, fy, x, y)};
+    const VF len = hn::Sqrt(dot(n, n));
+    const MF some = hn::Gt(len, hn::Zero(d));
+    const VF half = hn::Set(d, 0.5f);
+    u = hn::MulAdd(half, hn::IfThenElseZero(some, hn::Div(n.x, len)), half);
+    v = hn::NegMulAdd(half, hn::IfThenElseZero(some, hn::Div(n.y, len)), half);
   }
 
   void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) {
     if constexpr (kTex) tex.plan(in, r, blocks, n, x0, y0);
+    if constexpr (kEnv) {
+      if (single_level(draw.env_map)) return;
+      // Finite differences across each block's centre, as a GPU's pixel quad would.
+      for_block_vectors(r, x0, y0, blocks, n, [&](int b, VF fx, VF fy) {
+        VF u, v, ux, vx, uy, vy;
+        env_uv(fx, fy, 1.5f, 1.5f, u, v), env_uv(fx, fy, 2.5f, 1.5f, ux, vx), env_uv(fx, fy, 1.5f, 2.5f, uy, vy);
+        const VF lod = level_of_detail(draw.env_map, hn::Sub(ux, u), hn::Sub(vx, v), hn::Sub(uy, u), hn::Sub(vy, v));
+        hn::Store(lod, DF(), env_lods.lod + b);
+      });
+    }
   }
   void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
     if constexpr (kTex) tex.begin(b);
-    if constexpr (kEnv) {
-      if (single_level(draw.env_map)) {
-        env_level = {draw.env_map.mag, 0, 0, 0};
-        return;
-      }
-      // Finite differences across the block's centre, as a GPU's pixel quad would.
-      float u, v, ux, vx, uy, vy;
-      env_uv(1.5f, 1.5f, u, v), env_uv(2.5f, 1.5f, ux, vx), env_uv(1.5f, 2.5f, uy, vy);
-      env_level = choose_levels(draw.env_map, level_of_detail(draw.env_map, ux - u, vx - v, uy - u, vy - v));
-    }
+    if constexpr (kEnv)
+      env_level = single_level(draw.env_map) ? LevelChoice{draw.env_map.mag, 0, 0, 0} : choose_levels(draw.env_map, env_lods.lod[b]);
   }
 
   // `live`: the lanes the kernel writes (the others skip their shadow lookups).
