@@ -88,6 +88,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
   // each of the usual states (kDepth: CompareFunc::Less or LessEqual): a depth test with
   // that function and no Extras. Those are then known where the loop is compiled, not
   // asked of every vector (a quarter of pGL's mesh frames is this loop).
+  shader.plan_levels(r, blocks, n, t.x0, t.y0);  // the textures' levels of detail, every block's
   auto run = [&](auto depth_tag) {
     constexpr int kDepth = decltype(depth_tag)::value;
     constexpr bool kPlain = kDepth != 0;
@@ -109,7 +110,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       float fx, fy;
       block_origin(r, t, blk.index, fx, fy);
       const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-      shader.begin_block(fx, fy);
+      shader.begin_block(fx, fy, b);
       const size_t at = size_t(blk.index) * 16;
       for (int v = 0; v < kVectorsPerBlock; ++v) {
         if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;

@@ -277,32 +277,54 @@ struct FixedShader {
   Perspective<N> in;
   const DrawState& draw;
   LevelChoice level[kUnits > 0 ? kUnits : 1]{};
+  BlockLods lods[kUnits > 0 ? kUnits : 1];  // the 2-D units' (plan_levels; not initialised)
 
   FixedShader(const RecordHeader& r, const DrawState& d) : draw(d) { in.load(r); }
 
   const SamplerView& view(int unit) const { return unit == 0 ? draw.texture : draw.texture1; }
   const TextureStage& stage(int unit) const { return unit == 0 ? draw.pixel.texture : draw.pixel.texture1; }
 
-  void begin_block(float fx, float fy) {
+  // The 2-D units' levels of detail at every block of the kernel's list, before the
+  // first is shaded (BlockLods, shade_mesh-inl.h): u = s/q, v = t/q, the derivatives of
+  // the quotients at each block's centre, a lane per block.
+  void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) {
+    if constexpr (kUnits > 0) {
+      for_block_vectors(r, x0, y0, blocks, n, [&](int b, VF fx, VF fy) {
+        const DF d;
+        const BlockCentres c(in.p, fx, fy);
+        for (int u = 0; u < kUnits; ++u) {
+          if (volume(u)) continue;
+          VF s, sx, sy, t, tx, ty, q, qx, qy;
+          const int st = tex_at(u);
+          c.derivatives(st, s, sx, sy), c.derivatives(st + 1, t, tx, ty), c.derivatives(st + 2, q, qx, qy);
+          const VF iq = hn::IfThenElseZero(hn::Ne(q, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), q));
+          const VF uu = hn::Mul(s, iq), vv = hn::Mul(t, iq);
+          auto quotient = [&](VF num, VF value, VF dq) { return hn::Mul(hn::NegMulAdd(value, dq, num), iq); };
+          hn::Store(level_of_detail(view(u), quotient(sx, uu, qx), quotient(tx, vv, qx), quotient(sy, uu, qy), quotient(ty, vv, qy)),
+                    d, lods[u].lod + b);
+        }
+      });
+    }
+  }
+
+  void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
     for (int u = 0; u < kUnits; ++u) {
-      // u = s/q, v = t/q (w = r/q): derivatives of the quotients at the block's centre.
-      float s, sx, sy, t, tx, ty, q, qx, qy;
-      const int st = tex_at(u), q_at = st + (volume(u) ? 3 : 2);
-      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(q_at, q, qx, qy);
-      const float iq = q != 0 ? 1.0f / q : 0.0f;
-      const float uu = s * iq, vv = t * iq;
       const SamplerView& tex = view(u);
-      if (volume(u)) {
-        float r, rx, ry;
-        in.derivatives(st + 2, r, rx, ry);
-        const float ww = r * iq;
-        level[u] = choose_levels(tex, level_of_detail3(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (rx - ww * qx) * iq,
-                                                       (sy - uu * qy) * iq, (ty - vv * qy) * iq, (ry - ww * qy) * iq));
-      } else {
-        level[u] = choose_levels(tex, level_of_detail(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (sy - uu * qy) * iq,
-                                                      (ty - vv * qy) * iq));
+      if (!volume(u)) {
+        level[u] = choose_levels(tex, lods[u].lod[b]);
+        continue;
       }
+      // A 3-D texture, here: u = s/q, v = t/q, w = r/q, derivatives of the quotients at
+      // the block's centre.
+      float s, sx, sy, t, tx, ty, q, qx, qy, r, rx, ry;
+      const int st = tex_at(u);
+      in.derivatives(st, s, sx, sy), in.derivatives(st + 1, t, tx, ty), in.derivatives(st + 3, q, qx, qy);
+      in.derivatives(st + 2, r, rx, ry);
+      const float iq = q != 0 ? 1.0f / q : 0.0f;
+      const float uu = s * iq, vv = t * iq, ww = r * iq;
+      level[u] = choose_levels(tex, level_of_detail3(tex, (sx - uu * qx) * iq, (tx - vv * qx) * iq, (rx - ww * qx) * iq,
+                                                     (sy - uu * qy) * iq, (ty - vv * qy) * iq, (ry - ww * qy) * iq));
     }
   }
 

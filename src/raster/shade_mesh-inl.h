@@ -93,26 +93,37 @@ HWY_INLINE VF plane_at(const Planes<M>& p, int i, VF fx, VF fy, float x, float y
   return hn::MulAdd(hn::Set(d, p.dy[i]), hn::Set(d, y), hn::MulAdd(hn::Set(d, p.dx[i]), hn::Set(d, x), base));
 }
 
+// Perspective::derivatives at the centres of N blocks (first pixels fx, fy), a lane per
+// block: varying i's value and screen-space derivatives there.
+template <int M>
+struct BlockCentres {
+  const Planes<M>& p;
+  VF fx, fy, iq;  // iq: 1 / (1/w) at the centres (0 where 1/w is 0)
+  BlockCentres(const Planes<M>& planes, VF x, VF y) : p(planes), fx(x), fy(y) {
+    const DF d;
+    const VF q = plane_at(p, 0, fx, fy, 1.5f, 1.5f);
+    iq = hn::IfThenElseZero(hn::Ne(q, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), q));
+  }
+  HWY_INLINE void derivatives(int i, VF& value, VF& ddx, VF& ddy) const {
+    const DF d;
+    value = hn::Mul(plane_at(p, i + 1, fx, fy, 1.5f, 1.5f), iq);
+    ddx = hn::Mul(hn::NegMulAdd(value, hn::Set(d, p.dx[0]), hn::Set(d, p.dx[i + 1])), iq);
+    ddy = hn::Mul(hn::NegMulAdd(value, hn::Set(d, p.dy[0]), hn::Set(d, p.dy[i + 1])), iq);
+  }
+};
+
 // The derivatives of varyings iu and iu + 1 (a texture's u and v) at the centres of
 // blocks [0, n) of a kernel's list, kLanes blocks at a time, as Perspective::derivatives
 // computes them for one: each(b, dudx, dvdx, dudy, dvdy) (for_block_vectors' blocks).
 template <int N, class Each>
 HWY_INLINE void uv_derivatives(const Perspective<N>& in, int iu, const RecordHeader& r, int x0, int y0,
                                const Block* blocks, int n, Each&& each) {
-  const DF d;
   const Planes<N + 1>& p = in.p;
   for_block_vectors(r, x0, y0, blocks, n, [&](int b, VF fx, VF fy) {
-    auto at_centre = [&](int i) { return plane_at(p, i, fx, fy, 1.5f, 1.5f); };
-    const VF q = at_centre(0);
-    const VF iq = hn::IfThenElseZero(hn::Ne(q, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), q));
-    auto along = [&](int i, VF& ddx, VF& ddy) {
-      const VF value = hn::Mul(at_centre(i + 1), iq);
-      ddx = hn::Mul(hn::NegMulAdd(value, hn::Set(d, p.dx[0]), hn::Set(d, p.dx[i + 1])), iq);
-      ddy = hn::Mul(hn::NegMulAdd(value, hn::Set(d, p.dy[0]), hn::Set(d, p.dy[i + 1])), iq);
-    };
-    VF ux, uy, vx, vy;
-    along(iu, ux, uy);
-    along(iu + 1, vx, vy);
+    const BlockCentres c(p, fx, fy);
+    VF u, ux, uy, v, vx, vy;
+    c.derivatives(iu, u, ux, uy);
+    c.derivatives(iu + 1, v, vx, vy);
     each(b, ux, vx, uy, vy);
   });
 }
