@@ -38,6 +38,13 @@ struct Block {
 };
 inline constexpr int kMaxBlocks = kBlocksPerTileSide * kBlocksPerTileSide;  // 256
 
+// The pixel offsets of block `index` of the tile whose first pixel is (x0, y0) from the
+// record's anchor (its box's first pixel).
+HWY_INLINE void block_origin(const RecordHeader& r, int x0, int y0, uint16_t index, float& fx, float& fy) {
+  fx = float(x0 + (index & 15) * 4 - r.min_x);
+  fy = float(y0 + (index >> 4) * 4 - r.min_y);
+}
+
 // The pixels of the 4x4 block at (bx, by) (tile pixels) inside the inclusive box.
 HWY_INLINE uint32_t box_mask(int bx, int by, int x0, int y0, int x1, int y1) {
   int c0 = std::max(x0 - bx, 0), c1 = std::min(x1 - bx, 3);

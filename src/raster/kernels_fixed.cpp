@@ -84,11 +84,11 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
   };
   const Extras extras{p.polygon_stipple, p.alpha_test, stencil, p.samples_passed != nullptr, p.blend && !p.logic_op,
                       p.logic_op, keep, t.ids};
+  shader.plan_levels(r, blocks, n, t.x0, t.y0);  // the textures' levels of detail, every block's
   // The loop, compiled for any state (kDepth 0) and, for an untextured draw, once more for
   // each of the usual states (kDepth: CompareFunc::Less or LessEqual): a depth test with
   // that function and no Extras. Those are then known where the loop is compiled, not
   // asked of every vector (a quarter of pGL's mesh frames is this loop).
-  shader.plan_levels(r, blocks, n, t.x0, t.y0);  // the textures' levels of detail, every block's
   auto run = [&](auto depth_tag) {
     constexpr int kDepth = decltype(depth_tag)::value;
     constexpr bool kPlain = kDepth != 0;

@@ -76,10 +76,7 @@ HWY_INLINE void for_block_vectors(const RecordHeader& r, int x0, int y0, const B
   const DF d;
   alignas(64) float ox[kLanes], oy[kLanes];
   for (int b = 0; b < n; b += int(kLanes)) {
-    for (size_t k = 0; k < kLanes; ++k) {
-      const uint16_t index = blocks[std::min(b + int(k), n - 1)].index;
-      ox[k] = float(x0 + (index & 15) * 4 - r.min_x), oy[k] = float(y0 + (index >> 4) * 4 - r.min_y);
-    }
+    for (size_t k = 0; k < kLanes; ++k) block_origin(r, x0, y0, blocks[std::min(b + int(k), n - 1)].index, ox[k], oy[k]);
     each(b, hn::Load(d, ox), hn::Load(d, oy));
   }
 }

@@ -156,7 +156,7 @@ struct PbrShader {
   const float* albedo = shading::ggx_albedo_table();
   PbrTexture base, mr, normal, occlusion, emissive;
   std::optional<LostEnergyRow> lost_row;  // the roughness is the factor's everywhere
-  PbrTexture* textures[5];  // the ones the material has (plan_levels), and their levels of detail
+  PbrTexture* textures[5];  // the ones the material has, and their levels of detail (plan_levels)
   int texture_count = 0;
   BlockLods lods[5];
 
@@ -174,14 +174,14 @@ struct PbrShader {
       use(emissive, m.emissive_map, m.emissive_uv);
       if (!mr) lost_row.emplace(m.lost_energy);
     }
+    for (PbrTexture* t : {&base, &mr, &normal, &occlusion, &emissive})
+      if (*t) textures[texture_count++] = t;
   }
+  PbrShader(const PbrShader&) = delete;  // `textures` points into this one
 
   // The levels of detail of every texture at every block of the kernel's list, before
   // the first is shaded (BlockLods, shade_mesh-inl.h).
   void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) {
-    texture_count = 0;
-    for (PbrTexture* t : {&base, &mr, &normal, &occlusion, &emissive})
-      if (*t) textures[texture_count++] = t;
     if (!texture_count) return;
     uv_derivatives(in, varying::kPbrUv, r, x0, y0, blocks, n, [&](int b, VF ux, VF vx, VF uy, VF vy) {
       for (int k = 0; k < texture_count; ++k) hn::Store(textures[k]->level_of_detail(ux, vx, uy, vy), DF(), lods[k].lod + b);

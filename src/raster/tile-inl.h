@@ -31,8 +31,7 @@ struct TileTarget {
 
 // The pixel offsets of a block from the record's anchor (its box's first pixel).
 HWY_INLINE void block_origin(const RecordHeader& r, const TileTarget& t, uint16_t index, float& fx, float& fy) {
-  fx = float(t.x0 + (index & 15) * 4 - r.min_x);
-  fy = float(t.y0 + (index >> 4) * 4 - r.min_y);
+  block_origin(r, t.x0, t.y0, index, fx, fy);
 }
 
 using KernelFn = void (*)(const RecordHeader&, const Block*, int, const TileTarget&);
