@@ -98,37 +98,49 @@ HWY_INLINE bool covered_by_rows(const TriangleEdges& e) {
   return rows;
 }
 
-// Its 4x4 blocks test their pixels directly, row by row of the box, three vector adds
-// from one block to the next. The 16x16 and 4x4 classification below pays off on
+// Its 4x4 blocks test their pixels directly, row by row of the box, from one block to
+// the next by three scalar adds. The 16x16 and 4x4 classification below pays off on
 // larger triangles only: on the dozen pixels of a dense mesh's it was most of the
 // coverage's time, and up to 128 pixels a side rows are still faster (velocity bench
 // sphere:64 gouraud, triangles of about 35 pixels a side, and a 2048² shadow map's depth
 // pass: docs/performance.md, stop 29). The same test, the same pixels; `step` is
 // triangle_blocks' per-edge a * i + b * j of a block's pixels.
-template <class Emit>
+template <bool kRuns, class Emit>
 HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPerBlock], int tx, int ty,
                           const TileBox& box, Emit& emit) {
   const DI di;
   const int bx0 = box.x0 & ~3, by0 = box.y0 & ~3;
   const int64_t px = int64_t(tx + bx0) * kSubpixelOne + kSubpixelHalf;
   const int64_t py = int64_t(ty + by0) * kSubpixelOne + kSubpixelHalf;
-  // Per edge, floor(E / 256) at the first pixel centre of the row's first block, and its
-  // steps to the next block across and down.
-  VI row[3], across[3], down[3];
+  // Per edge, floor(E / 256) at the first pixel centre of the row's first block, and the
+  // most it gains within a block (so that q + most < 0: the whole block is outside).
+  int32_t row[3], most[3];
   for (int k = 0; k < 3; ++k) {
-    row[k] = hn::Set(di, int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits));
-    across[k] = hn::Set(di, 4 * e.a[k]), down[k] = hn::Set(di, 4 * e.b[k]);
+    row[k] = int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits);
+    most[k] = std::max(0, 3 * e.a[k]) + std::max(0, 3 * e.b[k]);
   }
   for (int by = by0; by <= box.y1; by += 4) {
-    VI q[3] = {row[0], row[1], row[2]};
-    for (int bx = bx0; bx <= box.x1; bx += 4) {
+    int32_t q[3] = {row[0], row[1], row[2]};
+    auto outside_an_edge = [&] { return ((q[0] + most[0]) | (q[1] + most[1]) | (q[2] + most[2])) < 0; };
+    auto next = [&] {
+      for (int k = 0; k < 3; ++k) q[k] += 4 * e.a[k];
+    };
+    // kRuns: the blocks of a row that no edge excludes whole are one run (each edge
+    // excludes those on one side of a column): skip to it, stop after it, so that only
+    // its blocks test their pixels (a triangle covers about half of its box).
+    int bx = bx0;
+    if constexpr (kRuns)
+      for (; bx <= box.x1 && outside_an_edge(); bx += 4) next();
+    for (; bx <= box.x1; bx += 4) {
+      if (kRuns && outside_an_edge()) break;
+      const VI qv[3] = {hn::Set(di, q[0]), hn::Set(di, q[1]), hn::Set(di, q[2])};
       uint32_t outside = 0;
-      for (int v = 0; v < kVectorsPerBlock; ++v) outside |= negative_bits(q, step, v);
+      for (int v = 0; v < kVectorsPerBlock; ++v) outside |= negative_bits(qv, step, v);
       const uint32_t mask = ~outside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
       emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
-      for (int k = 0; k < 3; ++k) q[k] = hn::Add(q[k], across[k]);
+      next();
     }
-    for (int k = 0; k < 3; ++k) row[k] = hn::Add(row[k], down[k]);
+    for (int k = 0; k < 3; ++k) row[k] += 4 * e.b[k];
   }
 }
 
@@ -136,8 +148,8 @@ HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPe
 // block whose pixels were tested goes to emit(index, mask) as it is found, mask 0 when
 // none is covered: whether a small triangle covers a block is a coin toss to the branch
 // predictor, and triangle_blocks lists them without a branch (a depth-only draw writes
-// their depth at once, tile-inl.h).
-template <class Emit>
+// their depth at once, tile-inl.h). kRuns: row_cover's, for a triangle below 128 pixels.
+template <bool kRuns, class Emit>
 HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const TileBox& box, Emit& emit) {
   const TriangleEdges& e = shape<TriangleEdges>(r);
   const DI di;
@@ -147,7 +159,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
     for (int v = 0; v < kVectorsPerBlock; ++v)
       step[k][v] = hn::Add(hn::Mul(hn::Set(di, e.a[k]), hn::Load(di, kBlockXi + v * kLanes)),
                            hn::Mul(hn::Set(di, e.b[k]), hn::Load(di, kBlockYi + v * kLanes)));
-  if (covered_by_rows(e)) return row_cover(e, step, tx, ty, box, emit);
+  if (covered_by_rows(e)) return row_cover<kRuns>(e, step, tx, ty, box, emit);
 
   for (int my = box.y0 >> 4; my <= box.y1 >> 4; ++my)
     for (int mx = box.x0 >> 4; mx <= box.x1 >> 4; ++mx) {
@@ -228,7 +240,7 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
 inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
   int n = 0;
   auto list = [&](uint16_t index, uint32_t mask) { out[n] = {index, uint16_t(mask)}; n += mask != 0; };
-  triangle_cover(r, tx, ty, box, list);
+  triangle_cover<false>(r, tx, ty, box, list);
   return n;
 }
 

@@ -103,7 +103,7 @@ HWY_INLINE void depth_only_triangle(const RecordHeader& r, const TileBox& box, c
       hn::Store(hn::IfThenElse(hn::And(lane_mask(mask, v), hn::Lt(z, old)), z, old), d, zp + v * kLanes);
     }
   };
-  triangle_cover(r, t.x0, t.y0, box, write);
+  triangle_cover<true>(r, t.x0, t.y0, box, write);
 }
 
 }  // namespace HWY_NAMESPACE
