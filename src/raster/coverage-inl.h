@@ -98,8 +98,8 @@ HWY_INLINE bool covered_by_rows(const TriangleEdges& e) {
   return rows;
 }
 
-// Its 4x4 blocks test their pixels directly, row by row of the box, from one block to
-// the next by three scalar adds. The 16x16 and 4x4 classification below pays off on
+// Its 4x4 blocks test their pixels directly, row by row of the box, three vector adds
+// from one block to the next. The 16x16 and 4x4 classification below pays off on
 // larger triangles only: on the dozen pixels of a dense mesh's it was most of the
 // coverage's time, and up to 128 pixels a side rows are still faster (velocity bench
 // sphere:64 gouraud, triangles of about 35 pixels a side, and a 2048² shadow map's depth
@@ -112,12 +112,15 @@ HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPe
   const int bx0 = box.x0 & ~3, by0 = box.y0 & ~3;
   const int64_t px = int64_t(tx + bx0) * kSubpixelOne + kSubpixelHalf;
   const int64_t py = int64_t(ty + by0) * kSubpixelOne + kSubpixelHalf;
-  // Per edge, floor(E / 256) at the first pixel centre of the row's first block, and the
-  // most it gains within a block (so that q + most < 0: the whole block is outside).
+  // Per edge, floor(E / 256) at the first pixel centre of the row's first block, its step
+  // to the next block across, and the most it gains within a block (so that q + most < 0:
+  // the whole block is outside the edge).
   int32_t row[3], most[3];
+  VI across[3];
   for (int k = 0; k < 3; ++k) {
     row[k] = int32_t((int64_t(e.a[k]) * px + int64_t(e.b[k]) * py + e.c[k]) >> kSubpixelBits);
     most[k] = std::max(0, 3 * e.a[k]) + std::max(0, 3 * e.b[k]);
+    across[k] = hn::Set(di, 4 * e.a[k]);
   }
   for (int by = by0; by <= box.y1; by += 4) {
     int32_t q[3] = {row[0], row[1], row[2]};
@@ -131,14 +134,17 @@ HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPe
     int bx = bx0;
     if constexpr (kRuns)
       for (; bx <= box.x1 && outside_an_edge(); bx += 4) next();
+    VI qv[3] = {hn::Set(di, q[0]), hn::Set(di, q[1]), hn::Set(di, q[2])};
     for (; bx <= box.x1; bx += 4) {
-      if (kRuns && outside_an_edge()) break;
-      const VI qv[3] = {hn::Set(di, q[0]), hn::Set(di, q[1]), hn::Set(di, q[2])};
+      if constexpr (kRuns) {
+        if (outside_an_edge()) break;
+        next();
+      }
       uint32_t outside = 0;
       for (int v = 0; v < kVectorsPerBlock; ++v) outside |= negative_bits(qv, step, v);
       const uint32_t mask = ~outside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
       emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
-      next();
+      for (int k = 0; k < 3; ++k) qv[k] = hn::Add(qv[k], across[k]);
     }
     for (int k = 0; k < 3; ++k) row[k] += 4 * e.b[k];
   }
