@@ -148,9 +148,15 @@ bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
 }
 
 void CoverageForTest(const RecordHeader& r, int tx, int ty, int tw, int th,
-                     void (*callback)(void*, int, int, uint32_t), void* user) {
+                     void (*callback)(void*, int, int, uint32_t), void* user, bool depth_only) {
   TileBox box;
   if (!tile_box(r, tx, ty, tw, th, box)) return;
+  if (depth_only && r.kind == RecordKind::Triangle) {
+    auto emit = [&](uint16_t index, uint32_t mask) {
+      if (mask) callback(user, tx + (index & 15) * 4, ty + (index >> 4) * 4, mask);
+    };
+    return triangle_cover<true>(r, tx, ty, box, emit);
+  }
   Block blocks[kMaxBlocks];
   int n = r.kind == RecordKind::Triangle ? triangle_blocks(r, tx, ty, box, blocks)
           : r.kind == RecordKind::Small  ? small_blocks(r, tx, ty, box, blocks)
@@ -224,8 +230,8 @@ float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, 
 bool rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb) { return HWY_DYNAMIC_DISPATCH(RasterizeTile)(in, tile, fb); }
 
 void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int tile_w, int tile_h,
-                       void (*callback)(void*, int, int, uint32_t), void* user) {
-  HWY_DYNAMIC_DISPATCH(CoverageForTest)(record, tile_x0, tile_y0, tile_w, tile_h, callback, user);
+                       void (*callback)(void*, int, int, uint32_t), void* user, bool depth_only) {
+  HWY_DYNAMIC_DISPATCH(CoverageForTest)(record, tile_x0, tile_y0, tile_w, tile_h, callback, user, depth_only);
 }
 
 const char* simd_target() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }

@@ -26,9 +26,11 @@ namespace velocity::raster {
 bool rasterize_tile(const TileInputs& in, int tile, Framebuffer& fb);
 
 // Coverage of one record in one tile, for tests: calls back with every 4x4 block
-// (its top-left pixel) and the 16-bit mask of covered pixels (bit y * 4 + x).
+// (its top-left pixel) and the 16-bit mask of covered pixels (bit y * 4 + x). With
+// `depth_only`, a triangle is walked as a depth-only draw walks it (a shadow map's
+// caster: only each block row's run, coverage-inl.h's row_cover).
 void coverage_for_test(const RecordHeader& record, int tile_x0, int tile_y0, int tile_w, int tile_h,
-                       void (*callback)(void* user, int x, int y, uint32_t mask), void* user);
+                       void (*callback)(void* user, int x, int y, uint32_t mask), void* user, bool depth_only = false);
 
 // For tests: the kernels' sampler at (u, v) with level of detail `lod`, RGBA in [0, 1];
 // and their level of detail for the given screen-space derivatives of (u, v).

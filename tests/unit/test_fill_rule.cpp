@@ -41,9 +41,10 @@ const RecordHeader* setup(TestBins& t, const ScreenVertex& a, const ScreenVertex
 }
 
 // Calls f(x, y) for every pixel the renderer's coverage (hierarchical, SIMD) gives the
-// record, tile by tile as the renderer walks it.
+// record, tile by tile as the renderer walks it; `depth_only`: as a depth-only draw (a
+// shadow map's caster) walks it.
 template <class F>
-void for_each_covered(const RecordHeader& r, F&& f) {
+void for_each_covered(const RecordHeader& r, F&& f, bool depth_only = false) {
   for (int ty = 0; ty < H; ty += velocity::kTileSize)
     for (int tx = 0; tx < W; tx += velocity::kTileSize)
       coverage_for_test(r, tx, ty, std::min(velocity::kTileSize, W - tx), std::min(velocity::kTileSize, H - ty),
@@ -51,15 +52,16 @@ void for_each_covered(const RecordHeader& r, F&& f) {
                           for (int k = 0; k < 16; ++k)
                             if (mask >> k & 1) (*static_cast<F*>(user))(x + (k & 3), y + (k >> 2));
                         },
-                        &f);
+                        &f, depth_only);
 }
 
 // Rasterizes one triangle and adds 1 to every pixel it covers.
-void rasterize_count(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, std::vector<int>& count) {
+void rasterize_count(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, std::vector<int>& count,
+                     bool depth_only = false) {
   TestBins bins;
   const RecordHeader* r = setup(bins, a, b, c);
   if (!r) return;
-  for_each_covered(*r, [&](int x, int y) { count[size_t(y) * W + x]++; });
+  for_each_covered(*r, [&](int x, int y) { count[size_t(y) * W + x]++; }, depth_only);
 }
 
 // The per-pixel definition of coverage, from the snapped vertices alone (not from
@@ -87,10 +89,13 @@ ScreenVertex sv(float x, float y) { return ScreenVertex::make(x, y, 0.5f, 1.0f);
 }  // namespace
 
 // A jittered grid of quads, each split into two triangles (alternating diagonals and
-// windings), reaching past the screen on every side: each pixel exactly once.
+// windings), reaching past the screen on every side: each pixel exactly once, in the
+// colour pass's coverage (trials 0-3) and a depth-only draw's (4-7).
 TEST(FillRule, JitteredGridCoversEveryPixelExactlyOnce) {
   std::mt19937 rng(1234);
-  for (int trial = 0; trial < 4; ++trial) {
+  for (int run = 0; run < 8; ++run) {
+    const int trial = run % 4;
+    const bool depth_only = run >= 4;
     const int cols = 13 + trial * 7, rows = 9 + trial * 5;
     // Up to a quarter cell: every quad stays convex, so its two triangles never overlap.
     std::uniform_real_distribution<float> jitter(-0.25f, 0.25f);
@@ -112,17 +117,17 @@ TEST(FillRule, JitteredGridCoversEveryPixelExactlyOnce) {
         const ScreenVertex& d = grid[size_t(r + 1) * (cols + 1) + c];
         const ScreenVertex& e = grid[size_t(r + 1) * (cols + 1) + c + 1];
         if ((r + c) % 2) {
-          rasterize_count(a, b, e, count);
-          rasterize_count(a, e, d, count);
+          rasterize_count(a, b, e, count, depth_only);
+          rasterize_count(a, e, d, count, depth_only);
         } else {
-          rasterize_count(a, d, b, count);  // the other winding
-          rasterize_count(b, d, e, count);
+          rasterize_count(a, d, b, count, depth_only);  // the other winding
+          rasterize_count(b, d, e, count, depth_only);
         }
       }
     int zero = 0, many = 0;
     for (int n : count) zero += n == 0, many += n > 1;
-    EXPECT_EQ(zero, 0) << "trial " << trial << ": pixels never drawn";
-    EXPECT_EQ(many, 0) << "trial " << trial << ": pixels drawn more than once";
+    EXPECT_EQ(zero, 0) << "run " << run << ": pixels never drawn";
+    EXPECT_EQ(many, 0) << "run " << run << ": pixels drawn more than once";
   }
 }
 
@@ -157,12 +162,17 @@ TEST(FillRule, CoverageMatchesPerPixelEdgeFunctions) {
     const ScreenVertex a = sv(cx + off(rng), cy + off(rng)), b = sv(cx + off(rng), cy + off(rng)), c = sv(cx + off(rng), cy + off(rng));
     const RecordHeader* r = setup(bins, a, b, c);
     if (!r) continue;  // DroppedSmallTrianglesCoverNothing checks these
-    std::vector<uint8_t> hit(size_t(W) * H, 0);
-    for_each_covered(*r, [&](int x, int y) { hit[size_t(y) * W + x]++; });
-    // Every pixel of the image, not only the record's box: the box must not lose any.
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x)
-        ASSERT_EQ(hit[size_t(y) * W + x], covers(a, b, c, x, y) ? 1 : 0) << "triangle " << n << " pixel " << x << "," << y;
+    // The colour pass's coverage, then a depth-only draw's (which skips the blocks an
+    // edge excludes whole in each row).
+    for (bool depth_only : {false, true}) {
+      std::vector<uint8_t> hit(size_t(W) * H, 0);
+      for_each_covered(*r, [&](int x, int y) { hit[size_t(y) * W + x]++; }, depth_only);
+      // Every pixel of the image, not only the record's box: the box must not lose any.
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          ASSERT_EQ(hit[size_t(y) * W + x], covers(a, b, c, x, y) ? 1 : 0)
+              << "triangle " << n << (depth_only ? " (depth only)" : "") << " pixel " << x << "," << y;
+    }
     ++drawn;
   }
   EXPECT_GT(drawn, 4000);
