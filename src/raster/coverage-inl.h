@@ -242,11 +242,13 @@ HWY_INLINE void triangle_cover(const RecordHeader& r, int tx, int ty, const Tile
     }
 }
 
-// A triangle's covered 4x4 blocks, listed in `out`; their number.
-inline HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
+// A triangle's covered 4x4 blocks, listed in `out`; their number. kRuns: walked as a
+// depth-only draw walks it (triangle_cover's; the kernels list blocks without).
+template <bool kRuns = false>
+HWY_NOINLINE int triangle_blocks(const RecordHeader& r, int tx, int ty, const TileBox& box, Block* out) {
   int n = 0;
   auto list = [&](uint16_t index, uint32_t mask) { out[n] = {index, uint16_t(mask)}; n += mask != 0; };
-  triangle_cover<false>(r, tx, ty, box, list);
+  triangle_cover<kRuns>(r, tx, ty, box, list);
   return n;
 }
 

@@ -151,14 +151,9 @@ void CoverageForTest(const RecordHeader& r, int tx, int ty, int tw, int th,
                      void (*callback)(void*, int, int, uint32_t), void* user, bool depth_only) {
   TileBox box;
   if (!tile_box(r, tx, ty, tw, th, box)) return;
-  if (depth_only && r.kind == RecordKind::Triangle) {
-    auto emit = [&](uint16_t index, uint32_t mask) {
-      if (mask) callback(user, tx + (index & 15) * 4, ty + (index >> 4) * 4, mask);
-    };
-    return triangle_cover<true>(r, tx, ty, box, emit);
-  }
   Block blocks[kMaxBlocks];
-  int n = r.kind == RecordKind::Triangle ? triangle_blocks(r, tx, ty, box, blocks)
+  int n = r.kind == RecordKind::Triangle
+              ? (depth_only ? triangle_blocks<true>(r, tx, ty, box, blocks) : triangle_blocks(r, tx, ty, box, blocks))
           : r.kind == RecordKind::Small  ? small_blocks(r, tx, ty, box, blocks)
           : r.kind == RecordKind::Line   ? line_blocks(r, tx, ty, box, blocks)
                                          : rect_blocks(box, blocks);
