@@ -28,20 +28,27 @@ namespace hn = hwy::HWY_NAMESPACE;
 using namespace velocity::simd::HWY_NAMESPACE;
 namespace lit = velocity::shading::HWY_NAMESPACE;
 
-// N planes evaluated at a block: value = base + dx * column + dy * row.
+// N planes evaluated at pixels: value = c + dx x + dy y, (x, y) a pixel's offsets from
+// the record's anchor, a lane each: the pixels of a block's vectors (begin), or any
+// pixels of the record packed into vector 0 (at_pixels, tile-inl.h's shade_packed).
 template <int N>
 struct Planes {
-  float dx[N], dy[N], c[N], base[N];
+  float dx[N], dy[N], c[N];
+  float fx = 0, fy = 0;  // the block's first pixel
+  VF x[kVectorsPerBlock], y[kVectorsPerBlock];
   void load(int i, const Plane& p) { c[i] = p.c, dx[i] = p.dx, dy[i] = p.dy; }
-  void begin(float fx, float fy) {
-    for (int i = 0; i < N; ++i) base[i] = c[i] + dx[i] * fx + dy[i] * fy;
+  void begin(float bx, float by) {
+    const DF d;
+    fx = bx, fy = by;
+    for (int v = 0; v < kVectorsPerBlock; ++v) x[v] = hn::Add(hn::Set(d, bx), block_x(v)), y[v] = hn::Add(hn::Set(d, by), block_y(v));
   }
+  void at_pixels(VF px, VF py) { x[0] = px, y[0] = py; }
   HWY_INLINE VF at(int i, int v) const {
     const DF d;
-    return hn::MulAdd(hn::Set(d, dx[i]), block_x(v), hn::MulAdd(hn::Set(d, dy[i]), block_y(v), hn::Set(d, base[i])));
+    return hn::MulAdd(hn::Set(d, dx[i]), x[v], hn::MulAdd(hn::Set(d, dy[i]), y[v], hn::Set(d, c[i])));
   }
   // Scalar value at an offset from the block's first pixel.
-  float value(int i, float x, float y) const { return base[i] + dx[i] * x + dy[i] * y; }
+  float value(int i, float px, float py) const { return c[i] + dx[i] * (fx + px) + dy[i] * (fy + py); }
 };
 
 // Plane 0 is 1/w, planes 1..N are varying/w: varying = plane / (1/w).
@@ -55,6 +62,7 @@ struct Perspective {
     for (int i = 0; i < N; ++i) p.load(i + 1, v[i]);
   }
   void begin(float fx, float fy) { p.begin(fx, fy); }
+  void at_pixels(VF x, VF y) { p.at_pixels(x, y); }
   HWY_INLINE void at_vector(int v) { w = hn::Div(hn::Set(DF(), 1.0f), p.at(0, v)); }
   HWY_INLINE VF operator()(int i, int v) const { return hn::Mul(p.at(i + 1, v), w); }
   // The derivatives of varying i at the block's centre (1.5, 1.5), for mip-mapping:
@@ -224,6 +232,7 @@ struct SmoothTexShader {
 template <bool kTex, bool kEnv>
 struct PhongShader {
   static constexpr bool kConstant = false;
+  static constexpr bool kPackable = !kTex && !kEnv;  // no level of detail per block (tile-inl.h's shade_packed)
   static constexpr int N = (kTex || kEnv) ? kPhongTexVaryings : kPhongVaryings;
   Perspective<N> in;
   const DrawState& draw;
@@ -265,6 +274,7 @@ struct PhongShader {
       });
     }
   }
+  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
   void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
     if constexpr (kTex) tex.begin(b);

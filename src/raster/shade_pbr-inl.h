@@ -187,6 +187,10 @@ struct PbrShader {
       for (int k = 0; k < texture_count; ++k) hn::Store(textures[k]->level_of_detail(ux, vx, uy, vy), DF(), lods[k].lod + b);
     });
   }
+  // Without textures, nothing is chosen per block: the pixels may be shaded packed
+  // (tile-inl.h's shade_packed).
+  bool packable() const { return texture_count == 0; }
+  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
   void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
     for (int k = 0; k < texture_count; ++k) textures[k]->level = choose_levels(*textures[k]->view, lods[k].lod[b]);
@@ -338,6 +342,12 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
   const OutputTransform& output = t.frame.output;
+  if (kPackPixels && mode == AlphaMode::Opaque && shader.packable()) {
+    return shade_packed(r, blocks, n, t, shader, [&](MF live) {
+      const PbrOut c = shader.shade(0, live);
+      return finish(output, c.r, c.g, c.b);
+    });
+  }
   shader.plan_levels(r, blocks, n, t.x0, t.y0);
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
