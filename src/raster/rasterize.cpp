@@ -3,6 +3,7 @@
 #include "raster/rasterize.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 #include "framebuffer/framebuffer.hpp"
@@ -200,6 +201,13 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace velocity::raster {
+
+namespace {
+std::atomic<bool> g_pixel_packing{true};
+}  // namespace
+
+void set_pixel_packing_for_test(bool on) { g_pixel_packing.store(on, std::memory_order_relaxed); }
+bool pixel_packing() { return g_pixel_packing.load(std::memory_order_relaxed); }
 
 HWY_EXPORT(RasterizeTile);
 HWY_EXPORT(CoverageForTest);

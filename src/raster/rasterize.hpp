@@ -42,6 +42,12 @@ float level_of_detail_for_test(const SamplerView& view, float dudx, float dvdx, 
 // A 3-D texture's sample at (u, v, w) (the view of a Texture::volume texture).
 void sample3_for_test(const SamplerView& view, float u, float v, float w, float lod, float rgba[4]);
 
+// For tests: whether the AVX-512 kernels shade in whole vectors (tile-inl.h's
+// shade_packed; on unless a test turns it off). Off, they shade block by block as on
+// the other instruction sets; a pixel's colour must not depend on which.
+void set_pixel_packing_for_test(bool on);
+bool pixel_packing();
+
 // The instruction set the kernels run with ("AVX3", "AVX2", "SSE4", "EMU128", ...).
 const char* simd_target();
 

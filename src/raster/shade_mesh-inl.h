@@ -2,8 +2,9 @@
 // the record's interpolation planes. Each has begin_block(fx, fy, b) at block b of the
 // kernel's list, (fx, fy) its first pixel's offsets from the record's anchor pixel, and
 // shade(v) for vector v of the block, returning packed RGBA8; a textured one also
-// plan_levels, called with the whole list before the first block. Chosen per draw, as
-// template arguments of the kernel.
+// plan_levels, called with the whole list before the first block. A kPackable one can
+// also shade any 16 pixels of the record (at_pixels, then shade(0): tile-inl.h's
+// shade_packed). Chosen per draw, as template arguments of the kernel.
 #if defined(VELOCITY_RASTER_SHADE_MESH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef VELOCITY_RASTER_SHADE_MESH_INL_H_
 #undef VELOCITY_RASTER_SHADE_MESH_INL_H_
@@ -149,6 +150,7 @@ struct FlatShader {
   HWY_INLINE VU shade(int) const { return hn::Set(DU(), color); }
 };
 
+// (Not packed: tile-inl.h's shade_packed cost a Gouraud frame more than the lanes it filled.)
 struct SmoothShader {
   static constexpr bool kConstant = false;
   Perspective<kSmoothVaryings> in;
@@ -177,9 +179,15 @@ struct UvTexture {
       hn::Store(level_of_detail(tex, ux, vx, uy, vy), DF(), lods.lod + b);
     });
   }
-  void begin(int b) { level = one_level ? LevelChoice{tex.mag, 0, 0, 0} : choose_levels(tex, lods.lod[b]); }
+  VF frac;  // the weight of level.level1, per lane (packed pixels come from several blocks)
+  LevelChoice block_level(int b) const { return one_level ? LevelChoice{tex.mag, 0, 0, 0} : choose_levels(tex, lods.lod[b]); }
+  void begin(int b) {
+    const LevelChoice l = block_level(b);
+    use(l, hn::Set(DF(), l.frac));
+  }
+  void use(const LevelChoice& l, VF f) { level = l, frac = f; }
   HWY_INLINE Rgba operator()(const Perspective<N>& in, int v) const {
-    return sample<false>(tex, level, in(iu, v), in(iu + 1, v));
+    return sample<false>(tex, level, in(iu, v), in(iu + 1, v), frac);
   }
 };
 
@@ -198,6 +206,11 @@ struct FlatTexShader {
   }
   void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) { tex.plan(in, r, blocks, n, x0, y0); }
   void begin_block(float fx, float fy, int b) { in.begin(fx, fy), tex.begin(b); }
+  static constexpr bool kPackable = true;  // tile-inl.h's shade_packed
+  static constexpr int level_count() { return 1; }
+  void block_levels(int b, LevelChoice* out) const { *out = tex.block_level(b); }
+  void use_levels(const LevelChoice* levels, const VF* frac) { tex.use(*levels, *frac); }
+  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
   HWY_INLINE VU shade(int v) {
     const DF d;
     in.at_vector(v);
@@ -218,6 +231,11 @@ struct SmoothTexShader {
   }
   void plan_levels(const RecordHeader& r, const Block* blocks, int n, int x0, int y0) { tex.plan(in, r, blocks, n, x0, y0); }
   void begin_block(float fx, float fy, int b) { in.begin(fx, fy), tex.begin(b); }
+  static constexpr bool kPackable = true;  // tile-inl.h's shade_packed
+  static constexpr int level_count() { return 1; }
+  void block_levels(int b, LevelChoice* out) const { *out = tex.block_level(b); }
+  void use_levels(const LevelChoice* levels, const VF* frac) { tex.use(*levels, *frac); }
+  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
   HWY_INLINE VU shade(int v) {
     in.at_vector(v);
     Rgba t = tex(in, v);
@@ -232,13 +250,14 @@ struct SmoothTexShader {
 template <bool kTex, bool kEnv>
 struct PhongShader {
   static constexpr bool kConstant = false;
-  static constexpr bool kPackable = !kTex && !kEnv;  // no level of detail per block (tile-inl.h's shade_packed)
+  static constexpr bool kPackable = true;  // tile-inl.h's shade_packed
   static constexpr int N = (kTex || kEnv) ? kPhongTexVaryings : kPhongVaryings;
   Perspective<N> in;
   const DrawState& draw;
   const shading::EyeLights& lights;
   UvTexture<N> tex;
   LevelChoice env_level{};
+  VF env_frac;  // the weight of env_level.level1, per lane
   BlockLods env_lods;  // (written by plan_levels before it is read: not initialised)
   const OutputTransform& out;
 
@@ -274,13 +293,26 @@ struct PhongShader {
       });
     }
   }
-  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
+  LevelChoice env_block_level(int b) const {
+    return single_level(draw.env_map) ? LevelChoice{draw.env_map.mag, 0, 0, 0} : choose_levels(draw.env_map, env_lods.lod[b]);
+  }
   void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
     if constexpr (kTex) tex.begin(b);
-    if constexpr (kEnv)
-      env_level = single_level(draw.env_map) ? LevelChoice{draw.env_map.mag, 0, 0, 0} : choose_levels(draw.env_map, env_lods.lod[b]);
+    if constexpr (kEnv) env_level = env_block_level(b), env_frac = hn::Set(DF(), env_level.frac);
   }
+  // Packed pixels (shade_packed): the levels block b chooses, the run's levels and each
+  // lane's weights, and the pixels.
+  static constexpr int level_count() { return int(kTex) + int(kEnv); }
+  void block_levels(int b, LevelChoice* out) const {
+    if constexpr (kTex) *out++ = tex.block_level(b);
+    if constexpr (kEnv) *out = env_block_level(b);
+  }
+  void use_levels(const LevelChoice* levels, const VF* frac) {
+    if constexpr (kTex) tex.use(*levels++, *frac++);
+    if constexpr (kEnv) env_level = *levels, env_frac = *frac;
+  }
+  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
 
   // `live`: the lanes the kernel writes (the others skip their shadow lookups).
   HWY_INLINE VU shade(int v, MF live) {
@@ -298,7 +330,7 @@ struct PhongShader {
     }
     if constexpr (kEnv) {
       const VF half = hn::Set(d, 0.5f);
-      Rgba e = sample<false>(draw.env_map, env_level, hn::MulAdd(half, nx, half), hn::NegMulAdd(half, ny, half));
+      Rgba e = sample<false>(draw.env_map, env_level, hn::MulAdd(half, nx, half), hn::NegMulAdd(half, ny, half), env_frac);
       const VF mix = hn::Set(d, draw.env_mix);
       br = hn::MulAdd(hn::Sub(e.r, br), mix, br), bg = hn::MulAdd(hn::Sub(e.g, bg), mix, bg);
       bb = hn::MulAdd(hn::Sub(e.b, bb), mix, bb);

@@ -128,6 +128,7 @@ struct PbrTexture {
   const SamplerView* view = nullptr;
   UvAffine uv;
   LevelChoice level{};
+  VF frac;  // the weight of level.level1, per lane (packed pixels come from several blocks)
   explicit operator bool() const { return view != nullptr; }
   // The level of detail at N blocks from the derivatives of the material's uv set.
   HWY_INLINE VF level_of_detail(VF dudx, VF dvdx, VF dudy, VF dvdy) const {
@@ -141,7 +142,7 @@ struct PbrTexture {
     const DF d;
     const VF tu = hn::MulAdd(hn::Set(d, uv.a), u, hn::MulAdd(hn::Set(d, uv.b), v, hn::Set(d, uv.c)));
     const VF tv = hn::MulAdd(hn::Set(d, uv.d), u, hn::MulAdd(hn::Set(d, uv.e), v, hn::Set(d, uv.f)));
-    return sample<kAlpha>(*view, level, tu, tv);
+    return sample<kAlpha>(*view, level, tu, tv, frac);
   }
 };
 
@@ -187,14 +188,23 @@ struct PbrShader {
       for (int k = 0; k < texture_count; ++k) hn::Store(textures[k]->level_of_detail(ux, vx, uy, vy), DF(), lods[k].lod + b);
     });
   }
-  // Without textures, nothing is chosen per block: the pixels may be shaded packed
-  // (tile-inl.h's shade_packed).
-  bool packable() const { return texture_count == 0; }
-  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
   void begin_block(float fx, float fy, int b) {
     in.begin(fx, fy);
-    for (int k = 0; k < texture_count; ++k) textures[k]->level = choose_levels(*textures[k]->view, lods[k].lod[b]);
+    for (int k = 0; k < texture_count; ++k) {
+      PbrTexture& t = *textures[k];
+      t.level = choose_levels(*t.view, lods[k].lod[b]), t.frac = hn::Set(DF(), t.level.frac);
+    }
   }
+  // Packed pixels (tile-inl.h's shade_packed): the levels block b chooses, the run's
+  // levels and each lane's weights, and the pixels.
+  int level_count() const { return texture_count; }
+  void block_levels(int b, LevelChoice* out) const {
+    for (int k = 0; k < texture_count; ++k) out[k] = choose_levels(*textures[k]->view, lods[k].lod[b]);
+  }
+  void use_levels(const LevelChoice* levels, const VF* frac) {
+    for (int k = 0; k < texture_count; ++k) textures[k]->level = levels[k], textures[k]->frac = frac[k];
+  }
+  void at_pixels(VF x, VF y) { in.at_pixels(x, y); }
 
   HWY_INLINE V3 unit(V3 a) const {
     const VF il = rsqrt(dot(a, a));
@@ -342,13 +352,13 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
   const OutputTransform& output = t.frame.output;
-  if (kPackPixels && mode == AlphaMode::Opaque && shader.packable()) {
+  shader.plan_levels(r, blocks, n, t.x0, t.y0);
+  if (kPackPixels && mode == AlphaMode::Opaque && pixel_packing()) {
     return shade_packed(r, blocks, n, t, shader, [&](MF live) {
       const PbrOut c = shader.shade(0, live);
       return finish(output, c.r, c.g, c.b);
     });
   }
-  shader.plan_levels(r, blocks, n, t.x0, t.y0);
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
     float fx, fy;

@@ -45,71 +45,98 @@ const KernelFn* fixed_kernels();  // KernelId::Fixed .. Count (exclusive)
 // Shading in whole vectors. A triangle's blocks along its edges leave lanes idle (the
 // bench's sphere:64 at 1920x1080 fills 11.6 of 16 lanes a vector), and a per-pixel
 // shader costs the same per vector however many lanes it writes. On AVX-512 (a block is
-// one vector; compress and expand are instructions there) a kernel whose shader keeps no
-// state per block depth-tests a run of blocks first, packs the pixels that passed 16 to a
-// vector (their offsets from the record's anchor), shades those, and expands the colours
-// back into each block. The last vector's spare lanes repeat its last pixel: every lane a
-// shader sees is a pixel of the triangle. The planes are evaluated at each pixel as in a
-// block (Planes), so a pixel's colour does not depend on how it was packed.
+// one vector; compress and expand are instructions there) the Phong and PBR kernels
+// depth-test a run of blocks first, pack the pixels that passed 16 to a vector (their
+// offsets from the record's anchor), shade those, and expand the colours back into each
+// block. The last vector's spare lanes repeat its last pixel: every lane a shader sees is
+// a pixel of the triangle. A run's blocks choose the same texture levels (a block whose
+// levels differ starts a new run); the weight between two levels travels with each pixel.
+// The planes are evaluated at each pixel as in a block (Planes), so a pixel's colour does
+// not depend on how it was packed.
 #if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
 inline constexpr bool kPackPixels = true;
 #else
 inline constexpr bool kPackPixels = false;
 #endif
 
-// `shade(live)`: the packed pixels' colours (the shader's at_pixels given first).
+// What shade_packed asks of a shader: plan_levels done; level_count() textures whose
+// levels block b chooses (block_levels(b, out)); use_levels(levels, weights) and
+// at_pixels(x, y) before each vector. `shade(live)`: the vector's packed colours.
 template <class Shader, class Shade>
 HWY_INLINE void shade_packed(const RecordHeader& r, const Block* blocks, int n, const TileTarget& t, Shader& shader,
                              Shade&& shade) {
 #if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
   const DF d;
   const DU du;
-  constexpr int kRun = 32;  // blocks packed at a time: the buffers stay in the L1 cache
-  alignas(64) float xs[kRun * 16 + 16], ys[kRun * 16 + 16];
-  alignas(64) uint32_t colors[kRun * 16 + 16];
+  constexpr int kRun = 32;  // blocks at most in a run: the buffers stay in the L1 cache
+  constexpr int kLevels = 5;  // textures at most (a PBR material's)
+  constexpr int kPixels = kRun * 16 + 16;  // and room for a vector's spare lanes
+  alignas(64) float xs[kPixels], ys[kPixels], weights[kLevels][kPixels];
+  alignas(64) uint32_t colors[kPixels];
   uint16_t masks[kRun];
+  LevelChoice run_levels[kLevels], levels[kLevels];
+  const int nl = shader.level_count();
   const bool depth_test = t.frame.depth_test;
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, (*t.frame.draws)[r.draw].object_id);
   const MF all = hn::FirstN(d, kLanes);
-  for (int first = 0; first < n; first += kRun) {
-    const int last = std::min(n, first + kRun);
-    int count = 0;
-    for (int b = first; b < last; ++b) {
-      const Block& blk = blocks[b];
-      float fx, fy;
-      block_origin(r, t, blk.index, fx, fy);
-      MF m = lane_mask(blk.mask, 0);
-      const size_t at = size_t(blk.index) * 16;
-      if (depth_test) {
-        const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-        const VF z = hn::MulAdd(zdx, block_x(0), hn::MulAdd(zdy, block_y(0), z0));
-        m = hn::And(m, hn::Lt(z, hn::Load(d, t.depth + at)));
-        store_masked(z, m, d, t.depth + at);
+  int first = 0, count = 0;  // the run's first block, and its pixels so far
+  // Shades the run's pixels and writes them into blocks first..end-1.
+  auto finish_run = [&](int end) {
+    if (count) {
+      auto pad = [&](float* v) { hn::StoreU(hn::Set(d, v[count - 1]), d, v + count); };
+      pad(xs), pad(ys);
+      for (int k = 0; k < nl; ++k) pad(weights[k]);
+      for (int i = 0; i < count; i += int(kLanes)) {
+        VF w[kLevels];
+        for (int k = 0; k < nl; ++k) w[k] = hn::Load(d, weights[k] + i);
+        shader.use_levels(run_levels, w);
+        shader.at_pixels(hn::Load(d, xs + i), hn::Load(d, ys + i));
+        hn::Store(shade(all), du, colors + i);
       }
-      const uint32_t bits = lane_bits(d, m);
-      masks[b - first] = uint16_t(bits);
-      if (!bits) continue;
-      hn::StoreU(hn::Compress(hn::Add(hn::Set(d, fx), block_x(0)), m), d, xs + count);
-      hn::StoreU(hn::Compress(hn::Add(hn::Set(d, fy), block_y(0)), m), d, ys + count);
-      if (t.ids) store_masked(id, hn::RebindMask(du, m), du, t.ids + at);
-      count += int(hwy::PopCount(bits));
+      int at = 0;
+      for (int b = first; b < end; ++b) {
+        const uint32_t bits = masks[b - first];
+        if (!bits) continue;
+        const VU c{_mm512_maskz_expandloadu_epi32(__mmask16(bits), colors + at)};
+        store_masked(c, hn::RebindMask(du, lane_mask(bits, 0)), du, t.color + size_t(blocks[b].index) * 16);
+        at += int(hwy::PopCount(bits));
+      }
     }
-    if (!count) continue;
-    hn::StoreU(hn::Set(d, xs[count - 1]), d, xs + count), hn::StoreU(hn::Set(d, ys[count - 1]), d, ys + count);
-    for (int i = 0; i < count; i += int(kLanes)) {
-      shader.at_pixels(hn::Load(d, xs + i), hn::Load(d, ys + i));
-      hn::Store(shade(all), du, colors + i);
+    first = end, count = 0;
+  };
+  auto same = [&] {
+    for (int k = 0; k < nl; ++k)
+      if (levels[k].level0 != run_levels[k].level0 || levels[k].level1 != run_levels[k].level1 ||
+          levels[k].filter != run_levels[k].filter)
+        return false;
+    return true;
+  };
+  for (int b = 0; b < n; ++b) {
+    if (nl) shader.block_levels(b, levels);
+    if (b - first == kRun || (nl && b > first && !same())) finish_run(b);
+    if (b == first) std::copy_n(levels, nl, run_levels);
+    const Block& blk = blocks[b];
+    float fx, fy;
+    block_origin(r, t, blk.index, fx, fy);
+    MF m = lane_mask(blk.mask, 0);
+    const size_t at = size_t(blk.index) * 16;
+    if (depth_test) {
+      const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+      const VF z = hn::MulAdd(zdx, block_x(0), hn::MulAdd(zdy, block_y(0), z0));
+      m = hn::And(m, hn::Lt(z, hn::Load(d, t.depth + at)));
+      store_masked(z, m, d, t.depth + at);
     }
-    int k = 0;
-    for (int b = first; b < last; ++b) {
-      const uint32_t bits = masks[b - first];
-      if (!bits) continue;
-      const VU c{_mm512_maskz_expandloadu_epi32(__mmask16(bits), colors + k)};
-      store_masked(c, hn::RebindMask(du, lane_mask(bits, 0)), du, t.color + size_t(blocks[b].index) * 16);
-      k += int(hwy::PopCount(bits));
-    }
+    const uint32_t bits = lane_bits(d, m);
+    masks[b - first] = uint16_t(bits);
+    if (!bits) continue;
+    hn::StoreU(hn::Compress(hn::Add(hn::Set(d, fx), block_x(0)), m), d, xs + count);
+    hn::StoreU(hn::Compress(hn::Add(hn::Set(d, fy), block_y(0)), m), d, ys + count);
+    for (int k = 0; k < nl; ++k) hn::StoreU(hn::Set(d, levels[k].frac), d, weights[k] + count);
+    if (t.ids) store_masked(id, hn::RebindMask(du, m), du, t.ids + at);
+    count += int(hwy::PopCount(bits));
   }
+  finish_run(n);
 #else
   (void)r, (void)blocks, (void)n, (void)t, (void)shader, (void)shade;
 #endif
@@ -123,13 +150,19 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
   const DU du;
   const DrawState& draw = (*t.frame.draws)[r.draw];
   Shader shader(r, draw, t.frame);
+  if constexpr (requires { shader.plan_levels(r, blocks, n, t.x0, t.y0); }) shader.plan_levels(r, blocks, n, t.x0, t.y0);
   if constexpr (kPackPixels && requires { Shader::kPackable; }) {
-    if constexpr (Shader::kPackable) return shade_packed(r, blocks, n, t, shader, [&](MF live) { return shader.shade(0, live); });
+    if constexpr (Shader::kPackable) {
+      if (pixel_packing())
+        return shade_packed(r, blocks, n, t, shader, [&](MF live) {
+          if constexpr (requires { shader.shade(0, live); }) return shader.shade(0, live);
+          else return shader.shade(0);
+        });
+    }
   }
   const bool depth_test = t.frame.depth_test;
   const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
   const VU id = hn::Set(du, draw.object_id);
-  if constexpr (requires { shader.plan_levels(r, blocks, n, t.x0, t.y0); }) shader.plan_levels(r, blocks, n, t.x0, t.y0);
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
     float fx, fy;
