@@ -41,7 +41,10 @@ struct Planes {
   void begin(float bx, float by) {
     const DF d;
     fx = bx, fy = by;
-    for (int v = 0; v < kVectorsPerBlock; ++v) x[v] = hn::Add(hn::Set(d, bx), block_x(v)), y[v] = hn::Add(hn::Set(d, by), block_y(v));
+    for (int v = 0; v < kVectorsPerBlock; ++v) {
+      x[v] = hn::Add(hn::Set(d, bx), block_x(v));
+      y[v] = hn::Add(hn::Set(d, by), block_y(v));
+    }
   }
   void at_pixels(VF px, VF py) { x[0] = px, y[0] = py; }
   HWY_INLINE VF at(int i, int v) const {
@@ -170,6 +173,7 @@ struct UvTexture {
   const SamplerView& tex;
   int iu;
   LevelChoice level{};
+  VF frac;  // the weight of level.level1, per lane (packed pixels come from several blocks)
   bool one_level = single_level(tex);  // then no derivatives, no log2 per block
   BlockLods lods;  // (written by plan before it is read: not initialised)
   UvTexture(const SamplerView& t, int first_varying) : tex(t), iu(first_varying) {}
@@ -179,8 +183,9 @@ struct UvTexture {
       hn::Store(level_of_detail(tex, ux, vx, uy, vy), DF(), lods.lod + b);
     });
   }
-  VF frac;  // the weight of level.level1, per lane (packed pixels come from several blocks)
-  LevelChoice block_level(int b) const { return one_level ? LevelChoice{tex.mag, 0, 0, 0} : choose_levels(tex, lods.lod[b]); }
+  LevelChoice block_level(int b) const {
+    return one_level ? LevelChoice{tex.mag, 0, 0, 0} : choose_levels(tex, lods.lod[b]);
+  }
   void begin(int b) {
     const LevelChoice l = block_level(b);
     use(l, hn::Set(DF(), l.frac));
