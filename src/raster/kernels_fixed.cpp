@@ -64,7 +64,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
   Rgba flat{};
   if constexpr (kUnits == 0)
     if (constant) flat = shader.constant_color(r);
-  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const DepthPlane z_plane(r);
   const VU id = hn::Set(du, draw.object_id);
   const bool stencil = p.stencil_test;
   const bool writes_depth = p.depth_test && p.depth_write;
@@ -109,7 +109,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
       }
       float fx, fy;
       block_origin(r, t, blk.index, fx, fy);
-      const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+      const VF z0 = z_plane.block(fx, fy);
       shader.begin_block(fx, fy, b);
       const size_t at = size_t(blk.index) * 16;
       for (int v = 0; v < kVectorsPerBlock; ++v) {
@@ -118,7 +118,7 @@ HWY_NOINLINE void fixed_kernel(const RecordHeader& r, const Block* blocks, int n
         float* zp = t.depth + at + v * kLanes;
         uint32_t* cp = t.color + at + v * kLanes;
         // Window depth is clamped to [0, 1] (a polygon offset may push it out).
-        const VF z = saturate(hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0)));
+        const VF z = saturate(z_plane.at(z0, v));
         // (Zero when unused: GCC's -Wmaybe-uninitialized cannot see that every read below is
         // under depth_test, and fails the ASan build's -Werror.)
         const VF zb = depth_test ? hn::Load(d, zp) : hn::Zero(d);

@@ -349,7 +349,7 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
   const bool depth_test = t.frame.depth_test;
   const AlphaMode mode = draw.pbr.alpha_mode;
   const VF cutoff = hn::Set(d, draw.pbr.alpha_cutoff);
-  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const DepthPlane depth(r);
   const VU id = hn::Set(du, draw.object_id);
   const OutputTransform& output = t.frame.output;
   shader.plan_levels(r, blocks, n, t.x0, t.y0);
@@ -363,14 +363,14 @@ HWY_NOINLINE void pbr_kernel(const RecordHeader& r, const Block* blocks, int n, 
     const Block& blk = blocks[b];
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
-    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    const VF z0 = depth.block(fx, fy);
     shader.begin_block(fx, fy, b);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
       if (kVectorsPerBlock > 1 && vector_empty(blk.mask, v)) continue;
       MF m = lane_mask(blk.mask, v);
       float* zp = t.depth + at + v * kLanes;
-      const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
+      const VF z = depth.at(z0, v);
       if (depth_test) {
         m = hn::And(m, hn::Lt(z, hn::Load(d, zp)));
         if (hn::AllFalse(d, m)) continue;

@@ -34,6 +34,18 @@ HWY_INLINE void block_origin(const RecordHeader& r, const TileTarget& t, uint16_
   block_origin(r, t.x0, t.y0, index, fx, fy);
 }
 
+// A record's depth plane at a block's pixels, as every kernel computes it (so that a
+// pixel's depth is the same whichever kernel, or packed or not, draws it): the block's
+// base at its first pixel (fx, fy from block_origin), then vector v's pixels from it.
+struct DepthPlane {
+  float c, dx, dy;
+  VF vdx, vdy;
+  explicit DepthPlane(const RecordHeader& r)
+      : c(r.depth.c), dx(r.depth.dx), dy(r.depth.dy), vdx(hn::Set(DF(), dx)), vdy(hn::Set(DF(), dy)) {}
+  HWY_INLINE VF block(float fx, float fy) const { return hn::Set(DF(), c + dx * fx + dy * fy); }
+  HWY_INLINE VF at(VF block, int v) const { return hn::MulAdd(vdx, block_x(v), hn::MulAdd(vdy, block_y(v), block)); }
+};
+
 using KernelFn = void (*)(const RecordHeader&, const Block*, int, const TileTarget&);
 
 // The kernels of each translation unit, indexed from the first KernelId it holds.
@@ -77,7 +89,7 @@ HWY_INLINE void shade_packed(const RecordHeader& r, const Block* blocks, int n, 
   LevelChoice run_levels[kLevels], levels[kLevels];
   const int nl = shader.level_count();
   const bool depth_test = t.frame.depth_test;
-  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const DepthPlane depth(r);
   const VU id = hn::Set(du, (*t.frame.draws)[r.draw].object_id);
   const MF all = hn::FirstN(d, kLanes);
   int first = 0, count = 0;  // the run's first block, and its pixels so far
@@ -122,8 +134,7 @@ HWY_INLINE void shade_packed(const RecordHeader& r, const Block* blocks, int n, 
     MF m = lane_mask(blk.mask, 0);
     const size_t at = size_t(blk.index) * 16;
     if (depth_test) {
-      const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
-      const VF z = hn::MulAdd(zdx, block_x(0), hn::MulAdd(zdy, block_y(0), z0));
+      const VF z = depth.at(depth.block(fx, fy), 0);
       m = hn::And(m, hn::Lt(z, hn::Load(d, t.depth + at)));
       store_masked(z, m, d, t.depth + at);
     }
@@ -151,23 +162,21 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
   const DrawState& draw = (*t.frame.draws)[r.draw];
   Shader shader(r, draw, t.frame);
   if constexpr (requires { shader.plan_levels(r, blocks, n, t.x0, t.y0); }) shader.plan_levels(r, blocks, n, t.x0, t.y0);
-  if constexpr (kPackPixels && requires { Shader::kPackable; }) {
-    if constexpr (Shader::kPackable) {
-      if (pixel_packing())
-        return shade_packed(r, blocks, n, t, shader, [&](MF live) {
-          if constexpr (requires { shader.shade(0, live); }) return shader.shade(0, live);
-          else return shader.shade(0);
-        });
-    }
+  if constexpr (kPackPixels && requires { requires Shader::kPackable; }) {
+    if (pixel_packing())
+      return shade_packed(r, blocks, n, t, shader, [&](MF live) {
+        if constexpr (requires { shader.shade(0, live); }) return shader.shade(0, live);
+        else return shader.shade(0);
+      });
   }
   const bool depth_test = t.frame.depth_test;
-  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const DepthPlane depth(r);
   const VU id = hn::Set(du, draw.object_id);
   for (int b = 0; b < n; ++b) {
     const Block& blk = blocks[b];
     float fx, fy;
     block_origin(r, t, blk.index, fx, fy);
-    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    const VF z0 = depth.block(fx, fy);
     shader.begin_block(fx, fy, b);
     const size_t at = size_t(blk.index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
@@ -175,7 +184,7 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
       MF m = lane_mask(blk.mask, v);
       float* zp = t.depth + at + v * kLanes;
       if (depth_test) {
-        const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
+        const VF z = depth.at(z0, v);
         m = hn::And(m, hn::Lt(z, hn::Load(d, zp)));
         if (hn::AllFalse(d, m)) continue;
         store_masked(z, m, d, zp);
@@ -197,15 +206,15 @@ HWY_NOINLINE void mesh_kernel(const RecordHeader& r, const Block* blocks, int n,
 // blocks, no shader and no colour.
 HWY_INLINE void depth_only_triangle(const RecordHeader& r, const TileBox& box, const TileTarget& t) {
   const DF d;
-  const VF zdx = hn::Set(d, r.depth.dx), zdy = hn::Set(d, r.depth.dy);
+  const DepthPlane depth(r);
   auto write = [&](uint16_t index, uint32_t mask) {
     if (!mask) return;
     float fx, fy;
     block_origin(r, t, index, fx, fy);
-    const VF z0 = hn::Set(d, r.depth.c + r.depth.dx * fx + r.depth.dy * fy);
+    const VF z0 = depth.block(fx, fy);
     float* zp = t.depth + size_t(index) * 16;
     for (int v = 0; v < kVectorsPerBlock; ++v) {
-      const VF z = hn::MulAdd(zdx, block_x(v), hn::MulAdd(zdy, block_y(v), z0));
+      const VF z = depth.at(z0, v);
       const VF old = hn::Load(d, zp + v * kLanes);
       // A plain store of the blend: no other thread writes the tile, and a masked store
       // is far slower on AMD's cores (about half the flat kernel's samples sat after them).
