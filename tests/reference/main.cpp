@@ -25,13 +25,15 @@ median frame time (clear + draw + glFinish).
   --mesh sphere:SEGS | FILE.obj   mesh (default sphere:64)
   --size WxH                      image size (default 1920x1080)
   --frames N                      frames to time; frame i turns 360*i/N degrees (default 60)
-  --shade flat|gouraud|tex|phong|env|wire   (default gouraud)
-  --tex IMAGE                     texture for tex/env (default: 256x256 checkerboard)
+  --shade flat|gouraud|tex|phong|env|wire|pbr|pbrtex   (default gouraud)
+  --tex IMAGE                     texture for tex/env/pbrtex (default: 256x256 checkerboard)
+  --shadows                       a shadow map for the light (phong, env, pbr, pbrtex; one copy)
+  --shadow-map-size N             its side in texels, 16..8192 (default 2048)
   --copies N                      draw the mesh N times per frame in a square grid (default 1)
   --out FILE.png                  write the first frame
   --help                          this text
 
-Prints: renderer=llvmpipe mesh=... tris=... size=WxH shade=... frames=N median_ms=... fps=... tris_per_s=...
+Prints: renderer=llvmpipe mesh=... tris=... size=WxH shade=... [shadow_map=N] frames=N median_ms=... fps=... tris_per_s=...
 )";
 
 // Bad command lines; main() reports them with exit code 2.
@@ -76,7 +78,12 @@ Options parse_args(int argc, char** argv) {
       o.help = true;
       continue;
     }
-    constexpr std::array<std::string_view, 7> kValueFlags{"--mesh", "--size", "--frames", "--shade", "--tex", "--copies", "--out"};
+    if (flag == "--shadows") {
+      o.scene.shadows = true;
+      continue;
+    }
+    constexpr std::array<std::string_view, 8> kValueFlags{"--mesh", "--size",   "--frames", "--shade",
+                                                          "--tex",  "--copies", "--out",    "--shadow-map-size"};
     if (std::find(kValueFlags.begin(), kValueFlags.end(), flag) == kValueFlags.end())
       throw UsageError("unknown option '" + std::string(flag) + "'");
     if (i + 1 >= argc) throw UsageError(std::string(flag) + " needs a value");
@@ -89,12 +96,15 @@ Options parse_args(int argc, char** argv) {
       o.frames = positive_int(flag, value);
     } else if (flag == "--shade") {
       const std::optional<vref::Shade> shade = vref::parse_shade(value);
-      if (!shade) throw UsageError("--shade must be flat, gouraud, tex, phong, env or wire, got '" + std::string(value) + "'");
+      if (!shade)
+        throw UsageError("--shade must be flat, gouraud, tex, phong, env, wire, pbr or pbrtex, got '" + std::string(value) + "'");
       o.scene.shade = *shade;
     } else if (flag == "--tex") {
       o.texture_path = value;
     } else if (flag == "--copies") {
       o.scene.copies = positive_int(flag, value);
+    } else if (flag == "--shadow-map-size") {
+      o.scene.shadow_map_size = positive_int(flag, value);
     } else {  // --out
       o.out_path = value;
     }
@@ -109,7 +119,7 @@ double median(std::vector<double> xs) {
 
 int run(const Options& o) {
   vref::Scene scene = o.scene;
-  const bool textured = scene.shade == vref::Shade::Tex || scene.shade == vref::Shade::Env;
+  const bool textured = scene.shade == vref::Shade::Tex || scene.shade == vref::Shade::Env || scene.shade == vref::Shade::PbrTex;
   if (textured && !o.texture_path.empty()) scene.texture = vref::load_image(o.texture_path);
   vref::Renderer renderer(scene);
 
@@ -126,8 +136,10 @@ int run(const Options& o) {
   double total_ms = 0;
   for (double t : ms) total_ms += t;
   const size_t tris = renderer.triangles();
-  std::printf("renderer=llvmpipe mesh=%s tris=%zu size=%dx%d shade=%s frames=%d median_ms=%.3f fps=%.1f tris_per_s=%.3e\n",
+  const std::string shadow_map = scene.shadows ? " shadow_map=" + std::to_string(scene.shadow_map_size) : "";
+  std::printf("renderer=llvmpipe mesh=%s tris=%zu size=%dx%d shade=%s%s frames=%d median_ms=%.3f fps=%.1f tris_per_s=%.3e\n",
               scene.mesh.c_str(), tris, scene.width, scene.height, std::string(vref::to_string(scene.shade)).c_str(),
+              shadow_map.c_str(),
               o.frames, med, 1000.0 / med, double(tris) * o.frames / (total_ms / 1000.0));
   return 0;
 }

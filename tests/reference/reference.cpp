@@ -191,13 +191,15 @@ Mesh face_normals(const Mesh& in) {
 // Shading modes and images
 
 namespace {
-constexpr std::array<std::pair<Shade, std::string_view>, 6> kShadeNames{{
+constexpr std::array<std::pair<Shade, std::string_view>, 8> kShadeNames{{
     {Shade::Flat, "flat"},
     {Shade::Gouraud, "gouraud"},
     {Shade::Tex, "tex"},
     {Shade::Phong, "phong"},
     {Shade::Env, "env"},
     {Shade::Wire, "wire"},
+    {Shade::Pbr, "pbr"},
+    {Shade::PbrTex, "pbrtex"},
 }};
 }  // namespace
 
@@ -252,11 +254,32 @@ namespace {
 constexpr const char* kVertexShader = R"(
 varying vec3 v_normal;   // eye space
 varying vec3 v_position; // eye space
+varying vec2 v_uv;
 void main() {
   v_normal = gl_NormalMatrix * gl_Normal;
   v_position = vec3(gl_ModelViewMatrix * gl_Vertex);
+  v_uv = gl_MultiTexCoord0.xy;
   gl_Position = ftransform();
 }
+)";
+
+// The light's visibility at eye-space point p (normal n, towards the light l): 0 facing
+// away from it; with SHADOWS, the depth-compare sampler's bilinear (percentage-closer)
+// filter of the map at p moved two texels along n and one towards the light, the
+// engine's bias (its shading/shadow.hpp); else 1.
+constexpr const char* kVisibility = R"(
+#ifdef SHADOWS
+uniform sampler2DShadow u_shadow;
+uniform mat4 u_eye_to_shadow;  // eye space to the map's texture coordinates and depth, all in [0, 1]
+uniform float u_texel;         // a texel's side in eye-space units
+float visibility(vec3 p, vec3 n, vec3 l) {
+  if (dot(n, l) <= 0.0) return 0.0;
+  vec4 s = u_eye_to_shadow * vec4(p + n * (2.0 * u_texel) + l * u_texel, 1.0);
+  return shadow2D(u_shadow, s.xyz).r;
+}
+#else
+float visibility(vec3 p, vec3 n, vec3 l) { return 1.0; }
+#endif
 )";
 
 constexpr const char* kFragmentShader = R"(
@@ -274,7 +297,57 @@ void main() {
 #else
   vec3 base = vec3(0.8, 0.7, 0.6);
 #endif
+#ifdef SHADOWS
+  float lit = visibility(v_position, n, u_light);
+  gl_FragColor = vec4(base * (0.2 + 0.8 * diffuse * lit) + vec3(0.5) * specular * lit, 1.0);
+#else
   gl_FragColor = vec4(base * (0.2 + 0.8 * diffuse) + vec3(0.5) * specular, 1.0);
+#endif
+}
+)";
+
+// glTF 2.0's metallic-roughness BRDF (its Appendix B: Lambert diffuse, GGX / Trowbridge-
+// Reitz specular, Smith's height-correlated visibility, Schlick's Fresnel; the dielectric
+// and metal lobes mixed by metallic), for the engine's bench material: base colour
+// u_base (linear; with TEXTURE times the sRGB texture, which GL decodes), metallic 0.3,
+// roughness 0.5; ambient radiance 0.2 (Lambert of a uniform light: c_diff times it) and
+// the directional light's 0.8; the sum sRGB-encoded. The engine adds Turquin's
+// multiple-scattering factor to the specular lobe (1.00-1.06 here); this does not.
+constexpr const char* kPbrFragmentShader = R"(
+uniform vec3 u_light;
+uniform vec3 u_base;
+uniform sampler2D u_texture;
+varying vec3 v_normal;
+varying vec3 v_position;
+varying vec2 v_uv;
+const float kPi = 3.14159265;
+vec3 encode(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+  return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+void main() {
+  vec3 n = normalize(v_normal), v = normalize(-v_position), l = u_light;
+  vec3 base = u_base;
+#ifdef TEXTURE
+  base *= texture2D(u_texture, v_uv).rgb;
+#endif
+  const float metallic = 0.3, a = 0.25;  // a = roughness^2
+  float a2 = a * a;
+  vec3 cdiff = base * (1.0 - metallic), f0 = mix(vec3(0.04), base, metallic);
+  float nv = max(dot(n, v), 1e-4);
+  vec3 colour = 0.2 * cdiff;
+  float nl = dot(n, l);
+  if (nl > 0.0) {
+    vec3 h = normalize(l + v);
+    float nh = clamp(dot(n, h), 0.0, 1.0), q5 = pow(1.0 - clamp(dot(v, h), 0.0, 1.0), 5.0);
+    vec3 f = f0 + (1.0 - f0) * q5;
+    float dn = nh * nh * (a2 - 1.0) + 1.0;
+    float d = a2 / (kPi * dn * dn);
+    float vis = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2));
+    vec3 brdf = (1.0 - (0.04 + 0.96 * q5)) * cdiff / kPi + f * d * vis;
+    colour += brdf * 0.8 * nl * visibility(v_position, n, l);
+  }
+  gl_FragColor = vec4(encode(colour), 1.0);
 }
 )";
 
@@ -294,10 +367,14 @@ GLuint compile_shader(GLenum type, const std::string& source) {
   return shader;
 }
 
-GLuint build_program(bool env) {
-  const std::string header = std::string("#version 120\n") + (env ? "#define ENV 1\n" : "");
+GLuint build_program(Shade shade, bool shadows) {
+  std::string header = "#version 120\n";
+  if (shade == Shade::Env) header += "#define ENV 1\n";
+  if (shade == Shade::PbrTex) header += "#define TEXTURE 1\n";
+  if (shadows) header += "#define SHADOWS 1\n";
+  const bool pbr = shade == Shade::Pbr || shade == Shade::PbrTex;
   const GLuint vs = compile_shader(GL_VERTEX_SHADER, header + kVertexShader);
-  const GLuint fs = compile_shader(GL_FRAGMENT_SHADER, header + kFragmentShader);
+  const GLuint fs = compile_shader(GL_FRAGMENT_SHADER, header + kVisibility + (pbr ? kPbrFragmentShader : kFragmentShader));
   const GLuint program = glCreateProgram();
   glAttachShader(program, vs);
   glAttachShader(program, fs);
@@ -318,6 +395,53 @@ GLuint build_program(bool env) {
 // The light direction, normalised in float as the convention's numbers are.
 Vec3 light_direction() { return normalised({0.3f, 0.5f, 1.f}); }
 
+float dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// 4x4 matrices column by column, as GL takes them.
+using Mat4 = std::array<float, 16>;
+
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+  Mat4 c{};
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 4; ++row)
+      for (int k = 0; k < 4; ++k) c[col * 4 + row] += a[k * 4 + row] * b[col * 4 + k];
+  return c;
+}
+
+// gluLookAt's matrix.
+Mat4 look_at(const Vec3& eye, const Vec3& centre, const Vec3& up) {
+  const Vec3 f = normalised(sub(centre, eye)), s = normalised(cross(f, up)), u = cross(s, f);
+  return {s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0, -dot(s, eye), -dot(u, eye), dot(f, eye), 1};
+}
+
+// glOrtho's matrix.
+Mat4 ortho(float l, float r, float b, float t, float n, float f) {
+  return {2 / (r - l), 0, 0, 0, 0, 2 / (t - b), 0, 0, 0, 0, -2 / (f - n), 0, -(r + l) / (r - l), -(t + b) / (t - b), -(f + n) / (f - n), 1};
+}
+
+// The shadow map's view, as the engine fits a directional light's: an orthographic box
+// around the casters' bounding sphere (that of the mesh's bounding box), seen from two
+// radii away towards the light; eye space to the light's view, and its projection.
+struct ShadowView {
+  Mat4 view, projection;
+  float radius;
+};
+
+ShadowView shadow_view(const Mesh& m) {
+  Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+  for (size_t i = 0; i < m.vertices(); ++i)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.pos[3 * i + k]), hi[k] = std::max(hi[k], m.pos[3 * i + k]);
+  const float r = 0.5f * length(sub(hi, lo));
+  // The box's centre, turned about +Y with the mesh: normalise() put it at the origin.
+  const Vec3 centre{0, 0, -3}, l = light_direction();
+  const Vec3 at{centre[0] + 2 * r * l[0], centre[1] + 2 * r * l[1], centre[2] + 2 * r * l[2]};
+  const Vec3 up = std::fabs(l[1]) > 0.99f ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
+  return {look_at(at, centre, up), ortho(-r, r, -r, r, 0.5f * r, 3.5f * r), r};
+}
+
+// sRGB-encoded to linear (IEC 61966-2-1).
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
 Mesh prepare_mesh(const Scene& scene) {
   Mesh m = load_mesh(scene.mesh);
   normalise(m);
@@ -330,6 +454,14 @@ void validate(const Scene& scene) {
   if (scene.width < 1 || scene.height < 1 || scene.width > 16384 || scene.height > 16384)
     throw std::invalid_argument("bad image size " + std::to_string(scene.width) + "x" + std::to_string(scene.height));
   if (scene.copies < 1) throw std::invalid_argument("copies must be at least 1, got " + std::to_string(scene.copies));
+  if (scene.shadows) {
+    if (scene.shade != Shade::Phong && scene.shade != Shade::Env && scene.shade != Shade::Pbr && scene.shade != Shade::PbrTex)
+      throw std::invalid_argument("shadows need a programmable shade (phong, env, pbr or pbrtex), not " +
+                                  std::string(to_string(scene.shade)));
+    if (scene.copies != 1) throw std::invalid_argument("shadows are drawn for one copy of the mesh only");
+    if (scene.shadow_map_size < 16 || scene.shadow_map_size > 8192)
+      throw std::invalid_argument("shadow map size " + std::to_string(scene.shadow_map_size) + " is out of range (16..8192)");
+  }
 }
 
 // Destroys an OSMesa context, unbinding it first if it is current so that a later
@@ -349,6 +481,8 @@ struct Renderer::State {
   std::vector<uint8_t> colour;     // OSMesa's colour buffer, bottom row first
   std::unique_ptr<osmesa_context, ContextDeleter> context;
   GLuint texture = 0, program = 0;
+  GLuint shadow_texture = 0, shadow_framebuffer = 0;
+  ShadowView light{};
 
   explicit State(const Scene& s);
 
@@ -358,7 +492,9 @@ struct Renderer::State {
   void setup_fixed_function() const;
   void setup_program();
   void setup_wire() const;
+  void setup_shadows();
   void bind_arrays() const;
+  void draw_meshes(int frame, int frames) const;
   void draw(int frame, int frames) const;
 };
 
@@ -373,16 +509,19 @@ Renderer::State::State(const Scene& s) : scene(s) {
   make_current();
 
   setup_camera();
-  const bool textured = scene.shade == Shade::Tex || scene.shade == Shade::Env;
+  const bool textured = scene.shade == Shade::Tex || scene.shade == Shade::Env || scene.shade == Shade::PbrTex;
   if (textured) setup_texture();
   switch (scene.shade) {
     case Shade::Flat:
     case Shade::Gouraud:
     case Shade::Tex: setup_fixed_function(); break;
     case Shade::Phong:
-    case Shade::Env: setup_program(); break;
+    case Shade::Env:
+    case Shade::Pbr:
+    case Shade::PbrTex: setup_program(); break;
     case Shade::Wire: setup_wire(); break;
   }
+  if (scene.shadows) setup_shadows();
   bind_arrays();
 }
 
@@ -427,7 +566,10 @@ void Renderer::State::setup_texture() {
   std::vector<uint8_t> upright(img.rgba.size());
   for (int y = 0; y < img.height; ++y)
     std::memcpy(&upright[size_t(y) * row], &img.rgba[size_t(img.height - 1 - y) * row], row);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, upright.data());
+  // PBR's base colour texture is sRGB-encoded (glTF's, and the engine's for every colour
+  // texture in a linear frame): GL decodes it before filtering.
+  const GLint format = scene.shade == Shade::PbrTex ? GL_SRGB8_ALPHA8 : GL_RGBA;
+  glTexImage2D(GL_TEXTURE_2D, 0, format, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, upright.data());
   scene.texture = Image{};  // GL holds its own copy now
 }
 
@@ -454,11 +596,52 @@ void Renderer::State::setup_fixed_function() const {
 }
 
 void Renderer::State::setup_program() {
-  program = build_program(scene.shade == Shade::Env);
+  program = build_program(scene.shade, scene.shadows);
   glUseProgram(program);
   const Vec3 l = light_direction();
   glUniform3f(glGetUniformLocation(program, "u_light"), l[0], l[1], l[2]);
   if (const GLint loc = glGetUniformLocation(program, "u_texture"); loc >= 0) glUniform1i(loc, 0);
+  // PBR's base colour: the material's (0.8, 0.7, 0.6), sRGB-encoded as the engine's
+  // material colours are; white under a texture, as the engine's bench draws pbrtex.
+  if (const GLint loc = glGetUniformLocation(program, "u_base"); loc >= 0) {
+    if (scene.shade == Shade::PbrTex)
+      glUniform3f(loc, 1.0f, 1.0f, 1.0f);
+    else
+      glUniform3f(loc, srgb_to_linear(0.8f), srgb_to_linear(0.7f), srgb_to_linear(0.6f));
+  }
+}
+
+// The depth texture (16 bits, as the engine's codes) the light's view is drawn into,
+// read through texture unit 1 with depth comparison (LEQUAL: lit where the point is no
+// farther than the caster) and linear filtering, which GL defines as the comparisons'
+// bilinear blend; and the matrix from eye space to its texture coordinates.
+void Renderer::State::setup_shadows() {
+  const int size = scene.shadow_map_size;
+  light = shadow_view(mesh);
+  glGenTextures(1, &shadow_texture);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, shadow_texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glActiveTexture(GL_TEXTURE0);
+  glGenFramebuffers(1, &shadow_framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_texture, 0);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE) throw std::runtime_error("the shadow map's framebuffer is incomplete");
+  const Mat4 bias{0.5f, 0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0.5f, 0, 0.5f, 0.5f, 0.5f, 1};
+  const Mat4 eye_to_shadow = multiply(bias, multiply(light.projection, light.view));
+  glUniformMatrix4fv(glGetUniformLocation(program, "u_eye_to_shadow"), 1, GL_FALSE, eye_to_shadow.data());
+  glUniform1f(glGetUniformLocation(program, "u_texel"), 2 * light.radius / float(size));
+  glUniform1i(glGetUniformLocation(program, "u_shadow"), 1);
 }
 
 void Renderer::State::setup_wire() const {
@@ -477,13 +660,8 @@ void Renderer::State::bind_arrays() const {
   glTexCoordPointer(2, GL_FLOAT, 0, mesh.uv.data());
 }
 
-void Renderer::State::draw(int frame, int frames) const {
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glLoadIdentity();
-  // A w = 0 position set under the identity is a direction fixed in eye space.
-  const Vec3 l = light_direction();
-  const GLfloat light[4] = {l[0], l[1], l[2], 0.f};
-  glLightfv(GL_LIGHT0, GL_POSITION, light);
+// The mesh (its copies) from the modelview matrix's eye space.
+void Renderer::State::draw_meshes(int frame, int frames) const {
   glTranslatef(0, 0, -3);  // the camera at (0, 0, 3)
   const float angle = 360.f * float(frame) / float(frames);
   for (int c = 0; c < scene.copies; ++c) {
@@ -498,6 +676,37 @@ void Renderer::State::draw(int frame, int frames) const {
     glDrawElements(GL_TRIANGLES, GLsizei(mesh.idx.size()), GL_UNSIGNED_INT, mesh.idx.data());
     glPopMatrix();
   }
+}
+
+void Renderer::State::draw(int frame, int frames) const {
+  if (scene.shadows) {
+    // The light's view, depth only: no program, no colour.
+    glBindFramebuffer(GL_FRAMEBUFFER, shadow_framebuffer);
+    glViewport(0, 0, scene.shadow_map_size, scene.shadow_map_size);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(0);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadMatrixf(light.projection.data());
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(light.view.data());
+    draw_meshes(frame, frames);
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, scene.width, scene.height);
+    glUseProgram(program);
+  }
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glLoadIdentity();
+  // A w = 0 position set under the identity is a direction fixed in eye space.
+  const Vec3 l = light_direction();
+  const GLfloat light_position[4] = {l[0], l[1], l[2], 0.f};
+  glLightfv(GL_LIGHT0, GL_POSITION, light_position);
+  draw_meshes(frame, frames);
   glFinish();
 }
 

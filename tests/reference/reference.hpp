@@ -52,9 +52,12 @@ void normalise(Mesh& mesh);
 // normalise((v1-v0) x (v2-v0)); used for flat shading.
 Mesh face_normals(const Mesh& mesh);
 
-enum class Shade { Flat, Gouraud, Tex, Phong, Env, Wire };
+// Pbr and PbrTex: glTF 2.0's metallic-roughness BRDF per fragment (metallic 0.3,
+// roughness 0.5; PbrTex with the texture as an sRGB base colour), lit in linear light and
+// written sRGB-encoded: the engine's `bench --shade pbr|pbrtex` (see kPbrFragmentShader).
+enum class Shade { Flat, Gouraud, Tex, Phong, Env, Wire, Pbr, PbrTex };
 
-// "flat" | "gouraud" | "tex" | "phong" | "env" | "wire"; nullopt otherwise.
+// "flat" | "gouraud" | "tex" | "phong" | "env" | "wire" | "pbr" | "pbrtex"; nullopt otherwise.
 std::optional<Shade> parse_shade(std::string_view name);
 std::string_view to_string(Shade shade);
 
@@ -78,7 +81,14 @@ struct Scene {
   int width = 1920, height = 1080;
   Shade shade = Shade::Gouraud;
   int copies = 1;                  // mesh drawn this many times, in a ceil(sqrt(N)) grid
-  Image texture;                   // for Tex and Env; empty -> checkerboard()
+  Image texture;                   // for Tex, Env and PbrTex; empty -> checkerboard()
+  // A shadow map for the light (the programmable modes: phong, env, pbr, pbrtex): a
+  // depth texture of shadow_map_size texels a side drawn each frame from the light,
+  // orthographic over the mesh's bounding sphere, read with a depth-compare sampler's
+  // bilinear filter (percentage-closer) at the point moved two texels along its normal
+  // and one towards the light: the engine's --shadows.
+  bool shadows = false;
+  int shadow_map_size = 2048;
 };
 
 // Owns an OSMesa (llvmpipe) context with its colour buffer, the prepared mesh and
@@ -97,7 +107,8 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   // Clears and draws frame `frame` of `frames` (rotation 360*frame/frames degrees
-  // about +Y), then glFinish, so the cost of the frame is all inside this call.
+  // about +Y), the shadow map first when there is one, then glFinish, so the cost of
+  // the frame is all inside this call.
   void draw_frame(int frame, int frames);
 
   // The last frame drawn, top row first.
