@@ -4,8 +4,12 @@
 # glref and `velocity bench`, each the median frame time of FRAMES frames; the table
 # gives each renderer's median over the pairs and the median of the pairs' ratios
 # (llvmpipe time / Velocity time: above 1, Velocity is faster), with the target where
-# the speed issue sets one. Then Velocity's own scaling from 1 thread to THREADS, and
-# seed 000's headline figures restated as what Velocity does here.
+# the speed issue sets one. glref draws the seeds' modes; glTF's PBR and shadow maps
+# come from the project's own harness on llvmpipe (velocity-ref: the same BRDF in GLSL,
+# and a depth texture read through GL's depth-compare sampler). Then each renderer's
+# PBR-textured and shadowed frames as multiples of its own Phong frame, Velocity's own
+# scaling from 1 thread to THREADS, and seed 000's headline figures restated as what
+# Velocity does here.
 #
 #   scripts/compare_glref.sh [--threads N] [--pairs N] [--frames N] [--only REGEX]
 #
@@ -48,7 +52,13 @@ scenes=(
   "sphere:512 gouraud|--mesh sphere:512 --shade gouraud --size 1920x1080|-"
   "sphere:512 phong|--mesh sphere:512 --shade phong --size 1920x1080|-"
   "sphere:512 wire|--mesh sphere:512 --shade wire --size 1920x1080|-"
+  "sphere:64 pbr|--mesh sphere:64 --shade pbr --size 1920x1080|-"
+  "sphere:64 pbrtex|--mesh sphere:64 --shade pbrtex --size 1920x1080|-"
+  "sphere:64 phong + 2048² shadow map|--mesh sphere:64 --shade phong --shadows --size 1920x1080|-"
+  "sphere:64 pbrtex + 2048² shadow map|--mesh sphere:64 --shade pbrtex --shadows --size 1920x1080|-"
 )
+# Each scene's medians, by name, for the table of ratios to the Phong frame.
+declare -A ref_ms ours_ms
 
 echo "Velocity $(machine) against llvmpipe, both on $threads threads, $pairs alternating pairs of $frames frames, simd=$(simd)"
 echo
@@ -64,9 +74,11 @@ for s in "${scenes[@]}"; do
   IFS='|' read -r name args target <<<"$s"
   [[ "$name" =~ $only ]] || continue
   ref=() ours=() ratios=() old=() slower=()
+  reference="$glref"
+  [[ "$args" =~ pbr|--shadows ]] && reference="$vref"
   for ((p = 0; p < pairs; ++p)); do
     # shellcheck disable=SC2086
-    a=$(LP_NUM_THREADS=$threads "$glref" $args --frames "$frames" | ms)
+    a=$(LP_NUM_THREADS=$threads "$reference" $args --frames "$frames" | ms)
     # shellcheck disable=SC2086
     b=$("$velocity" bench $args --frames "$frames" --threads "$threads" | ms)
     ref+=("$a") ours+=("$b") ratios+=("$(ratio "$a" "$b")")
@@ -77,6 +89,7 @@ for s in "${scenes[@]}"; do
     fi
   done
   r=$(printf '%s\n' "${ratios[@]}" | median)
+  ref_ms[$name]=$(printf '%s\n' "${ref[@]}" | median) ours_ms[$name]=$(printf '%s\n' "${ours[@]}" | median)
   verdict=""
   [[ "$target" != "-" ]] && verdict=$(awk -v r="$r" -v t="$target" 'BEGIN { print (r >= t ? "≥ " t " met" : "≥ " t " missed") }')
   printf '| %s | %.2f | %.2f | %.2f | %s |' "$name" "$(printf '%s\n' "${ref[@]}" | median)" \
@@ -84,6 +97,20 @@ for s in "${scenes[@]}"; do
   [[ -n "$baseline" ]] && printf ' %.2f | %.3f |' "$(printf '%s\n' "${old[@]}" | median)" "$(printf '%s\n' "${slower[@]}" | median)"
   echo
 done
+
+# Issue 17's two ratios, for both renderers: a frame's median over the Phong frame's.
+phong="sphere:64 phong"
+if [[ -n "${ours_ms[$phong]:-}" ]]; then
+  echo
+  echo "| frame ÷ the same renderer's sphere:64 phong frame | llvmpipe | Velocity | Velocity's target |"
+  echo "|---|---|---|---|"
+  for row in "sphere:64 pbrtex|1.6" "sphere:64 phong + 2048² shadow map|1.5"; do
+    IFS='|' read -r name target <<<"$row"
+    [[ -n "${ours_ms[$name]:-}" ]] || continue
+    printf '| %s | %.2f | %.2f | ≤ %s |\n' "$name" "$(ratio "${ref_ms[$name]}" "${ref_ms[$phong]}")" \
+      "$(ratio "${ours_ms[$name]}" "${ours_ms[$phong]}")" "$target"
+  done
+fi
 
 # Velocity's scaling from 1 thread to `threads`, alternating as above.
 echo

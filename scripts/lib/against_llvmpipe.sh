@@ -2,6 +2,9 @@
 # scaling.sh): the two programs, the median of a list and the machine's description.
 #   VELOCITY  the velocity program (default: build/velocity, built if missing)
 #   GLREF     ../shared/tools' glref (default: built into /tmp/velocity-glref)
+#   VREF      the project's own llvmpipe harness, tests/reference's velocity-ref, for what
+#             glref does not draw: PBR and shadow maps (default: build/tests/reference/
+#             velocity-ref, built if missing)
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 velocity="${VELOCITY:-$root/build/velocity}"
 glref="${GLREF:-/tmp/velocity-glref/glref}"
@@ -12,6 +15,8 @@ if [[ ! -x "$glref" ]]; then
   g++ -O2 -o "$glref" "$tools/glref/glref.cpp" -lOSMesa -ltinyobjloader -lstb
 fi
 [[ -x "$velocity" ]] || cmake --build "$root/build" --target velocity_cli >/dev/null
+vref="${VREF:-$root/build/tests/reference/velocity-ref}"
+[[ -x "$vref" ]] || cmake --build "$root/build" --target velocity-ref >/dev/null
 
 # median: of the numbers on stdin, one a line. ms: a benchmark line's median_ms.
 median() { sort -g | awk '{a[NR] = $1} END { if (NR % 2) print a[(NR + 1) / 2]; else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
