@@ -679,9 +679,11 @@ void CpuBackend::render_shadows() {
         continue;
       }
       b.resize(size, size, 1);
-      // Never touched: the tiles draw depth in a scratch tile and store it as codes.
+      // Never touched: the tiles draw depth in a scratch tile and store it as codes, and
+      // no depth pass tests stencil.
       BlockVector<uint32_t>().swap(b.framebuffer.color);
       BlockVector<float>().swap(b.framebuffer.depth);
+      BlockVector<uint8_t>().swap(b.framebuffer.stencil);
       const size_t texels = shading::shadow_codes_for(size);  // with the border and lines (shading/shadow.hpp)
       if (b.shadow_codes_.size() != texels) {
         b.shadow_codes_.assign(texels, uint16_t(shading::kShadowFar));

@@ -122,7 +122,12 @@ HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPe
     most[k] = std::max(0, 3 * e.a[k]) + std::max(0, 3 * e.b[k]);
     across[k] = hn::Set(di, 4 * e.a[k]);
   }
+  // box_mask's columns: only the first and last block of a row cut the box's sides; its
+  // rows, once a row of blocks.
+  const int bx_last = box.x1 & ~3;
+  const uint32_t first_cols = box_mask(bx0, 0, box.x0, 0, box.x1, 3), last_cols = box_mask(bx_last, 0, box.x0, 0, box.x1, 3);
   for (int by = by0; by <= box.y1; by += 4) {
+    const uint32_t rows = box_mask(0, by, 0, box.y0, 3, box.y1);
     int32_t q[3] = {row[0], row[1], row[2]};
     auto outside_an_edge = [&] { return ((q[0] + most[0]) | (q[1] + most[1]) | (q[2] + most[2])) < 0; };
     auto next = [&] {
@@ -142,8 +147,8 @@ HWY_INLINE void row_cover(const TriangleEdges& e, const VI (&step)[3][kVectorsPe
       }
       uint32_t outside = 0;
       for (int v = 0; v < kVectorsPerBlock; ++v) outside |= negative_bits(qv, step, v);
-      const uint32_t mask = ~outside & box_mask(bx, by, box.x0, box.y0, box.x1, box.y1);
-      emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), mask);
+      const uint32_t cols = (bx == bx0 ? first_cols : 0xffffu) & (bx == bx_last ? last_cols : 0xffffu);
+      emit(uint16_t((by >> 2) * kBlocksPerTileSide + (bx >> 2)), ~outside & rows & cols);
       for (int k = 0; k < 3; ++k) qv[k] = hn::Add(qv[k], across[k]);
     }
     for (int k = 0; k < 3; ++k) row[k] += 4 * e.b[k];

@@ -107,7 +107,8 @@ bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
   alignas(64) static thread_local float scratch_depth[Framebuffer::kTilePixels];  // a shadow map's depth
   const bool codes = frame.shadow_codes != nullptr;
   TileTarget target{frame, frame.depth_only ? scratch : fb.color.data() + base, codes ? scratch_depth : fb.depth.data() + base,
-                    fb.stencil.data() + base, fb.ids.empty() ? nullptr : fb.ids.data() + base, tx, ty};
+                    fb.stencil.empty() ? nullptr : fb.stencil.data() + base, fb.ids.empty() ? nullptr : fb.ids.data() + base,
+                    tx, ty};
   constexpr int kPixels = Framebuffer::kTilePixels;
   // A tile with nothing to draw that already holds exactly the clear values (it was
   // cleared and left empty last frame too: the background of most frames) is done. A
@@ -122,7 +123,7 @@ bool RasterizeTile(const TileInputs& frame, int tile, Framebuffer& fb) {
     if (target.ids) std::fill_n(target.ids, kPixels, 0u);
   }
   if (frame.clear_depth_buffer) std::fill_n(target.depth, kPixels, frame.depth);
-  if (frame.clear_stencil_buffer) std::fill_n(target.stencil, kPixels, frame.stencil);
+  if (frame.clear_stencil_buffer && target.stencil) std::fill_n(target.stencil, kPixels, frame.stencil);
   Block blocks[kMaxBlocks];
   Fragments fragments;  // small triangles' pixels, shaded 16 at a time (fragments-inl.h)
   auto flush = [&] { fragments.draw(frame, target.color, target.depth, target.ids); };
