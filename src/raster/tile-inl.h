@@ -24,7 +24,7 @@ struct TileTarget {
   const TileInputs& frame;
   uint32_t* color;  // the tile's first pixel (tiled layout, framebuffer.hpp)
   float* depth;
-  uint8_t* stencil;
+  uint8_t* stencil;  // null in a shadow map's depth pass, which keeps none
   uint32_t* ids;  // null when the frame keeps no object ids
   int x0, y0;     // the tile's first pixel in the framebuffer
 };
