@@ -119,8 +119,7 @@ double median(std::vector<double> xs) {
 
 int run(const Options& o) {
   vref::Scene scene = o.scene;
-  const bool textured = scene.shade == vref::Shade::Tex || scene.shade == vref::Shade::Env || scene.shade == vref::Shade::PbrTex;
-  if (textured && !o.texture_path.empty()) scene.texture = vref::load_image(o.texture_path);
+  if (vref::textured(scene.shade) && !o.texture_path.empty()) scene.texture = vref::load_image(o.texture_path);
   vref::Renderer renderer(scene);
 
   std::vector<double> ms;

@@ -87,6 +87,16 @@ std::optional<int> parse_int(std::string_view s) {
   return value;
 }
 
+// The mesh's axis-aligned bounding box (lo above hi when it has no vertices).
+void bounding_box(const Mesh& m, Vec3& lo, Vec3& hi) {
+  lo = {1e30f, 1e30f, 1e30f}, hi = {-1e30f, -1e30f, -1e30f};
+  for (uint32_t i = 0; i < m.vertices(); ++i)
+    for (int j = 0; j < 3; ++j) {
+      lo[j] = std::min(lo[j], m.pos[3 * i + j]);
+      hi[j] = std::max(hi[j], m.pos[3 * i + j]);
+    }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------
@@ -154,12 +164,8 @@ Mesh load_mesh(std::string_view spec) {
 }
 
 void normalise(Mesh& m) {
-  Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
-  for (uint32_t i = 0; i < m.vertices(); ++i)
-    for (int j = 0; j < 3; ++j) {
-      lo[j] = std::min(lo[j], m.pos[3 * i + j]);
-      hi[j] = std::max(hi[j], m.pos[3 * i + j]);
-    }
+  Vec3 lo, hi;
+  bounding_box(m, lo, hi);
   const Vec3 centre{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
   float radius = 0;
   for (uint32_t i = 0; i < m.vertices(); ++i) radius = std::max(radius, length(sub(vertex(m, i), centre)));
@@ -208,6 +214,8 @@ std::optional<Shade> parse_shade(std::string_view name) {
     if (n == name) return shade;
   return std::nullopt;
 }
+
+bool textured(Shade shade) { return shade == Shade::Tex || shade == Shade::Env || shade == Shade::PbrTex; }
 
 std::string_view to_string(Shade shade) {
   for (const auto& [s, name] : kShadeNames)
@@ -297,12 +305,8 @@ void main() {
 #else
   vec3 base = vec3(0.8, 0.7, 0.6);
 #endif
-#ifdef SHADOWS
-  float lit = visibility(v_position, n, u_light);
+  float lit = visibility(v_position, n, u_light);  // 1 without SHADOWS: the products are exact
   gl_FragColor = vec4(base * (0.2 + 0.8 * diffuse * lit) + vec3(0.5) * specular * lit, 1.0);
-#else
-  gl_FragColor = vec4(base * (0.2 + 0.8 * diffuse) + vec3(0.5) * specular, 1.0);
-#endif
 }
 )";
 
@@ -428,9 +432,8 @@ struct ShadowView {
 };
 
 ShadowView shadow_view(const Mesh& m) {
-  Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
-  for (size_t i = 0; i < m.vertices(); ++i)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.pos[3 * i + k]), hi[k] = std::max(hi[k], m.pos[3 * i + k]);
+  Vec3 lo, hi;
+  bounding_box(m, lo, hi);
   const float r = 0.5f * length(sub(hi, lo));
   // The box's centre, turned about +Y with the mesh: normalise() put it at the origin.
   const Vec3 centre{0, 0, -3}, l = light_direction();
@@ -509,8 +512,7 @@ Renderer::State::State(const Scene& s) : scene(s) {
   make_current();
 
   setup_camera();
-  const bool textured = scene.shade == Shade::Tex || scene.shade == Shade::Env || scene.shade == Shade::PbrTex;
-  if (textured) setup_texture();
+  if (textured(scene.shade)) setup_texture();
   switch (scene.shade) {
     case Shade::Flat:
     case Shade::Gouraud:

@@ -61,6 +61,9 @@ enum class Shade { Flat, Gouraud, Tex, Phong, Env, Wire, Pbr, PbrTex };
 std::optional<Shade> parse_shade(std::string_view name);
 std::string_view to_string(Shade shade);
 
+// Whether the shade reads Scene::texture (tex, env, pbrtex).
+bool textured(Shade shade);
+
 // 8-bit RGBA image, top row first, 4 bytes per pixel.
 struct Image {
   int width = 0, height = 0;
